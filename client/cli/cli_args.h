@@ -1,0 +1,76 @@
+#pragma once
+// Command-line parsing for `toon`, kept apart from the network code so every
+// rule (where --server may stand, which flags a verb takes, how --set is
+// checked) can be unit-tested without a daemon.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace toond::proto {
+class ParamSchema;
+}
+
+namespace toond::cli {
+
+inline constexpr std::string_view kDefaultServer = "http://127.0.0.1:8080";
+
+// Everything the user got wrong before a request is made: exit status 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class Verb { none, health, upload, render };
+
+struct Options {
+  Verb verb = Verb::none;
+  std::string server;  // already resolved: --server, else TOOND_URL, else the default
+  bool help = false;
+  bool version = false;
+
+  // upload and render
+  std::string obj_path;
+  // upload
+  bool quiet = false;
+  // render
+  std::string model_id;
+  std::string params_file;  // "-" reads standard input
+  std::vector<std::pair<std::string, std::string>> sets;  // in command-line order
+  std::string output;  // "-" writes to standard output
+};
+
+// `args` excludes argv[0]. `env_server` is TOOND_URL (nullopt when unset), a
+// parameter so tests need not touch the process environment. Throws
+// UsageError. With help or version set, the verb's own requirements (a
+// path, -o) are not enforced.
+Options parse_args(const std::vector<std::string>& args,
+                   const std::optional<std::string>& env_server);
+
+// TOOND_URL from the environment; an empty value counts as unset.
+std::optional<std::string> server_from_environment();
+
+// The render request the options describe: the --params file, then each
+// --set in order, then --model; validated against the schema. Throws
+// UsageError naming the file or key at fault.
+nlohmann::json build_render_params(const Options& options, const proto::ParamSchema& schema);
+
+// Usage text for one verb, or the overview for Verb::none.
+std::string usage_text(Verb verb);
+
+std::string_view verb_name(Verb verb);
+
+// A --server URL split the way httplib wants it: "http://host:port" for the
+// client plus the path prefix a reverse proxy may put in front of toond.
+struct ServerUrl {
+  std::string scheme_host_port;
+  std::string base_path;  // "" or "/prefix" without a trailing slash
+};
+// Throws UsageError for anything but http:// or https:// with a host.
+ServerUrl parse_server_url(std::string_view url);
+
+}  // namespace toond::cli

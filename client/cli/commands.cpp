@@ -1,0 +1,274 @@
+#include "commands.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include "bundle_scan.h"
+#include "param_schema.h"
+#include "reply.h"
+
+namespace toond::cli {
+namespace {
+
+using nlohmann::json;
+
+constexpr time_t kConnectTimeoutS = 5;
+// A large model at 4096² with 8× MSAA on llvmpipe, behind a queue, can take
+// minutes; the daemon answers 503 itself when its queue is full.
+constexpr time_t kReadTimeoutS = 300;
+
+class Connection {
+ public:
+  explicit Connection(const std::string& server)
+      : server_(server), url_(parse_server_url(server)), client_(url_.scheme_host_port) {
+    client_.set_connection_timeout(kConnectTimeoutS, 0);
+    client_.set_read_timeout(kReadTimeoutS, 0);
+    client_.set_write_timeout(kReadTimeoutS, 0);
+    client_.set_default_headers({{"User-Agent", std::string("toon/") + TOOND_VERSION}});
+  }
+
+  httplib::Result get(const std::string& path) { return client_.Get(url_.base_path + path); }
+  httplib::Result post_json(const std::string& path, const json& body) {
+    return client_.Post(url_.base_path + path, body.dump(), "application/json");
+  }
+  httplib::Result post_multipart(const std::string& path, const httplib::MultipartFormDataItems& items) {
+    return client_.Post(url_.base_path + path, items);
+  }
+
+  // Prints why no answer came and returns the exit status for it.
+  int network_failure(const httplib::Result& result) const {
+    const httplib::Error e = result.error();
+    switch (e) {
+      case httplib::Error::Connection:
+        std::cerr << "toon: cannot reach toond at " << server_
+                  << " (connection failed; is the daemon running?)\n";
+        break;
+      case httplib::Error::ConnectionTimeout:
+        std::cerr << "toon: cannot reach toond at " << server_ << " (no connection within "
+                  << kConnectTimeoutS << " s)\n";
+        break;
+      case httplib::Error::Read:
+        std::cerr << "toon: no answer from toond at " << server_
+                  << " (connection closed, or nothing within " << kReadTimeoutS << " s)\n";
+        break;
+      case httplib::Error::Write:
+        std::cerr << "toon: cannot reach toond at " << server_
+                  << " (the connection broke while sending)\n";
+        break;
+      default:
+        std::cerr << "toon: cannot reach toond at " << server_ << " (" << httplib::to_string(e)
+                  << ")\n";
+        break;
+    }
+    return 1;
+  }
+
+ private:
+  std::string server_;
+  ServerUrl url_;
+  httplib::Client client_;
+};
+
+int error_reply(const httplib::Response& response) {
+  std::cerr << "toon: "
+            << describe_error_reply(response.status, response.body,
+                                    response.get_header_value("Retry-After"))
+            << "\n";
+  return 1;
+}
+
+void print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) std::cerr << "toon: warning: " << w << "\n";
+}
+
+httplib::MultipartFormDataItems bundle_parts(const BundleScan& scan) {
+  httplib::MultipartFormDataItems items;
+  for (const BundleFile& f : scan.files) {
+    items.push_back({"file", f.content, f.name, content_type_for(f.name)});
+  }
+  return items;
+}
+
+std::string bundle_summary(const BundleScan& scan) {
+  std::uint64_t bytes = 0;
+  std::string names;
+  for (const BundleFile& f : scan.files) {
+    bytes += f.content.size();
+    names += " " + f.name;
+  }
+  return std::to_string(scan.files.size()) + (scan.files.size() == 1 ? " file" : " files") +
+         " (" + human_bytes(bytes) + "):" + names;
+}
+
+int health(const Options& options) {
+  Connection conn(options.server);
+  httplib::Result result = conn.get("/healthz");
+  if (!result) return conn.network_failure(result);
+  const json body = json::parse(result->body, nullptr, false);
+  // A daemon that is up but unwell may still describe itself; show that
+  // rather than a bare status code.
+  if (!body.is_object() || !body.contains("status")) return error_reply(*result);
+  std::cout << body.dump(2) << "\n";
+  const bool ok = result->status == 200 && body["status"] == "ok";
+  if (!ok) std::cerr << "toon: toond at " << options.server << " is not healthy\n";
+  return ok ? 0 : 1;
+}
+
+int upload(const Options& options) {
+  const BundleScan scan = scan_obj_bundle(options.obj_path);
+  print_warnings(scan.warnings);
+  if (!options.quiet) std::cerr << "toon: uploading " << bundle_summary(scan) << "\n";
+
+  Connection conn(options.server);
+  httplib::Result result = conn.post_multipart("/models", bundle_parts(scan));
+  if (!result) return conn.network_failure(result);
+  if (result->status != 200 && result->status != 201) return error_reply(*result);
+
+  const json body = json::parse(result->body, nullptr, false);
+  if (!body.is_object() || !body.contains("id")) {
+    std::cerr << "toon: unexpected answer from toond (status " << result->status
+              << ", no model id)\n";
+    return 1;
+  }
+  if (options.quiet) {
+    if (auto w = body.find("warnings"); w != body.end() && w->is_array()) {
+      for (const json& warning : *w) {
+        std::cerr << "toon: server warning: "
+                  << (warning.is_string() ? warning.get<std::string>() : warning.dump()) << "\n";
+      }
+    }
+    const json& id = body["id"];
+    std::cout << (id.is_string() ? id.get<std::string>() : id.dump()) << "\n";
+  } else {
+    std::cout << body.dump(2) << "\n";
+  }
+  return 0;
+}
+
+// The PNG is written beside its destination and renamed into place, so a
+// failed or interrupted render never leaves a truncated image under the
+// name a script will pick up. The temporary file is opened before the
+// request, so an unwritable -o is reported before a long render.
+class OutputFile {
+ public:
+  explicit OutputFile(const std::string& destination) : destination_(destination) {
+    if (destination_ == "-") {
+      if (::isatty(STDOUT_FILENO)) {
+        throw UsageError("-o -: standard output is a terminal; redirect it to a file");
+      }
+      return;
+    }
+    if (std::filesystem::is_directory(destination_)) {
+      throw UsageError("-o " + destination_ + ": is a directory");
+    }
+    temporary_ = destination_ + ".part-" + std::to_string(::getpid());
+    out_.open(temporary_, std::ios::binary | std::ios::trunc);
+    if (!out_) throw UsageError("-o " + destination_ + ": cannot write there: " + std::strerror(errno));
+  }
+  ~OutputFile() {
+    if (!temporary_.empty() && !committed_) {
+      out_.close();
+      std::error_code ec;
+      std::filesystem::remove(temporary_, ec);
+    }
+  }
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  // Returns an empty string on success, otherwise what went wrong.
+  std::string commit(const std::string& bytes) {
+    if (destination_ == "-") {
+      std::cout.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      std::cout.flush();
+      return std::cout ? std::string() : std::string("writing to standard output failed");
+    }
+    out_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out_.close();
+    if (!out_) return "writing " + temporary_ + " failed";
+    std::error_code ec;
+    std::filesystem::rename(temporary_, destination_, ec);
+    if (ec) return "cannot rename " + temporary_ + " to " + destination_ + ": " + ec.message();
+    committed_ = true;
+    return {};
+  }
+
+ private:
+  std::string destination_;
+  std::string temporary_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+int render(const Options& options) {
+  // Everything that can be checked locally is, before a byte is sent.
+  const json params = build_render_params(options, proto::ParamSchema::render_params());
+  BundleScan scan;
+  if (!options.obj_path.empty()) {
+    scan = scan_obj_bundle(options.obj_path);
+    print_warnings(scan.warnings);
+  }
+  OutputFile output(options.output);
+
+  Connection conn(options.server);
+  httplib::Result result = [&] {
+    if (options.obj_path.empty()) return conn.post_json("/render", params);
+    std::cerr << "toon: uploading " << bundle_summary(scan) << "\n";
+    httplib::MultipartFormDataItems items = bundle_parts(scan);
+    items.push_back({"params", params.dump(), "", "application/json"});
+    return conn.post_multipart("/render", items);
+  }();
+  if (!result) return conn.network_failure(result);
+  if (result->status != 200) return error_reply(*result);
+
+  const std::string type = result->get_header_value("Content-Type");
+  if (type.rfind("image/png", 0) != 0) {
+    std::cerr << "toon: expected image/png from toond, got '" << type << "'\n";
+    return 1;
+  }
+  if (std::string problem = output.commit(result->body); !problem.empty()) {
+    std::cerr << "toon: " << problem << "\n";
+    return 1;
+  }
+
+  std::cerr << "toon: wrote " << (options.output == "-" ? "standard output" : options.output);
+  if (auto size = png_size(result->body)) std::cerr << " (" << size->first << "x" << size->second;
+  else std::cerr << " (not a PNG?";
+  std::cerr << ", " << human_bytes(result->body.size()) << ")";
+  if (std::string timing = result->get_header_value("Server-Timing"); !timing.empty()) {
+    std::cerr << "; server timing: " << timing;
+  }
+  std::cerr << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int run_command(const Options& options) {
+  try {
+    switch (options.verb) {
+      case Verb::health: return health(options);
+      case Verb::upload: return upload(options);
+      case Verb::render: return render(options);
+      case Verb::none: break;
+    }
+    std::cerr << usage_text(Verb::none);
+    return 2;
+  } catch (const UsageError& e) {
+    std::cerr << "toon: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "toon: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace toond::cli

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs every Debian package toond needs to build, run and test.
+# Idempotent: packages already present are left alone. Used by the README's
+# commands, by CI (.ci/run) and by docker/Dockerfile, so all three agree.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake pkg-config git ca-certificates curl
+  # GL through glvnd (no GLX, no X11 needed at run time) + Mesa's llvmpipe
+  libegl-dev libgl-dev libglvnd-dev libegl-mesa0 libgl1-mesa-dri libgbm1
+  # scene import, maths, images
+  libglm-dev libtinyobjloader-dev libstb-dev libpng-dev zlib1g-dev
+  # HTTP + JSON + schema validation
+  libcpp-httplib-dev libssl-dev nlohmann-json3-dev libvalijson-dev
+  # tests, shader checks, benchmarks
+  libgtest-dev libgmock-dev glslang-tools libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,89 @@
+#include "app/options.h"
+
+#include <stdexcept>
+
+namespace toond::app {
+namespace {
+
+long long parse_int(const std::string& flag, const std::string& text, long long min, long long max) {
+  std::size_t used = 0;
+  long long v = 0;
+  try {
+    v = std::stoll(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty() || v < min || v > max) {
+    throw std::invalid_argument(flag + " expects an integer in " + std::to_string(min) + ".." +
+                                std::to_string(max) + ", got '" + text + "'");
+  }
+  return v;
+}
+
+}  // namespace
+
+std::string usage() {
+  return R"(toond - headless toon-rendering service
+
+Usage: toond [options]
+
+  --listen HOST:PORT     address to serve on (default 127.0.0.1:8080; port 0 picks
+                         a free port). Prints "listening on http://HOST:PORT" when ready.
+  --data-dir DIR         where uploaded models are stored (default ./toond-data)
+  --gpu N                use EGL device N (see --list-gpus); default: the first
+                         hardware device, else Mesa's surfaceless platform
+  --list-gpus            print the EGL devices and exit
+  --queue N              render jobs allowed to wait (default 32); beyond: 503
+  --max-upload-bytes N   largest request body accepted (default 268435456)
+  --threads N            HTTP worker threads (default 8)
+  --render-timeout S     seconds a request waits for its render (default 60)
+  --version              print the version and exit
+  -h, --help             this text
+
+Routes: GET /healthz, GET/POST /models, GET/DELETE /models/{id}, POST /render,
+GET /schema, GET / (web page). See proto/openapi.yaml.
+)";
+}
+
+Options parse_options(const std::vector<std::string>& args) {
+  Options o;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "-h" || a == "--help") {
+      o.help = true;
+    } else if (a == "--version") {
+      o.version = true;
+    } else if (a == "--list-gpus") {
+      o.list_gpus = true;
+    } else if (a == "--listen") {
+      const std::string& v = value();
+      const auto colon = v.rfind(':');
+      if (colon == std::string::npos || colon == 0) {
+        throw std::invalid_argument("--listen expects HOST:PORT, got '" + v + "'");
+      }
+      o.host = v.substr(0, colon);
+      o.port = static_cast<int>(parse_int("--listen port", v.substr(colon + 1), 0, 65535));
+    } else if (a == "--data-dir") {
+      o.data_dir = value();
+    } else if (a == "--gpu") {
+      o.gpu = static_cast<int>(parse_int(a, value(), 0, 1024));
+    } else if (a == "--queue") {
+      o.queue = static_cast<std::size_t>(parse_int(a, value(), 1, 100000));
+    } else if (a == "--max-upload-bytes") {
+      o.max_upload_bytes = static_cast<std::size_t>(parse_int(a, value(), 1024, 1LL << 40));
+    } else if (a == "--threads") {
+      o.threads = static_cast<int>(parse_int(a, value(), 1, 1024));
+    } else if (a == "--render-timeout") {
+      o.render_timeout_s = static_cast<double>(parse_int(a, value(), 1, 86400));
+    } else {
+      throw std::invalid_argument("unknown option '" + a + "' (see --help)");
+    }
+  }
+  return o;
+}
+
+}  // namespace toond::app

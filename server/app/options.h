@@ -1,0 +1,28 @@
+#pragma once
+// toond's command line. Every flag has a default and is listed by --help.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace toond::app {
+
+struct Options {
+  std::string host = "127.0.0.1";
+  int port = 8080;  // 0: any free port
+  std::string data_dir = "toond-data";
+  std::optional<int> gpu;
+  std::size_t queue = 32;
+  std::size_t max_upload_bytes = 256u << 20;
+  int threads = 8;
+  double render_timeout_s = 60;
+  bool list_gpus = false;
+  bool help = false;
+  bool version = false;
+};
+
+// Parses argv. Throws std::invalid_argument with a message naming the flag.
+Options parse_options(const std::vector<std::string>& args);
+std::string usage();
+
+}  // namespace toond::app

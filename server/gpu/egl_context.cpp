@@ -1,0 +1,213 @@
+#include "gpu/egl_context.h"
+
+#include <EGL/eglext.h>
+
+#include <cstring>
+#include <string_view>
+
+#include "gpu/gl.h"
+#include "gpu/gpu_error.h"
+
+namespace toond::gpu {
+namespace {
+
+const char* egl_error_name(EGLint error) {
+  switch (error) {
+    case EGL_SUCCESS: return "EGL_SUCCESS";
+    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
+    case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
+    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
+    case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
+    case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
+    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
+    case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
+    case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
+    default: return "unknown EGL error";
+  }
+}
+
+[[noreturn]] void fail(const std::string& what) {
+  throw GpuError("EglContext: " + what + " failed: " + egl_error_name(eglGetError()));
+}
+
+bool has_extension(const char* list, std::string_view name) {
+  if (!list) return false;
+  std::string_view all(list);
+  for (std::size_t pos = 0; pos < all.size();) {
+    std::size_t end = all.find(' ', pos);
+    if (end == std::string_view::npos) end = all.size();
+    if (all.substr(pos, end - pos) == name) return true;
+    pos = end + 1;
+  }
+  return false;
+}
+
+template <class Fn>
+Fn egl_proc(const char* name) {
+  return reinterpret_cast<Fn>(eglGetProcAddress(name));
+}
+
+std::vector<EGLDeviceEXT> query_devices() {
+  const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (!has_extension(client_extensions, "EGL_EXT_device_enumeration") &&
+      !has_extension(client_extensions, "EGL_EXT_device_base")) {
+    return {};
+  }
+  auto query = egl_proc<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
+  if (!query) return {};
+  EGLint count = 0;
+  if (!query(0, nullptr, &count) || count <= 0) return {};
+  std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
+  if (!query(count, devices.data(), &count)) return {};
+  devices.resize(static_cast<std::size_t>(count));
+  return devices;
+}
+
+EglDeviceInfo describe(EGLDeviceEXT device, int index) {
+  auto query_string = egl_proc<PFNEGLQUERYDEVICESTRINGEXTPROC>("eglQueryDeviceStringEXT");
+  EglDeviceInfo info;
+  info.index = index;
+  if (query_string) {
+    if (const char* ext = query_string(device, EGL_EXTENSIONS)) info.extensions = ext;
+    if (has_extension(info.extensions.c_str(), "EGL_EXT_device_drm")) {
+      if (const char* file = query_string(device, EGL_DRM_DEVICE_FILE_EXT)) info.drm_file = file;
+    }
+  }
+  info.software = has_extension(info.extensions.c_str(), "EGL_MESA_device_software");
+  return info;
+}
+
+EGLDisplay platform_display(EGLenum platform, void* native) {
+  auto get_display = egl_proc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
+  if (!get_display) return EGL_NO_DISPLAY;
+  return get_display(platform, native, nullptr);
+}
+
+}  // namespace
+
+std::vector<EglDeviceInfo> EglContext::enumerate_devices() {
+  std::vector<EglDeviceInfo> out;
+  const auto devices = query_devices();
+  for (std::size_t i = 0; i < devices.size(); ++i) {
+    out.push_back(describe(devices[i], static_cast<int>(i)));
+  }
+  return out;
+}
+
+EglContext::EglContext(const Options& options) {
+  const auto devices = query_devices();
+  const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (options.device_index) {
+    const int index = *options.device_index;
+    if (index < 0 || static_cast<std::size_t>(index) >= devices.size()) {
+      throw GpuError("EglContext: --gpu " + std::to_string(index) + " asked for, but EGL lists " +
+                     std::to_string(devices.size()) + " device(s)");
+    }
+    display_ = platform_display(EGL_PLATFORM_DEVICE_EXT, devices[static_cast<std::size_t>(index)]);
+    info_.platform = "device " + std::to_string(index);
+  } else {
+    for (std::size_t i = 0; i < devices.size() && display_ == EGL_NO_DISPLAY; ++i) {
+      if (describe(devices[i], static_cast<int>(i)).software) continue;
+      display_ = platform_display(EGL_PLATFORM_DEVICE_EXT, devices[i]);
+      // A hardware device that will not initialise is skipped, not fatal.
+      if (display_ != EGL_NO_DISPLAY && !eglInitialize(display_, nullptr, nullptr)) {
+        display_ = EGL_NO_DISPLAY;
+      } else if (display_ != EGL_NO_DISPLAY) {
+        info_.platform = "device " + std::to_string(i);
+      }
+    }
+    if (display_ == EGL_NO_DISPLAY) {
+      if (!has_extension(client_extensions, "EGL_MESA_platform_surfaceless")) {
+        throw GpuError(
+            "EglContext: no hardware EGL device and no EGL_MESA_platform_surfaceless "
+            "(install Mesa's libegl-mesa0 or a GPU driver)");
+      }
+      display_ = platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY);
+      info_.platform = "surfaceless";
+    }
+  }
+  if (display_ == EGL_NO_DISPLAY) fail("eglGetPlatformDisplayEXT");
+  if (!eglInitialize(display_, nullptr, nullptr)) fail("eglInitialize");
+  if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)");
+
+  // No surface is ever made (EGL_KHR_surfaceless_context); the config only
+  // has to be one that can create a desktop GL context.
+  // eglChooseConfig defaults EGL_SURFACE_TYPE to windows, which a headless
+  // display may have none of: ask for pbuffer-capable configs, then for any.
+  EGLConfig config = nullptr;
+  EGLint config_count = 0;
+  for (EGLint surface_type : {EGL_PBUFFER_BIT, 0}) {
+    const EGLint config_attribs[] = {EGL_SURFACE_TYPE, surface_type, EGL_RENDERABLE_TYPE,
+                                     EGL_OPENGL_BIT, EGL_NONE};
+    if (eglChooseConfig(display_, config_attribs, &config, 1, &config_count) && config_count > 0) break;
+  }
+  if (config_count < 1) fail("eglChooseConfig(OpenGL)");
+  // Newest core version first; 4.3 is the floor (compute, debug output, SSBOs).
+  static constexpr int versions[][2] = {{4, 6}, {4, 5}, {4, 4}, {4, 3}};
+  for (const auto& v : versions) {
+    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, v[0],
+                                      EGL_CONTEXT_MINOR_VERSION, v[1],
+                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                      EGL_NONE};
+    context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
+    if (context_ != EGL_NO_CONTEXT) break;
+  }
+  if (context_ == EGL_NO_CONTEXT) {
+    eglTerminate(display_);
+    fail("eglCreateContext(OpenGL core >= 4.3)");
+  }
+  if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
+    eglDestroyContext(display_, context_);
+    eglTerminate(display_);
+    fail("eglMakeCurrent(surfaceless)");
+  }
+
+  auto gl_string = [](GLenum name) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(name));
+    return std::string(s ? s : "");
+  };
+  info_.vendor = gl_string(GL_VENDOR);
+  info_.renderer = gl_string(GL_RENDERER);
+  info_.version = gl_string(GL_VERSION);
+  info_.glsl_version = gl_string(GL_SHADING_LANGUAGE_VERSION);
+  glGetIntegerv(GL_MAJOR_VERSION, &info_.major);
+  glGetIntegerv(GL_MINOR_VERSION, &info_.minor);
+
+  // toond uses direct state access throughout: core in 4.5, an extension before.
+  bool has_dsa = info_.major > 4 || (info_.major == 4 && info_.minor >= 5);
+  if (!has_dsa) {
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count && !has_dsa; ++i) {
+      const auto* ext = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+      has_dsa = ext && std::strcmp(ext, "GL_ARB_direct_state_access") == 0;
+    }
+  }
+  if (!has_dsa) {
+    release();
+    throw GpuError("EglContext: OpenGL " + info_.version +
+                   " lacks direct state access (needs 4.5 or GL_ARB_direct_state_access)");
+  }
+}
+
+EglContext::~EglContext() { release(); }
+
+void EglContext::release() {
+  if (display_ == EGL_NO_DISPLAY) return;
+  // A context that is still current when destroyed lingers until released;
+  // un-current it first so the driver frees it now.
+  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+  eglTerminate(display_);
+  display_ = EGL_NO_DISPLAY;
+  context_ = EGL_NO_CONTEXT;
+}
+
+}  // namespace toond::gpu

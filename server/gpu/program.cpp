@@ -1,0 +1,97 @@
+#include "gpu/program.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gpu/shader_compile_error.h"
+
+namespace toond::gpu {
+namespace {
+
+Shader compile_stage(GLenum stage, const ShaderSource& source, const std::vector<std::string>& defines) {
+  Shader shader = Shader::create(stage);
+  const std::string text = with_defines(source.text, defines);
+  const char* ptr = text.c_str();
+  glShaderSource(shader.id(), 1, &ptr, nullptr);
+  glCompileShader(shader.id());
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+    glGetShaderInfoLog(shader.id(), static_cast<GLsizei>(log.size()), nullptr, log.data());
+    log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+    throw ShaderCompileError(source.name, log);
+  }
+  return shader;
+}
+
+}  // namespace
+
+std::string with_defines(std::string_view source, const std::vector<std::string>& defines) {
+  std::size_t insert_at = 0;
+  if (source.substr(0, 8) == "#version") {
+    insert_at = source.find('\n');
+    insert_at = insert_at == std::string_view::npos ? source.size() : insert_at + 1;
+  }
+  std::string out(source.substr(0, insert_at));
+  for (const auto& d : defines) out += "#define " + d + "\n";
+  // Keep the driver's line numbers equal to the file's own.
+  out += "#line " + std::to_string(insert_at == 0 ? 1 : 2) + "\n";
+  out += source.substr(insert_at);
+  return out;
+}
+
+Program::Program(const ShaderSource& vertex, const ShaderSource& fragment,
+                 const std::vector<std::string>& defines) {
+  Shader vs = compile_stage(GL_VERTEX_SHADER, vertex, defines);
+  Shader fs = compile_stage(GL_FRAGMENT_SHADER, fragment, defines);
+  program_ = ProgramObject::create();
+  glAttachShader(program_.id(), vs.id());
+  glAttachShader(program_.id(), fs.id());
+  glLinkProgram(program_.id());
+  glDetachShader(program_.id(), vs.id());
+  glDetachShader(program_.id(), fs.id());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program_.id(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program_.id(), GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+    glGetProgramInfoLog(program_.id(), static_cast<GLsizei>(log.size()), nullptr, log.data());
+    throw ShaderCompileError(vertex.name + " + " + fragment.name, log);
+  }
+}
+
+GLint Program::location(std::string_view name) {
+  auto it = locations_.find(std::string(name));
+  if (it != locations_.end()) return it->second;
+  const std::string key(name);
+  const GLint loc = glGetUniformLocation(program_.id(), key.c_str());
+  locations_.emplace(key, loc);
+  return loc;
+}
+
+void Program::set(std::string_view name, float v) { glProgramUniform1f(id(), location(name), v); }
+void Program::set(std::string_view name, int v) { glProgramUniform1i(id(), location(name), v); }
+void Program::set(std::string_view name, const glm::vec2& v) {
+  glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(std::string_view name, const glm::vec3& v) {
+  glProgramUniform3fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(std::string_view name, const glm::vec4& v) {
+  glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(std::string_view name, const glm::mat3& v) {
+  glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::set(std::string_view name, const glm::mat4& v) {
+  glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::set_array(std::string_view name, const std::vector<glm::vec3>& v) {
+  if (v.empty()) return;
+  glProgramUniform3fv(id(), location(name), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
+}
+
+}  // namespace toond::gpu

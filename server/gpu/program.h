@@ -1,0 +1,53 @@
+#pragma once
+// A linked GLSL program built from vertex + fragment (+ optional geometry)
+// sources with feature #defines inserted after the #version line, the way
+// shader variants are made: one source file, many programs.
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gpu/gl_object.h"
+
+namespace toond::gpu {
+
+struct ShaderSource {
+  std::string name;  // file name, for error messages
+  std::string text;
+};
+
+class Program {
+ public:
+  Program() = default;
+  // Compiles and links. Throws ShaderCompileError with the file name and the
+  // driver's log when a stage does not compile or the program does not link.
+  Program(const ShaderSource& vertex, const ShaderSource& fragment,
+          const std::vector<std::string>& defines);
+
+  GLuint id() const { return program_.id(); }
+  void use() const { glUseProgram(program_.id()); }
+
+  // Uniform setters look the location up once and remember it; a uniform
+  // the compiler optimised away is silently skipped (location -1).
+  void set(std::string_view name, float v);
+  void set(std::string_view name, int v);
+  void set(std::string_view name, const glm::vec2& v);
+  void set(std::string_view name, const glm::vec3& v);
+  void set(std::string_view name, const glm::vec4& v);
+  void set(std::string_view name, const glm::mat3& v);
+  void set(std::string_view name, const glm::mat4& v);
+  void set_array(std::string_view name, const std::vector<glm::vec3>& v);
+
+ private:
+  GLint location(std::string_view name);
+
+  ProgramObject program_;
+  std::unordered_map<std::string, GLint> locations_;
+};
+
+// Inserts `#define X` lines right after the source's #version line.
+std::string with_defines(std::string_view source, const std::vector<std::string>& defines);
+
+}  // namespace toond::gpu

@@ -1,0 +1,29 @@
+#include "http/bundle_upload.h"
+
+#include "request_error.h"
+#include "scene/import_error.h"
+
+namespace toond::http {
+
+scene::Bundle bundle_from_multipart(const httplib::Request& req, const std::string& skip) {
+  if (!req.is_multipart_form_data()) {
+    throw RequestError(415, "not_multipart",
+                       "expected multipart/form-data with one part per bundle file");
+  }
+  scene::Bundle bundle;
+  for (const auto& [name, part] : req.files) {
+    if (!skip.empty() && name == skip) continue;
+    const std::string& path = part.filename.empty() ? part.name : part.filename;
+    try {
+      bundle.add(path, part.content);
+    } catch (const scene::ImportError& e) {
+      throw RequestError(400, "bad_file_name", e.what(), path);
+    }
+  }
+  if (bundle.empty()) {
+    throw RequestError(400, "empty_bundle", "the upload holds no file parts");
+  }
+  return bundle;
+}
+
+}  // namespace toond::http

@@ -1,0 +1,48 @@
+#include "http/error_response.h"
+
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "gpu/gpu_error.h"
+#include "gpu/shader_compile_error.h"
+#include "render/render_service.h"
+#include "request_error.h"
+#include "scene/import_error.h"
+
+namespace toond::http {
+
+void write_error(httplib::Response& res, int status, const std::string& code,
+                 const std::string& message, const std::string& path) {
+  res.status = status;
+  nlohmann::json body = {{"error", {{"code", code}, {"message", message}, {"path", path}}}};
+  res.set_content(body.dump(), "application/json");
+}
+
+void write_exception(httplib::Response& res, std::exception_ptr ep) {
+  try {
+    std::rethrow_exception(ep);
+  } catch (const RequestError& e) {
+    if (e.status() == 503) res.set_header("Retry-After", "5");
+    write_error(res, e.status(), e.code(), e.what(), e.path());
+  } catch (const scene::ImportError& e) {
+    write_error(res, 422, "bad_bundle", e.what(), e.file());
+  } catch (const render::QueueFull& e) {
+    res.set_header("Retry-After", "1");
+    write_error(res, 503, "busy", std::string(e.what()) + "; retry shortly");
+  } catch (const gpu::ShaderCompileError& e) {
+    std::cerr << "toond: " << e.what() << "\n";
+    write_error(res, 500, "shader_error", e.log(), e.file());
+  } catch (const gpu::GpuError& e) {
+    std::cerr << "toond: GPU error: " << e.what() << "\n";
+    write_error(res, 500, "gpu_error", e.what());
+  } catch (const std::exception& e) {
+    std::cerr << "toond: internal error: " << e.what() << "\n";
+    write_error(res, 500, "internal", e.what());
+  } catch (...) {
+    std::cerr << "toond: internal error of unknown type\n";
+    write_error(res, 500, "internal", "unknown error");
+  }
+}
+
+}  // namespace toond::http

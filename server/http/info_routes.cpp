@@ -1,0 +1,35 @@
+// GET /healthz, GET /schema, GET / (the web page).
+#include <nlohmann/json.hpp>
+
+#include "http/routes.h"
+#include "param_schema.h"
+#include "toond_web_files.h"
+
+namespace toond::http {
+
+void register_info_routes(httplib::Server& server, ServiceContext& context) {
+  server.Get("/healthz", [&context](const httplib::Request&, httplib::Response& res) {
+    const gpu::GlInfo& gl = context.renderer.gl_info();
+    nlohmann::json body = {
+        {"status", "ok"},
+        {"gl",
+         {{"vendor", gl.vendor},
+          {"renderer", gl.renderer},
+          {"version", gl.version},
+          {"glsl_version", gl.glsl_version},
+          {"platform", gl.platform}}},
+        {"queue_depth", context.renderer.queue_depth()},
+    };
+    res.set_content(body.dump(), "application/json");
+  });
+
+  server.Get("/schema", [](const httplib::Request&, httplib::Response& res) {
+    res.set_content(proto::ParamSchema::render_params().document().dump(2), "application/schema+json");
+  });
+
+  server.Get("/", [](const httplib::Request&, httplib::Response& res) {
+    res.set_content(std::string(toond::web_files::find("index.html")), "text/html; charset=utf-8");
+  });
+}
+
+}  // namespace toond::http

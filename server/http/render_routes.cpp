@@ -1,0 +1,89 @@
+// POST /render: JSON parameters → PNG; or multipart (bundle files + a
+// `params` part) to upload and render in one call.
+#include <chrono>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "http/bundle_upload.h"
+#include "http/routes.h"
+#include "image/png_codec.h"
+#include "param_schema.h"
+#include "request_error.h"
+
+namespace toond::http {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+nlohmann::json parse_params(const std::string& text, const std::string& where) {
+  if (text.empty()) return nlohmann::json::object();
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw RequestError(400, "malformed_json",
+                       where + " is not valid JSON (byte " + std::to_string(e.byte) + ")", "");
+  }
+}
+
+std::string server_timing(const render::RenderOutput& out, double queue_ms, double png_ms) {
+  std::ostringstream s;
+  s.precision(3);
+  s << std::fixed << "queue;dur=" << queue_ms;
+  for (const auto& t : out.timings) s << ", " << t.pass << ";dur=" << t.ms;
+  s << ", png;dur=" << png_ms;
+  return s.str();
+}
+
+}  // namespace
+
+void register_render_routes(httplib::Server& server, ServiceContext& context) {
+  server.Post("/render", [&context](const httplib::Request& req, httplib::Response& res) {
+    nlohmann::json request;
+    if (req.is_multipart_form_data()) {
+      const auto params_part = req.files.find("params");
+      request = parse_params(params_part == req.files.end() ? "" : params_part->second.content,
+                             "the params part");
+      const scene::Bundle bundle = bundle_from_multipart(req, "params");
+      request["model"] = context.store.put(bundle).info.id;
+    } else {
+      request = parse_params(req.body, "the request body");
+    }
+
+    const auto& schema = proto::ParamSchema::render_params();
+    render::RenderJob job;
+    job.params = render::RenderParams::from_json(schema.validate_and_complete(request));
+    if (job.params.model.empty()) {
+      job.model_key = "demo";
+      job.model = context.library.demo();
+    } else {
+      job.model_key = job.params.model;
+      job.model = context.library.get(job.params.model);
+      if (!job.model) {
+        throw RequestError(404, "unknown_model", "no stored model with id " + job.params.model,
+                           "/model");
+      }
+    }
+
+    const auto submitted = Clock::now();
+    auto future = context.renderer.submit(std::move(job));
+    if (future.wait_for(context.render_deadline) != std::future_status::ready) {
+      throw RequestError(503, "deadline_exceeded", "the render did not finish within the deadline");
+    }
+    render::RenderOutput out = future.get();
+    double render_ms = 0;
+    for (const auto& t : out.timings) render_ms += t.ms;
+    const double queue_ms =
+        std::chrono::duration<double, std::milli>(Clock::now() - submitted).count() - render_ms;
+
+    const auto png_start = Clock::now();
+    std::string png = image::encode_png(out.image);
+    const double png_ms = std::chrono::duration<double, std::milli>(Clock::now() - png_start).count();
+
+    res.set_header("Server-Timing", server_timing(out, queue_ms < 0 ? 0 : queue_ms, png_ms));
+    res.set_header("X-Toond-Passes", out.plan);
+    res.set_content(std::move(png), "image/png");
+  });
+}
+
+}  // namespace toond::http

@@ -1,0 +1,19 @@
+#pragma once
+// What the routes share: the model store, the in-memory model library, the
+// render thread and the daemon's limits.
+#include <chrono>
+
+#include "render/model_library.h"
+#include "render/render_service.h"
+#include "scene/model_store.h"
+
+namespace toond::http {
+
+struct ServiceContext {
+  scene::ModelStore& store;
+  render::ModelLibrary& library;
+  render::RenderService& renderer;
+  std::chrono::milliseconds render_deadline{60000};
+};
+
+}  // namespace toond::http

@@ -1,0 +1,57 @@
+#include "render/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace toond::render {
+namespace {
+// Leaves a little air between the model and the image border.
+constexpr double kFrameMargin = 1.08;
+}  // namespace
+
+CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, double aspect) {
+  const glm::dvec3 centre = glm::dvec3(bounds.min + bounds.max) * 0.5;
+  double radius = glm::length(glm::dvec3(bounds.max) - glm::dvec3(bounds.min)) * 0.5;
+  if (!(radius > 0.0) || !std::isfinite(radius)) radius = 1.0;  // a point or empty model
+
+  const double yaw = glm::radians(params.yaw_deg);
+  const double pitch = glm::radians(params.pitch_deg);
+  const glm::dvec3 toward_eye(std::sin(yaw) * std::cos(pitch), std::sin(pitch),
+                              std::cos(yaw) * std::cos(pitch));
+
+  const double fov_y = glm::radians(params.fov_deg);
+  // The narrower field decides how far back the eye must be.
+  const double fov_x = 2.0 * std::atan(std::tan(fov_y * 0.5) * aspect);
+  const double fov_min = std::min(fov_y, fov_x);
+
+  CameraSetup cam;
+  double distance = params.distance;
+  const bool ortho = params.projection == Projection::Orthographic;
+  if (distance <= 0.0) {
+    distance = ortho ? radius * 3.0 : radius * kFrameMargin / std::sin(fov_min * 0.5);
+  }
+  cam.eye = centre + toward_eye * distance;
+  // Looking straight up or down makes +Y a bad up vector; pitch is limited to
+  // ±89° by the schema, so +Y is always usable.
+  cam.view = glm::lookAt(cam.eye, centre, glm::dvec3(0, 1, 0));
+
+  const double reach = radius * 1.01;
+  cam.far_plane = distance + reach;
+  if (ortho) {
+    cam.near_plane = distance - reach;
+    double half_h = radius * kFrameMargin;
+    if (aspect < 1.0) half_h /= aspect;
+    const double half_w = half_h * aspect;
+    cam.projection = glm::ortho(-half_w, half_w, -half_h, half_h, cam.near_plane, cam.far_plane);
+  } else {
+    // A camera inside the bounds still needs a positive near plane; 1e-4 of
+    // the far plane keeps 24-bit depth usable.
+    cam.near_plane = std::max(distance - reach, cam.far_plane * 1e-4);
+    cam.projection = glm::perspective(fov_y, aspect, cam.near_plane, cam.far_plane);
+  }
+  return cam;
+}
+
+}  // namespace toond::render

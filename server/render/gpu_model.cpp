@@ -1,0 +1,96 @@
+#include "render/gpu_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace toond::render {
+namespace {
+
+// Attribute locations shared with shaders/*.vert.
+enum Attribute : GLuint { kPosition = 0, kNormal = 1, kTexcoord = 2, kOutlineNormal = 3 };
+
+struct Vertex {
+  float position[3];
+  float normal[3];
+  float texcoord[2];
+  float outline_normal[3];
+};
+
+gpu::Texture upload_texture(const scene::Texture& tex, std::size_t& bytes) {
+  gpu::Texture t = gpu::Texture::create(GL_TEXTURE_2D);
+  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(tex.width, tex.height))));
+  glTextureStorage2D(t.id(), levels, GL_SRGB8_ALPHA8, tex.width, tex.height);
+  // Images are stored top row first; OBJ texture coordinates put v = 0 at
+  // the bottom, which is GL's first row. Upload the rows reversed.
+  const std::size_t row = static_cast<std::size_t>(tex.width) * 4;
+  std::vector<std::uint8_t> flipped(tex.rgba.size());
+  for (int y = 0; y < tex.height; ++y) {
+    std::memcpy(flipped.data() + static_cast<std::size_t>(y) * row,
+                tex.rgba.data() + static_cast<std::size_t>(tex.height - 1 - y) * row, row);
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(t.id(), 0, 0, 0, tex.width, tex.height, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+  glGenerateTextureMipmap(t.id());
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  bytes += tex.rgba.size() * 4 / 3;  // with the mip chain
+  return t;
+}
+
+}  // namespace
+
+GpuModel::GpuModel(const scene::Model& model)
+    : submeshes_(model.mesh.submeshes), bounds_(model.mesh.bounds) {
+  const scene::Mesh& mesh = model.mesh;
+  std::vector<Vertex> vertices(mesh.positions.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    Vertex& v = vertices[i];
+    std::memcpy(v.position, &mesh.positions[i], sizeof v.position);
+    std::memcpy(v.normal, &mesh.normals[i], sizeof v.normal);
+    const glm::vec2 uv = i < mesh.texcoords.size() ? mesh.texcoords[i] : glm::vec2(0.0f);
+    std::memcpy(v.texcoord, &uv, sizeof v.texcoord);
+    std::memcpy(v.outline_normal, &mesh.outline_normals[i], sizeof v.outline_normal);
+  }
+  index_count_ = mesh.indices.size();
+
+  vertices_ = gpu::Buffer::create();
+  glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
+                       vertices.data(), 0);
+  indices_ = gpu::Buffer::create();
+  glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+                       mesh.indices.data(), 0);
+  gpu_bytes_ = vertices.size() * sizeof(Vertex) + mesh.indices.size() * sizeof(std::uint32_t);
+
+  vao_ = gpu::VertexArray::create();
+  glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
+  glVertexArrayElementBuffer(vao_.id(), indices_.id());
+  auto attribute = [&](GLuint location, GLint size, std::size_t offset) {
+    glEnableVertexArrayAttrib(vao_.id(), location);
+    glVertexArrayAttribFormat(vao_.id(), location, size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(offset));
+    glVertexArrayAttribBinding(vao_.id(), location, 0);
+  };
+  attribute(kPosition, 3, offsetof(Vertex, position));
+  attribute(kNormal, 3, offsetof(Vertex, normal));
+  attribute(kTexcoord, 2, offsetof(Vertex, texcoord));
+  attribute(kOutlineNormal, 3, offsetof(Vertex, outline_normal));
+
+  for (const scene::Texture& tex : model.textures) textures_.push_back(upload_texture(tex, gpu_bytes_));
+  for (const scene::Material& m : model.materials) {
+    materials_.push_back({m.diffuse, m.diffuse_texture});
+  }
+}
+
+void GpuModel::draw(const scene::Submesh& submesh) const {
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(submesh.index_count), GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(static_cast<std::uintptr_t>(submesh.first_index) *
+                                               sizeof(std::uint32_t)));
+}
+
+void GpuModel::draw_all() const {
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(index_count_), GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace toond::render

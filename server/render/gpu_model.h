@@ -1,0 +1,45 @@
+#pragma once
+// A model's GPU copy: one interleaved vertex buffer, one index buffer, its
+// textures (sRGB, mipmapped, repeating) and per-material draw ranges.
+// Created and destroyed on the render thread only.
+#include <vector>
+
+#include "gpu/gl_object.h"
+#include "scene/model.h"
+
+namespace toond::render {
+
+struct GpuMaterial {
+  glm::vec3 diffuse{0.8f};
+  int texture = -1;  // index into GpuModel::textures()
+};
+
+class GpuModel {
+ public:
+  explicit GpuModel(const scene::Model& model);
+
+  void bind() const { glBindVertexArray(vao_.id()); }
+  // Draws one submesh (the VAO must be bound).
+  void draw(const scene::Submesh& submesh) const;
+  void draw_all() const;
+
+  const std::vector<scene::Submesh>& submeshes() const { return submeshes_; }
+  const std::vector<GpuMaterial>& materials() const { return materials_; }
+  GLuint texture(int index) const { return textures_[static_cast<std::size_t>(index)].id(); }
+  bool has_textures() const { return !textures_.empty(); }
+  const scene::Bounds& bounds() const { return bounds_; }
+  std::size_t gpu_bytes() const { return gpu_bytes_; }
+
+ private:
+  gpu::VertexArray vao_;
+  gpu::Buffer vertices_;
+  gpu::Buffer indices_;
+  std::vector<gpu::Texture> textures_;
+  std::vector<GpuMaterial> materials_;
+  std::vector<scene::Submesh> submeshes_;
+  scene::Bounds bounds_;
+  std::size_t index_count_ = 0;
+  std::size_t gpu_bytes_ = 0;
+};
+
+}  // namespace toond::render

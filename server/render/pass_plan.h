@@ -1,0 +1,40 @@
+#pragma once
+// The pass plan: which passes run and which shader features they need, as a
+// pure function of (parameters, model). Nothing is drawn that would not change
+// the image: no outline pass at width 0 or when disabled, no texture sampling
+// for a model without textures, no resolve without MSAA. Unit-tested without GL.
+#include <string>
+#include <vector>
+
+#include "render/render_params.h"
+
+namespace toond::render {
+
+enum class Pass {
+  Main,         // cel/phong/flat shading of the model, marks the stencil
+  HullOutline,  // inverted hull outside the stencil mark
+  Resolve,      // multisample resolve
+  Readback,     // pixels back to the CPU
+};
+const char* pass_name(Pass pass);
+
+// What the plan needs to know about a model.
+struct ModelTraits {
+  bool has_textures = false;
+};
+
+struct PassPlan {
+  std::vector<Pass> passes;
+  // #defines shared by every main-pass program of this render.
+  std::vector<std::string> main_defines;
+  bool sample_textures = false;
+  int samples = 1;
+
+  bool has(Pass pass) const;
+  // The passes as a comma-separated list, e.g. for the Server-Timing header.
+  std::string describe() const;
+};
+
+PassPlan plan_passes(const RenderParams& params, const ModelTraits& model);
+
+}  // namespace toond::render

@@ -1,0 +1,150 @@
+#include "render/render_service.h"
+
+#include <list>
+#include <unordered_map>
+
+#include "gpu/gpu_error.h"
+#include "gpu/program_cache.h"
+#include "render/gpu_model.h"
+#include "toond_shader_files.h"
+
+namespace toond::render {
+namespace {
+
+std::string embedded_shader(const std::string& name) {
+  const std::string_view text = toond::shader_files::find(name);
+  if (text.empty()) throw gpu::GpuError("no embedded shader named " + name);
+  return std::string(text);
+}
+
+// Most recently used models stay on the GPU; the least recently used one is
+// dropped when the cache is full.
+class GpuModelCache {
+ public:
+  explicit GpuModelCache(std::size_t capacity) : capacity_(capacity) {}
+
+  const GpuModel& get(const std::string& key, const scene::Model& model) {
+    auto it = index_.find(key);
+    if (it != index_.end()) {
+      order_.splice(order_.begin(), order_, it->second);
+      return *it->second->second;
+    }
+    auto gpu_model = std::make_unique<GpuModel>(model);
+    order_.emplace_front(key, std::move(gpu_model));
+    index_[key] = order_.begin();
+    while (order_.size() > capacity_) {
+      index_.erase(order_.back().first);
+      order_.pop_back();
+    }
+    return *order_.front().second;
+  }
+
+  void forget(const std::string& key) {
+    auto it = index_.find(key);
+    if (it == index_.end()) return;
+    order_.erase(it->second);
+    index_.erase(it);
+  }
+
+ private:
+  using Entry = std::pair<std::string, std::unique_ptr<GpuModel>>;
+  std::size_t capacity_;
+  std::list<Entry> order_;
+  std::unordered_map<std::string, std::list<Entry>::iterator> index_;
+};
+
+}  // namespace
+
+RenderService::RenderService(const Options& options) : options_(options) {
+  std::promise<void> started;
+  std::future<void> ready = started.get_future();
+  thread_ = std::thread(&RenderService::run, this, std::move(started));
+  try {
+    ready.get();
+  } catch (...) {
+    thread_.join();
+    throw;
+  }
+}
+
+RenderService::~RenderService() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  if (thread_.joinable()) thread_.join();
+}
+
+void RenderService::push(Task task, bool bounded) {
+  {
+    std::lock_guard lock(mutex_);
+    if (bounded && queue_.size() >= options_.queue_capacity) throw QueueFull();
+    queue_.push_back(std::move(task));
+  }
+  wake_.notify_one();
+}
+
+std::future<RenderOutput> RenderService::submit(RenderJob job) {
+  Task task;
+  task.job = std::move(job);
+  auto future = task.promise.get_future();
+  push(std::move(task), true);
+  return future;
+}
+
+void RenderService::forget(const std::string& model_key) {
+  Task task;
+  task.forget_key = model_key;
+  push(std::move(task), false);
+}
+
+std::size_t RenderService::queue_depth() const {
+  std::lock_guard lock(mutex_);
+  return queue_.size();
+}
+
+void RenderService::run(std::promise<void> started) {
+  std::optional<gpu::EglContext> context;
+  try {
+    context.emplace(gpu::EglContext::Options{options_.gpu_index});
+    gl_info_ = context->info();
+  } catch (...) {
+    started.set_exception(std::current_exception());
+    return;
+  }
+  {
+    gpu::ProgramCache programs(embedded_shader);
+    GpuModelCache models(options_.gpu_model_capacity);
+    Renderer renderer(programs);
+    started.set_value();
+
+    for (;;) {
+      Task task;
+      {
+        std::unique_lock lock(mutex_);
+        wake_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+        // Work already accepted is finished before the thread stops.
+        if (queue_.empty()) break;
+        task = std::move(queue_.front());
+        queue_.pop_front();
+      }
+      if (!task.job) {
+        models.forget(task.forget_key);
+        continue;
+      }
+      try {
+        const GpuModel& gpu_model = models.get(task.job->model_key, *task.job->model);
+        task.promise.set_value(renderer.render(gpu_model, task.job->params));
+      } catch (...) {
+        // A failed render fails that request only; drain GL errors so the
+        // next one starts clean.
+        while (glGetError() != GL_NO_ERROR) {
+        }
+        task.promise.set_exception(std::current_exception());
+      }
+    }
+  }  // GL objects die here, while the context is still current
+}
+
+}  // namespace toond::render

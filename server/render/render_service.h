@@ -1,0 +1,75 @@
+#pragma once
+// The render thread. It alone owns the EGL context and every GL object; HTTP
+// handlers hand it jobs through a bounded queue and wait on a future. A full
+// queue refuses at once (the caller answers 503 + Retry-After) instead of
+// letting requests pile up behind a slow render.
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "gpu/egl_context.h"
+#include "render/render_params.h"
+#include "render/renderer.h"
+#include "scene/model.h"
+
+namespace toond::render {
+
+struct RenderJob {
+  std::string model_key;  // GPU cache key: the model id, or "demo"
+  std::shared_ptr<const scene::Model> model;
+  RenderParams params;
+};
+
+// Thrown by submit() when the queue is full.
+class QueueFull : public std::runtime_error {
+ public:
+  QueueFull() : std::runtime_error("render queue is full") {}
+};
+
+class RenderService {
+ public:
+  struct Options {
+    std::optional<int> gpu_index;
+    std::size_t queue_capacity = 32;
+    std::size_t gpu_model_capacity = 8;  // models kept on the GPU
+  };
+
+  // Starts the thread and waits until the context exists. Throws GpuError
+  // when no context can be made.
+  explicit RenderService(const Options& options);
+  ~RenderService();
+  RenderService(const RenderService&) = delete;
+  RenderService& operator=(const RenderService&) = delete;
+
+  const gpu::GlInfo& gl_info() const { return gl_info_; }
+
+  std::future<RenderOutput> submit(RenderJob job);
+  // Drops the model's GPU copy (after DELETE /models/{id}).
+  void forget(const std::string& model_key);
+  std::size_t queue_depth() const;
+
+ private:
+  struct Task {
+    std::optional<RenderJob> job;  // empty: a forget request
+    std::string forget_key;
+    std::promise<RenderOutput> promise;
+  };
+  void run(std::promise<void> started);
+  void push(Task task, bool bounded);
+
+  Options options_;
+  gpu::GlInfo gl_info_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::deque<Task> queue_;
+  bool stopping_ = false;
+  std::thread thread_;
+};
+
+}  // namespace toond::render

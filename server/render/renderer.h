@@ -1,0 +1,40 @@
+#pragma once
+// Runs a pass plan for one model and returns the image. Render thread only.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gpu/program_cache.h"
+#include "gpu/render_target.h"
+#include "image/image.h"
+#include "render/gpu_model.h"
+#include "render/pass_plan.h"
+#include "render/render_params.h"
+
+namespace toond::render {
+
+struct PassTiming {
+  std::string pass;
+  double ms = 0;  // CPU wall time for issuing + (for readback) waiting
+};
+
+struct RenderOutput {
+  image::Image image;
+  std::vector<PassTiming> timings;
+  std::string plan;  // PassPlan::describe()
+};
+
+class Renderer {
+ public:
+  explicit Renderer(gpu::ProgramCache& programs) : programs_(programs) {}
+
+  RenderOutput render(const GpuModel& model, const RenderParams& params);
+
+ private:
+  gpu::RenderTarget& target_for(int width, int height, int samples);
+
+  gpu::ProgramCache& programs_;
+  std::optional<gpu::RenderTarget> target_;  // reused while the size stays the same
+};
+
+}  // namespace toond::render

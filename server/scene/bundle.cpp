@@ -1,0 +1,123 @@
+#include "scene/bundle.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "scene/import_error.h"
+
+namespace toond::scene {
+namespace {
+
+// Longer names cannot be stored by common file systems, and the store writes
+// bundle paths to disk as they are.
+constexpr std::size_t kMaxSegment = 255;
+constexpr std::size_t kMaxPath = 1024;
+
+char ascii_lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+
+bool iequals(std::string_view a, std::string_view b) {
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return ascii_lower(x) == ascii_lower(y); });
+}
+
+// After '\\' has become '/': a root or a drive letter ("C:x" is
+// drive-relative on Windows, still another machine's path).
+bool is_absolute(std::string_view p) {
+  if (!p.empty() && p.front() == '/') return true;
+  return p.size() >= 2 && p[1] == ':' && ((p[0] >= 'A' && p[0] <= 'Z') || (p[0] >= 'a' && p[0] <= 'z'));
+}
+
+std::string_view folder_of(std::string_view path) {
+  const auto slash = path.rfind('/');
+  return slash == std::string_view::npos ? std::string_view{} : path.substr(0, slash);
+}
+
+}  // namespace
+
+std::optional<std::string> normalize_path(std::string_view path) {
+  if (path.empty() || path.size() > kMaxPath) return std::nullopt;
+  if (path.find('\0') != std::string_view::npos) return std::nullopt;
+  std::string p(path);
+  std::replace(p.begin(), p.end(), '\\', '/');
+  if (is_absolute(p)) return std::nullopt;
+
+  std::vector<std::string_view> segments;
+  std::string_view rest(p);
+  while (!rest.empty()) {
+    const auto slash = rest.find('/');
+    const std::string_view seg = rest.substr(0, slash);
+    rest = slash == std::string_view::npos ? std::string_view{} : rest.substr(slash + 1);
+    if (seg.empty() || seg == ".") continue;
+    if (seg == "..") {
+      if (segments.empty()) return std::nullopt;
+      segments.pop_back();
+      continue;
+    }
+    if (seg.size() > kMaxSegment) return std::nullopt;
+    segments.push_back(seg);
+  }
+  if (segments.empty()) return std::nullopt;
+
+  std::string out;
+  for (const auto seg : segments) {
+    if (!out.empty()) out += '/';
+    out += seg;
+  }
+  return out;
+}
+
+void Bundle::add(std::string_view path, std::string content) {
+  auto normal = normalize_path(path);
+  // The raw name may hold a NUL; keep the reported name printable.
+  std::string shown(path.substr(0, path.find('\0')));
+  if (!normal) {
+    throw ImportError(shown, "file name '" + shown +
+                                 "' is not a safe relative path inside the bundle "
+                                 "(absolute, drive letter, '..' above the root, NUL byte or empty)");
+  }
+  const std::string& name = *normal;
+  if (files_.count(name) != 0) {
+    throw ImportError(name, "file '" + name + "' appears twice in the bundle");
+  }
+  // A path cannot be both a file and a folder once the store writes it out.
+  for (std::string_view parent = folder_of(name); !parent.empty(); parent = folder_of(parent)) {
+    if (files_.count(std::string(parent)) != 0) {
+      throw ImportError(name, "file '" + name + "' would lie inside file '" + std::string(parent) + "'");
+    }
+  }
+  const std::string as_folder = name + '/';
+  const auto next = files_.lower_bound(as_folder);
+  if (next != files_.end() && next->first.compare(0, as_folder.size(), as_folder) == 0) {
+    throw ImportError(name, "file '" + name + "' is also a folder holding '" + next->first + "'");
+  }
+  files_.emplace(name, std::move(content));
+}
+
+std::optional<std::string> Bundle::resolve(std::string_view from, std::string_view reference) const {
+  if (reference.empty()) return std::nullopt;
+  std::string ref(reference);
+  std::replace(ref.begin(), ref.end(), '\\', '/');
+  // An absolute reference must not be reinterpreted relative to the folder.
+  if (is_absolute(ref) || ref.find('\0') != std::string::npos) return std::nullopt;
+  const std::string_view folder = folder_of(from);
+  const auto normal = normalize_path(folder.empty() ? ref : std::string(folder) + '/' + ref);
+  if (!normal) return std::nullopt;
+  if (files_.count(*normal) != 0) return *normal;
+  for (const auto& [name, content] : files_) {
+    if (iequals(name, *normal)) return name;
+  }
+  return std::nullopt;
+}
+
+const std::string* Bundle::find(std::string_view path) const {
+  const auto it = files_.find(std::string(path));
+  return it == files_.end() ? nullptr : &it->second;
+}
+
+std::size_t Bundle::total_bytes() const {
+  std::size_t total = 0;
+  for (const auto& [name, content] : files_) total += content.size();
+  return total;
+}
+
+}  // namespace toond::scene

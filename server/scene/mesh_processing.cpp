@@ -1,0 +1,136 @@
+#include "scene/mesh_processing.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <unordered_map>
+
+namespace toond::scene {
+namespace {
+
+// Relative to the squared longest edge: below this the cross product is
+// rounding noise and the face normal would point anywhere.
+constexpr double kDegenerateRatio = 1e-10;
+
+struct PositionKey {
+  std::array<std::uint32_t, 3> bits;
+  bool operator==(const PositionKey&) const = default;
+};
+
+struct PositionKeyHash {
+  std::size_t operator()(const PositionKey& k) const noexcept {
+    std::uint64_t h = 1469598103934665603ull;
+    for (const auto b : k.bits) h = (h ^ b) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+PositionKey key_of(const glm::vec3& p) {
+  PositionKey key{};
+  for (int i = 0; i < 3; ++i) {
+    const float value = p[i] + 0.0f;  // folds -0 into +0
+    std::memcpy(&key.bits[static_cast<std::size_t>(i)], &value, sizeof value);
+  }
+  return key;
+}
+
+glm::vec3 to_unit_float(const glm::dvec3& v) {
+  const double len = glm::length(v);
+  if (!(len > 0.0) || !std::isfinite(len)) return glm::vec3(0.0f);
+  return glm::vec3(v / len);
+}
+
+}  // namespace
+
+bool is_degenerate_triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const double longest = std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
+  if (!(longest > 0.0) || !std::isfinite(longest)) return true;
+  const double doubled_area = glm::length(glm::cross(b - a, c - a));
+  return !(doubled_area > kDegenerateRatio * longest);
+}
+
+glm::dvec3 triangle_normal(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const glm::dvec3 n = glm::cross(b - a, c - a);
+  const double len = glm::length(n);
+  return len > 0.0 && std::isfinite(len) ? n / len : glm::dvec3(0.0);
+}
+
+glm::dvec3 triangle_angles(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  // atan2 of |cross| and dot stays accurate for angles near 0 and pi, where
+  // acos of a normalised dot product loses most of its digits.
+  const auto angle = [](const glm::dvec3& u, const glm::dvec3& v) {
+    return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
+  };
+  return {angle(b - a, c - a), angle(c - b, a - b), angle(a - c, b - c)};
+}
+
+std::vector<std::uint32_t> group_by_position(std::span<const glm::vec3> positions) {
+  std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> ids;
+  ids.reserve(positions.size());
+  std::vector<std::uint32_t> groups(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    const auto [it, inserted] = ids.emplace(key_of(positions[v]), static_cast<std::uint32_t>(ids.size()));
+    groups[v] = it->second;
+  }
+  return groups;
+}
+
+std::vector<glm::vec3> compute_grouped_normals(std::span<const glm::vec3> positions,
+                                               std::span<const std::uint32_t> indices,
+                                               std::span<const std::uint32_t> group_of_vertex,
+                                               std::span<const glm::vec3> fallback) {
+  const std::uint32_t group_count =
+      group_of_vertex.empty() ? 0u : *std::max_element(group_of_vertex.begin(), group_of_vertex.end()) + 1u;
+  std::vector<glm::dvec3> sums(group_count, glm::dvec3(0.0));
+  std::vector<glm::dvec3> first_face(positions.size(), glm::dvec3(0.0));
+
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const std::uint32_t i[3] = {indices[t], indices[t + 1], indices[t + 2]};
+    const glm::dvec3 p[3] = {positions[i[0]], positions[i[1]], positions[i[2]]};
+    const glm::dvec3 n = triangle_normal(p[0], p[1], p[2]);
+    if (n == glm::dvec3(0.0)) continue;
+    const glm::dvec3 angles = triangle_angles(p[0], p[1], p[2]);
+    for (int k = 0; k < 3; ++k) {
+      sums[group_of_vertex[i[k]]] += n * angles[k];
+      if (first_face[i[k]] == glm::dvec3(0.0)) first_face[i[k]] = n;
+    }
+  }
+
+  std::vector<glm::vec3> normals(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    glm::vec3 n = to_unit_float(sums[group_of_vertex[v]]);
+    if (n == glm::vec3(0.0f) && v < fallback.size()) n = to_unit_float(glm::dvec3(fallback[v]));
+    if (n == glm::vec3(0.0f)) n = to_unit_float(first_face[v]);
+    if (n == glm::vec3(0.0f)) n = glm::vec3(0.0f, 1.0f, 0.0f);
+    normals[v] = n;
+  }
+  return normals;
+}
+
+std::vector<glm::vec3> compute_angle_weighted_normals(std::span<const glm::vec3> positions,
+                                                      std::span<const std::uint32_t> indices) {
+  std::vector<std::uint32_t> own(positions.size());
+  for (std::size_t v = 0; v < own.size(); ++v) own[v] = static_cast<std::uint32_t>(v);
+  return compute_grouped_normals(positions, indices, own);
+}
+
+std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positions,
+                                               std::span<const std::uint32_t> indices,
+                                               std::span<const glm::vec3> shading_normals) {
+  const auto groups = group_by_position(positions);
+  return compute_grouped_normals(positions, indices, groups, shading_normals);
+}
+
+Bounds compute_bounds(std::span<const glm::vec3> positions) {
+  if (positions.empty()) return {};
+  Bounds b{positions.front(), positions.front()};
+  for (const auto& p : positions) {
+    b.min = glm::min(b.min, p);
+    b.max = glm::max(b.max, p);
+  }
+  return b;
+}
+
+}  // namespace toond::scene

@@ -1,0 +1,60 @@
+#pragma once
+// Content-addressed store of uploaded bundles under --data-dir. The id is a
+// hash of the bundle's paths and bytes, so the same bundle always gets the
+// same id. Every model is written to a temporary folder, fsynced and renamed
+// into place, so a crash never leaves a half-written model behind.
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/bundle.h"
+
+namespace toond::scene {
+
+// What an upload answer and GET /models report about a model.
+struct ModelInfo {
+  std::string id;
+  std::size_t triangles = 0;
+  std::size_t materials = 0;
+  std::size_t textures = 0;
+  std::size_t bytes = 0;
+  std::vector<std::string> files;
+  std::vector<std::string> warnings;
+
+  nlohmann::json to_json() const;
+  static ModelInfo from_json(const nlohmann::json& j);
+};
+
+// The content-addressed id of a bundle: 32 hex digits of SHA-256 over the
+// sorted (path, size, bytes) records.
+std::string bundle_id(const Bundle& bundle);
+
+class ModelStore {
+ public:
+  // Opens (creating when needed) DIR/models. Leftover temporary folders from
+  // an interrupted upload are removed.
+  explicit ModelStore(std::filesystem::path data_dir);
+
+  struct PutResult {
+    ModelInfo info;
+    bool created = false;  // false: the same bundle was already stored
+  };
+  // Imports the bundle (throws ImportError when it is not a model), then
+  // stores it. Thread-safe.
+  PutResult put(const Bundle& bundle);
+
+  std::optional<ModelInfo> info(const std::string& id) const;
+  std::optional<Bundle> load(const std::string& id) const;
+  std::vector<ModelInfo> list() const;
+  bool remove(const std::string& id);
+
+ private:
+  std::filesystem::path root_;
+  mutable std::mutex mutex_;
+};
+
+}  // namespace toond::scene

@@ -1,0 +1,114 @@
+#include "scene/obj_text.h"
+
+namespace toond::scene {
+namespace {
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (is_blank(s.front()) || s.front() == '\n')) s.remove_prefix(1);
+  while (!s.empty() && (is_blank(s.back()) || s.back() == '\n')) s.remove_suffix(1);
+  return s;
+}
+
+// Statement keyword of a line and what follows it, leading blanks skipped.
+bool split_statement(std::string_view line, std::string_view& keyword, std::string_view& rest) {
+  std::size_t i = 0;
+  while (i < line.size() && is_blank(line[i])) ++i;
+  std::size_t end = i;
+  while (end < line.size() && !is_blank(line[end])) ++end;
+  if (end == i) return false;
+  keyword = line.substr(i, end - i);
+  rest = line.substr(end);
+  return true;
+}
+
+std::string fix_corners(std::string_view keyword, std::string_view rest) {
+  std::string out(keyword);
+  std::size_t i = 0;
+  while (i < rest.size()) {
+    while (i < rest.size() && is_blank(rest[i])) ++i;
+    std::size_t end = i;
+    while (end < rest.size() && !is_blank(rest[end])) ++end;
+    if (end == i) break;
+    std::string_view corner = rest.substr(i, end - i);
+    while (!corner.empty() && corner.back() == '/') corner.remove_suffix(1);
+    out += ' ';
+    out += corner;
+    i = end;
+  }
+  return out;
+}
+
+bool needs_corner_fix(std::string_view rest) {
+  for (std::size_t i = 0; i < rest.size(); ++i) {
+    if (rest[i] == '/' && (i + 1 == rest.size() || is_blank(rest[i + 1]))) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::string material_alias(std::string_view name) {
+  name = trim(name);
+  std::string alias;
+  bool in_blank = false;
+  for (const char c : name) {
+    if (is_blank(c)) {
+      if (!in_blank) alias += '\x1f';
+      in_blank = true;
+    } else {
+      alias += c;
+      in_blank = false;
+    }
+  }
+  return alias;
+}
+
+std::string prepare_obj_text(std::string_view text) {
+  std::string out;
+  out.reserve(text.size() + text.size() / 64);
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    // Gather one logical line, following '\' continuations.
+    std::string joined;
+    std::size_t consumed_lines = 0;
+    bool continued = true;
+    while (continued && pos < text.size()) {
+      const std::size_t nl = text.find('\n', pos);
+      const std::size_t end = nl == std::string_view::npos ? text.size() : nl;
+      std::string_view piece = text.substr(pos, end - pos);
+      pos = nl == std::string_view::npos ? text.size() : nl + 1;
+      ++consumed_lines;
+      std::string_view body = piece;
+      while (!body.empty() && is_blank(body.back())) body.remove_suffix(1);
+      continued = !body.empty() && body.back() == '\\' && body.front() != '#';
+      if (continued) {
+        joined.append(body.substr(0, body.size() - 1));
+        joined += ' ';
+      } else {
+        joined.append(piece);
+      }
+    }
+
+    std::string_view keyword;
+    std::string_view rest;
+    std::string_view line(joined);
+    if (split_statement(line, keyword, rest)) {
+      if ((keyword == "f" || keyword == "l" || keyword == "p") && needs_corner_fix(rest)) {
+        out += fix_corners(keyword, rest);
+      } else if (keyword == "usemtl" && material_alias(rest) != trim(rest)) {
+        out += "usemtl ";
+        out += material_alias(rest);
+      } else {
+        out += line;
+      }
+    } else {
+      out += line;
+    }
+    for (std::size_t i = 0; i < consumed_lines; ++i) out += '\n';
+  }
+  return out;
+}
+
+}  // namespace toond::scene

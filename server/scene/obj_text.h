@@ -1,0 +1,23 @@
+#pragma once
+// Rewrites of OBJ text that tinyobjloader would otherwise misread. They keep
+// the meaning and the line numbering of the file (so parser messages still
+// point at the right line).
+#include <string>
+#include <string_view>
+
+namespace toond::scene {
+
+// - A line ending in '\' continues on the next line (Rhino writes long faces
+//   so); the pieces are joined and blank lines keep the numbering.
+// - Empty index slots in f/l/p corners ("1//", "2/2/") are dropped; tinyobj
+//   would read them as index 0 and reject the file.
+// - `usemtl` names containing blanks become material_alias(name), since
+//   tinyobj keeps only the first word of a usemtl name but the whole line of
+//   a newmtl name.
+std::string prepare_obj_text(std::string_view text);
+
+// A single-token stand-in for a material name: trimmed, each run of blanks
+// replaced by one U+001F. Names without blanks are returned trimmed.
+std::string material_alias(std::string_view name);
+
+}  // namespace toond::scene

@@ -1,0 +1,25 @@
+#pragma once
+// Decoding of the image files a material names (PNG, JPEG, TGA, BMP, ...)
+// into the importer's RGBA8 textures.
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "scene/model.h"
+
+namespace toond::scene {
+
+// An upload is untrusted: the header is checked against these before any
+// pixel memory is allocated, so a tiny file cannot claim gigabytes.
+struct TextureLimits {
+  int max_dimension = 8192;
+  std::uint64_t max_pixels = 64ull * 1024 * 1024;
+};
+
+// Decodes `bytes` into an RGBA8 texture (colour left sRGB-encoded as stored;
+// 16-bit images are reduced to 8 bits). `path` is recorded in the result.
+// Throws std::runtime_error with a reason when the format is unknown, the
+// data is corrupt, or the image exceeds `limits`.
+Texture decode_texture(std::string_view bytes, const std::string& path, const TextureLimits& limits = {});
+
+}  // namespace toond::scene

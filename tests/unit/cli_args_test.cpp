@@ -1,0 +1,489 @@
+// The `toon` CLI without a daemon: argument parsing, --set against the
+// schema, bundle discovery on disk, and the wording of server errors.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bundle_scan.h"
+#include "cli_args.h"
+#include "param_schema.h"
+#include "reply.h"
+#include "support/shared_models.h"
+
+namespace toond::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using Args = std::vector<std::string>;
+
+const proto::ParamSchema& schema() { return proto::ParamSchema::render_params(); }
+
+Options parse(const Args& args, std::optional<std::string> env = std::nullopt) {
+  return parse_args(args, env);
+}
+
+// The UsageError message `f` throws, or "" when it throws none.
+template <typename F>
+std::string usage_error(F&& f) {
+  try {
+    f();
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool contains(const std::string& haystack, const std::string& needle) {
+  return haystack.find(needle) != std::string::npos;
+}
+
+// ---------------------------------------------------------------- --server
+
+TEST(CliArgs, ServerBeforeVerb) {
+  const Options o = parse({"--server", "http://10.0.0.5:9000", "health"});
+  EXPECT_EQ(o.verb, Verb::health);
+  EXPECT_EQ(o.server, "http://10.0.0.5:9000");
+}
+
+TEST(CliArgs, ServerAfterVerbAndEqualsForm) {
+  const Options o = parse({"render", "--model", "0123456789abcdef", "-o", "x.png",
+                           "--server=http://renderhost:81"});
+  EXPECT_EQ(o.verb, Verb::render);
+  EXPECT_EQ(o.server, "http://renderhost:81");
+}
+
+TEST(CliArgs, ServerDefaultsWithoutFlagOrEnvironment) {
+  EXPECT_EQ(parse({"health"}).server, "http://127.0.0.1:8080");
+  EXPECT_EQ(parse({"health"}, std::string()).server, "http://127.0.0.1:8080");
+}
+
+TEST(CliArgs, ServerFromEnvironmentUnlessFlagGiven) {
+  EXPECT_EQ(parse({"health"}, "http://env-host:7000").server, "http://env-host:7000");
+  EXPECT_EQ(parse({"health", "--server", "http://flag:1"}, "http://env-host:7000").server,
+            "http://flag:1");
+}
+
+TEST(CliArgs, ToondUrlIsReadFromTheProcessEnvironment) {
+  const char* saved = std::getenv("TOOND_URL");
+  const std::optional<std::string> restore = saved ? std::optional<std::string>(saved) : std::nullopt;
+  ::setenv("TOOND_URL", "http://from-env:1234", 1);
+  EXPECT_EQ(parse({"health"}, server_from_environment()).server, "http://from-env:1234");
+  ::setenv("TOOND_URL", "", 1);
+  EXPECT_EQ(server_from_environment(), std::nullopt);
+  ::unsetenv("TOOND_URL");
+  EXPECT_EQ(server_from_environment(), std::nullopt);
+  if (restore) ::setenv("TOOND_URL", restore->c_str(), 1);
+}
+
+TEST(CliArgs, TrailingSlashOfServerIsDropped) {
+  EXPECT_EQ(parse({"health", "--server", "http://h:1/"}).server, "http://h:1");
+}
+
+TEST(CliArgs, BadServerUrlsAreUsageErrors) {
+  for (const char* url : {"ftp://h", "127.0.0.1:8080", "http://", "http://h:99999", "http://h:x",
+                          "http://h:8080/?q=1"}) {
+    EXPECT_FALSE(usage_error([&] { parse({"health", "--server", url}); }).empty()) << url;
+  }
+  EXPECT_FALSE(usage_error([] { parse({"health"}, "not a url"); }).empty());
+}
+
+TEST(CliArgs, ServerUrlKeepsAPathPrefixForProxies) {
+  const ServerUrl u = parse_server_url("https://example.org/toond/");
+  EXPECT_EQ(u.scheme_host_port, "https://example.org");
+  EXPECT_EQ(u.base_path, "/toond");
+  const ServerUrl v = parse_server_url("http://[::1]:8080");
+  EXPECT_EQ(v.scheme_host_port, "http://[::1]:8080");
+  EXPECT_EQ(v.base_path, "");
+}
+
+TEST(CliArgs, ServerGivenTwiceIsRejected) {
+  EXPECT_TRUE(contains(usage_error([] { parse({"--server", "http://a:1", "health", "--server",
+                                               "http://b:2"}); }),
+                       "twice"));
+}
+
+// ---------------------------------------------------------------- verbs
+
+TEST(CliArgs, NoVerbOrUnknownVerbOrOptionIsRejected) {
+  EXPECT_TRUE(contains(usage_error([] { parse({}); }), "no command"));
+  EXPECT_TRUE(contains(usage_error([] { parse({"rendr"}); }), "unknown command 'rendr'"));
+  EXPECT_TRUE(contains(usage_error([] { parse({"health", "--frobnicate"}); }), "--frobnicate"));
+}
+
+TEST(CliArgs, FlagsOfOneVerbAreRejectedOnAnother) {
+  EXPECT_TRUE(contains(usage_error([] { parse({"health", "-o", "x.png"}); }), "health does not take -o"));
+  EXPECT_TRUE(contains(usage_error([] { parse({"upload", "a.obj", "--set", "width=5"}); }),
+                       "--set"));
+  EXPECT_TRUE(contains(usage_error([] { parse({"render", "-q", "-o", "x.png"}); }), "--quiet"));
+  EXPECT_FALSE(usage_error([] { parse({"health", "extra"}); }).empty());
+}
+
+TEST(CliArgs, UploadTakesExactlyOnePath) {
+  const Options o = parse({"upload", "-q", "models/spot.obj"});
+  EXPECT_EQ(o.verb, Verb::upload);
+  EXPECT_EQ(o.obj_path, "models/spot.obj");
+  EXPECT_TRUE(o.quiet);
+  EXPECT_FALSE(usage_error([] { parse({"upload"}); }).empty());
+  EXPECT_FALSE(usage_error([] { parse({"upload", "a.obj", "b.obj"}); }).empty());
+}
+
+TEST(CliArgs, RenderRequiresOutput) {
+  EXPECT_TRUE(contains(usage_error([] { parse({"render", "spot.obj"}); }), "-o"));
+  EXPECT_TRUE(contains(usage_error([] { parse({"render", "-o"}); }), "needs a value"));
+}
+
+TEST(CliArgs, RenderRejectsPathTogetherWithModel) {
+  EXPECT_TRUE(contains(
+      usage_error([] { parse({"render", "spot.obj", "--model", "0123456789abcdef", "-o", "x.png"}); }),
+      "not both"));
+}
+
+TEST(CliArgs, RenderForms) {
+  const Options demo = parse({"render", "-o", "demo.png"});
+  EXPECT_TRUE(demo.obj_path.empty());
+  EXPECT_TRUE(demo.model_id.empty());
+  EXPECT_EQ(demo.output, "demo.png");
+
+  const Options local = parse({"render", "spot/spot.obj", "--output=spot.png", "--params", "p.json"});
+  EXPECT_EQ(local.obj_path, "spot/spot.obj");
+  EXPECT_EQ(local.output, "spot.png");
+  EXPECT_EQ(local.params_file, "p.json");
+
+  const Options piped = parse({"render", "--model=0123456789abcdef", "-o", "-"});
+  EXPECT_EQ(piped.model_id, "0123456789abcdef");
+  EXPECT_EQ(piped.output, "-");
+
+  // After `--` a name that starts with '-' is a path, not an option.
+  EXPECT_EQ(parse({"render", "-o", "x.png", "--", "-odd.obj"}).obj_path, "-odd.obj");
+}
+
+TEST(CliArgs, SetNeedsKeyEqualsValue) {
+  EXPECT_TRUE(contains(usage_error([] { parse({"render", "-o", "x", "--set", "outline.width"}); }),
+                       "key.sub=value"));
+  EXPECT_FALSE(usage_error([] { parse({"render", "-o", "x", "--set", "=3"}); }).empty());
+  const Options o = parse({"render", "-o", "x", "--set=background=[1,1,1]"});
+  ASSERT_EQ(o.sets.size(), 1u);
+  EXPECT_EQ(o.sets[0].first, "background");
+  EXPECT_EQ(o.sets[0].second, "[1,1,1]");
+}
+
+TEST(CliArgs, HelpAndVersionNeedNothingElse) {
+  Options o = parse({"--help"});
+  EXPECT_TRUE(o.help);
+  EXPECT_EQ(o.verb, Verb::none);
+  o = parse({"render", "-h"});
+  EXPECT_TRUE(o.help);
+  EXPECT_EQ(o.verb, Verb::render);
+  o = parse({"help", "upload"});
+  EXPECT_TRUE(o.help);
+  EXPECT_EQ(o.verb, Verb::upload);
+  // A broken TOOND_URL must not stand in the way of reading the help.
+  EXPECT_TRUE(parse({"--help"}, "garbage").help);
+  EXPECT_TRUE(parse({"--version"}).version);
+}
+
+TEST(CliArgs, UsageTextListsVerbsAndFlags) {
+  const std::string all = usage_text(Verb::none);
+  for (const char* word : {"health", "upload", "render", "--server", "TOOND_URL", "--help",
+                           "--version"}) {
+    EXPECT_TRUE(contains(all, word)) << word;
+  }
+  const std::string render = usage_text(Verb::render);
+  for (const char* word : {"--model", "--params", "--set", "-o"}) {
+    EXPECT_TRUE(contains(render, word)) << word;
+  }
+  EXPECT_TRUE(contains(usage_text(Verb::upload), "--quiet"));
+}
+
+// ---------------------------------------------------------------- render parameters
+
+TEST(RenderParams, RepeatedSetsMergeAndLaterOnesWin) {
+  const Options o = parse({"render", "-o", "x.png", "--set", "outline.width=3", "--set",
+                           "outline.color=[1,0,0]", "--set", "shading.steps=5", "--set",
+                           "outline.width=4.5", "--set", "outline.enabled=false"});
+  const json p = build_render_params(o, schema());
+  EXPECT_EQ(p, json::parse(R"({"outline":{"width":4.5,"color":[1,0,0],"enabled":false},
+                               "shading":{"steps":5}})"));
+}
+
+TEST(RenderParams, UnknownKeyIsRejectedNamingIt) {
+  const Options o = parse({"render", "-o", "x.png", "--set", "outline.widht=3"});
+  const std::string message = usage_error([&] { build_render_params(o, schema()); });
+  EXPECT_TRUE(contains(message, "outline.widht")) << message;
+  EXPECT_TRUE(contains(message, "unknown")) << message;
+
+  const Options top = parse({"render", "-o", "x.png", "--set", "colour=1"});
+  EXPECT_TRUE(contains(usage_error([&] { build_render_params(top, schema()); }), "colour"));
+}
+
+TEST(RenderParams, BadValueTypeIsRejectedNamingTheKey) {
+  for (const Args& args : std::vector<Args>{{"--set", "outline.width=thick"},
+                                            {"--set", "shading.steps=2.5"},
+                                            {"--set", "outline.enabled=maybe"},
+                                            {"--set", "background=[1,1"}}) {
+    Args full = {"render", "-o", "x.png"};
+    full.insert(full.end(), args.begin(), args.end());
+    const Options o = parse(full);
+    const std::string message = usage_error([&] { build_render_params(o, schema()); });
+    const std::string key = o.sets[0].first;
+    EXPECT_TRUE(contains(message, key)) << args[1] << " -> " << message;
+  }
+}
+
+TEST(RenderParams, OutOfRangeAndEnumAreCaughtLocally) {
+  const Options wide = parse({"render", "-o", "x.png", "--set", "outline.width=100"});
+  EXPECT_TRUE(contains(usage_error([&] { build_render_params(wide, schema()); }), "/outline/width"));
+  const Options msaa = parse({"render", "-o", "x.png", "--set", "msaa=3"});
+  EXPECT_TRUE(contains(usage_error([&] { build_render_params(msaa, schema()); }), "/msaa"));
+  const Options mode = parse({"render", "-o", "x.png", "--set", "shading.mode=watercolor"});
+  EXPECT_TRUE(contains(usage_error([&] { build_render_params(mode, schema()); }), "/shading/mode"));
+}
+
+TEST(RenderParams, SettingInsideTheDefaultLightKeepsItsOtherFields) {
+  const Options o = parse({"render", "-o", "x.png", "--set", "lights.0.intensity=2"});
+  const json p = build_render_params(o, schema());
+  ASSERT_TRUE(p["lights"].is_array());
+  ASSERT_EQ(p["lights"].size(), 1u);
+  EXPECT_EQ(p["lights"][0]["type"], "directional");
+  EXPECT_TRUE(p["lights"][0].contains("direction"));
+  EXPECT_EQ(p["lights"][0]["intensity"], 2.0);
+}
+
+TEST(RenderParams, ModelIdIsSetAndChecked) {
+  const Options o = parse({"render", "--model", "0123456789abcdef0123", "-o", "x.png"});
+  EXPECT_EQ(build_render_params(o, schema())["model"], "0123456789abcdef0123");
+  const Options bad = parse({"render", "--model", "not-an-id", "-o", "x.png"});
+  EXPECT_TRUE(contains(usage_error([&] { build_render_params(bad, schema()); }), "/model"));
+}
+
+class TempDir {
+ public:
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() /
+            ("toon-cli-test-" + std::to_string(::getpid()) + "-" + info->name());
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  const fs::path& path() const { return path_; }
+  fs::path write(const std::string& relative, const std::string& content) const {
+    const fs::path p = path_ / relative;
+    fs::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << content;
+    return p;
+  }
+
+ private:
+  fs::path path_;
+};
+
+TEST(RenderParams, ParamsFileIsTheBaseAndSetsOverrideIt) {
+  TempDir dir;
+  const fs::path file = dir.write("p.json", R"({"width":320,"outline":{"width":1,"color":[0,0,1]}})");
+  const Options o = parse({"render", "--params", file.string(), "--set", "outline.width=6", "-o", "x.png"});
+  const json p = build_render_params(o, schema());
+  EXPECT_EQ(p["width"], 320);
+  EXPECT_EQ(p["outline"]["width"], 6.0);
+  EXPECT_EQ(p["outline"]["color"], json::parse("[0,0,1]"));
+}
+
+TEST(RenderParams, BrokenParamsFilesAreUsageErrors) {
+  TempDir dir;
+  const auto message_for = [&](const std::string& content) {
+    const fs::path file = dir.write("p.json", content);
+    const Options o = parse({"render", "--params", file.string(), "-o", "x.png"});
+    return usage_error([&] { build_render_params(o, schema()); });
+  };
+  EXPECT_TRUE(contains(message_for("{\"width\": 320,"), "not valid JSON"));
+  EXPECT_TRUE(contains(message_for("[1,2,3]"), "JSON object"));
+  EXPECT_TRUE(contains(message_for(R"({"outline":{"thickness":2}})"), "/outline/thickness"));
+
+  const Options missing = parse({"render", "--params", (dir.path() / "nope.json").string(), "-o", "x"});
+  EXPECT_TRUE(contains(usage_error([&] { build_render_params(missing, schema()); }), "nope.json"));
+}
+
+TEST(RenderParams, ModelInParamsConflictsWithALocalObj) {
+  TempDir dir;
+  const fs::path file = dir.write("p.json", R"({"model":"0123456789abcdef"})");
+  const Options o = parse({"render", "spot.obj", "--params", file.string(), "-o", "x.png"});
+  EXPECT_TRUE(contains(usage_error([&] { build_render_params(o, schema()); }), "drop one"));
+}
+
+// ---------------------------------------------------------------- bundle discovery
+
+std::vector<std::string> names(const BundleScan& scan) {
+  std::vector<std::string> out;
+  for (const BundleFile& f : scan.files) out.push_back(f.name);
+  return out;
+}
+
+bool has_warning(const BundleScan& scan, const std::string& needle) {
+  return std::any_of(scan.warnings.begin(), scan.warnings.end(),
+                     [&](const std::string& w) { return contains(w, needle); });
+}
+
+TEST(BundleScan, FindsMtlAndTexturesWithSubfoldersBackslashesAndCase) {
+  TempDir dir;
+  const fs::path root = dir.path() / "model";
+  dir.write("model/model.obj",
+            "# comment\r\nmtllib model.mtl\r\nmtllib missing.mtl\r\nv 0 0 0\r\nf 1 1 1\r\n");
+  dir.write("model/model.mtl",
+            "newmtl a\n"
+            "Kd 1 1 1\n"
+            "map_Kd Textures\\Color.PNG\n"        // backslash and wrong case
+            "map_Bump -bm 2 sub/normal.png\n"    // option before the name
+            "map_Ns -imfchan r spec.png -bm 1.5\n"  // option after the name
+            "bump texture 01.png\n"             // unescaped space
+            "  map_d ../secret.png\n"           // leaves the folder
+            "map_Ks /etc/passwd\n"              // absolute
+            "norm nothere.png\n"                // missing
+            "newmtl b\n"
+            "map_kd textures/color.png\n"       // same file again, other keyword case
+            "map_Ka ambient.png\n");            // not a texture toond uses
+  dir.write("model/textures/color.png", "colour");
+  dir.write("model/sub/normal.png", "normal");
+  dir.write("model/spec.png", "spec");
+  dir.write("model/texture 01.png", "spaced");
+  dir.write("model/ambient.png", "ambient");
+  dir.write("secret.png", "must never be sent");
+
+  const BundleScan scan = scan_obj_bundle(root / "model.obj");
+  EXPECT_EQ(names(scan), (std::vector<std::string>{"model.obj", "model.mtl", "textures/color.png",
+                                                   "sub/normal.png", "spec.png", "texture 01.png"}));
+  EXPECT_EQ(scan.files[2].content, "colour");
+  EXPECT_TRUE(has_warning(scan, "missing.mtl"));
+  EXPECT_TRUE(has_warning(scan, "'../secret.png' refused"));
+  EXPECT_TRUE(has_warning(scan, "'/etc/passwd' refused"));
+  EXPECT_TRUE(has_warning(scan, "nothere.png"));
+  for (const BundleFile& f : scan.files) {
+    EXPECT_NE(f.content, "must never be sent") << f.name;
+  }
+}
+
+TEST(BundleScan, TexturesResolveRelativeToTheirMtlInsideTheFolder) {
+  TempDir dir;
+  dir.write("m.obj", "mtllib ./folder/sub.mtl\n");
+  dir.write("folder/sub.mtl", "map_Kd image.jpg\nmap_Bump ../top.png\nmap_d ../../out.png\n");
+  dir.write("folder/image.jpg", "jpg");
+  dir.write("top.png", "top");
+  const BundleScan scan = scan_obj_bundle(dir.path() / "m.obj");
+  EXPECT_EQ(names(scan),
+            (std::vector<std::string>{"m.obj", "folder/sub.mtl", "folder/image.jpg", "top.png"}));
+  EXPECT_TRUE(has_warning(scan, "'../../out.png' refused"));
+}
+
+TEST(BundleScan, MtllibWithSeveralNamesAndEscapedSpaces) {
+  TempDir dir;
+  dir.write("m.obj", "mtllib gone.mtl my\\ file.mtl\nmtllib two words.mtl\n");
+  dir.write("my file.mtl", "newmtl x\n");
+  dir.write("two words.mtl", "newmtl y\n");
+  const BundleScan scan = scan_obj_bundle(dir.path() / "m.obj");
+  EXPECT_EQ(names(scan), (std::vector<std::string>{"m.obj", "my file.mtl", "two words.mtl"}));
+  EXPECT_TRUE(has_warning(scan, "gone.mtl"));
+}
+
+TEST(BundleScan, SymlinkLeadingOutsideIsRefused) {
+  TempDir dir;
+  dir.write("outside/secret.png", "secret");
+  dir.write("model/m.obj", "mtllib m.mtl\n");
+  dir.write("model/m.mtl", "map_Kd link.png\n");
+  std::error_code ec;
+  fs::create_symlink(dir.path() / "outside/secret.png", dir.path() / "model/link.png", ec);
+  if (ec) GTEST_SKIP() << "cannot create symlinks here: " << ec.message();
+  const BundleScan scan = scan_obj_bundle(dir.path() / "model/m.obj");
+  EXPECT_EQ(names(scan), (std::vector<std::string>{"m.obj", "m.mtl"}));
+  EXPECT_TRUE(has_warning(scan, "link.png"));
+}
+
+TEST(BundleScan, MissingObjIsAUsageError) {
+  TempDir dir;
+  EXPECT_TRUE(contains(usage_error([&] { scan_obj_bundle(dir.path() / "none.obj"); }), "none.obj"));
+  EXPECT_FALSE(usage_error([&] { scan_obj_bundle(dir.path()); }).empty());
+}
+
+TEST(BundleScan, TextureStatementParsing) {
+  using V = std::vector<std::string>;
+  EXPECT_EQ(texture_name_candidates("diffuse.jpg"), V{"diffuse.jpg"});
+  EXPECT_EQ(texture_name_candidates("-o 0.1 0.2 diffuse.jpg"), V{"diffuse.jpg"});
+  EXPECT_EQ(texture_name_candidates("-s 1 2 3 -clamp on a.png"), V{"a.png"});
+  EXPECT_EQ(texture_name_candidates("-colorspace sRGB -o 0.1 diffuse.jpg"), V{"diffuse.jpg"});
+  EXPECT_EQ(texture_name_candidates("-imfchan r bumpmap2.jpg -bm 1.5"), V{"bumpmap2.jpg"});
+  EXPECT_EQ(texture_name_candidates("-mm 0.1 0.3 spec.jpg"), V{"spec.jpg"});
+  EXPECT_EQ(texture_name_candidates("-bm 2 bump 01.png"), (V{"bump 01.png", "01.png"}));
+  EXPECT_EQ(texture_name_candidates("my\\ tex.png"), V{"my tex.png"});
+  EXPECT_EQ(texture_name_candidates(""), V{});
+  EXPECT_EQ(mtllib_names("a.mtl  b\\ c.mtl"), (V{"a.mtl", "b c.mtl"}));
+  EXPECT_TRUE(is_texture_keyword("map_bump"));
+  EXPECT_TRUE(is_texture_keyword("norm"));
+  EXPECT_FALSE(is_texture_keyword("map_Ka"));
+  EXPECT_FALSE(is_texture_keyword("newmtl"));
+}
+
+TEST(BundleScan, SharedModelsResolveCompletely) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const fs::path models = test::shared_models_dir();
+
+  const BundleScan dog = scan_obj_bundle(models / "kenney-cube-pet-dog/animal-dog.obj");
+  EXPECT_EQ(names(dog), (std::vector<std::string>{"animal-dog.obj", "animal-dog.mtl",
+                                                  "Textures/colormap.png"}));
+  EXPECT_TRUE(dog.warnings.empty());
+
+  const BundleScan windmill = scan_obj_bundle(models / "windmill/windmill.obj");
+  EXPECT_EQ(windmill.files.size(), 7u);  // obj, mtl, 2 diffuse, 2 normal maps, 1 specular
+  EXPECT_TRUE(windmill.warnings.empty());
+
+  // Missing references upstream are warnings, never errors.
+  const BundleScan options = scan_obj_bundle(models / "edge-cases/tinyobjloader/texture-options-issue-85.obj");
+  EXPECT_GE(options.files.size(), 2u);
+  EXPECT_FALSE(options.warnings.empty());
+}
+
+// ---------------------------------------------------------------- replies
+
+TEST(Reply, ToondErrorBodyBecomesOneLine) {
+  EXPECT_EQ(describe_error_reply(
+                400, R"({"error":{"code":"invalid_parameter","message":"too wide","path":"/outline/width"}})",
+                ""),
+            "error 400 invalid_parameter at /outline/width: too wide");
+  EXPECT_EQ(describe_error_reply(404, R"({"error":{"code":"unknown_model","message":"no such model","path":""}})", ""),
+            "error 404 unknown_model: no such model");
+  EXPECT_EQ(describe_error_reply(503, R"({"error":{"code":"busy","message":"queue full"}})", "2"),
+            "error 503 busy: queue full (busy; retry after 2 s)");
+}
+
+TEST(Reply, ForeignBodiesAreSummarised) {
+  EXPECT_EQ(describe_error_reply(502, "<html>Bad Gateway</html>\n<body>...", ""),
+            "error 502: <html>Bad Gateway</html>");
+  EXPECT_EQ(describe_error_reply(500, "", ""), "error 500 (empty answer)");
+}
+
+TEST(Reply, PngSizeAndHelpers) {
+  std::string png("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\x02\0\0\0\x01\x80", 24);
+  const auto size = png_size(png);
+  ASSERT_TRUE(size.has_value());
+  EXPECT_EQ(size->first, 512u);
+  EXPECT_EQ(size->second, 384u);
+  EXPECT_FALSE(png_size("GIF89a....................").has_value());
+  EXPECT_EQ(content_type_for("Textures/a.JPG"), "image/jpeg");
+  EXPECT_EQ(content_type_for("spot.obj"), "text/plain");
+  EXPECT_EQ(human_bytes(1500000), "1.5 MB");
+}
+
+}  // namespace
+}  // namespace toond::cli

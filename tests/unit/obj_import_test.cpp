@@ -1,0 +1,494 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "image/png_codec.h"
+#include "scene/import_error.h"
+#include "scene/mesh_processing.h"
+#include "scene/obj_import.h"
+#include "scene/obj_text.h"
+#include "scene/texture_decode.h"
+#include "support/shared_models.h"
+
+namespace toond::scene {
+namespace {
+
+using Files = std::vector<std::pair<std::string, std::string>>;
+
+Bundle make_bundle(const Files& files) {
+  Bundle bundle;
+  for (const auto& [path, content] : files) bundle.add(path, content);
+  return bundle;
+}
+
+std::string tiny_png(std::uint8_t r, std::uint8_t g, std::uint8_t b, int w = 4, int h = 2) {
+  image::Image img;
+  img.width = w;
+  img.height = h;
+  img.rgba.resize(static_cast<std::size_t>(w) * h * 4);
+  for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
+    img.rgba[i] = r;
+    img.rgba[i + 1] = g;
+    img.rgba[i + 2] = b;
+    img.rgba[i + 3] = 255;
+  }
+  return image::encode_png(img);
+}
+
+bool has_warning(const Model& model, const std::string& needle) {
+  return std::any_of(model.warnings.begin(), model.warnings.end(),
+                     [&](const std::string& w) { return w.find(needle) != std::string::npos; });
+}
+
+std::string warnings_of(const Model& model) {
+  std::string all;
+  for (const auto& w : model.warnings) all += w + "\n";
+  return all;
+}
+
+// Quads, positions only, the cube from 0 to 1.
+const std::string kQuadCube =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 4 3 2\nf 5 6 7 8\nf 1 5 8 4\nf 2 3 7 6\nf 4 8 7 3\nf 1 2 6 5\n";
+
+// Checks every invariant the GPU upload relies on.
+void expect_well_formed(const Model& m) {
+  const Mesh& mesh = m.mesh;
+  const std::size_t n = mesh.positions.size();
+  ASSERT_GT(n, 0u);
+  EXPECT_EQ(mesh.normals.size(), n);
+  EXPECT_EQ(mesh.outline_normals.size(), n);
+  EXPECT_EQ(mesh.texcoords.size(), n);
+  ASSERT_EQ(mesh.indices.size() % 3, 0u);
+  ASSERT_FALSE(m.materials.empty());
+  for (const auto i : mesh.indices) ASSERT_LT(i, n);
+  for (std::size_t v = 0; v < n; ++v) {
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_TRUE(std::isfinite(mesh.positions[v][k]));
+      ASSERT_TRUE(glm::all(glm::lessThanEqual(mesh.bounds.min, mesh.positions[v])));
+      ASSERT_TRUE(glm::all(glm::lessThanEqual(mesh.positions[v], mesh.bounds.max)));
+    }
+    ASSERT_NEAR(glm::length(mesh.normals[v]), 1.0f, 1e-4f) << "vertex " << v;
+    ASSERT_NEAR(glm::length(mesh.outline_normals[v]), 1.0f, 1e-4f) << "vertex " << v;
+    ASSERT_TRUE(std::isfinite(mesh.texcoords[v].x) && std::isfinite(mesh.texcoords[v].y));
+  }
+  std::uint32_t covered = 0;
+  for (const auto& sub : mesh.submeshes) {
+    EXPECT_EQ(sub.first_index, covered);
+    EXPECT_GT(sub.index_count, 0u);
+    EXPECT_EQ(sub.index_count % 3, 0u);
+    ASSERT_GE(sub.material, 0);
+    ASSERT_LT(static_cast<std::size_t>(sub.material), m.materials.size());
+    covered += sub.index_count;
+  }
+  EXPECT_EQ(covered, mesh.indices.size());
+  for (const auto& mat : m.materials) {
+    EXPECT_LT(mat.diffuse_texture, static_cast<int>(m.textures.size()));
+  }
+}
+
+TEST(ObjImport, QuadsAreTriangulatedAndMissingNormalsComputed) {
+  const Model m = import_obj_bundle(make_bundle({{"cube.obj", kQuadCube}}));
+  expect_well_formed(m);
+  EXPECT_EQ(m.mesh.triangle_count(), 12u);
+  EXPECT_EQ(m.mesh.positions.size(), 8u);
+  EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
+  ASSERT_EQ(m.materials.size(), 1u);
+  EXPECT_EQ(m.materials[0].diffuse, glm::vec3(0.8f));
+  // Recentred on the bounds centre: positions are +-0.5, the centre is in origin.
+  EXPECT_EQ(m.mesh.origin, glm::dvec3(0.5));
+  EXPECT_EQ(m.mesh.bounds.min, glm::vec3(-0.5f));
+  EXPECT_EQ(m.mesh.bounds.max, glm::vec3(0.5f));
+  for (std::size_t v = 0; v < 8; ++v) {
+    EXPECT_NEAR(glm::dot(m.mesh.normals[v], glm::normalize(m.mesh.positions[v])), 1.0f, 1e-5f);
+    EXPECT_EQ(m.mesh.texcoords[v], glm::vec2(0.0f));
+  }
+  // Every triangle is wound counter-clockwise seen from outside.
+  for (std::size_t t = 0; t < m.mesh.indices.size(); t += 3) {
+    const glm::dvec3 a = m.mesh.positions[m.mesh.indices[t]];
+    const glm::dvec3 b = m.mesh.positions[m.mesh.indices[t + 1]];
+    const glm::dvec3 c = m.mesh.positions[m.mesh.indices[t + 2]];
+    EXPECT_GT(glm::dot(triangle_normal(a, b, c), (a + b + c) / 3.0), 0.0);
+  }
+}
+
+TEST(ObjImport, FarFromOriginKeepsPrecision) {
+  // A unit cube a thousand kilometres out, with millimetre detail: float
+  // positions would lose it, recentred ones keep it.
+  std::string obj;
+  for (int i = 0; i < 8; ++i) {
+    obj += "v " + std::to_string(1e6 + ((i & 1) ? 1.001 : 0.0)) + " " + std::to_string((i & 2) ? 1.0 : 0.0) + " " +
+           std::to_string(-2e6 + ((i & 4) ? 1.0 : 0.0)) + "\n";
+  }
+  obj += "f 1 3 4 2\nf 5 6 8 7\nf 1 5 7 3\nf 2 4 8 6\nf 3 7 8 4\nf 1 2 6 5\n";
+  const Model m = import_obj_bundle(make_bundle({{"far.obj", obj}}));
+  expect_well_formed(m);
+  EXPECT_NEAR(m.mesh.origin.x, 1e6 + 0.5005, 1e-9);
+  EXPECT_NEAR(m.mesh.origin.z, -2e6 + 0.5, 1e-9);
+  EXPECT_NEAR(m.mesh.bounds.max.x - m.mesh.bounds.min.x, 1.001f, 1e-6f);
+  EXPECT_NEAR(m.mesh.bounds.centre().x, 0.0f, 1e-6f);
+}
+
+TEST(ObjImport, HardEdgedCubeSplitsNormalsButSharesOutlineNormals) {
+  const std::string obj =
+      "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+      "vn 0 0 -1\nvn 0 0 1\nvn -1 0 0\nvn 1 0 0\nvn 0 1 0\nvn 0 -1 0\n"
+      "f 1//1 4//1 3//1 2//1\nf 5//2 6//2 7//2 8//2\nf 1//3 5//3 8//3 4//3\n"
+      "f 2//4 3//4 7//4 6//4\nf 4//5 8//5 7//5 3//5\nf 1//6 2//6 6//6 5//6\n";
+  const Model m = import_obj_bundle(make_bundle({{"box.obj", obj}}));
+  expect_well_formed(m);
+  EXPECT_EQ(m.mesh.positions.size(), 24u);  // (position, normal) pairs
+  EXPECT_EQ(m.mesh.triangle_count(), 12u);
+  for (std::size_t v = 0; v < 24; ++v) {
+    const glm::vec3 n = m.mesh.normals[v];
+    EXPECT_NEAR(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1.0f, 1e-6f);  // a face normal
+    EXPECT_NEAR(glm::dot(m.mesh.outline_normals[v], glm::normalize(m.mesh.positions[v])), 1.0f, 1e-5f);
+    for (std::size_t w = 0; w < 24; ++w) {
+      if (m.mesh.positions[w] == m.mesh.positions[v]) EXPECT_EQ(m.mesh.outline_normals[w], m.mesh.outline_normals[v]);
+    }
+  }
+}
+
+TEST(ObjImport, VerticesAreDeduplicatedByTriple) {
+  const std::string obj =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\nvn 0 0 1\n"
+      "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\nf 1/5/1 3/3/1 4/4/1\n";
+  const Model m = import_obj_bundle(make_bundle({{"q.obj", obj}}));
+  expect_well_formed(m);
+  EXPECT_EQ(m.mesh.triangle_count(), 3u);
+  EXPECT_EQ(m.mesh.positions.size(), 5u);  // 1/5/1 is a new triple
+  std::set<std::pair<float, float>> uvs;
+  for (const auto& uv : m.mesh.texcoords) uvs.insert({uv.x, uv.y});
+  EXPECT_TRUE(uvs.count({0.5f, 0.5f}));
+  for (const auto& n : m.mesh.normals) EXPECT_EQ(n, glm::vec3(0, 0, 1));
+}
+
+TEST(ObjImport, MaterialsBecomeSubmeshes) {
+  const std::string obj =
+      "mtllib two.mtl\n"
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\n"
+      "o first\nusemtl red\nf 1 2 3\ng second\nusemtl blue\nf 2 5 6\nf 2 6 3\n"
+      "usemtl red\nf 1 3 4\no third\nusemtl nowhere\nf 4 3 6\n";
+  const std::string mtl = "newmtl red\nKd 1 0 0\n\nnewmtl blue\nKd 0 0 1\n\nnewmtl unused\nKd 0 1 0\n";
+  const Model m = import_obj_bundle(make_bundle({{"m.obj", obj}, {"two.mtl", mtl}}));
+  expect_well_formed(m);
+  ASSERT_EQ(m.materials.size(), 3u);  // red, blue, default; "unused" left out
+  EXPECT_EQ(m.materials[0].name, "red");
+  EXPECT_EQ(m.materials[0].diffuse, glm::vec3(1, 0, 0));
+  EXPECT_EQ(m.materials[1].name, "blue");
+  EXPECT_EQ(m.materials[1].diffuse, glm::vec3(0, 0, 1));
+  EXPECT_EQ(m.materials[2].diffuse, glm::vec3(0.8f));
+  ASSERT_EQ(m.mesh.submeshes.size(), 3u);
+  EXPECT_EQ(m.mesh.submeshes[0].material, 0);
+  EXPECT_EQ(m.mesh.submeshes[0].index_count, 6u);
+  EXPECT_EQ(m.mesh.submeshes[1].material, 1);
+  EXPECT_EQ(m.mesh.submeshes[1].index_count, 6u);
+  EXPECT_EQ(m.mesh.submeshes[2].material, 2);
+  EXPECT_EQ(m.mesh.submeshes[2].index_count, 3u);
+  EXPECT_TRUE(has_warning(m, "nowhere")) << warnings_of(m);
+}
+
+TEST(ObjImport, MaterialNamesWithBlanks) {
+  const std::string obj =
+      "mtllib ./spaces.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl  Hard Shiny  Plastic \nf 1 2 3\n";
+  const std::string mtl = "newmtl Hard Shiny  Plastic\r\nKd 0.1 0.2 0.3\r\n";
+  const Model m = import_obj_bundle(make_bundle({{"s.obj", obj}, {"spaces.mtl", mtl}}));
+  ASSERT_EQ(m.materials.size(), 1u);
+  EXPECT_EQ(m.materials[0].name, "Hard Shiny  Plastic");
+  EXPECT_NEAR(m.materials[0].diffuse.z, 0.3f, 1e-6f);
+  EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
+}
+
+TEST(ObjImport, TexturesResolveThroughTheBundleAndDecodeOnce) {
+  const std::string obj =
+      "mtllib Mats\\Look.MTL\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+      "usemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 2/2 4/1 3/3\n";
+  // Relative to the MTL's folder, backslashes, other case, options before
+  // the name; the second material names the same file differently.
+  const std::string mtl =
+      "newmtl a\nKd 0.5 0.5 0.5\nmap_Kd -bm 1 -s 1 1 1 ..\\Tex\\Wood.PNG\n"
+      "newmtl b\nmap_Kd ../tex/wood.png\n";
+  const Model m = import_obj_bundle(
+      make_bundle({{"model.obj", obj}, {"mats/look.mtl", mtl}, {"tex/wood.png", tiny_png(200, 100, 50)}}));
+  expect_well_formed(m);
+  EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
+  ASSERT_EQ(m.textures.size(), 1u);
+  EXPECT_EQ(m.textures[0].path, "tex/wood.png");
+  EXPECT_EQ(m.textures[0].width, 4);
+  EXPECT_EQ(m.textures[0].height, 2);
+  EXPECT_EQ(m.textures[0].rgba[0], 200);
+  ASSERT_EQ(m.materials.size(), 2u);
+  EXPECT_EQ(m.materials[0].diffuse_texture, 0);
+  EXPECT_EQ(m.materials[1].diffuse_texture, 0);
+  EXPECT_EQ(m.materials[0].diffuse, glm::vec3(0.5f));  // Kd given: kept as-is
+  EXPECT_EQ(m.materials[1].diffuse, glm::vec3(1.0f));  // no Kd: the texture shows as painted
+}
+
+TEST(ObjImport, MissingOrBrokenTextureIsAWarning) {
+  const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 2 4 3\n";
+  const std::string mtl = "newmtl a\nKd 0.2 0.4 0.6\nmap_Kd gone.png\nnewmtl b\nKd 1 1 1\nmap_Kd broken.png\n";
+  const Model m =
+      import_obj_bundle(make_bundle({{"m.obj", obj}, {"m.mtl", mtl}, {"broken.png", "definitely not an image"}}));
+  expect_well_formed(m);
+  EXPECT_TRUE(m.textures.empty());
+  ASSERT_EQ(m.materials.size(), 2u);
+  EXPECT_EQ(m.materials[0].diffuse_texture, -1);
+  EXPECT_EQ(m.materials[0].diffuse, glm::vec3(0.2f, 0.4f, 0.6f));
+  EXPECT_EQ(m.materials[1].diffuse_texture, -1);
+  EXPECT_TRUE(has_warning(m, "gone.png")) << warnings_of(m);
+  EXPECT_TRUE(has_warning(m, "broken.png")) << warnings_of(m);
+}
+
+TEST(ObjImport, TextureFoundByFileNameWhenThePathIsForeign) {
+  const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n";
+  const std::string mtl = "newmtl a\nKd 1 1 1\nmap_Kd C:\\Users\\artist\\Desktop\\skin.png\n";
+  const Model m = import_obj_bundle(make_bundle({{"m.obj", obj}, {"m.mtl", mtl}, {"skin.png", tiny_png(1, 2, 3)}}));
+  ASSERT_EQ(m.textures.size(), 1u);
+  EXPECT_EQ(m.textures[0].path, "skin.png");
+  EXPECT_TRUE(has_warning(m, "file name")) << warnings_of(m);
+}
+
+TEST(ObjImport, MissingMtlIsAWarning) {
+  const std::string obj = "mtllib nothere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl skin\nf 1 2 3\n";
+  const Model m = import_obj_bundle(make_bundle({{"m.obj", obj}}));
+  expect_well_formed(m);
+  ASSERT_EQ(m.materials.size(), 1u);
+  EXPECT_EQ(m.materials[0].diffuse, glm::vec3(0.8f));
+  EXPECT_TRUE(has_warning(m, "nothere.mtl")) << warnings_of(m);
+}
+
+void expect_import_error(const Bundle& bundle, const std::string& file, const std::string& needle) {
+  try {
+    import_obj_bundle(bundle);
+    ADD_FAILURE() << "no ImportError";
+  } catch (const ImportError& e) {
+    EXPECT_EQ(e.file(), file);
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
+}
+
+TEST(ObjImport, BadIndicesAreImportErrors) {
+  const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n";
+  expect_import_error(make_bundle({{"bad.obj", verts + "f 1 2 9\n"}}), "bad.obj", "bad.obj");
+  expect_import_error(make_bundle({{"bad.obj", verts + "f 1 2 3 9\n"}}), "bad.obj", "does not exist");
+  expect_import_error(make_bundle({{"bad.obj", verts + "f 1 2 3 4 9\n"}}), "bad.obj", "does not exist");
+  expect_import_error(make_bundle({{"bad.obj", verts + "f 1 2 -7\n"}}), "bad.obj", "does not exist");
+  expect_import_error(make_bundle({{"bad.obj", verts + "f 1 2 0\n"}}), "bad.obj", "bad.obj");
+}
+
+TEST(ObjImport, NonFinitePositionsAreImportErrorsWithLine) {
+  const std::string obj = "# header\nv 0 0 0\nv 1 0 0\nv 1e999 1 0\nf 1 2 3\n";
+  expect_import_error(make_bundle({{"inf.obj", obj}}), "inf.obj", "line 4");
+}
+
+TEST(ObjImport, BundleMustHoldExactlyOneObj) {
+  expect_import_error(make_bundle({{"a.mtl", "newmtl a\n"}}), "", "no .obj");
+  expect_import_error(Bundle{}, "", "no .obj");
+  try {
+    import_obj_bundle(make_bundle({{"a.obj", kQuadCube}, {"sub/B.OBJ", kQuadCube}}));
+    ADD_FAILURE() << "no ImportError";
+  } catch (const ImportError& e) {
+    EXPECT_NE(std::string(e.what()).find("a.obj"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("sub/B.OBJ"), std::string::npos) << e.what();
+  }
+  // The extension is matched case-insensitively.
+  EXPECT_EQ(import_obj_bundle(make_bundle({{"CUBE.Obj", kQuadCube}})).mesh.triangle_count(), 12u);
+}
+
+TEST(ObjImport, NothingToRenderIsAnImportError) {
+  expect_import_error(make_bundle({{"lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\np 1\n"}}), "lines.obj",
+                      "no faces");
+  expect_import_error(make_bundle({{"flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n"}}), "flat.obj",
+                      "no faces");
+  expect_import_error(make_bundle({{"empty.obj", ""}}), "empty.obj", "no faces");
+}
+
+TEST(ObjImport, DegenerateTrianglesAreDroppedWithAWarning) {
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\nf 3 3 1\n";
+  const Model m = import_obj_bundle(make_bundle({{"d.obj", obj}}));
+  expect_well_formed(m);
+  EXPECT_EQ(m.mesh.triangle_count(), 1u);
+  EXPECT_TRUE(has_warning(m, "2 degenerate")) << warnings_of(m);
+}
+
+TEST(ObjImport, ZeroAndNonUnitNormalsAreRepaired) {
+  const std::string obj =
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 6.28\nvn 0 0 0\n"
+      "f 1//1 2//1 3//2\n";
+  const Model m = import_obj_bundle(make_bundle({{"n.obj", obj}}));
+  expect_well_formed(m);
+  for (const auto& n : m.mesh.normals) EXPECT_NEAR(glm::length(n - glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+}
+
+TEST(ObjImport, SmoothingOffGivesFlatNormalsWhereGroupsAreUsed) {
+  // A roof: two faces meeting at a ridge. Smoothed, the ridge vertices get
+  // the average; with "s off" on one face, that face stays flat.
+  const std::string roof = "v -1 0 0\nv 0 1 0\nv 1 0 0\nv -1 0 -1\nv 0 1 -1\nv 1 0 -1\n";
+  const Model smooth = import_obj_bundle(make_bundle({{"r.obj", roof + "s 1\nf 1 2 5 4\nf 2 3 6 5\n"}}));
+  EXPECT_EQ(smooth.mesh.positions.size(), 6u);
+  const Model mixed = import_obj_bundle(make_bundle({{"r.obj", roof + "s 1\nf 1 2 5 4\ns off\nf 2 3 6 5\n"}}));
+  expect_well_formed(mixed);
+  EXPECT_EQ(mixed.mesh.positions.size(), 8u);  // the ridge is split
+  const glm::vec3 right_face = glm::normalize(glm::vec3(1, 1, 0));
+  int flat = 0;
+  for (std::size_t v = 0; v < mixed.mesh.positions.size(); ++v) {
+    if (glm::length(mixed.mesh.normals[v] - right_face) < 1e-5f) ++flat;
+  }
+  EXPECT_EQ(flat, 4);
+}
+
+TEST(ObjImport, TolerantSyntax) {
+  // Empty index slots, a continued face line, CRLF, comments, negative
+  // indices, texture coordinates with three components.
+  const std::string obj =
+      "# comment\r\nv 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\nvt 0 0 0\r\n"
+      "f 1// 2// 3//\r\nf 1/1/ \\\r\n 3/1/ 4/1/\r\nf -4 -2 -1\r\n";
+  const Model m = import_obj_bundle(make_bundle({{"t.obj", obj}}));
+  expect_well_formed(m);
+  EXPECT_EQ(m.mesh.triangle_count(), 3u);
+}
+
+TEST(ObjText, PreparationKeepsLineNumbersAndMeaning) {
+  EXPECT_EQ(prepare_obj_text("v 1 2 3\nf 1// 2// 3//\n"), "v 1 2 3\nf 1 2 3\n");
+  EXPECT_EQ(prepare_obj_text("f 1/1/ 2/2/ \\\n  3/3/\nv 0 0 0"), "f 1/1 2/2 3/3\n\nv 0 0 0\n");
+  EXPECT_EQ(prepare_obj_text("usemtl  a b\tc  \n"), "usemtl a\x1f" "b\x1f" "c\n");
+  EXPECT_EQ(prepare_obj_text("usemtl plain\nf 1/2/3 4//5\n"), "usemtl plain\nf 1/2/3 4//5\n");
+  EXPECT_EQ(material_alias(" a  b "), "a\x1f" "b");
+}
+
+TEST(TextureDecode, DecodesPng) {
+  const Texture t = decode_texture(tiny_png(10, 20, 30, 3, 5), "x.png");
+  EXPECT_EQ(t.path, "x.png");
+  EXPECT_EQ(t.width, 3);
+  EXPECT_EQ(t.height, 5);
+  ASSERT_EQ(t.rgba.size(), 3u * 5u * 4u);
+  EXPECT_EQ(t.rgba[0], 10);
+  EXPECT_EQ(t.rgba[1], 20);
+  EXPECT_EQ(t.rgba[2], 30);
+  EXPECT_EQ(t.rgba[3], 255);
+}
+
+TEST(TextureDecode, RefusesGarbageAndOversizedImages) {
+  EXPECT_THROW(decode_texture("", "e.png"), std::runtime_error);
+  EXPECT_THROW(decode_texture("GIF89a but not really", "g.gif"), std::runtime_error);
+  const std::string png = tiny_png(0, 0, 0, 64, 16);
+  EXPECT_THROW(decode_texture(png, "big.png", {32, 1u << 20}), std::runtime_error);
+  EXPECT_THROW(decode_texture(png, "big.png", {8192, 512}), std::runtime_error);
+  EXPECT_NO_THROW(decode_texture(png, "ok.png", {64, 1024}));
+  // A truncated file is refused, not read past its end.
+  EXPECT_THROW(decode_texture(png.substr(0, png.size() / 2), "cut.png"), std::runtime_error);
+}
+
+// ---- real models from ../shared/models (never copied into the repo) ----
+
+Bundle bundle_from_folder(const std::filesystem::path& dir, const std::string& only_obj = {}) {
+  Bundle bundle;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    const std::string rel = std::filesystem::relative(entry.path(), dir).generic_string();
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".txt" || ext == ".md" || rel == "LICENSE") continue;
+    if (ext == ".obj" && !only_obj.empty() && rel != only_obj) continue;
+    bundle.add(rel, test::read_file(entry.path()));
+  }
+  return bundle;
+}
+
+TEST(ObjImportShared, Spot) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const Model m = import_obj_bundle(bundle_from_folder(test::shared_models_dir() / "spot"));
+  expect_well_formed(m);
+  EXPECT_EQ(m.mesh.triangle_count(), 5856u);
+  ASSERT_EQ(m.textures.size(), 1u);
+  EXPECT_EQ(m.textures[0].width, 1024);
+  EXPECT_EQ(m.textures[0].height, 1024);
+  ASSERT_EQ(m.materials.size(), 1u);
+  EXPECT_EQ(m.materials[0].diffuse_texture, 0);
+  EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
+}
+
+TEST(ObjImportShared, WindmillHasTwoTexturedMaterials) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const Model m = import_obj_bundle(bundle_from_folder(test::shared_models_dir() / "windmill"));
+  expect_well_formed(m);
+  EXPECT_EQ(m.mesh.triangle_count(), 2722u);
+  ASSERT_EQ(m.materials.size(), 2u);
+  EXPECT_EQ(m.textures.size(), 2u);  // the two map_Kd; normal and specular maps are not diffuse
+  EXPECT_EQ(m.mesh.submeshes.size(), 2u);
+  for (const auto& mat : m.materials) EXPECT_GE(mat.diffuse_texture, 0) << mat.name;
+  EXPECT_NE(m.materials[0].diffuse_texture, m.materials[1].diffuse_texture);
+}
+
+TEST(ObjImportShared, DogTextureInSubfolderResolves) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const Model m = import_obj_bundle(bundle_from_folder(test::shared_models_dir() / "kenney-cube-pet-dog"));
+  expect_well_formed(m);
+  EXPECT_EQ(m.mesh.triangle_count(), 490u);
+  ASSERT_EQ(m.textures.size(), 1u);
+  EXPECT_EQ(m.textures[0].path, "Textures/colormap.png");
+  EXPECT_EQ(m.textures[0].width, 512);
+  EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
+  // Blocky, hard-edged: shading normals are split but outline normals are
+  // shared per position.
+  for (std::size_t v = 0; v < m.mesh.positions.size(); ++v) {
+    for (std::size_t w = v + 1; w < m.mesh.positions.size(); ++w) {
+      if (m.mesh.positions[w] == m.mesh.positions[v]) {
+        ASSERT_EQ(m.mesh.outline_normals[w], m.mesh.outline_normals[v]);
+      }
+    }
+  }
+}
+
+TEST(ObjImportShared, TeapotWithoutNormals) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const Model m = import_obj_bundle(bundle_from_folder(test::shared_models_dir() / "utah-teapot"));
+  expect_well_formed(m);
+  EXPECT_EQ(m.mesh.triangle_count(), 6320u);
+}
+
+// Every parser edge case either imports into a well-formed model or is an
+// ImportError; only the files with no faces at all are refused.
+TEST(ObjImportShared, EdgeCasesNeverBreakTheImporter) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const auto root = test::shared_models_dir() / "edge-cases";
+  const std::set<std::string> expected_refusals = {"tinyobjloader/line-prim.obj", "tinyobjloader/points-prim.obj"};
+  int imported = 0;
+  for (const char* folder : {"tinyobjloader", "assimp", "trimesh"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
+      std::string ext = entry.path().extension().string();
+      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (ext != ".obj") continue;
+      const std::string name = entry.path().filename().string();
+      const std::string key = std::string(folder) + "/" + name;
+      SCOPED_TRACE(key);
+      const Bundle bundle = bundle_from_folder(root / folder, name);
+      try {
+        const Model m = import_obj_bundle(bundle);
+        expect_well_formed(m);
+        EXPECT_FALSE(expected_refusals.count(key));
+        ++imported;
+      } catch (const ImportError& e) {
+        EXPECT_TRUE(expected_refusals.count(key)) << e.what();
+        EXPECT_EQ(e.file(), name);
+      }
+    }
+  }
+  EXPECT_GT(imported, 60);
+}
+
+TEST(ObjImportShared, FuzeTextureWithSpaceInName) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const Model m = import_obj_bundle(bundle_from_folder(test::shared_models_dir() / "edge-cases/trimesh", "fuze.obj"));
+  ASSERT_EQ(m.textures.size(), 1u);
+  EXPECT_EQ(m.textures[0].path, "fuze uv.jpg");
+}
+
+}  // namespace
+}  // namespace toond::scene
