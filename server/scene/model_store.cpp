@@ -197,7 +197,14 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle) {
       if (stored) return {std::move(*stored), false};
       throw std::runtime_error("model " + id + " is present but unreadable");
     }
-    fs::rename(temp, final_dir);
+    std::error_code ec;
+    fs::rename(temp, final_dir, ec);
+    if (ec) {
+      // Another process sharing the data folder may have stored it first.
+      remove_quietly(temp);
+      if (auto stored = this->info(id)) return {std::move(*stored), false};
+      throw fs::filesystem_error("cannot store model", temp, final_dir, ec);
+    }
     fsync_dir(root_);
   } catch (...) {
     remove_quietly(temp);

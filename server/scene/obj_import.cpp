@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <memory>
@@ -497,6 +498,19 @@ class Importer {
     return std::isfinite(len) && len > 1e-20;
   }
 
+  // Smoothing off: corners share a vertex only with faces lying in the same
+  // plane (the triangles of one polygon), keyed by the face normal's bits.
+  // Negative, so it never meets a smoothing group's key.
+  std::int64_t flat_key(const Triangle& tri) const {
+    const glm::vec3 n(triangle_normal(position(tri.corner[0].v) - origin_, position(tri.corner[1].v) - origin_,
+                                      position(tri.corner[2].v) - origin_));
+    std::uint32_t bits[3];
+    std::memcpy(bits, &n[0], sizeof bits);
+    std::uint64_t h = 1469598103934665603ull;
+    for (const auto b : bits) h = (h ^ b) * 1099511628211ull;
+    return -1 - static_cast<std::int64_t>(h >> 2);
+  }
+
   void build_mesh() {
     Mesh& mesh = model_.mesh;
     mesh.origin = origin_;
@@ -528,7 +542,7 @@ class Importer {
           } else if (tri.smoothing != 0) {
             smoothing = 2 + static_cast<std::int64_t>(tri.smoothing);
           } else {
-            smoothing = -1 - static_cast<std::int64_t>(t);
+            smoothing = flat_key(tri);
           }
         }
         const VertexKey key{corner.v, has_normal ? corner.vn : -1, corner.vt, smoothing};

@@ -47,6 +47,22 @@ bool needs_corner_fix(std::string_view rest) {
   return false;
 }
 
+// tinyobj splits mtllib names at blanks and reads '\' as an escape ("a\ b"
+// is one name with a space). A Windows separator ("maps\a.mtl") would
+// vanish, so every '\' not escaping a blank becomes '/'.
+std::string fix_mtllib_separators(std::string_view rest) {
+  std::string out(rest);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (out[i] != '\\') continue;
+    if (i + 1 < out.size() && (out[i + 1] == ' ' || out[i + 1] == '\t')) {
+      ++i;
+    } else {
+      out[i] = '/';
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string material_alias(std::string_view name) {
@@ -97,6 +113,9 @@ std::string prepare_obj_text(std::string_view text) {
     if (split_statement(line, keyword, rest)) {
       if ((keyword == "f" || keyword == "l" || keyword == "p") && needs_corner_fix(rest)) {
         out += fix_corners(keyword, rest);
+      } else if (keyword == "mtllib" && rest.find('\\') != std::string_view::npos) {
+        out += "mtllib";
+        out += fix_mtllib_separators(rest);
       } else if (keyword == "usemtl" && material_alias(rest) != trim(rest)) {
         out += "usemtl ";
         out += material_alias(rest);

@@ -11,6 +11,8 @@ namespace toond::scene {
 //   so); the pieces are joined and blank lines keep the numbering.
 // - Empty index slots in f/l/p corners ("1//", "2/2/") are dropped; tinyobj
 //   would read them as index 0 and reject the file.
+// - '\' in `mtllib` names becomes '/' unless it escapes a blank, because
+//   tinyobj reads every '\' there as an escape character.
 // - `usemtl` names containing blanks become material_alias(name), since
 //   tinyobj keeps only the first word of a usemtl name but the whole line of
 //   a newmtl name.

@@ -325,6 +325,21 @@ TEST(RenderParams, ModelInParamsConflictsWithALocalObj) {
   EXPECT_TRUE(contains(usage_error([&] { build_render_params(o, schema()); }), "drop one"));
 }
 
+// proto/examples/ are requests people copy; each must pass the schema and
+// work as a --params file.
+TEST(RenderParams, ProtoExamplesAreValidRequests) {
+  const fs::path examples = fs::path(__FILE__).parent_path() / "../../proto/examples";
+  if (!fs::is_directory(examples)) GTEST_SKIP() << "no source tree at " << examples;
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(examples)) {
+    if (entry.path().extension() != ".json") continue;
+    ++count;
+    const Options o = parse({"render", "--params", entry.path().string(), "-o", "x.png"});
+    EXPECT_EQ(usage_error([&] { build_render_params(o, schema()); }), "") << entry.path();
+  }
+  EXPECT_GE(count, 2);
+}
+
 // ---------------------------------------------------------------- bundle discovery
 
 std::vector<std::string> names(const BundleScan& scan) {

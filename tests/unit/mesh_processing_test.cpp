@@ -98,7 +98,9 @@ TEST(MeshProcessing, HardCubeKeepsFaceNormalsButSharesOutlineNormals) {
     expect_unit(outline[v]);
     EXPECT_NEAR(glm::dot(outline[v], glm::normalize(cube.positions[v])), 1.0f, kTol) << "vertex " << v;
     for (std::size_t w = 0; w < 24; ++w) {
-      if (cube.positions[w] == cube.positions[v]) EXPECT_EQ(outline[w], outline[v]);
+      if (cube.positions[w] == cube.positions[v]) {
+        EXPECT_EQ(outline[w], outline[v]);
+      }
     }
   }
 }
@@ -108,7 +110,10 @@ TEST(MeshProcessing, SphereNormalsAreUnitAndOutward) {
   const TestMesh sphere = make_sphere(32, 16, 2.0f, centre);
   const auto normals = compute_angle_weighted_normals(sphere.positions, sphere.indices);
   const auto outline = compute_outline_normals(sphere.positions, sphere.indices, normals);
+  std::vector<bool> used(sphere.positions.size(), false);
+  for (const auto i : sphere.indices) used[i] = true;
   for (std::size_t v = 0; v < sphere.positions.size(); ++v) {
+    if (!used[v]) continue;  // one pole copy closes no triangle
     const glm::vec3 radial = glm::normalize(sphere.positions[v] - centre);
     expect_unit(normals[v]);
     expect_unit(outline[v]);

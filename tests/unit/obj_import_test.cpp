@@ -150,7 +150,9 @@ TEST(ObjImport, HardEdgedCubeSplitsNormalsButSharesOutlineNormals) {
     EXPECT_NEAR(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1.0f, 1e-6f);  // a face normal
     EXPECT_NEAR(glm::dot(m.mesh.outline_normals[v], glm::normalize(m.mesh.positions[v])), 1.0f, 1e-5f);
     for (std::size_t w = 0; w < 24; ++w) {
-      if (m.mesh.positions[w] == m.mesh.positions[v]) EXPECT_EQ(m.mesh.outline_normals[w], m.mesh.outline_normals[v]);
+      if (m.mesh.positions[w] == m.mesh.positions[v]) {
+        EXPECT_EQ(m.mesh.outline_normals[w], m.mesh.outline_normals[v]);
+      }
     }
   }
 }
@@ -174,7 +176,7 @@ TEST(ObjImport, MaterialsBecomeSubmeshes) {
       "mtllib two.mtl\n"
       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\n"
       "o first\nusemtl red\nf 1 2 3\ng second\nusemtl blue\nf 2 5 6\nf 2 6 3\n"
-      "usemtl red\nf 1 3 4\no third\nusemtl nowhere\nf 4 3 6\n";
+      "usemtl red\nf 1 3 4\no third\nusemtl nowhere\nf 4 1 6\n";
   const std::string mtl = "newmtl red\nKd 1 0 0\n\nnewmtl blue\nKd 0 0 1\n\nnewmtl unused\nKd 0 1 0\n";
   const Model m = import_obj_bundle(make_bundle({{"m.obj", obj}, {"two.mtl", mtl}}));
   expect_well_formed(m);
@@ -359,6 +361,7 @@ TEST(ObjText, PreparationKeepsLineNumbersAndMeaning) {
   EXPECT_EQ(prepare_obj_text("f 1/1/ 2/2/ \\\n  3/3/\nv 0 0 0"), "f 1/1 2/2 3/3\n\nv 0 0 0\n");
   EXPECT_EQ(prepare_obj_text("usemtl  a b\tc  \n"), "usemtl a\x1f" "b\x1f" "c\n");
   EXPECT_EQ(prepare_obj_text("usemtl plain\nf 1/2/3 4//5\n"), "usemtl plain\nf 1/2/3 4//5\n");
+  EXPECT_EQ(prepare_obj_text("mtllib mats\\a.mtl my\\ file.mtl\n"), "mtllib mats/a.mtl my\\ file.mtl\n");
   EXPECT_EQ(material_alias(" a  b "), "a\x1f" "b");
 }
 

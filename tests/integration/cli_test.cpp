@@ -1,0 +1,129 @@
+// The toon CLI against a real daemon: exit codes, files written, errors.
+#include <gtest/gtest.h>
+
+#include "image/png_codec.h"
+#include "support/image_checks.h"
+#include "support/shared_models.h"
+#include "test_client.h"
+
+namespace toond::test {
+namespace {
+
+using nlohmann::json;
+
+class Cli : public SharedDaemonTest {
+ protected:
+  ProcessResult toon(std::vector<std::string> args, std::vector<std::string> env = {}) {
+    args.insert(args.begin(), TOON_BINARY);
+    return run_process(args, env);
+  }
+  std::filesystem::path out_dir() {
+    static const auto dir = make_temp_dir("toon-cli");
+    return dir;
+  }
+};
+
+TEST_F(Cli, HealthPrintsTheGlRenderer) {
+  const auto r = toon({"health", "--server", daemon().url()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("renderer"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, ServerFromTheEnvironmentAndBeforeTheVerb) {
+  EXPECT_EQ(toon({"health"}, {"TOOND_URL=" + daemon().url()}).status, 0);
+  EXPECT_EQ(toon({"--server", daemon().url(), "health"}).status, 0);
+}
+
+TEST_F(Cli, UploadThenRenderByIdWithSet) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const auto upload = toon({"upload", (shared_models_dir() / "spot" / "spot.obj").string(), "--server",
+                            daemon().url(), "--quiet"});
+  ASSERT_EQ(upload.status, 0) << upload.err;
+  std::string id = upload.out;
+  while (!id.empty() && (id.back() == '\n' || id.back() == '\r')) id.pop_back();
+  ASSERT_EQ(id.size(), 32u) << "--quiet prints the id alone: '" << upload.out << "'";
+
+  // The CLI found the MTL and the texture the OBJ references.
+  auto client = daemon().client();
+  auto info = client.Get(("/models/" + id).c_str());
+  ASSERT_TRUE(info);
+  EXPECT_EQ(json::parse(info->body)["textures"], 1);
+
+  const auto png = out_dir() / "spot.png";
+  const auto render = toon({"render", "--model", id, "--set", "width=200", "--set", "height=120", "--set",
+                            "outline.width=4", "-o", png.string(), "--server", daemon().url()});
+  ASSERT_EQ(render.status, 0) << render.err;
+  const auto img = image::decode_png(read_file(png));
+  EXPECT_EQ(img.width, 200);
+  EXPECT_EQ(img.height, 120);
+  EXPECT_GT(coverage(foreground_mask(img)), 0.05);
+}
+
+TEST_F(Cli, RenderAPathUploadsItInOneCall) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const auto png = out_dir() / "dog.png";
+  const auto r = toon({"--server", daemon().url(), "render",
+                       (shared_models_dir() / "kenney-cube-pet-dog" / "animal-dog.obj").string(), "--set",
+                       "msaa=1", "-o", png.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto img = image::decode_png(read_file(png));
+  EXPECT_EQ(img.width, 512);
+  EXPECT_GT(coverage(foreground_mask(img)), 0.05);
+}
+
+TEST_F(Cli, RenderWithParamsFileRendersTheDemo) {
+  const auto params = out_dir() / "params.json";
+  {
+    std::ofstream(params) << json{{"width", 96}, {"height", 64}, {"shading", {{"steps", 4}}}}.dump();
+  }
+  const auto png = out_dir() / "demo.png";
+  const auto r = toon({"render", "--params", params.string(), "-o", png.string(), "--server", daemon().url()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto img = image::decode_png(read_file(png));
+  EXPECT_EQ(img.width, 96);
+  EXPECT_EQ(img.height, 64);
+}
+
+TEST_F(Cli, UnknownSetKeyFailsBeforeAnyRequest) {
+  // No server at this address: a usage error must come first.
+  const auto r = toon({"render", "--set", "outline.thickness=3", "-o", "/tmp/never.png", "--server",
+                       "http://127.0.0.1:9"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("outline.thickness"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, BadSetValueFails) {
+  const auto r = toon({"render", "--set", "shading.steps=many", "-o", "/tmp/never.png"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("shading.steps"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, ServerSideRangeErrorIsReportedWithItsPath) {
+  // 1000 is a number, so the CLI accepts the type; the range check names the path.
+  const auto r = toon({"render", "--set", "outline.width=1000", "-o", (out_dir() / "x.png").string(),
+                       "--server", daemon().url()});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("/outline/width"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, UnreachableServerIsANetworkError) {
+  const auto r = toon({"health", "--server", "http://127.0.0.1:9"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("127.0.0.1:9"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, MissingOutputIsAUsageError) {
+  const auto r = toon({"render", "--server", daemon().url()});
+  EXPECT_EQ(r.status, 2);
+}
+
+TEST_F(Cli, HelpListsTheVerbs) {
+  const auto r = toon({"--help"});
+  EXPECT_EQ(r.status, 0);
+  for (const char* verb : {"upload", "render", "health", "--server", "--set"}) {
+    EXPECT_NE(r.out.find(verb), std::string::npos) << verb;
+  }
+}
+
+}  // namespace
+}  // namespace toond::test

@@ -1,0 +1,239 @@
+// What the image shows: size, coverage, bands, texture, outline ring.
+#include <gtest/gtest.h>
+
+#include "support/image_checks.h"
+#include "support/shared_models.h"
+#include "test_client.h"
+
+namespace toond::test {
+namespace {
+
+using nlohmann::json;
+
+class Render : public SharedDaemonTest {
+ protected:
+  std::string upload(const std::string& folder) {
+    auto client = daemon().client();
+    auto res = upload_model_folder(client, shared_models_dir() / folder);
+    if (!res || (res->status != 200 && res->status != 201)) {
+      ADD_FAILURE() << "upload of " << folder << " failed: " << (res ? res->body : "no answer");
+      return {};
+    }
+    return json::parse(res->body)["id"];
+  }
+};
+
+TEST_F(Render, DemoModelRendersAtTheRequestedSize) {
+  auto client = daemon().client();
+  const auto img = render_ok(client, {{"width", 320}, {"height", 200}});
+  EXPECT_EQ(img.width, 320);
+  EXPECT_EQ(img.height, 200);
+  const double cover = coverage(foreground_mask(img));
+  EXPECT_GT(cover, 0.15);
+  EXPECT_LT(cover, 0.85);
+}
+
+TEST_F(Render, DefaultsGiveA512SquareImage) {
+  auto client = daemon().client();
+  const auto img = render_ok(client, json::object());
+  EXPECT_EQ(img.width, 512);
+  EXPECT_EQ(img.height, 512);
+}
+
+TEST_F(Render, BackgroundColourIsHonoured) {
+  auto client = daemon().client();
+  const auto img = render_ok(client, {{"width", 64}, {"height", 64}, {"background", {1, 0, 0, 1}}});
+  const Rgb corner = rgb_at(img, 0, 0);
+  EXPECT_EQ(corner, (Rgb{255, 0, 0}));
+}
+
+// Front light, front camera, no antialiasing: every visible point has
+// N·L > 0, so a model with one colour shows exactly `steps` flat colours.
+TEST_F(Render, BandCountEqualsSteps) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const std::string id = upload("stanford-bunny");
+  auto client = daemon().client();
+  for (int steps : {2, 3, 5}) {
+    const json params = {{"model", id},
+                         {"msaa", 1},
+                         {"camera", {{"yaw", 0}, {"pitch", 0}}},
+                         {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}}}},
+                         {"outline", {{"enabled", false}}},
+                         {"shading", {{"steps", steps}}}};
+    const auto img = render_ok(client, params);
+    const auto mask = foreground_mask(img);
+    ASSERT_GT(coverage(mask), 0.1);
+    EXPECT_EQ(dominant_colours(img, mask, 0.01), static_cast<std::size_t>(steps)) << "steps " << steps;
+  }
+}
+
+TEST_F(Render, PhongIsSmoothWhereCelIsBanded) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const std::string id = upload("stanford-bunny");
+  auto client = daemon().client();
+  json params = {{"model", id}, {"msaa", 1}, {"outline", {{"enabled", false}}}};
+  params["shading"] = {{"mode", "phong"}};
+  const auto phong = render_ok(client, params);
+  params["shading"] = {{"mode", "cel"}, {"steps", 3}};
+  const auto cel = render_ok(client, params);
+  const auto phong_colours = colour_histogram(phong, foreground_mask(phong)).size();
+  const auto cel_colours = colour_histogram(cel, foreground_mask(cel)).size();
+  EXPECT_GT(phong_colours, 4 * cel_colours) << "phong " << phong_colours << " cel " << cel_colours;
+}
+
+// Spot's texture has black patches; without the texture the cow is one
+// colour and nothing inside it is that dark.
+TEST_F(Render, SpotShowsItsTexture) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  auto client = daemon().client();
+  const auto folder = shared_models_dir() / "spot";
+  auto with = upload_files(client, folder, {"spot.obj", "spot.mtl", "spot_texture.png"});
+  auto without = upload_files(client, folder, {"spot.obj", "spot.mtl"});
+  ASSERT_TRUE(with && without);
+  auto dark_fraction = [&](const std::string& id) {
+    const auto img = render_ok(client, {{"model", id}, {"outline", {{"enabled", false}}}, {"msaa", 1}});
+    const auto mask = foreground_mask(img);
+    std::size_t dark = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x)
+        if (mask[static_cast<std::size_t>(y) * img.width + x] && luminance(rgb_at(img, x, y)) < 0.12) ++dark;
+    return static_cast<double>(dark) / static_cast<double>(count(mask));
+  };
+  const double textured = dark_fraction(json::parse(with->body)["id"]);
+  const double plain = dark_fraction(json::parse(without->body)["id"]);
+  EXPECT_GT(textured, 0.03) << "black patches of the texture";
+  EXPECT_LT(plain, 0.001);
+}
+
+// The outline is the difference between a render with and without it: it
+// must lie outside the model, be dark, and close around the silhouette.
+void expect_closed_dark_ring(httplib::Client& client, json params, double width) {
+  params["msaa"] = 1;
+  params["outline"] = {{"enabled", false}};
+  const auto bare = render_ok(client, params);
+  params["outline"] = {{"enabled", true}, {"width", width}, {"color", {0, 0, 0}}};
+  const auto outlined = render_ok(client, params);
+  ASSERT_EQ(bare.width, outlined.width);
+  const int w = bare.width, h = bare.height;
+  const auto model = foreground_mask(bare);
+  std::vector<bool> ring(model.size());
+  std::size_t ring_pixels = 0, inside_changes = 0, light_ring = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      if (rgb_at(bare, x, y) == rgb_at(outlined, x, y)) continue;
+      if (model[i]) {
+        ++inside_changes;
+        continue;
+      }
+      ring[i] = true;
+      ++ring_pixels;
+      if (luminance(rgb_at(outlined, x, y)) > 0.1) ++light_ring;
+    }
+  }
+  EXPECT_EQ(inside_changes, 0u) << "the stencil keeps the outline off the model";
+  EXPECT_GT(ring_pixels, 0u);
+  EXPECT_EQ(light_ring, 0u) << "every outline pixel is dark";
+  // Closed: each silhouette pixel touches the ring within one pixel.
+  const auto edge = boundary(model, w, h);
+  std::size_t open = 0;
+  for (int y = 1; y < h - 1; ++y) {
+    for (int x = 1; x < w - 1; ++x) {
+      if (!edge[static_cast<std::size_t>(y) * w + x]) continue;
+      bool touches = false;
+      for (int dy = -1; dy <= 1 && !touches; ++dy)
+        for (int dx = -1; dx <= 1 && !touches; ++dx)
+          touches = ring[static_cast<std::size_t>(y + dy) * w + x + dx];
+      // Silhouette pixels whose neighbours are all model pixels or ring pixels
+      // only; a background neighbour with no ring is a gap.
+      bool background_neighbour = false;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const std::size_t j = static_cast<std::size_t>(y + dy) * w + x + dx;
+          background_neighbour |= !model[j] && !ring[j];
+        }
+      if (!touches || background_neighbour) ++open;
+    }
+  }
+  EXPECT_EQ(open, 0u) << "silhouette pixels with background and no outline next to them";
+}
+
+TEST_F(Render, OutlineIsAClosedDarkRingAroundSpot) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const std::string id = upload("spot");
+  auto client = daemon().client();
+  expect_closed_dark_ring(client, {{"model", id}}, 3);
+}
+
+// Hard edges split vertices; extruding along the shading normals would
+// tear the hull open at every corner of this blocky dog.
+TEST_F(Render, OutlineStaysClosedOnAHardEdgedModel) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const std::string id = upload("kenney-cube-pet-dog");
+  auto client = daemon().client();
+  expect_closed_dark_ring(client, {{"model", id}, {"camera", {{"yaw", 35}, {"pitch", 25}}}}, 4);
+}
+
+TEST_F(Render, OutlineOnTheDemoModel) {
+  auto client = daemon().client();
+  expect_closed_dark_ring(client, json::object(), 2);
+}
+
+// Width in pixels does not depend on how far away the camera is.
+TEST_F(Render, OutlineWidthDoesNotChangeWithDistance) {
+  auto client = daemon().client();
+  auto ring_area_ratio = [&](double distance_scale) {
+    json params = {{"msaa", 1}, {"camera", {{"fov", 30}}}};
+    params["camera"]["distance"] = distance_scale;
+    params["outline"] = {{"enabled", false}};
+    const auto bare = render_ok(client, params);
+    params["outline"] = {{"enabled", true}, {"width", 3}};
+    const auto outlined = render_ok(client, params);
+    const auto m = foreground_mask(bare);
+    const auto edge = boundary(m, bare.width, bare.height);
+    std::size_t ring = 0;
+    for (int y = 0; y < bare.height; ++y)
+      for (int x = 0; x < bare.width; ++x)
+        if (rgb_at(bare, x, y) != rgb_at(outlined, x, y)) ++ring;
+    // Ring area per silhouette pixel is the ring's width in pixels.
+    return static_cast<double>(ring) / static_cast<double>(count(edge));
+  };
+  const double near_width = ring_area_ratio(4.0);
+  const double far_width = ring_area_ratio(9.0);
+  EXPECT_NEAR(near_width, 3.0, 1.0);
+  EXPECT_NEAR(far_width, 3.0, 1.0);
+  EXPECT_NEAR(near_width, far_width, 0.6);
+}
+
+TEST_F(Render, OneShotMultipartRenderUploadsAndRenders) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  auto client = daemon().client();
+  const auto folder = shared_models_dir() / "spot";
+  httplib::MultipartFormDataItems items;
+  for (const char* f : {"spot.obj", "spot.mtl", "spot_texture.png"}) {
+    items.push_back({"file", read_file(folder / f), f, "application/octet-stream"});
+  }
+  items.push_back({"params", json{{"width", 200}, {"height", 100}}.dump(), "", "application/json"});
+  auto res = client.Post("/render", items);
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  const auto img = image::decode_png(res->body);
+  EXPECT_EQ(img.width, 200);
+  EXPECT_EQ(img.height, 100);
+  EXPECT_GT(coverage(foreground_mask(img)), 0.05);
+}
+
+TEST_F(Render, ServerTimingNamesThePassesThatRan) {
+  auto client = daemon().client();
+  auto res = post_json(client, "/render", {{"width", 64}, {"height", 64}, {"outline", {{"width", 0}}}, {"msaa", 1}});
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200);
+  EXPECT_EQ(res->get_header_value("X-Toond-Passes"), "main,readback");
+  EXPECT_NE(res->get_header_value("Server-Timing").find("main;dur="), std::string::npos);
+  auto with_outline = post_json(client, "/render", {{"width", 64}, {"height", 64}, {"msaa", 4}});
+  ASSERT_TRUE(with_outline);
+  EXPECT_EQ(with_outline->get_header_value("X-Toond-Passes"), "main,hull_outline,resolve,readback");
+}
+
+}  // namespace
+}  // namespace toond::test

@@ -1,0 +1,63 @@
+#include "test_client.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "image/png_codec.h"
+#include "support/shared_models.h"
+
+namespace toond::test {
+
+httplib::Result upload_files(httplib::Client& client, const std::filesystem::path& folder,
+                             const std::vector<std::string>& files) {
+  httplib::MultipartFormDataItems items;
+  for (const auto& f : files) {
+    items.push_back({"file", read_file(folder / f), f, "application/octet-stream"});
+  }
+  return client.Post("/models", items);
+}
+
+httplib::Result upload_model_folder(httplib::Client& client, const std::filesystem::path& folder) {
+  static const std::vector<std::string> wanted = {".obj", ".mtl", ".png", ".jpg", ".jpeg", ".tga", ".bmp"};
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+    if (!entry.is_regular_file()) continue;
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (std::find(wanted.begin(), wanted.end(), ext) == wanted.end()) continue;
+    files.push_back(std::filesystem::relative(entry.path(), folder).generic_string());
+  }
+  std::sort(files.begin(), files.end());
+  return upload_files(client, folder, files);
+}
+
+httplib::Result post_json(httplib::Client& client, const std::string& path, const nlohmann::json& body) {
+  return client.Post(path.c_str(), body.dump(), "application/json");
+}
+
+image::Image render_ok(httplib::Client& client, const nlohmann::json& params) {
+  auto res = post_json(client, "/render", params);
+  if (!res) {
+    ADD_FAILURE() << "no answer from /render: " << httplib::to_string(res.error());
+    return {};
+  }
+  if (res->status != 200) {
+    ADD_FAILURE() << "/render answered " << res->status << ": " << res->body;
+    return {};
+  }
+  EXPECT_EQ(res->get_header_value("Content-Type"), "image/png");
+  return image::decode_png(res->body);
+}
+
+nlohmann::json error_of(const httplib::Result& res) {
+  if (!res) return nlohmann::json::object();
+  auto body = nlohmann::json::parse(res->body, nullptr, false);
+  if (body.is_discarded() || !body.contains("error")) {
+    ADD_FAILURE() << "error answer is not the JSON error shape: " << res->body;
+    return nlohmann::json::object();
+  }
+  return body["error"];
+}
+
+}  // namespace toond::test

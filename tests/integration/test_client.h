@@ -1,0 +1,43 @@
+#pragma once
+// HTTP helpers shared by the integration tests.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include "image/image.h"
+#include "support/daemon.h"
+
+namespace toond::test {
+
+// One daemon shared by every test of a suite: starting llvmpipe and the
+// demo import once keeps the suite fast.
+class SharedDaemonTest : public ::testing::Test {
+ public:
+  static void SetUpTestSuite() { daemon_ = std::make_unique<Daemon>(); }
+  static void TearDownTestSuite() { daemon_.reset(); }
+
+ protected:
+  static Daemon& daemon() { return *daemon_; }
+  static inline std::unique_ptr<Daemon> daemon_;
+};
+
+// Uploads the named files of a folder (paths relative to it) as a bundle.
+httplib::Result upload_files(httplib::Client& client, const std::filesystem::path& folder,
+                             const std::vector<std::string>& files);
+// Uploads every file of a shared model folder whose extension is a model
+// or image file (SOURCE.txt, licences and READMEs are left out).
+httplib::Result upload_model_folder(httplib::Client& client, const std::filesystem::path& folder);
+
+httplib::Result post_json(httplib::Client& client, const std::string& path, const nlohmann::json& body);
+
+// POST /render that must succeed; returns the decoded PNG.
+image::Image render_ok(httplib::Client& client, const nlohmann::json& params);
+
+// The "error" object of a JSON error answer.
+nlohmann::json error_of(const httplib::Result& res);
+
+}  // namespace toond::test
