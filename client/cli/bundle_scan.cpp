@@ -22,8 +22,8 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' |
 char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
 
 bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return lower(x) == lower(y); });
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
+                                            [](char x, char y) { return lower(x) == lower(y); });
 }
 
 struct Token {
@@ -78,8 +78,8 @@ bool is_number(const std::string& s) {
 // which take one to three numbers; 0 when `token` is no option at all.
 int option_arity(std::string_view token) {
   static constexpr std::pair<std::string_view, int> kOptions[] = {
-      {"-blendu", 1}, {"-blendv", 1}, {"-bm", 1},      {"-boost", 1},      {"-cc", 1},
-      {"-clamp", 1},  {"-imfchan", 1}, {"-texres", 1}, {"-type", 1},       {"-colorspace", 1},
+      {"-blendu", 1}, {"-blendv", 1},  {"-bm", 1},     {"-boost", 1}, {"-cc", 1},
+      {"-clamp", 1},  {"-imfchan", 1}, {"-texres", 1}, {"-type", 1},  {"-colorspace", 1},
       {"-mm", 2},     {"-o", -1},      {"-s", -1},     {"-t", -1}};
   for (const auto& [name, arity] : kOptions) {
     if (iequals(token, name)) return arity;
@@ -119,7 +119,13 @@ std::optional<std::string> read_file(const fs::path& path) {
   return ss.str();
 }
 
-std::string in_quotes(std::string_view s) { return "'" + std::string(s) + "'"; }
+// Appending rather than "'" + ... sidesteps GCC 12's false -Wrestrict
+// on string concatenation at -O3.
+std::string in_quotes(std::string_view s) {
+  std::string out(1, '\'');
+  out.append(s).push_back('\'');
+  return out;
+}
 
 // The outcome of looking up one reference.
 struct Lookup {
@@ -212,14 +218,9 @@ class Scanner {
                                             const std::string& ref, const Lookup& l) {
     const std::string what = from + ": " + std::string(keyword) + " " + in_quotes(ref);
     switch (l.kind) {
-      case Lookup::missing:
-        warn(what + " not found; not sent");
-        return std::nullopt;
-      case Lookup::refused:
-        warn(what + " refused: " + l.why + "; not sent");
-        return std::nullopt;
-      case Lookup::found:
-        break;
+      case Lookup::missing: warn(what + " not found; not sent"); return std::nullopt;
+      case Lookup::refused: warn(what + " refused: " + l.why + "; not sent"); return std::nullopt;
+      case Lookup::found: break;
     }
     if (sent_.count(l.name)) return std::nullopt;
     std::optional<std::string> content = read_file(root_ / fs::path(l.name));
@@ -247,8 +248,8 @@ class Scanner {
   Lookup lookup(const std::string& from_dir, std::string ref) const {
     std::replace(ref.begin(), ref.end(), '\\', '/');
     if (ref.empty()) return {Lookup::missing, {}, {}};
-    const bool drive = ref.size() >= 2 && std::isalpha(static_cast<unsigned char>(ref[0])) &&
-                       ref[1] == ':';
+    const bool drive =
+        ref.size() >= 2 && std::isalpha(static_cast<unsigned char>(ref[0])) && ref[1] == ':';
     if (ref.front() == '/' || drive) return {Lookup::refused, {}, "absolute path"};
 
     std::vector<std::string> segments;
@@ -330,8 +331,8 @@ class Scanner {
 }  // namespace
 
 bool is_texture_keyword(std::string_view keyword) {
-  static constexpr std::string_view kKeywords[] = {"map_Kd", "map_Ks", "map_Ns", "map_d",
-                                                   "map_Bump", "bump", "norm", "disp"};
+  static constexpr std::string_view kKeywords[] = {"map_Kd",   "map_Ks", "map_Ns", "map_d",
+                                                   "map_Bump", "bump",   "norm",   "disp"};
   return std::any_of(std::begin(kKeywords), std::end(kKeywords),
                      [&](std::string_view k) { return iequals(k, keyword); });
 }

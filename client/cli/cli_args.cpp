@@ -6,7 +6,6 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
-#include <iterator>
 #include <sstream>
 
 #include "param_schema.h"
@@ -76,12 +75,13 @@ Verb verb_from_name(std::string_view name) {
 }
 
 std::string read_params_text(const std::string& file) {
+  std::ostringstream ss;
   if (file == "-") {
-    return std::string(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+    ss << std::cin.rdbuf();
+    return ss.str();
   }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw UsageError("cannot read --params file " + file + ": " + std::strerror(errno));
-  std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
 }
@@ -101,15 +101,15 @@ const json* schema_node(const json& root, const std::vector<std::string>& segmen
                         std::size_t count) {
   const json* s = &root;
   for (std::size_t i = 0; i < count; ++i) {
-    const json* next = nullptr;
-    if (auto props = s->find("properties"); props != s->end()) {
-      if (auto p = props->find(segments[i]); p != props->end()) next = &*p;
+    if (!s->is_object()) return nullptr;
+    const json& node = *s;
+    if (node.contains("properties") && node["properties"].contains(segments[i])) {
+      s = &node["properties"][segments[i]];
+    } else if (is_index(segments[i]) && node.contains("items") && node["items"].is_object()) {
+      s = &node["items"];
+    } else {
+      return nullptr;
     }
-    if (!next && is_index(segments[i])) {
-      if (auto items = s->find("items"); items != s->end() && items->is_object()) next = &*items;
-    }
-    if (!next) return nullptr;
-    s = next;
   }
   return s;
 }
@@ -132,7 +132,7 @@ void seed_absent_arrays(json& params, const json& schema, std::string_view dotte
     const std::string& seg = segments[i];
     json* child = nullptr;
     if (slot->is_object()) {
-      if (auto it = slot->find(seg); it != slot->end()) child = &*it;
+      if (slot->contains(seg)) child = &(*slot)[seg];
     } else if (slot->is_array() && is_index(seg)) {
       const std::size_t index = std::strtoul(seg.c_str(), nullptr, 10);
       if (index < slot->size()) child = &(*slot)[index];
@@ -171,7 +171,10 @@ ServerUrl parse_server_url(std::string_view url) {
       break;
     }
   }
-  const std::string quoted = "'" + std::string(url) + "'";
+  // Appending rather than "'" + ... sidesteps GCC 12's false -Wrestrict
+  // on string concatenation at -O3.
+  std::string quoted(1, '\'');
+  quoted.append(url).push_back('\'');
   if (scheme.empty()) {
     throw UsageError("--server " + quoted + ": expected http://HOST[:PORT] or https://HOST[:PORT]");
   }
@@ -261,7 +264,8 @@ Options parse_args(const std::vector<std::string>& args,
     } else if (c.take("--set", value)) {
       const std::size_t eq = value.find('=');
       if (eq == std::string::npos || eq == 0) {
-        throw UsageError("--set '" + value + "': expected key.sub=value, e.g. --set outline.width=3");
+        throw UsageError("--set '" + value +
+                         "': expected key.sub=value, e.g. --set outline.width=3");
       }
       o.sets.emplace_back(value.substr(0, eq), value.substr(eq + 1));
       seen_flags.push_back("--set");
@@ -297,7 +301,8 @@ Options parse_args(const std::vector<std::string>& args,
   for (const std::string& flag : seen_flags) {
     const bool allowed = (flag == "--quiet" && o.verb == Verb::upload) ||
                          (flag != "--quiet" && o.verb == Verb::render);
-    if (!allowed) throw UsageError(verb + " does not take " + flag + " (see toon " + verb + " --help)");
+    if (!allowed)
+      throw UsageError(verb + " does not take " + flag + " (see toon " + verb + " --help)");
   }
 
   switch (o.verb) {
@@ -325,8 +330,7 @@ Options parse_args(const std::vector<std::string>& args,
         throw UsageError("render needs -o OUT.png (or -o - for standard output)");
       }
       break;
-    case Verb::none:
-      break;
+    case Verb::none: break;
   }
   return o;
 }
@@ -353,8 +357,8 @@ nlohmann::json build_render_params(const Options& options, const proto::ParamSch
       // The schema's message may already start with "key=value: ".
       const std::string message = e.what();
       const std::string assignment = key + "=" + text;
-      throw UsageError("--set " + (message.rfind(assignment, 0) == 0 ? message
-                                                                    : assignment + ": " + message));
+      throw UsageError("--set " +
+                       (message.rfind(assignment, 0) == 0 ? message : assignment + ": " + message));
     } catch (const json::exception& e) {
       // A --set that walks into a scalar the params file already holds
       // ("--set outline.width.x=1" after "outline": 3).
@@ -419,8 +423,7 @@ Options:
                         --set background=[1,1,1] --set lights.0.intensity=1.5
   -o, --output FILE   where to write the PNG (required; - for standard output)
 )";
-    case Verb::none:
-      break;
+    case Verb::none: break;
   }
   return R"(toon - command-line client for toond, the toon-rendering daemon
 

@@ -2,14 +2,13 @@
 // Command-line parsing for `toon`, kept apart from the network code so every
 // rule (where --server may stand, which flags a verb takes, how --set is
 // checked) can be unit-tested without a daemon.
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace toond::proto {
 class ParamSchema;
@@ -39,9 +38,9 @@ struct Options {
   bool quiet = false;
   // render
   std::string model_id;
-  std::string params_file;  // "-" reads standard input
+  std::string params_file;                                // "-" reads standard input
   std::vector<std::pair<std::string, std::string>> sets;  // in command-line order
-  std::string output;  // "-" writes to standard output
+  std::string output;                                     // "-" writes to standard output
 };
 
 // `args` excludes argv[0]. `env_server` is TOOND_URL (nullopt when unset), a

@@ -1,5 +1,6 @@
 #include "commands.h"
 
+#include <httplib.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -8,8 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-
-#include <httplib.h>
 #include <nlohmann/json.hpp>
 
 #include "bundle_scan.h"
@@ -40,7 +39,8 @@ class Connection {
   httplib::Result post_json(const std::string& path, const json& body) {
     return client_.Post(url_.base_path + path, body.dump(), "application/json");
   }
-  httplib::Result post_multipart(const std::string& path, const httplib::MultipartFormDataItems& items) {
+  httplib::Result post_multipart(const std::string& path,
+                                 const httplib::MultipartFormDataItems& items) {
     return client_.Post(url_.base_path + path, items);
   }
 
@@ -105,8 +105,8 @@ std::string bundle_summary(const BundleScan& scan) {
     bytes += f.content.size();
     names += " " + f.name;
   }
-  return std::to_string(scan.files.size()) + (scan.files.size() == 1 ? " file" : " files") +
-         " (" + human_bytes(bytes) + "):" + names;
+  return std::to_string(scan.files.size()) + (scan.files.size() == 1 ? " file" : " files") + " (" +
+         human_bytes(bytes) + "):" + names;
 }
 
 int health(const Options& options) {
@@ -140,8 +140,8 @@ int upload(const Options& options) {
     return 1;
   }
   if (options.quiet) {
-    if (auto w = body.find("warnings"); w != body.end() && w->is_array()) {
-      for (const json& warning : *w) {
+    if (body.contains("warnings") && body["warnings"].is_array()) {
+      for (const json& warning : body["warnings"]) {
         std::cerr << "toon: server warning: "
                   << (warning.is_string() ? warning.get<std::string>() : warning.dump()) << "\n";
       }
@@ -172,7 +172,8 @@ class OutputFile {
     }
     temporary_ = destination_ + ".part-" + std::to_string(::getpid());
     out_.open(temporary_, std::ios::binary | std::ios::trunc);
-    if (!out_) throw UsageError("-o " + destination_ + ": cannot write there: " + std::strerror(errno));
+    if (!out_)
+      throw UsageError("-o " + destination_ + ": cannot write there: " + std::strerror(errno));
   }
   ~OutputFile() {
     if (!temporary_.empty() && !committed_) {
@@ -240,8 +241,10 @@ int render(const Options& options) {
   }
 
   std::cerr << "toon: wrote " << (options.output == "-" ? "standard output" : options.output);
-  if (auto size = png_size(result->body)) std::cerr << " (" << size->first << "x" << size->second;
-  else std::cerr << " (not a PNG?";
+  if (auto size = png_size(result->body))
+    std::cerr << " (" << size->first << "x" << size->second;
+  else
+    std::cerr << " (not a PNG?";
   std::cerr << ", " << human_bytes(result->body.size()) << ")";
   if (std::string timing = result->get_header_value("Server-Timing"); !timing.empty()) {
     std::cerr << "; server timing: " << timing;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
-
 #include <nlohmann/json.hpp>
 
 namespace toond::cli {
@@ -72,9 +71,9 @@ std::string content_type_for(std::string_view file_name) {
 
 std::string human_bytes(std::uint64_t bytes) {
   char buf[32];
-  if (bytes >= 1000 * 1000) {
+  if (bytes >= 1000000u) {
     std::snprintf(buf, sizeof buf, "%.1f MB", static_cast<double>(bytes) / 1e6);
-  } else if (bytes >= 1000) {
+  } else if (bytes >= 1000u) {
     std::snprintf(buf, sizeof buf, "%.0f KB", static_cast<double>(bytes) / 1e3);
   } else {
     std::snprintf(buf, sizeof buf, "%llu bytes", static_cast<unsigned long long>(bytes));

@@ -293,6 +293,7 @@ class Importer {
       for (std::string line; std::getline(lines, line);) {
         line = trim(line);
         if (line.empty() || line == ".") continue;
+        std::replace(line.begin(), line.end(), '\x1f', ' ');  // undo material_alias for display
         // tinyobj silently skips such quads; a model with holes is worse
         // than a clear refusal.
         if (line.find("invalid vertex index") != std::string::npos) {
@@ -441,7 +442,11 @@ class Importer {
     if (const auto it = texture_slots_.find(*path); it != texture_slots_.end()) return it->second;
     int slot = -1;
     try {
-      model_.textures.push_back(decode_texture(*bundle_.find(*path), *path));
+      TextureLimits limits;
+      limits.max_pixels = std::min(limits.max_pixels, texture_pixels_left_);
+      model_.textures.push_back(decode_texture(*bundle_.find(*path), *path, limits));
+      const Texture& texture = model_.textures.back();
+      texture_pixels_left_ -= static_cast<std::uint64_t>(texture.width) * static_cast<std::uint64_t>(texture.height);
       slot = static_cast<int>(model_.textures.size()) - 1;
     } catch (const std::exception& e) {
       warnings_.add(*path + ": texture of material " + quoted(material_name) + " cannot be used: " + e.what() +
@@ -624,6 +629,9 @@ class Importer {
   std::vector<Triangle> triangles_;
   glm::dvec3 origin_{0.0};
   std::map<std::string, int> texture_slots_;
+  // All textures of one model together: many materials each naming a large
+  // image must not add up to more memory than one upload deserves (1 GiB).
+  std::uint64_t texture_pixels_left_ = 256ull * 1024 * 1024;
   Model model_;
 };
 

@@ -28,8 +28,9 @@ TEST_F(ModelRoutes, SpotUploadsWithItsTextureAndTheSameBundleKeepsItsId) {
 
   auto listed = client.Get("/models");
   ASSERT_TRUE(listed);
+  const auto models = nlohmann::json::parse(listed->body);
   bool found = false;
-  for (const auto& m : nlohmann::json::parse(listed->body)["models"]) found |= m["id"] == info["id"];
+  for (const auto& m : models["models"]) found |= m["id"] == info["id"];
   EXPECT_TRUE(found);
 
   const std::string id = info["id"];

@@ -1,6 +1,7 @@
 // What the image shows: size, coverage, bands, texture, outline ring.
 #include <gtest/gtest.h>
 
+#include "image/png_codec.h"
 #include "support/image_checks.h"
 #include "support/shared_models.h"
 #include "test_client.h"
@@ -63,7 +64,10 @@ TEST_F(Render, BandCountEqualsSteps) {
     const auto img = render_ok(client, params);
     const auto mask = foreground_mask(img);
     ASSERT_GT(coverage(mask), 0.1);
-    EXPECT_EQ(dominant_colours(img, mask, 0.01), static_cast<std::size_t>(steps)) << "steps " << steps;
+    // Without antialiasing every pixel is a band colour; grazing pixels at
+    // the silhouette may show the unlit level (N·L <= 0) too.
+    EXPECT_LE(colour_histogram(img, mask).size(), static_cast<std::size_t>(steps) + 1);
+    EXPECT_EQ(dominant_colours(img, mask, 0.002), static_cast<std::size_t>(steps)) << "steps " << steps;
   }
 }
 
@@ -96,7 +100,7 @@ TEST_F(Render, SpotShowsItsTexture) {
     std::size_t dark = 0;
     for (int y = 0; y < img.height; ++y)
       for (int x = 0; x < img.width; ++x)
-        if (mask[static_cast<std::size_t>(y) * img.width + x] && luminance(rgb_at(img, x, y)) < 0.12) ++dark;
+        if (mask[static_cast<std::size_t>(y) * img.width + x] && luminance(rgb_at(img, x, y)) < 0.25) ++dark;
     return static_cast<double>(dark) / static_cast<double>(count(mask));
   };
   const double textured = dark_fraction(json::parse(with->body)["id"]);
@@ -198,8 +202,10 @@ TEST_F(Render, OutlineWidthDoesNotChangeWithDistance) {
     // Ring area per silhouette pixel is the ring's width in pixels.
     return static_cast<double>(ring) / static_cast<double>(count(edge));
   };
-  const double near_width = ring_area_ratio(4.0);
-  const double far_width = ring_area_ratio(9.0);
+  // The demo's bounding sphere has a radius of about 1.35: at 6 units it
+  // fills the frame, at 14 it is less than half as large.
+  const double near_width = ring_area_ratio(6.0);
+  const double far_width = ring_area_ratio(14.0);
   EXPECT_NEAR(near_width, 3.0, 1.0);
   EXPECT_NEAR(far_width, 3.0, 1.0);
   EXPECT_NEAR(near_width, far_width, 0.6);

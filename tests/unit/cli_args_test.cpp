@@ -1,7 +1,8 @@
 // The `toon` CLI without a daemon: argument parsing, --set against the
 // schema, bundle discovery on disk, and the wording of server errors.
-#include <gtest/gtest.h>
+#include "cli_args.h"
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,7 +14,6 @@
 #include <vector>
 
 #include "bundle_scan.h"
-#include "cli_args.h"
 #include "param_schema.h"
 #include "reply.h"
 #include "support/shared_models.h"
@@ -55,8 +55,8 @@ TEST(CliArgs, ServerBeforeVerb) {
 }
 
 TEST(CliArgs, ServerAfterVerbAndEqualsForm) {
-  const Options o = parse({"render", "--model", "0123456789abcdef", "-o", "x.png",
-                           "--server=http://renderhost:81"});
+  const Options o = parse(
+      {"render", "--model", "0123456789abcdef", "-o", "x.png", "--server=http://renderhost:81"});
   EXPECT_EQ(o.verb, Verb::render);
   EXPECT_EQ(o.server, "http://renderhost:81");
 }
@@ -74,7 +74,8 @@ TEST(CliArgs, ServerFromEnvironmentUnlessFlagGiven) {
 
 TEST(CliArgs, ToondUrlIsReadFromTheProcessEnvironment) {
   const char* saved = std::getenv("TOOND_URL");
-  const std::optional<std::string> restore = saved ? std::optional<std::string>(saved) : std::nullopt;
+  const std::optional<std::string> restore =
+      saved ? std::optional<std::string>(saved) : std::nullopt;
   ::setenv("TOOND_URL", "http://from-env:1234", 1);
   EXPECT_EQ(parse({"health"}, server_from_environment()).server, "http://from-env:1234");
   ::setenv("TOOND_URL", "", 1);
@@ -106,8 +107,9 @@ TEST(CliArgs, ServerUrlKeepsAPathPrefixForProxies) {
 }
 
 TEST(CliArgs, ServerGivenTwiceIsRejected) {
-  EXPECT_TRUE(contains(usage_error([] { parse({"--server", "http://a:1", "health", "--server",
-                                               "http://b:2"}); }),
+  EXPECT_TRUE(contains(usage_error([] {
+                         parse({"--server", "http://a:1", "health", "--server", "http://b:2"});
+                       }),
                        "twice"));
 }
 
@@ -120,8 +122,13 @@ TEST(CliArgs, NoVerbOrUnknownVerbOrOptionIsRejected) {
 }
 
 TEST(CliArgs, FlagsOfOneVerbAreRejectedOnAnother) {
-  EXPECT_TRUE(contains(usage_error([] { parse({"health", "-o", "x.png"}); }), "health does not take -o"));
-  EXPECT_TRUE(contains(usage_error([] { parse({"upload", "a.obj", "--set", "width=5"}); }),
+  EXPECT_TRUE(contains(usage_error([] {
+                         parse({"health", "-o", "x.png"});
+                       }),
+                       "health does not take -o"));
+  EXPECT_TRUE(contains(usage_error([] {
+                         parse({"upload", "a.obj", "--set", "width=5"});
+                       }),
                        "--set"));
   EXPECT_TRUE(contains(usage_error([] { parse({"render", "-q", "-o", "x.png"}); }), "--quiet"));
   EXPECT_FALSE(usage_error([] { parse({"health", "extra"}); }).empty());
@@ -142,9 +149,11 @@ TEST(CliArgs, RenderRequiresOutput) {
 }
 
 TEST(CliArgs, RenderRejectsPathTogetherWithModel) {
-  EXPECT_TRUE(contains(
-      usage_error([] { parse({"render", "spot.obj", "--model", "0123456789abcdef", "-o", "x.png"}); }),
-      "not both"));
+  EXPECT_TRUE(
+      contains(usage_error([] {
+                 parse({"render", "spot.obj", "--model", "0123456789abcdef", "-o", "x.png"});
+               }),
+               "not both"));
 }
 
 TEST(CliArgs, RenderForms) {
@@ -153,7 +162,8 @@ TEST(CliArgs, RenderForms) {
   EXPECT_TRUE(demo.model_id.empty());
   EXPECT_EQ(demo.output, "demo.png");
 
-  const Options local = parse({"render", "spot/spot.obj", "--output=spot.png", "--params", "p.json"});
+  const Options local =
+      parse({"render", "spot/spot.obj", "--output=spot.png", "--params", "p.json"});
   EXPECT_EQ(local.obj_path, "spot/spot.obj");
   EXPECT_EQ(local.output, "spot.png");
   EXPECT_EQ(local.params_file, "p.json");
@@ -167,7 +177,9 @@ TEST(CliArgs, RenderForms) {
 }
 
 TEST(CliArgs, SetNeedsKeyEqualsValue) {
-  EXPECT_TRUE(contains(usage_error([] { parse({"render", "-o", "x", "--set", "outline.width"}); }),
+  EXPECT_TRUE(contains(usage_error([] {
+                         parse({"render", "-o", "x", "--set", "outline.width"});
+                       }),
                        "key.sub=value"));
   EXPECT_FALSE(usage_error([] { parse({"render", "-o", "x", "--set", "=3"}); }).empty());
   const Options o = parse({"render", "-o", "x", "--set=background=[1,1,1]"});
@@ -193,8 +205,8 @@ TEST(CliArgs, HelpAndVersionNeedNothingElse) {
 
 TEST(CliArgs, UsageTextListsVerbsAndFlags) {
   const std::string all = usage_text(Verb::none);
-  for (const char* word : {"health", "upload", "render", "--server", "TOOND_URL", "--help",
-                           "--version"}) {
+  for (const char* word :
+       {"health", "upload", "render", "--server", "TOOND_URL", "--help", "--version"}) {
     EXPECT_TRUE(contains(all, word)) << word;
   }
   const std::string render = usage_text(Verb::render);
@@ -241,7 +253,8 @@ TEST(RenderParams, BadValueTypeIsRejectedNamingTheKey) {
 
 TEST(RenderParams, OutOfRangeAndEnumAreCaughtLocally) {
   const Options wide = parse({"render", "-o", "x.png", "--set", "outline.width=100"});
-  EXPECT_TRUE(contains(usage_error([&] { build_render_params(wide, schema()); }), "/outline/width"));
+  EXPECT_TRUE(
+      contains(usage_error([&] { build_render_params(wide, schema()); }), "/outline/width"));
   const Options msaa = parse({"render", "-o", "x.png", "--set", "msaa=3"});
   EXPECT_TRUE(contains(usage_error([&] { build_render_params(msaa, schema()); }), "/msaa"));
   const Options mode = parse({"render", "-o", "x.png", "--set", "shading.mode=watercolor"});
@@ -295,8 +308,10 @@ class TempDir {
 
 TEST(RenderParams, ParamsFileIsTheBaseAndSetsOverrideIt) {
   TempDir dir;
-  const fs::path file = dir.write("p.json", R"({"width":320,"outline":{"width":1,"color":[0,0,1]}})");
-  const Options o = parse({"render", "--params", file.string(), "--set", "outline.width=6", "-o", "x.png"});
+  const fs::path file =
+      dir.write("p.json", R"({"width":320,"outline":{"width":1,"color":[0,0,1]}})");
+  const Options o =
+      parse({"render", "--params", file.string(), "--set", "outline.width=6", "-o", "x.png"});
   const json p = build_render_params(o, schema());
   EXPECT_EQ(p["width"], 320);
   EXPECT_EQ(p["outline"]["width"], 6.0);
@@ -314,7 +329,8 @@ TEST(RenderParams, BrokenParamsFilesAreUsageErrors) {
   EXPECT_TRUE(contains(message_for("[1,2,3]"), "JSON object"));
   EXPECT_TRUE(contains(message_for(R"({"outline":{"thickness":2}})"), "/outline/thickness"));
 
-  const Options missing = parse({"render", "--params", (dir.path() / "nope.json").string(), "-o", "x"});
+  const Options missing =
+      parse({"render", "--params", (dir.path() / "nope.json").string(), "-o", "x"});
   EXPECT_TRUE(contains(usage_error([&] { build_render_params(missing, schema()); }), "nope.json"));
 }
 
@@ -361,16 +377,16 @@ TEST(BundleScan, FindsMtlAndTexturesWithSubfoldersBackslashesAndCase) {
   dir.write("model/model.mtl",
             "newmtl a\n"
             "Kd 1 1 1\n"
-            "map_Kd Textures\\Color.PNG\n"        // backslash and wrong case
-            "map_Bump -bm 2 sub/normal.png\n"    // option before the name
+            "map_Kd Textures\\Color.PNG\n"          // backslash and wrong case
+            "map_Bump -bm 2 sub/normal.png\n"       // option before the name
             "map_Ns -imfchan r spec.png -bm 1.5\n"  // option after the name
-            "bump texture 01.png\n"             // unescaped space
-            "  map_d ../secret.png\n"           // leaves the folder
-            "map_Ks /etc/passwd\n"              // absolute
-            "norm nothere.png\n"                // missing
+            "bump texture 01.png\n"                 // unescaped space
+            "  map_d ../secret.png\n"               // leaves the folder
+            "map_Ks /etc/passwd\n"                  // absolute
+            "norm nothere.png\n"                    // missing
             "newmtl b\n"
-            "map_kd textures/color.png\n"       // same file again, other keyword case
-            "map_Ka ambient.png\n");            // not a texture toond uses
+            "map_kd textures/color.png\n"  // same file again, other keyword case
+            "map_Ka ambient.png\n");       // not a texture toond uses
   dir.write("model/textures/color.png", "colour");
   dir.write("model/sub/normal.png", "normal");
   dir.write("model/spec.png", "spec");
@@ -379,8 +395,9 @@ TEST(BundleScan, FindsMtlAndTexturesWithSubfoldersBackslashesAndCase) {
   dir.write("secret.png", "must never be sent");
 
   const BundleScan scan = scan_obj_bundle(root / "model.obj");
-  EXPECT_EQ(names(scan), (std::vector<std::string>{"model.obj", "model.mtl", "textures/color.png",
-                                                   "sub/normal.png", "spec.png", "texture 01.png"}));
+  EXPECT_EQ(names(scan),
+            (std::vector<std::string>{"model.obj", "model.mtl", "textures/color.png",
+                                      "sub/normal.png", "spec.png", "texture 01.png"}));
   EXPECT_EQ(scan.files[2].content, "colour");
   EXPECT_TRUE(has_warning(scan, "missing.mtl"));
   EXPECT_TRUE(has_warning(scan, "'../secret.png' refused"));
@@ -464,7 +481,8 @@ TEST(BundleScan, SharedModelsResolveCompletely) {
   EXPECT_TRUE(windmill.warnings.empty());
 
   // Missing references upstream are warnings, never errors.
-  const BundleScan options = scan_obj_bundle(models / "edge-cases/tinyobjloader/texture-options-issue-85.obj");
+  const BundleScan options =
+      scan_obj_bundle(models / "edge-cases/tinyobjloader/texture-options-issue-85.obj");
   EXPECT_GE(options.files.size(), 2u);
   EXPECT_FALSE(options.warnings.empty());
 }
@@ -472,12 +490,16 @@ TEST(BundleScan, SharedModelsResolveCompletely) {
 // ---------------------------------------------------------------- replies
 
 TEST(Reply, ToondErrorBodyBecomesOneLine) {
-  EXPECT_EQ(describe_error_reply(
-                400, R"({"error":{"code":"invalid_parameter","message":"too wide","path":"/outline/width"}})",
-                ""),
-            "error 400 invalid_parameter at /outline/width: too wide");
-  EXPECT_EQ(describe_error_reply(404, R"({"error":{"code":"unknown_model","message":"no such model","path":""}})", ""),
-            "error 404 unknown_model: no such model");
+  EXPECT_EQ(
+      describe_error_reply(
+          400,
+          R"({"error":{"code":"invalid_parameter","message":"too wide","path":"/outline/width"}})",
+          ""),
+      "error 400 invalid_parameter at /outline/width: too wide");
+  EXPECT_EQ(
+      describe_error_reply(
+          404, R"({"error":{"code":"unknown_model","message":"no such model","path":""}})", ""),
+      "error 404 unknown_model: no such model");
   EXPECT_EQ(describe_error_reply(503, R"({"error":{"code":"busy","message":"queue full"}})", "2"),
             "error 503 busy: queue full (busy; retry after 2 s)");
 }

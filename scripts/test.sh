@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The README's second command, and the whole of CI: installs what is
+# missing, builds with -Werror, runs every test, then builds again with
+# AddressSanitizer + UndefinedBehaviorSanitizer and runs every test there.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+
+jobs=$(nproc)
+echo "== build (warnings are errors)"
+scripts/build.sh build -DTOOND_WERROR=ON -DTOOND_TESTS=ON
+echo "== tests"
+ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600
+
+echo "== build with ASan + UBSan"
+scripts/build.sh build-asan -DTOOND_WERROR=ON -DTOOND_TESTS=ON -DTOOND_SANITIZE=ON \
+  -DCMAKE_BUILD_TYPE=Debug
+echo "== tests under ASan + UBSan"
+# Mesa's llvmpipe keeps some allocations for the life of the process; leaks
+# are checked in our code through the suppressions file, not switched off.
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+ctest --test-dir build-asan --output-on-failure -j "$jobs" --timeout 900

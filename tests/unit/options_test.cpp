@@ -1,0 +1,45 @@
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "app/options.h"
+
+namespace toond::app {
+namespace {
+
+TEST(DaemonOptions, DefaultsFollowTheWireContract) {
+  const Options o = parse_options({});
+  EXPECT_EQ(o.host, "127.0.0.1");
+  EXPECT_EQ(o.port, 8080);
+  EXPECT_FALSE(o.gpu.has_value());
+}
+
+TEST(DaemonOptions, ListenDataDirAndGpu) {
+  const Options o = parse_options({"--listen", "0.0.0.0:0", "--data-dir", "/tmp/x", "--gpu", "1"});
+  EXPECT_EQ(o.host, "0.0.0.0");
+  EXPECT_EQ(o.port, 0);
+  EXPECT_EQ(o.data_dir, "/tmp/x");
+  EXPECT_EQ(o.gpu, 1);
+}
+
+TEST(DaemonOptions, BadValuesNameTheFlag) {
+  for (const auto& args : std::vector<std::vector<std::string>>{
+           {"--listen", "8080"}, {"--listen", "host:99999"}, {"--gpu", "x"}, {"--queue"}, {"--frobnicate"}}) {
+    try {
+      parse_options(args);
+      FAIL() << "accepted " << args[0];
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(args[0]), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(DaemonOptions, UsageMentionsEveryFlag) {
+  for (const char* flag : {"--listen", "--data-dir", "--gpu", "--list-gpus", "--queue", "--max-upload-bytes",
+                           "--threads", "--render-timeout"}) {
+    EXPECT_NE(usage().find(flag), std::string::npos) << flag;
+  }
+}
+
+}  // namespace
+}  // namespace toond::app

@@ -1,0 +1,65 @@
+// The pass plan is pure: these tests need no GL.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "param_schema.h"
+#include "render/pass_plan.h"
+
+namespace toond::render {
+namespace {
+
+using nlohmann::json;
+
+RenderParams params(const json& request) {
+  return RenderParams::from_json(proto::ParamSchema::render_params().validate_and_complete(request));
+}
+
+bool has_define(const PassPlan& plan, const std::string& d) {
+  return std::find(plan.main_defines.begin(), plan.main_defines.end(), d) != plan.main_defines.end();
+}
+
+TEST(PassPlan, DefaultsDrawOutlineAndResolve) {
+  const PassPlan plan = plan_passes(params(json::object()), {true});
+  EXPECT_EQ(plan.describe(), "main,hull_outline,resolve,readback");
+  EXPECT_TRUE(plan.sample_textures);
+}
+
+TEST(PassPlan, NoOutlinePassAtWidthZeroOrWhenDisabled) {
+  EXPECT_FALSE(plan_passes(params({{"outline", {{"width", 0}}}}), {}).has(Pass::HullOutline));
+  EXPECT_FALSE(plan_passes(params({{"outline", {{"enabled", false}}}}), {}).has(Pass::HullOutline));
+  EXPECT_TRUE(plan_passes(params({{"outline", {{"width", 0.5}}}}), {}).has(Pass::HullOutline));
+}
+
+TEST(PassPlan, NoResolveWithoutMsaa) {
+  const PassPlan plan = plan_passes(params({{"msaa", 1}}), {});
+  EXPECT_FALSE(plan.has(Pass::Resolve));
+  EXPECT_EQ(plan.samples, 1);
+  EXPECT_TRUE(plan_passes(params({{"msaa", 8}}), {}).has(Pass::Resolve));
+}
+
+TEST(PassPlan, NoTextureSamplingWithoutTextures) {
+  EXPECT_FALSE(plan_passes(params(json::object()), {false}).sample_textures);
+}
+
+TEST(PassPlan, ShadingModeAndRoundingBecomeDefines) {
+  const PassPlan cel = plan_passes(params({{"shading", {{"rounding", "floor"}}}}), {});
+  EXPECT_TRUE(has_define(cel, "MODE_CEL"));
+  EXPECT_TRUE(has_define(cel, "ROUND_FLOOR"));
+  const PassPlan phong = plan_passes(params({{"shading", {{"mode", "phong"}, {"rounding", "floor"}}}}), {});
+  EXPECT_TRUE(has_define(phong, "MODE_PHONG"));
+  EXPECT_FALSE(has_define(phong, "ROUND_FLOOR")) << "rounding is irrelevant without bands";
+  EXPECT_TRUE(has_define(plan_passes(params({{"shading", {{"mode", "flat"}}}}), {}), "MODE_FLAT"));
+}
+
+TEST(PassPlan, ReadbackIsAlwaysLast) {
+  for (const json& request : {json::object(), json{{"msaa", 1}, {"outline", {{"enabled", false}}}}}) {
+    const PassPlan plan = plan_passes(params(request), {});
+    ASSERT_FALSE(plan.passes.empty());
+    EXPECT_EQ(plan.passes.front(), Pass::Main);
+    EXPECT_EQ(plan.passes.back(), Pass::Readback);
+  }
+}
+
+}  // namespace
+}  // namespace toond::render
