@@ -1,28 +1,25 @@
 #version 430 core
-// Inverted-hull outline. Each vertex moves outward along its outline normal,
-// the normal averaged over every vertex at the same position: with the
+// Inverted-hull outline. Each vertex moves outward along its outline offset:
+// the normal averaged over every vertex at the same position. With the
 // shading normals, hard edges (a cube's corners) split into separate
 // vertices that move apart and tear gaps in the hull (the well-known
-// problem, e.g. three.js issue 19096).
+// problem, e.g. three.js issue 19096). The offset is mitred at corners, so
+// every face plane moves out by the full width.
 //
-// The offset is made in screen space, `u_width_px` pixels along the
-// projected normal, so the line is equally wide at any distance.
+// The distance is `u_width_px` pixels at the vertex's own depth:
+// `u_world_per_px_at_w1` is the size of one pixel at clip w = 1, and a pixel
+// at depth w is w times that (w is 1 everywhere for orthographic views). A
+// silhouette point's normal lies in the image plane, so there the ring is
+// exactly that many pixels wide, at any distance from the camera.
 layout(location = 0) in vec3 a_position;
-layout(location = 3) in vec3 a_outline_normal;
+layout(location = 3) in vec3 a_outline_offset;
 
 uniform mat4 u_view_projection;
-uniform vec2 u_viewport;  // pixels
+uniform float u_world_per_px_at_w1;
 uniform float u_width_px;
 
 void main() {
-  vec4 clip = u_view_projection * vec4(a_position, 1.0);
-  vec4 clip_dir = u_view_projection * vec4(a_outline_normal, 0.0);
-  // Derivative of the NDC position along the normal, in pixels.
-  vec2 screen_dir = (clip_dir.xy * clip.w - clip.xy * clip_dir.w) * (0.5 * u_viewport);
-  float len = length(screen_dir);
-  if (len > 1e-30 && clip.w > 0.0) {
-    vec2 offset_ndc = (screen_dir / len) * u_width_px * 2.0 / u_viewport;
-    clip.xy += offset_ndc * clip.w;
-  }
-  gl_Position = clip;
+  float w = (u_view_projection * vec4(a_position, 1.0)).w;
+  vec3 moved = a_position + a_outline_offset * (u_width_px * u_world_per_px_at_w1 * abs(w));
+  gl_Position = u_view_projection * vec4(moved, 1.0);
 }

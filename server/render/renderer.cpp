@@ -112,7 +112,10 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
     gpu::Program& program = programs_.get("hull.vert", "hull.frag", {});
     program.use();
     program.set("u_view_projection", view_projection);
-    program.set("u_viewport", glm::vec2(static_cast<float>(params.width), static_cast<float>(params.height)));
+    // projection[1][1] maps a view-space height at depth w to NDC, and NDC
+    // spans `height` pixels over 2 units.
+    const double world_per_px = 2.0 / (camera.projection[1][1] * params.height);
+    program.set("u_world_per_px_at_w1", static_cast<float>(world_per_px));
     program.set("u_width_px", params.outline.width_px);
     program.set("u_outline_color", params.outline.color);
     model.draw_all();

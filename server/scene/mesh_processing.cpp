@@ -1,6 +1,7 @@
 #include "scene/mesh_processing.h"
 
 #include <algorithm>
+#include <map>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -8,6 +9,11 @@
 #include <unordered_map>
 
 namespace toond::scene {
+namespace {
+// Longest outline offset, in units of the outline width.
+constexpr double kMaxMitre = 3.0;
+}  // namespace
+
 namespace {
 
 // Relative to the squared longest edge: below this the cross product is
@@ -120,7 +126,74 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
                                                std::span<const std::uint32_t> indices,
                                                std::span<const glm::vec3> shading_normals) {
   const auto groups = group_by_position(positions);
-  return compute_grouped_normals(positions, indices, groups, shading_normals);
+  const std::size_t group_count = groups.empty() ? 0 : *std::max_element(groups.begin(), groups.end()) + 1u;
+
+  // Every direction a vertex's hull must move away from: its faces' normals
+  // and, on an open rim (a leg without a sole, a flat eye decal), the
+  // outward direction in the face's plane across the boundary edge, as if a
+  // cap closed the hole. Without the rim term an open mesh gets no outline
+  // past its boundary.
+  struct Push {
+    glm::dvec3 direction;
+    double weight;
+  };
+  std::vector<std::vector<Push>> pushes(group_count);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_use;
+  auto edge_key = [&](std::uint32_t a, std::uint32_t b) {
+    return std::minmax(groups[a], groups[b]);
+  };
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    for (int k = 0; k < 3; ++k) {
+      ++edge_use[edge_key(indices[t + static_cast<std::size_t>(k)], indices[t + static_cast<std::size_t>((k + 1) % 3)])];
+    }
+  }
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const std::uint32_t i[3] = {indices[t], indices[t + 1], indices[t + 2]};
+    const glm::dvec3 p[3] = {positions[i[0]], positions[i[1]], positions[i[2]]};
+    const glm::dvec3 n = triangle_normal(p[0], p[1], p[2]);
+    if (n == glm::dvec3(0.0)) continue;
+    const glm::dvec3 angles = triangle_angles(p[0], p[1], p[2]);
+    for (int k = 0; k < 3; ++k) pushes[groups[i[k]]].push_back({n, angles[k]});
+    for (int k = 0; k < 3; ++k) {
+      const int a = k, b = (k + 1) % 3;
+      if (edge_use[edge_key(i[a], i[b])] != 1) continue;
+      // In the face's plane, perpendicular to the edge, away from the
+      // triangle (counter-clockwise winding puts the interior on the left).
+      const glm::dvec3 outward = glm::normalize(glm::cross(p[b] - p[a], n));
+      const double quarter_turn = std::acos(0.0);
+      pushes[groups[i[a]]].push_back({outward, quarter_turn});
+      pushes[groups[i[b]]].push_back({outward, quarter_turn});
+    }
+  }
+
+  std::vector<glm::dvec3> group_offset(group_count, glm::dvec3(0.0));
+  for (std::size_t g = 0; g < group_count; ++g) {
+    glm::dvec3 sum(0.0);
+    for (const Push& push : pushes[g]) sum += push.direction * push.weight;
+    const double length = glm::length(sum);
+    if (!(length > 1e-12)) continue;  // faces cancel: fall back below
+    const glm::dvec3 unit = sum / length;
+    // Mitre: at a hard corner the averaged normal leans away from each face
+    // (a cube corner's diagonal meets every face at 54.7°), so one unit
+    // along it moves each face plane by only cos(angle) and the outline
+    // comes out thin along edges. Lengthen it by 1/min cos, so every face
+    // plane moves out one full unit. A face turned away (a fold, a
+    // two-sided sheet) has no mitre that would help; knife edges would need
+    // an unbounded one, so past kMaxMitre the corner is bevelled instead.
+    double min_cos = 1.0;
+    for (const Push& push : pushes[g]) min_cos = std::min(min_cos, glm::dot(unit, push.direction));
+    const double mitre = min_cos <= 0.0 ? 1.0 : 1.0 / std::max(min_cos, 1.0 / kMaxMitre);
+    group_offset[g] = unit * mitre;
+  }
+
+  std::vector<glm::vec3> offsets(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    glm::vec3 o(group_offset[groups[v]]);
+    if (o == glm::vec3(0.0f) && v < shading_normals.size()) o = to_unit_float(glm::dvec3(shading_normals[v]));
+    if (o == glm::vec3(0.0f)) o = glm::vec3(0.0f, 1.0f, 0.0f);
+    offsets[v] = o;
+  }
+  return offsets;
 }
 
 Bounds compute_bounds(std::span<const glm::vec3> positions) {

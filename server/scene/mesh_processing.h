@@ -39,9 +39,13 @@ std::vector<glm::vec3> compute_grouped_normals(std::span<const glm::vec3> positi
 std::vector<glm::vec3> compute_angle_weighted_normals(std::span<const glm::vec3> positions,
                                                       std::span<const std::uint32_t> indices);
 
-// Normals for extruding an outline hull: averaged over every vertex at the
-// same position, so copies split at hard edges or UV seams move together and
-// the hull stays closed. `shading_normals` is the fallback where faces cancel.
+// Offsets for extruding an outline hull, per unit of outline width: the
+// normal averaged over every vertex at the same position (so copies split at
+// hard edges or UV seams move together and the hull stays closed), mitred
+// longer at hard corners so that every face plane moves out a full unit
+// (capped at 3 units). Unit length on smooth surfaces. Open boundaries push
+// outward across the rim as if capped, so open meshes are outlined there too.
+// `shading_normals` is the fallback where faces cancel.
 std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positions,
                                                std::span<const std::uint32_t> indices,
                                                std::span<const glm::vec3> shading_normals);

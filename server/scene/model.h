@@ -45,9 +45,10 @@ struct Bounds {
 struct Mesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;          // unit length, shading normals
-  std::vector<glm::vec3> outline_normals;  // unit length, averaged over every
-                                           // vertex sharing a position, so an
-                                           // extruded hull has no gaps at hard edges
+  std::vector<glm::vec3> outline_normals;  // hull offset per unit width: shared by
+                                           // every vertex at a position (no gaps at
+                                           // hard edges), mitred at corners (see
+                                           // compute_outline_normals)
   std::vector<glm::vec2> texcoords;        // (0,0) where the OBJ had none
   std::vector<std::uint32_t> indices;      // triangles
   std::vector<Submesh> submeshes;

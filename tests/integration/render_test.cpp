@@ -1,7 +1,10 @@
 // What the image shows: size, coverage, bands, texture, outline ring.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "image/png_codec.h"
+#include "support/generated_models.h"
 #include "support/image_checks.h"
 #include "support/shared_models.h"
 #include "test_client.h"
@@ -183,32 +186,51 @@ TEST_F(Render, OutlineOnTheDemoModel) {
   expect_closed_dark_ring(client, json::object(), 2);
 }
 
-// Width in pixels does not depend on how far away the camera is.
-TEST_F(Render, OutlineWidthDoesNotChangeWithDistance) {
+// Width in pixels does not depend on how far away the camera is, and is the
+// width asked for: on a smooth sphere the outermost ring pixel lies `width`
+// pixels from the nearest model pixel (pixel centres), within a pixel.
+TEST_F(Render, OutlineWidthIsInPixelsAtAnyDistance) {
   auto client = daemon().client();
-  auto ring_area_ratio = [&](double distance_scale) {
-    json params = {{"msaa", 1}, {"camera", {{"fov", 30}}}};
-    params["camera"]["distance"] = distance_scale;
+  const std::string sphere = upload_obj_text(client, sphere_obj(96, 48), "sphere.obj");
+  auto measured_width = [&](double distance, double width) {
+    json params = {{"model", sphere}, {"msaa", 1}, {"camera", {{"fov", 30}, {"distance", distance}}}};
     params["outline"] = {{"enabled", false}};
     const auto bare = render_ok(client, params);
-    params["outline"] = {{"enabled", true}, {"width", 3}};
-    const auto outlined = render_ok(client, params);
-    const auto m = foreground_mask(bare);
-    const auto edge = boundary(m, bare.width, bare.height);
-    std::size_t ring = 0;
-    for (int y = 0; y < bare.height; ++y)
-      for (int x = 0; x < bare.width; ++x)
-        if (rgb_at(bare, x, y) != rgb_at(outlined, x, y)) ++ring;
-    // Ring area per silhouette pixel is the ring's width in pixels.
-    return static_cast<double>(ring) / static_cast<double>(count(edge));
+    params["outline"] = {{"enabled", true}, {"width", width}};
+    return outline_width_px(bare, render_ok(client, params));
   };
-  // The demo's bounding sphere has a radius of about 1.35: at 6 units it
-  // fills the frame, at 14 it is less than half as large.
-  const double near_width = ring_area_ratio(6.0);
-  const double far_width = ring_area_ratio(14.0);
-  EXPECT_NEAR(near_width, 3.0, 1.0);
-  EXPECT_NEAR(far_width, 3.0, 1.0);
-  EXPECT_NEAR(near_width, far_width, 0.6);
+  for (double width : {2.0, 5.0, 9.0}) {
+    const double near_width = measured_width(4.5, width);  // the sphere fills the frame
+    const double far_width = measured_width(12.0, width);  // about a third of that
+    EXPECT_NEAR(near_width, width, 0.75) << "width " << width;
+    EXPECT_NEAR(far_width, width, 0.75) << "width " << width;
+    EXPECT_NEAR(near_width, far_width, 0.5) << "width " << width;
+  }
+}
+
+// On hard edges the hull moves every face plane out by the width (a mitre),
+// so the ring is never thinner than asked; where an edge is seen corner-on
+// it can be up to sqrt(2) times wider, never gapped.
+TEST_F(Render, HardEdgeOutlineIsAtLeastTheWidth) {
+  auto client = daemon().client();
+  const std::string cube = upload_obj_text(client, cube_obj(), "cube.obj");
+  for (double yaw : {0.0, 30.0, 45.0}) {
+    json params = {{"model", cube}, {"msaa", 1}, {"camera", {{"yaw", yaw}, {"pitch", 20}}}};
+    params["outline"] = {{"enabled", false}};
+    const auto bare = render_ok(client, params);
+    params["outline"] = {{"enabled", true}, {"width", 6}};
+    const double width = outline_width_px(bare, render_ok(client, params));
+    EXPECT_GE(width, 6.0 - 0.75) << "yaw " << yaw;
+    EXPECT_LE(width, 6.0 * std::sqrt(2.0) + 0.75) << "yaw " << yaw;
+  }
+}
+
+TEST_F(Render, OutlineStaysClosedOnAGeneratedCube) {
+  auto client = daemon().client();
+  const std::string cube = upload_obj_text(client, cube_obj(), "cube.obj");
+  for (double yaw : {0.0, 30.0, 45.0}) {
+    expect_closed_dark_ring(client, {{"model", cube}, {"camera", {{"yaw", yaw}, {"pitch", 20}}}}, 3);
+  }
 }
 
 TEST_F(Render, OneShotMultipartRenderUploadsAndRenders) {

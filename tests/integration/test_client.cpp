@@ -32,6 +32,16 @@ httplib::Result upload_model_folder(httplib::Client& client, const std::filesyst
   return upload_files(client, folder, files);
 }
 
+std::string upload_obj_text(httplib::Client& client, const std::string& obj, const std::string& name) {
+  httplib::MultipartFormDataItems items = {{"file", obj, name, "text/plain"}};
+  auto res = client.Post("/models", items);
+  if (!res || (res->status != 200 && res->status != 201)) {
+    ADD_FAILURE() << "upload of " << name << " failed: " << (res ? res->body : httplib::to_string(res.error()));
+    return {};
+  }
+  return nlohmann::json::parse(res->body)["id"];
+}
+
 httplib::Result post_json(httplib::Client& client, const std::string& path, const nlohmann::json& body) {
   return client.Post(path.c_str(), body.dump(), "application/json");
 }

@@ -33,6 +33,10 @@ httplib::Result upload_files(httplib::Client& client, const std::filesystem::pat
 // or image file (SOURCE.txt, licences and READMEs are left out).
 httplib::Result upload_model_folder(httplib::Client& client, const std::filesystem::path& folder);
 
+// Uploads an OBJ given as text, as a one-file bundle; returns the model id
+// (empty, with a test failure, when the upload fails).
+std::string upload_obj_text(httplib::Client& client, const std::string& obj, const std::string& name = "model.obj");
+
 httplib::Result post_json(httplib::Client& client, const std::string& path, const nlohmann::json& body);
 
 // POST /render that must succeed; returns the decoded PNG.

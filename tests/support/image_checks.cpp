@@ -1,5 +1,6 @@
 #include "support/image_checks.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace toond::test {
@@ -65,6 +66,40 @@ std::vector<bool> boundary(const std::vector<bool>& mask, int width, int height)
     }
   }
   return out;
+}
+
+double outline_width_px(const Image& bare, const Image& outlined) {
+  const int w = bare.width, h = bare.height;
+  const auto model = foreground_mask(bare);
+  std::vector<bool> ring(model.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      ring[static_cast<std::size_t>(y) * w + x] =
+          !model[static_cast<std::size_t>(y) * w + x] && rgb_at(bare, x, y) != rgb_at(outlined, x, y);
+  std::vector<bool> covered(model.size());
+  for (std::size_t i = 0; i < covered.size(); ++i) covered[i] = model[i] || ring[i];
+  const auto outer = boundary(covered, w, h);
+  constexpr int kReach = 40;
+  std::vector<double> distances;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      if (!ring[i] || !outer[i]) continue;
+      double best = 1e9;
+      for (int dy = -kReach; dy <= kReach; ++dy) {
+        for (int dx = -kReach; dx <= kReach; ++dx) {
+          const int xx = x + dx, yy = y + dy;
+          if (xx < 0 || yy < 0 || xx >= w || yy >= h || !model[static_cast<std::size_t>(yy) * w + xx]) continue;
+          best = std::min(best, std::hypot(dx, dy));
+        }
+      }
+      if (best < 1e9) distances.push_back(best);
+    }
+  }
+  if (distances.empty()) return 0.0;
+  std::nth_element(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2),
+                   distances.end());
+  return distances[distances.size() / 2];
 }
 
 }  // namespace toond::test

@@ -34,4 +34,9 @@ std::size_t dominant_colours(const Image& img, const std::vector<bool>& mask, do
 // Pixels of `mask` that touch a pixel outside it (4-neighbourhood).
 std::vector<bool> boundary(const std::vector<bool>& mask, int width, int height);
 
+// The width of an outline, from a render without it (`bare`) and one with
+// it: the median distance from the ring's outer edge to the nearest model
+// pixel, in pixels. Corners (where mitres reach further) barely move a median.
+double outline_width_px(const Image& bare, const Image& outlined);
+
 }  // namespace toond::test

@@ -1,0 +1,60 @@
+#include "support/generated_models.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace toond::test {
+namespace {
+
+std::string vec_line(const char* tag, glm::dvec3 v) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%s %.17g %.17g %.17g\n", tag, v.x, v.y, v.z);
+  return buf;
+}
+
+}  // namespace
+
+std::string sphere_obj(int segments, int rings, double radius, glm::dvec3 centre) {
+  const double pi = std::acos(-1.0);
+  std::string obj = "# UV sphere\n";
+  // Ring 0 is the north pole, ring `rings` the south pole; each ring holds
+  // segments + 1 vertices so the seam has its own copies.
+  for (int r = 0; r <= rings; ++r) {
+    const double theta = pi * r / rings;
+    for (int s = 0; s <= segments; ++s) {
+      const double phi = 2.0 * pi * s / segments;
+      const glm::dvec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+      obj += vec_line("v", centre + n * radius);
+      obj += vec_line("vn", n);
+    }
+  }
+  auto index = [&](int r, int s) { return r * (segments + 1) + s + 1; };
+  for (int r = 0; r < rings; ++r) {
+    for (int s = 0; s < segments; ++s) {
+      const int a = index(r, s), b = index(r + 1, s), c = index(r + 1, s + 1), d = index(r, s + 1);
+      if (r != 0) obj += "f " + std::to_string(a) + "//" + std::to_string(a) + " " + std::to_string(b) + "//" +
+                         std::to_string(b) + " " + std::to_string(d) + "//" + std::to_string(d) + "\n";
+      if (r != rings - 1) obj += "f " + std::to_string(b) + "//" + std::to_string(b) + " " + std::to_string(c) +
+                                 "//" + std::to_string(c) + " " + std::to_string(d) + "//" + std::to_string(d) + "\n";
+    }
+  }
+  return obj;
+}
+
+std::string cube_obj(double h, glm::dvec3 c) {
+  std::string obj = "# cube with one normal per face\n";
+  for (int i = 0; i < 8; ++i) {
+    obj += vec_line("v", c + glm::dvec3(i & 1 ? h : -h, i & 2 ? h : -h, i & 4 ? h : -h));
+  }
+  obj += "vn -1 0 0\nvn 1 0 0\nvn 0 -1 0\nvn 0 1 0\nvn 0 0 -1\nvn 0 0 1\n";
+  // Corners are numbered by their bits (x = 1, y = 2, z = 4), 1-based.
+  obj += "f 1//1 5//1 7//1 3//1\n";  // -x
+  obj += "f 2//2 4//2 8//2 6//2\n";  // +x
+  obj += "f 1//3 2//3 6//3 5//3\n";  // -y
+  obj += "f 3//4 7//4 8//4 4//4\n";  // +y
+  obj += "f 1//5 3//5 4//5 2//5\n";  // -z
+  obj += "f 5//6 6//6 8//6 7//6\n";  // +z
+  return obj;
+}
+
+}  // namespace toond::test
