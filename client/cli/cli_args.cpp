@@ -95,60 +95,6 @@ std::string plain_json_error(const std::string& what) {
   return what;
 }
 
-// The schema node for `segments`, following "properties" by name and
-// "items" by array index; nullptr when the schema has no such field.
-const json* schema_node(const json& root, const std::vector<std::string>& segments,
-                        std::size_t count) {
-  const json* s = &root;
-  for (std::size_t i = 0; i < count; ++i) {
-    if (!s->is_object()) return nullptr;
-    const json& node = *s;
-    if (node.contains("properties") && node["properties"].contains(segments[i])) {
-      s = &node["properties"][segments[i]];
-    } else if (is_index(segments[i]) && node.contains("items") && node["items"].is_object()) {
-      s = &node["items"];
-    } else {
-      return nullptr;
-    }
-  }
-  return s;
-}
-
-// `--set lights.0.intensity=2` should mean "the default light, brighter",
-// not "a light with nothing but an intensity", which the schema rejects for
-// lacking its required `type`. So an array the request does not have yet is
-// first filled with the schema's default for it.
-void seed_absent_arrays(json& params, const json& schema, std::string_view dotted) {
-  std::vector<std::string> segments;
-  std::string key(dotted);
-  for (std::size_t start = 0; start <= key.size();) {
-    std::size_t dot = key.find('.', start);
-    if (dot == std::string::npos) dot = key.size();
-    segments.push_back(key.substr(start, dot - start));
-    start = dot + 1;
-  }
-  json* slot = &params;
-  for (std::size_t i = 0; i + 1 < segments.size(); ++i) {
-    const std::string& seg = segments[i];
-    json* child = nullptr;
-    if (slot->is_object()) {
-      if (slot->contains(seg)) child = &(*slot)[seg];
-    } else if (slot->is_array() && is_index(seg)) {
-      const std::size_t index = std::strtoul(seg.c_str(), nullptr, 10);
-      if (index < slot->size()) child = &(*slot)[index];
-    }
-    if (!child) {
-      const json* node = schema_node(schema, segments, i + 1);
-      if (slot->is_object() && node && node->value("type", "") == "array" &&
-          node->contains("default") && is_index(segments[i + 1])) {
-        (*slot)[seg] = (*node)["default"];
-      }
-      return;
-    }
-    slot = child;
-  }
-}
-
 }  // namespace
 
 std::string_view verb_name(Verb verb) {
@@ -351,7 +297,6 @@ nlohmann::json build_render_params(const Options& options, const proto::ParamSch
 
   for (const auto& [key, text] : options.sets) {
     try {
-      seed_absent_arrays(params, schema.document(), key);
       schema.set_from_text(params, key, text);
     } catch (const RequestError& e) {
       // The schema's message may already start with "key=value: ".

@@ -191,6 +191,7 @@ void ParamSchema::set_from_text(nlohmann::json& params, std::string_view dotted,
     start = dot + 1;
   }
   const json* schema = &document_;
+  std::vector<const json*> chain;  // the schema of each segment
   for (const auto& seg : segments) {
     const json* next = child_schema(*schema, seg);
     if (!next) {
@@ -204,6 +205,7 @@ void ParamSchema::set_from_text(nlohmann::json& params, std::string_view dotted,
                          json_pointer(segments));
     }
     schema = next;
+    chain.push_back(schema);
   }
 
   const std::string type = schema->value("type", "");
@@ -247,7 +249,17 @@ void ParamSchema::set_from_text(nlohmann::json& params, std::string_view dotted,
     } else {
       bool next_is_index = i + 1 < segments.size() &&
                            segments[i + 1].find_first_not_of("0123456789") == std::string::npos;
-      if (!slot->contains(seg)) (*slot)[seg] = next_is_index ? json::array() : json::object();
+      if (!slot->contains(seg)) {
+        // `lights.0.intensity=2` means "the default light, brighter", not a
+        // light with nothing but an intensity (which lacks its required
+        // type): an absent array starts as the schema's default.
+        const json& node = *chain[i];
+        if (next_is_index && node.contains("default") && node["default"].is_array()) {
+          (*slot)[seg] = node["default"];
+        } else {
+          (*slot)[seg] = next_is_index ? json::array() : json::object();
+        }
+      }
       slot = &(*slot)[seg];
     }
   }

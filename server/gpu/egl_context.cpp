@@ -159,13 +159,10 @@ EglContext::EglContext(const Options& options) {
     context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
     if (context_ != EGL_NO_CONTEXT) break;
   }
-  if (context_ == EGL_NO_CONTEXT) {
-    eglTerminate(display_);
-    fail("eglCreateContext(OpenGL core >= 4.3)");
-  }
+  if (context_ == EGL_NO_CONTEXT) fail("eglCreateContext(OpenGL core >= 4.3)");
   if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
     eglDestroyContext(display_, context_);
-    eglTerminate(display_);
+    context_ = EGL_NO_CONTEXT;
     fail("eglMakeCurrent(surfaceless)");
   }
 
@@ -205,7 +202,9 @@ void EglContext::release() {
   // un-current it first so the driver frees it now.
   eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-  eglTerminate(display_);
+  // No eglTerminate: EGL hands every caller asking for the same device the
+  // same display, so terminating it here would pull the display out from
+  // under any other context made on it. It lives as long as the process.
   display_ = EGL_NO_DISPLAY;
   context_ = EGL_NO_CONTEXT;
 }

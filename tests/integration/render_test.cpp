@@ -112,6 +112,34 @@ TEST_F(Render, SpotShowsItsTexture) {
   EXPECT_LT(plain, 0.001);
 }
 
+// Two objects, two materials, each with its own diffuse texture: leaving out
+// either texture changes a good part of the image, so both are drawn.
+TEST_F(Render, MultiMaterialModelShowsEveryMaterialsTexture) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  auto client = daemon().client();
+  const auto folder = shared_models_dir() / "windmill";
+  const std::vector<std::string> all = {"windmill.obj", "windmill.mtl", "windmill_001_base_COL.jpg",
+                                        "windmill_001_lopatky_COL.jpg"};
+  auto render_without = [&](const std::string& left_out) {
+    std::vector<std::string> files;
+    for (const auto& f : all)
+      if (f != left_out) files.push_back(f);
+    auto res = upload_files(client, folder, files);
+    EXPECT_TRUE(res && (res->status == 200 || res->status == 201));
+    const std::string id = json::parse(res->body)["id"];
+    return render_ok(client, {{"model", id}, {"msaa", 1}, {"outline", {{"enabled", false}}}});
+  };
+  const auto full = render_without("");
+  EXPECT_GT(coverage(foreground_mask(full)), 0.05);
+  for (const char* texture : {"windmill_001_base_COL.jpg", "windmill_001_lopatky_COL.jpg"}) {
+    const auto partial = render_without(texture);
+    std::size_t changed = 0;
+    for (int y = 0; y < full.height; ++y)
+      for (int x = 0; x < full.width; ++x) changed += rgb_at(full, x, y) != rgb_at(partial, x, y) ? 1 : 0;
+    EXPECT_GT(static_cast<double>(changed) / (full.width * full.height), 0.01) << "without " << texture;
+  }
+}
+
 // The outline is the difference between a render with and without it: it
 // must lie outside the model, be dark, and close around the silhouette.
 void expect_closed_dark_ring(httplib::Client& client, json params, double width) {

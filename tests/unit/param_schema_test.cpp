@@ -90,6 +90,15 @@ TEST(ParamSchema, SetFromTextConvertsToTheSchemaType) {
   EXPECT_NO_THROW(schema().validate(p));
 }
 
+TEST(ParamSchema, SetIntoAnAbsentArrayStartsFromItsDefault) {
+  json p = json::object();
+  schema().set_from_text(p, "lights.0.intensity", "2");
+  ASSERT_EQ(p["lights"].size(), 1u);
+  EXPECT_EQ(p["lights"][0]["type"], "directional") << "the default light, brighter";
+  EXPECT_EQ(p["lights"][0]["intensity"], 2.0);
+  EXPECT_NO_THROW(schema().validate(p));
+}
+
 TEST(ParamSchema, SetFromTextRejectsUnknownKeysAndBadText) {
   json p = json::object();
   EXPECT_THROW(schema().set_from_text(p, "outline.thickness", "3"), RequestError);
