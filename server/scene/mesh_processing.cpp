@@ -10,11 +10,10 @@
 
 namespace toond::scene {
 namespace {
+
 // Longest outline offset, in units of the outline width.
 constexpr double kMaxMitre = 3.0;
-}  // namespace
 
-namespace {
 
 // Relative to the squared longest edge: below this the cross product is
 // rounding noise and the face normal would point anywhere.
@@ -72,6 +71,24 @@ glm::dvec3 triangle_angles(const glm::dvec3& a, const glm::dvec3& b, const glm::
   return {angle(b - a, c - a), angle(c - b, a - b), angle(a - c, b - c)};
 }
 
+namespace {
+
+// Calls fn(corner indices, corner positions, unit normal, corner angles) for
+// every triangle with an area; degenerate ones have no normal to give.
+template <class Fn>
+void for_each_shaded_triangle(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
+                              Fn&& fn) {
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const std::uint32_t i[3] = {indices[t], indices[t + 1], indices[t + 2]};
+    const glm::dvec3 p[3] = {positions[i[0]], positions[i[1]], positions[i[2]]};
+    const glm::dvec3 n = triangle_normal(p[0], p[1], p[2]);
+    if (n == glm::dvec3(0.0)) continue;
+    fn(i, p, n, triangle_angles(p[0], p[1], p[2]));
+  }
+}
+
+}  // namespace
+
 std::vector<std::uint32_t> group_by_position(std::span<const glm::vec3> positions) {
   std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> ids;
   ids.reserve(positions.size());
@@ -92,17 +109,13 @@ std::vector<glm::vec3> compute_grouped_normals(std::span<const glm::vec3> positi
   std::vector<glm::dvec3> sums(group_count, glm::dvec3(0.0));
   std::vector<glm::dvec3> first_face(positions.size(), glm::dvec3(0.0));
 
-  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    const std::uint32_t i[3] = {indices[t], indices[t + 1], indices[t + 2]};
-    const glm::dvec3 p[3] = {positions[i[0]], positions[i[1]], positions[i[2]]};
-    const glm::dvec3 n = triangle_normal(p[0], p[1], p[2]);
-    if (n == glm::dvec3(0.0)) continue;
-    const glm::dvec3 angles = triangle_angles(p[0], p[1], p[2]);
+  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3(&)[3],
+                                                   const glm::dvec3& n, const glm::dvec3& angles) {
     for (int k = 0; k < 3; ++k) {
       sums[group_of_vertex[i[k]]] += n * angles[k];
       if (first_face[i[k]] == glm::dvec3(0.0)) first_face[i[k]] = n;
     }
-  }
+  });
 
   std::vector<glm::vec3> normals(positions.size());
   for (std::size_t v = 0; v < positions.size(); ++v) {
@@ -147,12 +160,8 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
       ++edge_use[edge_key(indices[t + static_cast<std::size_t>(k)], indices[t + static_cast<std::size_t>((k + 1) % 3)])];
     }
   }
-  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    const std::uint32_t i[3] = {indices[t], indices[t + 1], indices[t + 2]};
-    const glm::dvec3 p[3] = {positions[i[0]], positions[i[1]], positions[i[2]]};
-    const glm::dvec3 n = triangle_normal(p[0], p[1], p[2]);
-    if (n == glm::dvec3(0.0)) continue;
-    const glm::dvec3 angles = triangle_angles(p[0], p[1], p[2]);
+  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&p)[3],
+                                                   const glm::dvec3& n, const glm::dvec3& angles) {
     for (int k = 0; k < 3; ++k) pushes[groups[i[k]]].push_back({n, angles[k]});
     for (int k = 0; k < 3; ++k) {
       const int a = k, b = (k + 1) % 3;
@@ -164,7 +173,7 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
       pushes[groups[i[a]]].push_back({outward, quarter_turn});
       pushes[groups[i[b]]].push_back({outward, quarter_turn});
     }
-  }
+  });
 
   std::vector<glm::dvec3> group_offset(group_count, glm::dvec3(0.0));
   for (std::size_t g = 0; g < group_count; ++g) {
