@@ -1,12 +1,19 @@
 #version 430 core
-// Main pass: cel shading. The diffuse term N·L of each light is quantized
-// into bands (the "toon ramp" of the reference reports), lights are combined
-// by maximum, and the result scales the material colour between the ambient
-// floor and full brightness. Everything is linear; the sRGB framebuffer
-// encodes on write.
+// Main pass: toon shading of one material.
 //
-// Variants (#defines): MODE_CEL | MODE_PHONG | MODE_FLAT,
-// ROUND_CEIL | ROUND_FLOOR | ROUND_ROUND, HAS_TEXTURE.
+// Diffuse: N·L of each light, quantized into bands (the "toon ramp" of the
+// reference reports), combined by maximum or sum; the result scales the
+// material colour between the ambient floor and full brightness. Then, each
+// only where its #define is set: a hard-edged Blinn-Phong highlight kept out
+// of the shadow band, a rim light blended toward its colour (never added past
+// it), contour lines where N·V nears zero, and a screen-space halftone.
+// Everything is linear; the sRGB framebuffer encodes on write.
+//
+// Variants (#defines, chosen by the pass plan):
+//   MODE_CEL | MODE_PHONG | MODE_FLAT      ROUND_CEIL | ROUND_FLOOR | ROUND_ROUND
+//   BASE_WHITE   HAS_TEXTURE   COMBINE_SUM   HAS_POINT_LIGHTS   SPECULAR
+//   RIM (+ RIM_MASK_LIT | RIM_MASK_SHADOW)   CONTOUR_EVEN | CONTOUR_FRESNEL
+//   HALFTONE_DOTS | HALFTONE_CHECKER
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_texcoord;
@@ -14,17 +21,49 @@ in vec2 v_texcoord;
 uniform vec3 u_base_color;  // material Kd, linear
 uniform float u_ambient;
 uniform float u_steps;
+uniform vec3 u_eye;         // camera position, same coordinates as v_position
+uniform vec3 u_view_dir;    // orthographic views: the direction the camera looks
+uniform int u_orthographic;
+
 uniform int u_light_count;
-uniform vec3 u_light_to[8];     // unit vectors from the surface toward each light
-uniform vec3 u_light_color[8];  // linear colour × intensity
+uniform vec3 u_light_vec[8];     // directional: unit vector toward the light; point: position
+uniform vec3 u_light_color[8];   // linear colour × intensity
+#ifdef HAS_POINT_LIGHTS
+uniform int u_light_is_point[8];
+uniform float u_light_radius[8];  // 0: unlimited
+#endif
 
 #ifdef HAS_TEXTURE
 uniform sampler2D u_diffuse_map;  // sRGB texture: sampling returns linear values
+#endif
+#ifdef SPECULAR
+uniform vec3 u_specular_color;
+uniform float u_shininess;
+uniform float u_specular_threshold;
+uniform float u_specular_strength;
+#endif
+#ifdef RIM
+uniform vec3 u_rim_color;
+uniform float u_rim_power;
+uniform float u_rim_strength;
+uniform float u_rim_threshold;
+#endif
+#if defined(CONTOUR_EVEN) || defined(CONTOUR_FRESNEL)
+uniform vec3 u_contour_color;
+uniform float u_contour_width;      // pixels
+uniform float u_contour_threshold;  // N·V
+#endif
+#if defined(HALFTONE_DOTS) || defined(HALFTONE_CHECKER)
+uniform float u_halftone_cell;   // pixels
+uniform float u_halftone_angle;  // radians
+uniform vec3 u_halftone_ink;
+uniform float u_halftone_ink_mix;
 #endif
 
 layout(location = 0) out vec4 o_color;
 
 float band(float n_dot_l) {
+#ifdef MODE_CEL
   float x = clamp(n_dot_l, 0.0, 1.0) * u_steps;
 #if defined(ROUND_FLOOR)
   return floor(x) / u_steps;
@@ -33,33 +72,138 @@ float band(float n_dot_l) {
 #else
   return ceil(x) / u_steps;
 #endif
+#else
+  return max(n_dot_l, 0.0);
+#endif
+}
+
+// Direction toward light i and how much of it reaches this point (0..1).
+vec3 toward_light(int i, out float reach) {
+  reach = 1.0;
+#ifdef HAS_POINT_LIGHTS
+  if (u_light_is_point[i] != 0) {
+    vec3 d = u_light_vec[i] - v_position;
+    float dist = length(d);
+    if (u_light_radius[i] > 0.0) {
+      // Full strength near the light, a smooth fade to exactly nothing at
+      // the radius (no long tail, unlike 1/d²).
+      float f = clamp(1.0 - pow(dist / u_light_radius[i], 4.0), 0.0, 1.0);
+      reach = f * f;
+    }
+    return dist > 0.0 ? d / dist : vec3(0.0, 0.0, 1.0);
+  }
+#endif
+  return u_light_vec[i];
 }
 
 void main() {
+#ifdef BASE_WHITE
+  vec3 albedo = vec3(1.0);
+#else
   vec3 albedo = u_base_color;
 #ifdef HAS_TEXTURE
   albedo *= texture(u_diffuse_map, v_texcoord).rgb;
 #endif
+#endif
 
 #ifdef MODE_FLAT
-  o_color = vec4(albedo, 1.0);
+  vec3 color = albedo;
+  float level = 1.0;
 #else
   // Both faces shade like the front, so open meshes (the teapot's shells)
   // look solid from inside too.
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
+  vec3 v = u_orthographic != 0 ? -u_view_dir : normalize(u_eye - v_position);
 
   vec3 diffuse = vec3(0.0);
+  vec3 highlight = vec3(0.0);
   for (int i = 0; i < u_light_count; ++i) {
-    float n_dot_l = dot(n, u_light_to[i]);
-#ifdef MODE_CEL
-    float level = band(n_dot_l);
+    float reach;
+    vec3 l = toward_light(i, reach);
+    float lit_band = band(dot(n, l));
+    vec3 contribution = u_light_color[i] * (lit_band * reach);
+#ifdef COMBINE_SUM
+    diffuse += contribution;
 #else
-    float level = max(n_dot_l, 0.0);
+    diffuse = max(diffuse, contribution);
 #endif
-    diffuse = max(diffuse, u_light_color[i] * level);
+#ifdef SPECULAR
+    // Only where this light's band is above the lowest: a highlight never
+    // lands in the shadow band, even for grazing lights where N·H can be
+    // large while N·L is not.
+    if (lit_band > 0.0 && reach > 0.0) {
+      float s = pow(max(dot(n, normalize(l + v)), 0.0), u_shininess);
+#ifdef MODE_CEL
+      s = s >= u_specular_threshold ? 1.0 : 0.0;
+#endif
+      highlight = max(highlight, vec3(s * reach));
+    }
+#endif
   }
-  vec3 light = vec3(u_ambient) + (1.0 - u_ambient) * diffuse;
-  o_color = vec4(albedo * light, 1.0);
+  diffuse = min(diffuse, vec3(1.0));
+  // One number for "how lit": drives rim masking and the halftone.
+  float level = max(diffuse.r, max(diffuse.g, diffuse.b));
+  vec3 color = albedo * (vec3(u_ambient) + (1.0 - u_ambient) * diffuse);
+#ifdef SPECULAR
+  color = mix(color, u_specular_color, highlight * u_specular_strength);
 #endif
+#ifdef RIM
+  float rim = pow(1.0 - clamp(dot(n, v), 0.0, 1.0), u_rim_power);
+  if (u_rim_threshold > 0.0) rim = rim >= u_rim_threshold ? 1.0 : 0.0;
+#if defined(RIM_MASK_LIT)
+  rim *= level > 0.0 ? 1.0 : 0.0;
+#elif defined(RIM_MASK_SHADOW)
+  rim *= level > 0.0 ? 0.0 : 1.0;
+#endif
+  // A blend, not an addition: the rim can reach its colour but never
+  // overshoot it, which is how the reference report's rim washed models out.
+  color = mix(color, u_rim_color, rim * u_rim_strength);
+#endif
+#endif  // MODE_FLAT
+
+#if defined(HALFTONE_DOTS) || defined(HALFTONE_CHECKER)
+  vec2 c = gl_FragCoord.xy;
+  float ca = cos(u_halftone_angle), sa = sin(u_halftone_angle);
+  vec2 cell = vec2(ca * c.x + sa * c.y, -sa * c.x + ca * c.y) / u_halftone_cell;
+  vec3 shadow_tone = mix(albedo * u_ambient, u_halftone_ink, u_halftone_ink_mix);
+#ifdef HALFTONE_DOTS
+  // True halftone: two tones only, the fully lit colour and dots of the
+  // shadow tone whose area grows as the light falls. A dot covering the
+  // fraction (1 - level) of its cell has radius sqrt((1 - level) / π) cells.
+  float dot_radius = sqrt(max(1.0 - level, 0.0) / 3.14159265);
+  float in_dot = length(fract(cell) - 0.5) < dot_radius ? 1.0 : 0.0;
+  vec3 lit_tone = color + albedo * (1.0 - u_ambient) * (1.0 - level);
+  color = mix(lit_tone, shadow_tone, in_dot);
+#else
+  // The cheap approximation: in the mid bands only, alternate cells of a
+  // checkerboard between the lit colour and the shadow tone.
+  if (level > 0.0 && level < 1.0) {
+    vec2 k = floor(cell);
+    if (mod(k.x + k.y, 2.0) < 1.0) color = shadow_tone;
+    else color = albedo;
+  }
+#endif
+#endif
+
+#if defined(CONTOUR_EVEN) || defined(CONTOUR_FRESNEL)
+#ifndef MODE_FLAT
+  float n_dot_v = dot(n, v);
+#else
+  vec3 nf = normalize(v_normal);
+  vec3 vf = u_orthographic != 0 ? -u_view_dir : normalize(u_eye - v_position);
+  float n_dot_v = abs(dot(nf, vf));
+#endif
+#ifdef CONTOUR_EVEN
+  // N·V divided by how fast it changes per pixel is the distance to the
+  // N·V = 0 line in pixels: a line of even width however steeply the
+  // surface turns.
+  bool on_contour = n_dot_v < u_contour_width * fwidth(n_dot_v);
+#else
+  bool on_contour = n_dot_v < u_contour_threshold;
+#endif
+  if (on_contour) color = u_contour_color;
+#endif
+
+  o_color = vec4(color, 1.0);
 }

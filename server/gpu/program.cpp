@@ -94,4 +94,13 @@ void Program::set_array(std::string_view name, const std::vector<glm::vec3>& v) 
   glProgramUniform3fv(id(), location(name), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
 }
 
+void Program::set_array(std::string_view name, const std::vector<float>& v) {
+  if (v.empty()) return;
+  glProgramUniform1fv(id(), location(name), static_cast<GLsizei>(v.size()), v.data());
+}
+void Program::set_array(std::string_view name, const std::vector<int>& v) {
+  if (v.empty()) return;
+  glProgramUniform1iv(id(), location(name), static_cast<GLsizei>(v.size()), v.data());
+}
+
 }  // namespace toond::gpu

@@ -39,6 +39,8 @@ class Program {
   void set(std::string_view name, const glm::mat3& v);
   void set(std::string_view name, const glm::mat4& v);
   void set_array(std::string_view name, const std::vector<glm::vec3>& v);
+  void set_array(std::string_view name, const std::vector<float>& v);
+  void set_array(std::string_view name, const std::vector<int>& v);
 
  private:
   GLint location(std::string_view name);

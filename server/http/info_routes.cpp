@@ -1,8 +1,9 @@
-// GET /healthz, GET /schema, GET / (the web page).
+// GET /healthz, GET /schema, GET /presets, GET / (the web page).
 #include <nlohmann/json.hpp>
 
 #include "http/routes.h"
 #include "param_schema.h"
+#include "presets.h"
 #include "toond_web_files.h"
 
 namespace toond::http {
@@ -25,6 +26,10 @@ void register_info_routes(httplib::Server& server, ServiceContext& context) {
 
   server.Get("/schema", [](const httplib::Request&, httplib::Response& res) {
     res.set_content(proto::ParamSchema::render_params().document().dump(2), "application/schema+json");
+  });
+
+  server.Get("/presets", [](const httplib::Request&, httplib::Response& res) {
+    res.set_content(proto::Presets::builtin().document().dump(2), "application/json");
   });
 
   server.Get("/", [](const httplib::Request&, httplib::Response& res) {

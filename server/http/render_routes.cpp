@@ -8,7 +8,9 @@
 #include "http/bundle_upload.h"
 #include "http/routes.h"
 #include "image/png_codec.h"
+#include "render/render_budget.h"
 #include "param_schema.h"
+#include "presets.h"
 #include "request_error.h"
 
 namespace toond::http {
@@ -51,8 +53,13 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     }
 
     const auto& schema = proto::ParamSchema::render_params();
+    // Check what the client sent first, so errors point at its own fields;
+    // then lay it over its preset and fill the defaults.
+    schema.validate(request);
     render::RenderJob job;
-    job.params = render::RenderParams::from_json(schema.validate_and_complete(request));
+    job.params = render::RenderParams::from_json(
+        schema.validate_and_complete(proto::Presets::builtin().expand(request)));
+    render::check_render_budget(job.params);
     if (job.params.model.empty()) {
       job.model_key = "demo";
       job.model = context.library.demo();

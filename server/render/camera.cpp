@@ -33,6 +33,7 @@ CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, 
     distance = ortho ? radius * 3.0 : radius * kFrameMargin / std::sin(fov_min * 0.5);
   }
   cam.eye = centre + toward_eye * distance;
+  cam.target = centre;
   // Looking straight up or down makes +Y a bad up vector; pitch is limited to
   // ±89° by the schema, so +Y is always usable.
   cam.view = glm::lookAt(cam.eye, centre, glm::dvec3(0, 1, 0));

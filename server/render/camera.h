@@ -12,7 +12,8 @@ namespace toond::render {
 struct CameraSetup {
   glm::dmat4 view{1.0};
   glm::dmat4 projection{1.0};
-  glm::dvec3 eye{0.0};  // in the mesh's (recentred) coordinates
+  glm::dvec3 eye{0.0};     // in the mesh's (recentred) coordinates
+  glm::dvec3 target{0.0};  // the point looked at: the bounds' centre
   double near_plane = 0.1;
   double far_plane = 100;
   glm::mat4 view_projection() const { return glm::mat4(projection * view); }

@@ -28,6 +28,8 @@ class GpuModel {
   GLuint texture(int index) const { return textures_[static_cast<std::size_t>(index)].id(); }
   bool has_textures() const { return !textures_.empty(); }
   const scene::Bounds& bounds() const { return bounds_; }
+  // The model-space point the vertex positions are relative to.
+  const glm::dvec3& origin() const { return origin_; }
   std::size_t gpu_bytes() const { return gpu_bytes_; }
 
  private:
@@ -38,6 +40,7 @@ class GpuModel {
   std::vector<GpuMaterial> materials_;
   std::vector<scene::Submesh> submeshes_;
   scene::Bounds bounds_;
+  glm::dvec3 origin_{0.0};
   std::size_t index_count_ = 0;
   std::size_t gpu_bytes_ = 0;
 };

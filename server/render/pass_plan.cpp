@@ -10,6 +10,7 @@ const char* pass_name(Pass pass) {
     case Pass::HullOutline: return "hull_outline";
     case Pass::Resolve: return "resolve";
     case Pass::Readback: return "readback";
+    case Pass::Downsample: return "downsample";
   }
   return "?";
 }
@@ -43,13 +44,40 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
     case ShadingMode::Phong: plan.main_defines.push_back("MODE_PHONG"); break;
     case ShadingMode::Flat: plan.main_defines.push_back("MODE_FLAT"); break;
   }
-  plan.sample_textures = model.has_textures;
+  // A white base ignores the material, so its textures are never read.
+  plan.sample_textures = model.has_textures && params.base == BaseColor::Material;
+  if (params.base == BaseColor::White) plan.main_defines.push_back("BASE_WHITE");
+
+  // Lighting effects change nothing on unlit (flat) colour or without lights.
+  const bool lit = params.mode != ShadingMode::Flat && !params.lights.empty();
+  if (lit) {
+    if (params.light_combine == LightCombine::Sum && params.lights.size() > 1) {
+      plan.main_defines.push_back("COMBINE_SUM");
+    }
+    const bool any_point = std::any_of(params.lights.begin(), params.lights.end(),
+                                       [](const Light& l) { return l.kind == LightKind::Point; });
+    if (any_point) plan.main_defines.push_back("HAS_POINT_LIGHTS");
+    if (params.specular.enabled && params.specular.strength > 0.0f) plan.main_defines.push_back("SPECULAR");
+  }
+  if (params.mode != ShadingMode::Flat && params.rim.enabled && params.rim.strength > 0.0f) {
+    plan.main_defines.push_back("RIM");
+    if (params.rim.mask == RimMask::Lit) plan.main_defines.push_back("RIM_MASK_LIT");
+    if (params.rim.mask == RimMask::Shadow) plan.main_defines.push_back("RIM_MASK_SHADOW");
+  }
+  if (params.halftone.enabled && params.mode != ShadingMode::Flat) {
+    plan.main_defines.push_back(params.halftone.style == HalftoneStyle::Dots ? "HALFTONE_DOTS" : "HALFTONE_CHECKER");
+  }
+  if (params.contour.enabled) {
+    plan.main_defines.push_back(params.contour.style == ContourStyle::Even ? "CONTOUR_EVEN" : "CONTOUR_FRESNEL");
+  }
 
   if (params.outline.enabled && params.outline.width_px > 0.0f) {
     plan.passes.push_back(Pass::HullOutline);
   }
   if (plan.samples > 1) plan.passes.push_back(Pass::Resolve);
   plan.passes.push_back(Pass::Readback);
+  plan.supersample = params.supersample;
+  if (plan.supersample > 1) plan.passes.push_back(Pass::Downsample);
   return plan;
 }
 

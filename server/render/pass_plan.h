@@ -15,6 +15,7 @@ enum class Pass {
   HullOutline,  // inverted hull outside the stencil mark
   Resolve,      // multisample resolve
   Readback,     // pixels back to the CPU
+  Downsample,   // supersampled image averaged to the output size
 };
 const char* pass_name(Pass pass);
 
@@ -29,6 +30,7 @@ struct PassPlan {
   std::vector<std::string> main_defines;
   bool sample_textures = false;
   int samples = 1;
+  int supersample = 1;
 
   bool has(Pass pass) const;
   // The passes as a comma-separated list, e.g. for the Server-Timing header.

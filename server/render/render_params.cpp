@@ -11,6 +11,10 @@ glm::vec3 vec3_of(const json& a) {
   return {a.at(0).get<float>(), a.at(1).get<float>(), a.at(2).get<float>()};
 }
 
+glm::dvec3 dvec3_of(const json& a) {
+  return {a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>()};
+}
+
 }  // namespace
 
 float srgb_to_linear(float c) {
@@ -38,22 +42,57 @@ RenderParams RenderParams::from_json(const json& j) {
   p.camera.distance = cam.at("distance").get<double>();
 
   for (const json& l : j.at("lights")) {
-    DirectionalLight light;
-    const json& d = l.at("direction");
-    light.direction = {d.at(0).get<double>(), d.at(1).get<double>(), d.at(2).get<double>()};
+    Light light;
+    light.kind = l.at("type") == "point" ? LightKind::Point : LightKind::Directional;
+    light.direction = dvec3_of(l.at("direction"));
+    if (l.contains("position")) light.position = dvec3_of(l.at("position"));
+    light.radius = l.at("radius").get<double>();
     light.color = srgb_to_linear(vec3_of(l.at("color"))) * l.at("intensity").get<float>();
     p.lights.push_back(light);
   }
+  p.light_combine = j.at("light_combine") == "sum" ? LightCombine::Sum : LightCombine::Max;
   p.ambient = j.at("ambient").get<float>();
 
   const json& shading = j.at("shading");
   const std::string mode = shading.at("mode");
   p.mode = mode == "phong" ? ShadingMode::Phong : mode == "flat" ? ShadingMode::Flat : ShadingMode::Cel;
+  p.base = shading.at("base") == "white" ? BaseColor::White : BaseColor::Material;
   p.steps = shading.at("steps").get<int>();
   const std::string rounding = shading.at("rounding");
   p.rounding = rounding == "floor" ? Rounding::Floor
                : rounding == "round" ? Rounding::Round
                                      : Rounding::Ceil;
+
+  const json& specular = j.at("specular");
+  p.specular.enabled = specular.at("enabled").get<bool>();
+  p.specular.color = srgb_to_linear(vec3_of(specular.at("color")));
+  p.specular.shininess = specular.at("shininess").get<float>();
+  p.specular.threshold = specular.at("threshold").get<float>();
+  p.specular.strength = specular.at("strength").get<float>();
+
+  const json& rim = j.at("rim");
+  p.rim.enabled = rim.at("enabled").get<bool>();
+  p.rim.color = srgb_to_linear(vec3_of(rim.at("color")));
+  p.rim.power = rim.at("power").get<float>();
+  p.rim.strength = rim.at("strength").get<float>();
+  p.rim.threshold = rim.at("threshold").get<float>();
+  const std::string mask = rim.at("mask");
+  p.rim.mask = mask == "shadow" ? RimMask::Shadow : mask == "both" ? RimMask::Both : RimMask::Lit;
+
+  const json& halftone = j.at("halftone");
+  p.halftone.enabled = halftone.at("enabled").get<bool>();
+  p.halftone.style = halftone.at("style") == "checker" ? HalftoneStyle::Checker : HalftoneStyle::Dots;
+  p.halftone.cell_px = halftone.at("cell").get<float>();
+  p.halftone.angle_deg = halftone.at("angle").get<float>();
+  p.halftone.ink = srgb_to_linear(vec3_of(halftone.at("ink")));
+  p.halftone.ink_mix = halftone.at("ink_mix").get<float>();
+
+  const json& contour = j.at("contour");
+  p.contour.enabled = contour.at("enabled").get<bool>();
+  p.contour.style = contour.at("style") == "fresnel" ? ContourStyle::Fresnel : ContourStyle::Even;
+  p.contour.width_px = contour.at("width").get<float>();
+  p.contour.threshold = contour.at("threshold").get<float>();
+  p.contour.color = srgb_to_linear(vec3_of(contour.at("color")));
 
   const json& outline = j.at("outline");
   p.outline.enabled = outline.at("enabled").get<bool>();
@@ -61,6 +100,7 @@ RenderParams RenderParams::from_json(const json& j) {
   p.outline.color = srgb_to_linear(vec3_of(outline.at("color")));
 
   p.msaa = j.at("msaa").get<int>();
+  p.supersample = j.at("supersample").get<int>();
   return p;
 }
 

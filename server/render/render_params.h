@@ -12,6 +12,7 @@
 namespace toond::render {
 
 enum class ShadingMode { Cel, Phong, Flat };
+enum class BaseColor { Material, White };
 enum class Rounding { Ceil, Floor, Round };
 enum class Projection { Perspective, Orthographic };
 
@@ -23,9 +24,52 @@ struct CameraParams {
   double distance = 0;  // 0: fit to the model's bounds
 };
 
-struct DirectionalLight {
-  glm::dvec3 direction{0, 0, -1};  // the way the light travels
+enum class LightKind { Directional, Point };
+enum class LightCombine { Max, Sum };
+enum class RimMask { Lit, Shadow, Both };
+enum class HalftoneStyle { Dots, Checker };
+enum class ContourStyle { Even, Fresnel };
+
+struct Light {
+  LightKind kind = LightKind::Directional;
+  glm::dvec3 direction{0, 0, -1};  // directional: the way the light travels
+  glm::dvec3 position{0.0};        // point: in model coordinates
+  double radius = 0;               // point: reach in model units, 0 = unlimited
   glm::vec3 color{1.0f};           // linear, intensity applied
+};
+
+struct SpecularParams {
+  bool enabled = true;
+  glm::vec3 color{1.0f};  // linear
+  float shininess = 48;
+  float threshold = 0.5f;
+  float strength = 0.8f;
+};
+
+struct RimParams {
+  bool enabled = false;
+  glm::vec3 color{1.0f};  // linear
+  float power = 4;
+  float strength = 0.6f;
+  float threshold = 0.3f;
+  RimMask mask = RimMask::Lit;
+};
+
+struct HalftoneParams {
+  bool enabled = false;
+  HalftoneStyle style = HalftoneStyle::Dots;
+  float cell_px = 8;
+  float angle_deg = 45;
+  glm::vec3 ink{0.0f};  // linear
+  float ink_mix = 0;
+};
+
+struct ContourParams {
+  bool enabled = false;
+  ContourStyle style = ContourStyle::Even;
+  float width_px = 1.5f;
+  float threshold = 0.2f;
+  glm::vec3 color{0.0f};  // linear
 };
 
 struct OutlineParams {
@@ -40,13 +84,20 @@ struct RenderParams {
   int height = 512;
   glm::vec4 background{1.0f};  // linear rgb, alpha
   CameraParams camera;
-  std::vector<DirectionalLight> lights;
+  std::vector<Light> lights;
+  LightCombine light_combine = LightCombine::Max;
   float ambient = 0.3f;
   ShadingMode mode = ShadingMode::Cel;
+  BaseColor base = BaseColor::Material;
   int steps = 3;
   Rounding rounding = Rounding::Ceil;
+  SpecularParams specular;
+  RimParams rim;
+  HalftoneParams halftone;
+  ContourParams contour;
   OutlineParams outline;
   int msaa = 1;
+  int supersample = 1;
 
   static RenderParams from_json(const nlohmann::json& completed);
 };

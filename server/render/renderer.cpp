@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "gpu/gpu_error.h"
+#include "image/downsample.h"
 #include "render/camera.h"
 
 namespace toond::render {
@@ -47,7 +48,13 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
   out.plan = plan.describe();
   PassTimer timer(out.timings);
 
-  gpu::RenderTarget& target = target_for(params.width, params.height, plan.samples);
+  // Supersampling draws everything `ss` times larger, pixel sizes included,
+  // then averages back down; the look is the same, the edges smoother.
+  const int ss = plan.supersample;
+  const float px = static_cast<float>(ss);
+  const int draw_width = params.width * ss;
+  const int draw_height = params.height * ss;
+  gpu::RenderTarget& target = target_for(draw_width, draw_height, plan.samples);
   target.bind_for_drawing();
   const CameraSetup camera = fit_camera(params.camera, model.bounds(),
                                         static_cast<double>(params.width) / params.height);
@@ -73,15 +80,26 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
   {
     glStencilFunc(GL_ALWAYS, 1, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-    std::vector<glm::vec3> light_to;
+    // Light positions are in model coordinates; the mesh was recentred on
+    // `origin` in double precision, so point lights move with it.
+    std::vector<glm::vec3> light_vec;
     std::vector<glm::vec3> light_color;
-    for (const DirectionalLight& l : params.lights) {
-      const double len = glm::length(l.direction);
-      // A zero direction has no way to travel; it lights nothing.
-      if (!(len > 0.0)) continue;
-      light_to.push_back(glm::vec3(-l.direction / len));
+    std::vector<int> light_is_point;
+    std::vector<float> light_radius;
+    for (const Light& l : params.lights) {
+      if (l.kind == LightKind::Point) {
+        light_vec.push_back(glm::vec3(l.position - model.origin()));
+      } else {
+        const double len = glm::length(l.direction);
+        // A zero direction has no way to travel; it lights nothing.
+        if (!(len > 0.0)) continue;
+        light_vec.push_back(glm::vec3(-l.direction / len));
+      }
       light_color.push_back(l.color);
+      light_is_point.push_back(l.kind == LightKind::Point ? 1 : 0);
+      light_radius.push_back(static_cast<float>(l.radius));
     }
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
     for (const scene::Submesh& sub : model.submeshes()) {
       const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
       std::vector<std::string> defines = plan.main_defines;
@@ -93,9 +111,29 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
       program.set("u_base_color", material.diffuse);
       program.set("u_ambient", params.ambient);
       program.set("u_steps", static_cast<float>(params.steps));
-      program.set("u_light_count", static_cast<int>(light_to.size()));
-      program.set_array("u_light_to", light_to);
+      program.set("u_eye", glm::vec3(camera.eye));
+      program.set("u_view_dir", glm::vec3(forward));
+      program.set("u_orthographic", params.camera.projection == Projection::Orthographic ? 1 : 0);
+      program.set("u_light_count", static_cast<int>(light_vec.size()));
+      program.set_array("u_light_vec", light_vec);
       program.set_array("u_light_color", light_color);
+      program.set_array("u_light_is_point", light_is_point);
+      program.set_array("u_light_radius", light_radius);
+      program.set("u_specular_color", params.specular.color);
+      program.set("u_shininess", params.specular.shininess);
+      program.set("u_specular_threshold", params.specular.threshold);
+      program.set("u_specular_strength", params.specular.strength);
+      program.set("u_rim_color", params.rim.color);
+      program.set("u_rim_power", params.rim.power);
+      program.set("u_rim_strength", params.rim.strength);
+      program.set("u_rim_threshold", params.rim.threshold);
+      program.set("u_contour_color", params.contour.color);
+      program.set("u_contour_width", params.contour.width_px * px);
+      program.set("u_contour_threshold", params.contour.threshold);
+      program.set("u_halftone_cell", params.halftone.cell_px * px);
+      program.set("u_halftone_angle", static_cast<float>(glm::radians(params.halftone.angle_deg)));
+      program.set("u_halftone_ink", params.halftone.ink);
+      program.set("u_halftone_ink_mix", params.halftone.ink_mix);
       if (textured) {
         glBindTextureUnit(0, model.texture(material.texture));
         program.set("u_diffuse_map", 0);
@@ -114,9 +152,9 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
     program.set("u_view_projection", view_projection);
     // projection[1][1] maps a view-space height at depth w to NDC, and NDC
     // spans `height` pixels over 2 units.
-    const double world_per_px = 2.0 / (camera.projection[1][1] * params.height);
+    const double world_per_px = 2.0 / (camera.projection[1][1] * draw_height);
     program.set("u_world_per_px_at_w1", static_cast<float>(world_per_px));
-    program.set("u_width_px", params.outline.width_px);
+    program.set("u_width_px", params.outline.width_px * px);
     program.set("u_outline_color", params.outline.color);
     model.draw_all();
     check_gl("hull outline pass");
@@ -130,6 +168,10 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
   out.image = target.read_back();
   check_gl("readback");
   timer.mark(Pass::Readback);
+  if (plan.has(Pass::Downsample)) {
+    out.image = image::downsample_box(out.image, ss);
+    timer.mark(Pass::Downsample);
+  }
   return out;
 }
 

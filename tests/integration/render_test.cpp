@@ -63,6 +63,7 @@ TEST_F(Render, BandCountEqualsSteps) {
                          {"camera", {{"yaw", 0}, {"pitch", 0}}},
                          {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}}}},
                          {"outline", {{"enabled", false}}},
+                         {"specular", {{"enabled", false}}},
                          {"shading", {{"steps", steps}}}};
     const auto img = render_ok(client, params);
     const auto mask = foreground_mask(img);
@@ -259,6 +260,33 @@ TEST_F(Render, OutlineStaysClosedOnAGeneratedCube) {
   for (double yaw : {0.0, 30.0, 45.0}) {
     expect_closed_dark_ring(client, {{"model", cube}, {"camera", {{"yaw", yaw}, {"pitch", 20}}}}, 3);
   }
+}
+
+// Supersampling keeps the output size and the look, and smooths edges:
+// without any antialiasing a silhouette pixel is model or background; with
+// 3× supersampling many edge pixels are in-between blends.
+TEST_F(Render, SupersamplingSmoothsEdgesAtTheSameSize) {
+  auto client = daemon().client();
+  const std::string sphere = upload_obj_text(client, sphere_obj(64, 32), "sphere.obj");
+  json params = {{"model", sphere}, {"width", 128}, {"height", 96}, {"msaa", 1},
+                 {"outline", {{"enabled", false}}}, {"specular", {{"enabled", false}}}};
+  const auto sharp = render_ok(client, params);
+  params["supersample"] = 3;
+  auto res = post_json(client, "/render", params);
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_NE(res->get_header_value("X-Toond-Passes").find("downsample"), std::string::npos);
+  const auto smooth = image::decode_png(res->body);
+  ASSERT_EQ(smooth.width, 128);
+  ASSERT_EQ(smooth.height, 96);
+  const auto sharp_colours = colour_histogram(sharp, foreground_mask(sharp)).size();
+  const auto smooth_colours = colour_histogram(smooth, foreground_mask(smooth)).size();
+  EXPECT_GT(smooth_colours, sharp_colours + 20) << sharp_colours << " vs " << smooth_colours;
+  // Same look: the two images agree on most pixels.
+  std::size_t same = 0;
+  for (int y = 0; y < 96; ++y)
+    for (int x = 0; x < 128; ++x) same += rgb_at(sharp, x, y) == rgb_at(smooth, x, y) ? 1 : 0;
+  EXPECT_GT(static_cast<double>(same) / (128 * 96), 0.85);
 }
 
 TEST_F(Render, OneShotMultipartRenderUploadsAndRenders) {

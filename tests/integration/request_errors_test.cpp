@@ -81,6 +81,16 @@ TEST_F(RequestErrors, ArrayElementOutOfRange) {
                "/background/1");
 }
 
+TEST_F(RequestErrors, RenderBeyondTheSampleBudgetNamesTheKnobToLower) {
+  auto client = daemon().client();
+  const auto error = expect_error(
+      post_json(client, "/render", {{"width", 4096}, {"height", 4096}, {"supersample", 2}, {"msaa", 8}}), 422,
+      "too_large", "/msaa");
+  EXPECT_NE(error["message"].get<std::string>().find("samples"), std::string::npos);
+  expect_error(post_json(client, "/render", {{"width", 4096}, {"height", 4096}, {"supersample", 3}, {"msaa", 1}}),
+               422, "too_large", "/supersample");
+}
+
 TEST_F(RequestErrors, MissingModel) {
   auto client = daemon().client();
   expect_error(post_json(client, "/render", {{"model", "0123456789abcdef0123456789abcdef"}}), 404,

@@ -1,0 +1,28 @@
+#include "presets.h"
+
+#include "toond_proto_files.h"
+
+namespace toond::proto {
+
+const Presets& Presets::builtin() {
+  static const Presets presets(nlohmann::json::parse(toond::proto_files::find("presets.json")));
+  return presets;
+}
+
+nlohmann::json merge_over(const nlohmann::json& base, const nlohmann::json& over) {
+  if (!base.is_object() || !over.is_object()) return over;
+  nlohmann::json out = base;
+  for (const auto& [key, value] : over.items()) {
+    out[key] = out.contains(key) ? merge_over(out[key], value) : value;
+  }
+  return out;
+}
+
+nlohmann::json Presets::expand(const nlohmann::json& request) const {
+  if (!request.is_object() || !request.contains("preset")) return request;
+  const auto preset = document_.find(request["preset"].get<std::string>());
+  if (preset == document_.end()) return request;
+  return merge_over(preset->at("params"), request);
+}
+
+}  // namespace toond::proto

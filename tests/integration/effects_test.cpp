@@ -1,0 +1,294 @@
+// Each lighting and effect parameter, proven by what it does to the image.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "support/generated_models.h"
+#include "support/image_checks.h"
+#include "test_client.h"
+
+namespace toond::test {
+namespace {
+
+using nlohmann::json;
+
+class Effects : public SharedDaemonTest {
+ protected:
+  void SetUp() override {
+    auto client = daemon().client();
+    sphere_ = upload_obj_text(client, sphere_obj(96, 48), "sphere.obj");
+  }
+  // A front view of the unit sphere, no antialiasing, no lines, no highlight:
+  // every pixel is a flat band colour unless the test turns something on.
+  json base() const {
+    return {{"model", sphere_},
+            {"width", 256},
+            {"height", 256},
+            {"msaa", 1},
+            {"camera", {{"yaw", 0}, {"pitch", 0}}},
+            {"outline", {{"enabled", false}}},
+            {"specular", {{"enabled", false}}}};
+  }
+  std::string sphere_;
+};
+
+// Distance in pixels from (x, y) to the nearest background pixel.
+double depth_inside(const std::vector<bool>& mask, int w, int h, int x, int y) {
+  double best = 1e9;
+  for (int yy = 0; yy < h; ++yy)
+    for (int xx = 0; xx < w; ++xx)
+      if (!mask[static_cast<std::size_t>(yy) * w + xx]) best = std::min(best, std::hypot(xx - x, yy - y));
+  return best;
+}
+
+TEST_F(Effects, PointLightLeavesPixelsBeyondItsRadiusAtAmbient) {
+  auto client = daemon().client();
+  json params = base();
+  params["shading"] = {{"mode", "phong"}};
+  // A light just in front of the sphere, reaching 1.2 units. A sphere point
+  // at angle θ from +Z is sqrt(3.25 - 3 cos θ) from the light, beyond 1.2
+  // where cos θ < 0.603, i.e. (orthographic view) more than 0.80 of the
+  // disk's radius from its centre.
+  params["camera"]["projection"] = "orthographic";
+  params["lights"] = {{{"type", "point"}, {"position", {0, 0, 1.5}}, {"radius", 1.2}}};
+  const auto img = render_ok(client, params);
+  params["lights"] = json::array();
+  const auto ambient_only = render_ok(client, params);
+  const Rgb ambient = rgb_at(ambient_only, 128, 128);
+  const auto mask = foreground_mask(img);
+  const int cx = 128, cy = 128;
+  double radius_px = 0;
+  for (int x = cx; x < 256 && mask[static_cast<std::size_t>(cy) * 256 + x]; ++x) radius_px = x - cx;
+  std::size_t outside = 0, outside_at_ambient = 0;
+  for (int y = 0; y < 256; ++y) {
+    for (int x = 0; x < 256; ++x) {
+      if (!mask[static_cast<std::size_t>(y) * 256 + x]) continue;
+      const double r = std::hypot(x - cx, y - cy) / radius_px;
+      if (r < 0.84 || r > 0.97) continue;  // safely beyond the radius, off the very edge
+      ++outside;
+      outside_at_ambient += rgb_at(img, x, y) == ambient ? 1 : 0;
+    }
+  }
+  ASSERT_GT(outside, 100u);
+  EXPECT_EQ(outside_at_ambient, outside) << "beyond the radius only ambient light remains";
+  EXPECT_GT(luminance(rgb_at(img, cx, cy)), luminance(ambient) + 0.1) << "inside the radius it lights";
+}
+
+TEST_F(Effects, MaxAndSumDifferOnlyWhereLightsOverlap) {
+  auto client = daemon().client();
+  json params = base();
+  params["lights"] = {{{"type", "directional"}, {"direction", {1, 0, -0.3}}, {"intensity", 0.6}},
+                      {{"type", "directional"}, {"direction", {-1, 0, -0.3}}, {"intensity", 0.6}}};
+  params["light_combine"] = "max";
+  const auto max_img = render_ok(client, params);
+  params["light_combine"] = "sum";
+  const auto sum_img = render_ok(client, params);
+  std::size_t brighter = 0, darker = 0;
+  for (int y = 0; y < 256; ++y) {
+    for (int x = 0; x < 256; ++x) {
+      const double a = luminance(rgb_at(max_img, x, y)), b = luminance(rgb_at(sum_img, x, y));
+      brighter += b > a ? 1 : 0;
+      darker += b < a ? 1 : 0;
+    }
+  }
+  EXPECT_GT(brighter, 500u) << "the overlap in the middle is brighter with sum";
+  EXPECT_EQ(darker, 0u) << "sum is never darker than max";
+  // Where only one light reaches (the far left and right), both agree.
+  EXPECT_EQ(rgb_at(max_img, 30, 128), rgb_at(sum_img, 30, 128));
+}
+
+TEST_F(Effects, SpecularIsAHardSpotThatNeverLiesInTheShadowBand) {
+  auto client = daemon().client();
+  json params = base();
+  params["lights"] = {{{"type", "directional"}, {"direction", {-0.9, -0.3, -0.4}}}};
+  params["shading"] = {{"steps", 3}};
+  const auto plain = render_ok(client, params);
+  params["specular"] = {{"enabled", true}, {"threshold", 0.5}, {"strength", 1}, {"color", {1, 1, 1}}};
+  const auto lit = render_ok(client, params);
+  // The shadow band: the darkest colour of the plain render.
+  const auto hist = colour_histogram(plain, foreground_mask(plain));
+  Rgb darkest = hist.begin()->first;
+  for (const auto& [c, n] : hist)
+    if (luminance(c) < luminance(darkest)) darkest = c;
+  std::size_t highlight = 0, in_shadow = 0;
+  std::set<Rgb> highlight_colours;
+  for (int y = 0; y < 256; ++y) {
+    for (int x = 0; x < 256; ++x) {
+      if (rgb_at(plain, x, y) == rgb_at(lit, x, y)) continue;
+      ++highlight;
+      highlight_colours.insert(rgb_at(lit, x, y));
+      in_shadow += rgb_at(plain, x, y) == darkest ? 1 : 0;
+    }
+  }
+  EXPECT_GT(highlight, 20u);
+  EXPECT_EQ(in_shadow, 0u);
+  EXPECT_EQ(highlight_colours, (std::set<Rgb>{{255, 255, 255}})) << "thresholded: one hard colour";
+}
+
+TEST_F(Effects, RimBrightensARingInsideTheSilhouetteOnly) {
+  auto client = daemon().client();
+  json params = base();
+  params["lights"] = {{{"type", "directional"}, {"direction", {0, 0, -1}}}};
+  const auto plain = render_ok(client, params);
+  params["rim"] = {{"enabled", true}, {"power", 4}, {"strength", 0.7}, {"threshold", 0}, {"mask", "both"}};
+  const auto rimmed = render_ok(client, params);
+  const auto mask = foreground_mask(plain);
+  double radius_px = 0;
+  for (int x = 128; x < 256 && mask[static_cast<std::size_t>(128) * 256 + x]; ++x) radius_px = x - 128;
+  std::size_t changed = 0, deep_inside = 0, darker = 0, outside = 0;
+  for (int y = 0; y < 256; ++y) {
+    for (int x = 0; x < 256; ++x) {
+      if (rgb_at(plain, x, y) == rgb_at(rimmed, x, y)) continue;
+      ++changed;
+      outside += mask[static_cast<std::size_t>(y) * 256 + x] ? 0 : 1;
+      if (std::hypot(x - 128, y - 128) < 0.5 * radius_px) ++deep_inside;
+      if (luminance(rgb_at(rimmed, x, y)) < luminance(rgb_at(plain, x, y))) ++darker;
+    }
+  }
+  EXPECT_GT(changed, 500u);
+  EXPECT_EQ(outside, 0u) << "nothing outside the silhouette";
+  EXPECT_EQ(deep_inside, 0u) << "the middle of the disk keeps its colour";
+  EXPECT_EQ(darker, 0u) << "a white rim only brightens";
+  // Not washed out: even at the rim the colour stays below pure white.
+  EXPECT_LT(luminance(rgb_at(rimmed, 128 + static_cast<int>(radius_px) - 2, 128)), 0.99);
+}
+
+TEST_F(Effects, RimMaskKeepsToTheChosenSide) {
+  auto client = daemon().client();
+  json params = base();
+  params["lights"] = {{{"type", "directional"}, {"direction", {-1, 0, 0}}}};  // lights the right half
+  const auto plain = render_ok(client, params);
+  for (const char* side : {"lit", "shadow"}) {
+    params["rim"] = {{"enabled", true}, {"strength", 0.7}, {"threshold", 0}, {"mask", side}};
+    const auto rimmed = render_ok(client, params);
+    std::size_t left = 0, right = 0;
+    for (int y = 0; y < 256; ++y)
+      for (int x = 0; x < 256; ++x)
+        if (rgb_at(plain, x, y) != rgb_at(rimmed, x, y)) (x < 128 ? left : right) += 1;
+    if (std::string(side) == "lit") {
+      EXPECT_GT(right, 100u);
+      EXPECT_EQ(left, 0u);
+    } else {
+      EXPECT_GT(left, 100u);
+      EXPECT_EQ(right, 0u);
+    }
+  }
+}
+
+// Autocorrelation of the ink mask along x: its strongest lag is the period.
+int dominant_period(const Image& img, int y0, int y1, int x0, int x1, int min_lag, int max_lag) {
+  int best_lag = 0;
+  double best = -1;
+  for (int lag = min_lag; lag <= max_lag; ++lag) {
+    double sum = 0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x + lag < x1; ++x)
+        sum += luminance(rgb_at(img, x, y)) * luminance(rgb_at(img, x + lag, y));
+    sum /= (x1 - x0 - lag);
+    if (sum > best) {
+      best = sum;
+      best_lag = lag;
+    }
+  }
+  return best_lag;
+}
+
+TEST_F(Effects, HalftoneDotsRepeatWithTheCellSize) {
+  auto client = daemon().client();
+  json params = base();
+  params["shading"] = {{"mode", "phong"}};
+  params["lights"] = {{{"type", "directional"}, {"direction", {-1, 0, -0.2}}}};
+  for (int cell : {6, 10}) {
+    params["halftone"] = {{"enabled", true}, {"style", "dots"}, {"cell", cell}, {"angle", 0},
+                          {"ink", {0, 0, 0}}, {"ink_mix", 1}};
+    const auto img = render_ok(client, params);
+    // The dots grow toward the shadow side; measure in the mid tones.
+    EXPECT_EQ(dominant_period(img, 100, 156, 60, 150, 3, 16), cell) << "cell " << cell;
+    // Two tones only (plus the background): lit colour and ink.
+    const auto hist = colour_histogram(img, foreground_mask(img));
+    EXPECT_LE(hist.size(), 12u) << "few colours: ink, paper and the highlight-free lit tone";
+  }
+}
+
+TEST_F(Effects, CheckerHalftoneOnlyTouchesTheMidBands) {
+  auto client = daemon().client();
+  json params = base();
+  params["lights"] = {{{"type", "directional"}, {"direction", {-1, 0, -0.4}}}};
+  params["shading"] = {{"steps", 3}};
+  const auto plain = render_ok(client, params);
+  params["halftone"] = {{"enabled", true}, {"style", "checker"}, {"cell", 4}};
+  const auto checked = render_ok(client, params);
+  // The brightest band is untouched.
+  Rgb brightest{0, 0, 0};
+  for (const auto& [c, n] : colour_histogram(plain, foreground_mask(plain)))
+    if (luminance(c) > luminance(brightest)) brightest = c;
+  std::size_t changed = 0, changed_in_top_band = 0;
+  for (int y = 0; y < 256; ++y)
+    for (int x = 0; x < 256; ++x)
+      if (rgb_at(plain, x, y) != rgb_at(checked, x, y)) {
+        ++changed;
+        changed_in_top_band += rgb_at(plain, x, y) == brightest ? 1 : 0;
+      }
+  EXPECT_GT(changed, 200u);
+  EXPECT_EQ(changed_in_top_band, 0u);
+}
+
+TEST_F(Effects, ContourDrawsEvenLinesInsideTheSilhouette) {
+  auto client = daemon().client();
+  json params = base();
+  params["lights"] = {{{"type", "directional"}, {"direction", {0, 0, -1}}}};
+  const auto plain = render_ok(client, params);
+  params["contour"] = {{"enabled", true}, {"style", "even"}, {"width", 3}, {"color", {0, 0, 0}}};
+  const auto lined = render_ok(client, params);
+  const auto mask = foreground_mask(plain);
+  std::size_t changed = 0, too_deep = 0;
+  for (int y = 0; y < 256; y += 2) {
+    for (int x = 0; x < 256; x += 2) {
+      if (rgb_at(plain, x, y) == rgb_at(lined, x, y)) continue;
+      ++changed;
+      EXPECT_EQ(rgb_at(lined, x, y), (Rgb{0, 0, 0}));
+      if (depth_inside(mask, 256, 256, x, y) > 3 + 1.5) ++too_deep;
+    }
+  }
+  EXPECT_GT(changed, 50u);
+  EXPECT_EQ(too_deep, 0u) << "the even line is about `width` pixels wide";
+}
+
+TEST_F(Effects, EveryPresetLooksDifferent) {
+  auto client = daemon().client();
+  auto res = client.Get("/presets");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200);
+  const json presets = json::parse(res->body);
+  std::set<std::vector<std::uint8_t>> seen;
+  for (const auto& [name, preset] : presets.items()) {
+    EXPECT_FALSE(preset["description"].get<std::string>().empty()) << name;
+    json params = {{"preset", name}, {"width", 128}, {"height", 128}};
+    const auto img = render_ok(client, params);
+    EXPECT_TRUE(seen.insert(img.rgba).second) << name << " renders the same as another preset";
+  }
+  EXPECT_GE(seen.size(), 7u);
+}
+
+TEST_F(Effects, ExplicitFieldsOverrideThePreset) {
+  auto client = daemon().client();
+  auto res = post_json(client, "/render", {{"preset", "bw_comic"}, {"outline", {{"width", 0}}}, {"width", 64}, {"height", 64}});
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_EQ(res->get_header_value("X-Toond-Passes").find("hull_outline"), std::string::npos);
+  auto with_outline = post_json(client, "/render", {{"preset", "bw_comic"}, {"width", 64}, {"height", 64}});
+  ASSERT_TRUE(with_outline);
+  EXPECT_NE(with_outline->get_header_value("X-Toond-Passes").find("hull_outline"), std::string::npos);
+}
+
+TEST_F(Effects, UnknownPresetIsRejected) {
+  auto client = daemon().client();
+  auto res = post_json(client, "/render", {{"preset", "vaporwave"}});
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 400);
+  EXPECT_EQ(error_of(res)["path"], "/preset");
+}
+
+}  // namespace
+}  // namespace toond::test
