@@ -12,13 +12,17 @@
 // silhouette point's normal lies in the image plane, so there the ring is
 // exactly that many pixels wide, at any distance from the camera.
 layout(location = 0) in vec3 a_position;
+layout(location = 2) in vec2 a_texcoord;
 layout(location = 3) in vec3 a_outline_offset;
+
+out vec2 v_texcoord;
 
 uniform mat4 u_view_projection;
 uniform float u_world_per_px_at_w1;
 uniform float u_width_px;
 
 void main() {
+  v_texcoord = a_texcoord;
   float w = (u_view_projection * vec4(a_position, 1.0)).w;
   vec3 moved = a_position + a_outline_offset * (u_width_px * u_world_per_px_at_w1 * abs(w));
   gl_Position = u_view_projection * vec4(moved, 1.0);

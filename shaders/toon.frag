@@ -11,6 +11,7 @@
 //
 // Variants (#defines, chosen by the pass plan):
 //   MODE_CEL | MODE_PHONG | MODE_FLAT      ROUND_CEIL | ROUND_FLOOR | ROUND_ROUND
+//   TWO_TONE | RAMP (cel only; replace the bands)
 //   BASE_WHITE   HAS_TEXTURE   COMBINE_SUM   HAS_POINT_LIGHTS   SPECULAR
 //   RIM (+ RIM_MASK_LIT | RIM_MASK_SHADOW)   CONTOUR_EVEN | CONTOUR_FRESNEL
 //   HALFTONE_DOTS | HALFTONE_CHECKER
@@ -62,18 +63,47 @@ uniform float u_halftone_ink_mix;
 
 layout(location = 0) out vec4 o_color;
 
-float band(float n_dot_l) {
-#ifdef MODE_CEL
+#if defined(TWO_TONE)
+uniform float u_two_tone_threshold;
+uniform float u_two_tone_shadow;
+#elif defined(RAMP)
+uniform int u_ramp_count;
+uniform float u_ramp_at[16];
+uniform vec3 u_ramp_color[16];
+#endif
+
+// The lighting ramp: the diffuse level (or colour) for a value of N·L, and
+// whether that value lies in the shadow band, the ramp's lowest step.
+vec3 ramp(float n_dot_l, out bool shadow) {
+#if defined(TWO_TONE)
+  shadow = n_dot_l < u_two_tone_threshold;
+  return vec3(shadow ? u_two_tone_shadow : 1.0);
+#elif defined(RAMP)
+  // Stops are sorted by `at`; below the first one there is no light.
+  vec3 level = vec3(0.0);
+  int step = -1;
+  for (int i = 0; i < u_ramp_count; ++i) {
+    if (n_dot_l >= u_ramp_at[i]) {
+      level = u_ramp_color[i];
+      step = i;
+    }
+  }
+  shadow = step < 1;
+  return level;
+#elif defined(MODE_CEL)
   float x = clamp(n_dot_l, 0.0, 1.0) * u_steps;
 #if defined(ROUND_FLOOR)
-  return floor(x) / u_steps;
+  float b = floor(x) / u_steps;
 #elif defined(ROUND_ROUND)
-  return floor(x + 0.5) / u_steps;
+  float b = floor(x + 0.5) / u_steps;
 #else
-  return ceil(x) / u_steps;
+  float b = ceil(x) / u_steps;
 #endif
+  shadow = b <= 0.0;
+  return vec3(b);
 #else
-  return max(n_dot_l, 0.0);
+  shadow = n_dot_l <= 0.0;
+  return vec3(max(n_dot_l, 0.0));
 #endif
 }
 
@@ -118,11 +148,14 @@ void main() {
 
   vec3 diffuse = vec3(0.0);
   vec3 highlight = vec3(0.0);
+  bool any_lit = false;
   for (int i = 0; i < u_light_count; ++i) {
     float reach;
     vec3 l = toward_light(i, reach);
-    float lit_band = band(dot(n, l));
-    vec3 contribution = u_light_color[i] * (lit_band * reach);
+    bool shadow;
+    vec3 contribution = u_light_color[i] * ramp(dot(n, l), shadow) * reach;
+    bool lit_here = !shadow && reach > 0.0;
+    any_lit = any_lit || lit_here;
 #ifdef COMBINE_SUM
     diffuse += contribution;
 #else
@@ -132,7 +165,7 @@ void main() {
     // Only where this light's band is above the lowest: a highlight never
     // lands in the shadow band, even for grazing lights where N·H can be
     // large while N·L is not.
-    if (lit_band > 0.0 && reach > 0.0) {
+    if (lit_here) {
       float s = pow(max(dot(n, normalize(l + v)), 0.0), u_shininess);
 #ifdef MODE_CEL
       s = s >= u_specular_threshold ? 1.0 : 0.0;
@@ -152,9 +185,9 @@ void main() {
   float rim = pow(1.0 - clamp(dot(n, v), 0.0, 1.0), u_rim_power);
   if (u_rim_threshold > 0.0) rim = rim >= u_rim_threshold ? 1.0 : 0.0;
 #if defined(RIM_MASK_LIT)
-  rim *= level > 0.0 ? 1.0 : 0.0;
+  rim *= any_lit ? 1.0 : 0.0;
 #elif defined(RIM_MASK_SHADOW)
-  rim *= level > 0.0 ? 0.0 : 1.0;
+  rim *= any_lit ? 0.0 : 1.0;
 #endif
   // A blend, not an addition: the rim can reach its colour but never
   // overshoot it, which is how the reference report's rim washed models out.

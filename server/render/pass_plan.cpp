@@ -36,10 +36,16 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   switch (params.mode) {
     case ShadingMode::Cel:
       plan.main_defines.push_back("MODE_CEL");
-      // Rounding only matters when N·L is quantized.
-      plan.main_defines.push_back(params.rounding == Rounding::Floor   ? "ROUND_FLOOR"
-                                  : params.rounding == Rounding::Round ? "ROUND_ROUND"
-                                                                       : "ROUND_CEIL");
+      if (!params.ramp.empty()) {
+        plan.main_defines.push_back("RAMP");
+      } else if (params.two_tone.enabled) {
+        plan.main_defines.push_back("TWO_TONE");
+      } else {
+        // Rounding only matters when N·L is quantized into equal bands.
+        plan.main_defines.push_back(params.rounding == Rounding::Floor   ? "ROUND_FLOOR"
+                                    : params.rounding == Rounding::Round ? "ROUND_ROUND"
+                                                                         : "ROUND_CEIL");
+      }
       break;
     case ShadingMode::Phong: plan.main_defines.push_back("MODE_PHONG"); break;
     case ShadingMode::Flat: plan.main_defines.push_back("MODE_FLAT"); break;
@@ -73,6 +79,14 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
 
   if (params.outline.enabled && params.outline.width_px > 0.0f) {
     plan.passes.push_back(Pass::HullOutline);
+    switch (params.outline.color_mode) {
+      case OutlineColorMode::Fixed: break;
+      case OutlineColorMode::Material: plan.outline_defines.push_back("OUTLINE_MATERIAL"); break;
+      case OutlineColorMode::Texture:
+        // Without textures the texture mode falls back to the material colour.
+        plan.outline_defines.push_back(plan.sample_textures ? "OUTLINE_TEXTURE" : "OUTLINE_MATERIAL");
+        break;
+    }
   }
   if (plan.samples > 1) plan.passes.push_back(Pass::Resolve);
   plan.passes.push_back(Pass::Readback);

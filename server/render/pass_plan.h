@@ -28,6 +28,8 @@ struct PassPlan {
   std::vector<Pass> passes;
   // #defines shared by every main-pass program of this render.
   std::vector<std::string> main_defines;
+  // #defines of the hull outline programs (where its colour comes from).
+  std::vector<std::string> outline_defines;
   bool sample_textures = false;
   int samples = 1;
   int supersample = 1;

@@ -1,5 +1,6 @@
 #include "render/render_params.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace toond::render {
@@ -59,6 +60,20 @@ RenderParams RenderParams::from_json(const json& j) {
   p.base = shading.at("base") == "white" ? BaseColor::White : BaseColor::Material;
   p.steps = shading.at("steps").get<int>();
   const std::string rounding = shading.at("rounding");
+  const json& two_tone = shading.at("two_tone");
+  p.two_tone.enabled = two_tone.at("enabled").get<bool>();
+  p.two_tone.threshold = two_tone.at("threshold").get<float>();
+  p.two_tone.shadow_factor = two_tone.at("shadow_factor").get<float>();
+  for (const json& stop : shading.at("ramp")) {
+    RampStop r;
+    r.at = stop.at("at").get<float>();
+    // A grey value is a level of light, linear already; a colour is sRGB
+    // like every colour on the wire.
+    r.color = stop.contains("color") ? srgb_to_linear(vec3_of(stop.at("color")))
+                                     : glm::vec3(stop.at("value").get<float>());
+    p.ramp.push_back(r);
+  }
+  std::stable_sort(p.ramp.begin(), p.ramp.end(), [](const RampStop& a, const RampStop& b) { return a.at < b.at; });
   p.rounding = rounding == "floor" ? Rounding::Floor
                : rounding == "round" ? Rounding::Round
                                      : Rounding::Ceil;
@@ -98,6 +113,11 @@ RenderParams RenderParams::from_json(const json& j) {
   p.outline.enabled = outline.at("enabled").get<bool>();
   p.outline.width_px = outline.at("width").get<float>();
   p.outline.color = srgb_to_linear(vec3_of(outline.at("color")));
+  const std::string color_mode = outline.at("color_mode");
+  p.outline.color_mode = color_mode == "texture"    ? OutlineColorMode::Texture
+                         : color_mode == "material" ? OutlineColorMode::Material
+                                                    : OutlineColorMode::Fixed;
+  p.outline.darken = outline.at("darken").get<float>();
 
   p.msaa = j.at("msaa").get<int>();
   p.supersample = j.at("supersample").get<int>();

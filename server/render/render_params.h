@@ -72,10 +72,26 @@ struct ContourParams {
   glm::vec3 color{0.0f};  // linear
 };
 
+enum class OutlineColorMode { Fixed, Texture, Material };
+
 struct OutlineParams {
   bool enabled = true;
   float width_px = 2;
   glm::vec3 color{0.0f};  // linear
+  OutlineColorMode color_mode = OutlineColorMode::Fixed;
+  float darken = 0.6f;
+};
+
+struct TwoToneParams {
+  bool enabled = false;
+  float threshold = 0.25f;
+  float shadow_factor = 0.25f;
+};
+
+// One step of a lighting ramp: from N·L = at on, the diffuse is `color`.
+struct RampStop {
+  float at = 0;
+  glm::vec3 color{1.0f};  // linear; a grey ramp's value v is (v, v, v)
 };
 
 struct RenderParams {
@@ -91,6 +107,8 @@ struct RenderParams {
   BaseColor base = BaseColor::Material;
   int steps = 3;
   Rounding rounding = Rounding::Ceil;
+  TwoToneParams two_tone;
+  std::vector<RampStop> ramp;  // sorted by `at`; empty: bands
   SpecularParams specular;
   RimParams rim;
   HalftoneParams halftone;

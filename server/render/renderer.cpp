@@ -100,6 +100,12 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
       light_radius.push_back(static_cast<float>(l.radius));
     }
     const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
+    std::vector<float> ramp_at;
+    std::vector<glm::vec3> ramp_color;
+    for (const RampStop& stop : params.ramp) {
+      ramp_at.push_back(stop.at);
+      ramp_color.push_back(stop.color);
+    }
     for (const scene::Submesh& sub : model.submeshes()) {
       const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
       std::vector<std::string> defines = plan.main_defines;
@@ -134,6 +140,11 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
       program.set("u_halftone_angle", static_cast<float>(glm::radians(params.halftone.angle_deg)));
       program.set("u_halftone_ink", params.halftone.ink);
       program.set("u_halftone_ink_mix", params.halftone.ink_mix);
+      program.set("u_two_tone_threshold", params.two_tone.threshold);
+      program.set("u_two_tone_shadow", params.two_tone.shadow_factor);
+      program.set("u_ramp_count", static_cast<int>(ramp_at.size()));
+      program.set_array("u_ramp_at", ramp_at);
+      program.set_array("u_ramp_color", ramp_color);
       if (textured) {
         glBindTextureUnit(0, model.texture(material.texture));
         program.set("u_diffuse_map", 0);
@@ -147,7 +158,7 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
   if (plan.has(Pass::HullOutline)) {
     glStencilFunc(GL_NOTEQUAL, 1, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    gpu::Program& program = programs_.get("hull.vert", "hull.frag", {});
+    gpu::Program& program = programs_.get("hull.vert", "hull.frag", plan.outline_defines);
     program.use();
     program.set("u_view_projection", view_projection);
     // projection[1][1] maps a view-space height at depth w to NDC, and NDC
@@ -156,7 +167,23 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
     program.set("u_world_per_px_at_w1", static_cast<float>(world_per_px));
     program.set("u_width_px", params.outline.width_px * px);
     program.set("u_outline_color", params.outline.color);
-    model.draw_all();
+    program.set("u_darken", params.outline.darken);
+    if (plan.outline_defines.empty()) {
+      model.draw_all();
+    } else {
+      // The colour comes from each material, so draw material by material.
+      for (const scene::Submesh& sub : model.submeshes()) {
+        const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
+        program.set("u_base_color", material.diffuse);
+        const bool textured = material.texture >= 0;
+        program.set("u_has_texture", textured ? 1 : 0);
+        if (textured) {
+          glBindTextureUnit(0, model.texture(material.texture));
+          program.set("u_diffuse_map", 0);
+        }
+        model.draw(sub);
+      }
+    }
     check_gl("hull outline pass");
     timer.mark(Pass::HullOutline);
   }

@@ -255,6 +255,81 @@ TEST_F(Effects, ContourDrawsEvenLinesInsideTheSilhouette) {
   EXPECT_EQ(too_deep, 0u) << "the even line is about `width` pixels wide";
 }
 
+// sRGB byte of a linear value, for expected colours.
+int srgb_byte(double linear) {
+  const double c = linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
+  return static_cast<int>(std::lround(c * 255));
+}
+
+// Front light on an orthographic unit sphere: N·L at a pixel r (in disk
+// radii) from the centre is sqrt(1 - r²), so every ramp edge has a radius.
+class RampEffects : public Effects {
+ protected:
+  json front_lit() const {
+    json params = base();
+    params["camera"]["projection"] = "orthographic";
+    params["ambient"] = 0;
+    params["lights"] = {{{"type", "directional"}, {"direction", {0, 0, -1}}}};
+    return params;
+  }
+  // Colour at r disk radii right of the centre.
+  static Rgb at_radius(const Image& img, double r) {
+    const auto mask = foreground_mask(img);
+    int edge = img.width / 2;
+    while (edge + 1 < img.width && mask[static_cast<std::size_t>(img.height / 2) * img.width + edge + 1]) ++edge;
+    const double radius_px = edge - img.width / 2 + 0.5;
+    return rgb_at(img, img.width / 2 + static_cast<int>(r * radius_px), img.height / 2);
+  }
+};
+
+TEST_F(RampEffects, TwoTonePaletteHasTwoColoursSplitAtTheThreshold) {
+  auto client = daemon().client();
+  json params = front_lit();
+  params["shading"] = {{"two_tone", {{"enabled", true}, {"threshold", 0.25}, {"shadow_factor", 0.25}}}};
+  const auto img = render_ok(client, params);
+  EXPECT_EQ(colour_histogram(img, foreground_mask(img)).size(), 2u);
+  // Kd 0.8: lit 0.8, shadow a quarter of it, 0.2 (linear).
+  EXPECT_EQ(at_radius(img, 0.5).r, srgb_byte(0.8));
+  EXPECT_EQ(at_radius(img, 0.99).r, srgb_byte(0.2));
+  // N·L = 0.25 at r = 0.968.
+  EXPECT_EQ(at_radius(img, 0.94).r, srgb_byte(0.8));
+}
+
+TEST_F(RampEffects, RampStopsSetLevelsAndColoursAtTheirNdotL) {
+  auto client = daemon().client();
+  json params = front_lit();
+  params["shading"] = {{"ramp", json::array({json{{"at", 0}, {"value", 0.25}}, json{{"at", 0.5}, {"color", {1, 0, 0}}},
+                                               json{{"at", 0.9}, {"value", 1}}})}};
+  const auto img = render_ok(client, params);
+  EXPECT_EQ(colour_histogram(img, foreground_mask(img)).size(), 3u);
+  // N·L >= 0.9 inside r = 0.436; >= 0.5 inside r = 0.866.
+  const auto lit = static_cast<std::uint8_t>(srgb_byte(0.8));
+  EXPECT_EQ(at_radius(img, 0.2), (Rgb{lit, lit, lit}));
+  EXPECT_EQ(at_radius(img, 0.65), (Rgb{lit, 0, 0})) << "the red stop tints";
+  EXPECT_EQ(at_radius(img, 0.95).r, srgb_byte(0.2));
+}
+
+TEST_F(Effects, OutlineColourFromTheMaterialDarkened) {
+  auto client = daemon().client();
+  json params = base();
+  params["outline"] = {{"enabled", true}, {"width", 4}, {"color_mode", "material"}, {"darken", 0.5}};
+  const auto img = render_ok(client, params);
+  // Kd 0.8 darkened by half is 0.4 linear: every outline pixel has it.
+  const auto line = static_cast<std::uint8_t>(srgb_byte(0.4));
+  const Rgb expected{line, line, line};
+  params["outline"]["enabled"] = false;
+  const auto bare = render_ok(client, params);
+  std::size_t ring = 0, wrong = 0;
+  for (int y = 0; y < 256; ++y)
+    for (int x = 0; x < 256; ++x)
+      if (rgb_at(bare, x, y) != rgb_at(img, x, y)) {
+        ++ring;
+        wrong += rgb_at(img, x, y) != expected ? 1 : 0;
+      }
+  EXPECT_GT(ring, 500u);
+  EXPECT_EQ(wrong, 0u);
+}
+
 TEST_F(Effects, EveryPresetLooksDifferent) {
   auto client = daemon().client();
   auto res = client.Get("/presets");

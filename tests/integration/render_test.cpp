@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "image/png_codec.h"
 #include "support/generated_models.h"
@@ -208,6 +209,35 @@ TEST_F(Render, OutlineStaysClosedOnAHardEdgedModel) {
   const std::string id = upload("kenney-cube-pet-dog");
   auto client = daemon().client();
   expect_closed_dark_ring(client, {{"model", id}, {"camera", {{"yaw", 35}, {"pitch", 25}}}}, 4);
+}
+
+// Texture mode: the line takes the inverted, darkened texture under it, so
+// a textured model's outline has many colours where the fixed mode has one.
+TEST_F(Render, OutlineColourFromTheTexture) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  const std::string id = upload("spot");
+  auto client = daemon().client();
+  json params = {{"model", id}, {"msaa", 1}, {"outline", {{"enabled", false}}}};
+  const auto bare = render_ok(client, params);
+  auto ring = [&](const std::string& mode) {
+    params["outline"] = {{"enabled", true}, {"width", 4}, {"color_mode", mode}, {"darken", 0.3}};
+    const auto img = render_ok(client, params);
+    std::map<Rgb, std::size_t> colours;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x)
+        if (rgb_at(bare, x, y) != rgb_at(img, x, y)) ++colours[rgb_at(img, x, y)];
+    return colours;
+  };
+  EXPECT_EQ(ring("fixed").size(), 1u);
+  const auto textured = ring("texture");
+  EXPECT_GT(textured.size(), 20u);
+  // Spot is mostly white: inverted and darkened, most of its outline is dark.
+  std::size_t dark = 0, total = 0;
+  for (const auto& [c, n] : textured) {
+    total += n;
+    dark += luminance(c) < 0.5 ? n : 0;
+  }
+  EXPECT_GT(dark, total / 2);
 }
 
 TEST_F(Render, OutlineOnTheDemoModel) {
