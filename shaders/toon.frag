@@ -14,7 +14,7 @@
 //   TWO_TONE | RAMP (cel only; replace the bands)
 //   BASE_WHITE   HAS_TEXTURE   COMBINE_SUM   HAS_POINT_LIGHTS   SPECULAR
 //   RIM (+ RIM_MASK_LIT | RIM_MASK_SHADOW)   CONTOUR_EVEN | CONTOUR_FRESNEL
-//   HALFTONE_DOTS | HALFTONE_CHECKER
+//   HALFTONE_DOTS | HALFTONE_CHECKER   SHADOWS (+ SHADOW_PCF n: (2n+1)² taps)
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_texcoord;
@@ -61,7 +61,41 @@ uniform vec3 u_halftone_ink;
 uniform float u_halftone_ink_mix;
 #endif
 
+#ifdef SHADOWS
+uniform sampler2DShadow u_shadow_map;
+uniform mat4 u_shadow_matrix;   // mesh coordinates → light clip space
+uniform int u_shadow_light;     // which light casts
+uniform float u_shadow_texel;   // one texel in the map's [0,1] coordinates
+uniform float u_shadow_offset;  // normal offset in mesh units, against acne
+#endif
+
 layout(location = 0) out vec4 o_color;
+
+#ifdef SHADOWS
+// Fraction of the shadow-casting light that reaches this point. The lookup
+// moves out along the normal by a few texels first ("normal offset"), which
+// removes self-shadowing acne on lit faces without the peter-panning a large
+// constant depth bias gives.
+float shadow_visibility(vec3 n) {
+  vec4 p = u_shadow_matrix * vec4(v_position + n * u_shadow_offset, 1.0);
+  vec3 c = p.xyz / p.w * 0.5 + 0.5;
+  if (c.z > 1.0) return 1.0;
+  float lit = 0.0;
+  float taps = 0.0;
+#ifdef SHADOW_PCF
+  for (int y = -SHADOW_PCF; y <= SHADOW_PCF; ++y) {
+    for (int x = -SHADOW_PCF; x <= SHADOW_PCF; ++x) {
+      lit += texture(u_shadow_map, vec3(c.xy + vec2(x, y) * u_shadow_texel, c.z));
+      taps += 1.0;
+    }
+  }
+#else
+  lit = texture(u_shadow_map, c);
+  taps = 1.0;
+#endif
+  return lit / taps;
+}
+#endif
 
 #if defined(TWO_TONE)
 uniform float u_two_tone_threshold;
@@ -153,7 +187,13 @@ void main() {
     float reach;
     vec3 l = toward_light(i, reach);
     bool shadow;
-    vec3 contribution = u_light_color[i] * ramp(dot(n, l), shadow) * reach;
+    float n_dot_l = dot(n, l);
+#ifdef SHADOWS
+    // A shadowed point is quantized into the shadow band like a point
+    // facing away: the (filtered) visibility is thresholded, never blended.
+    if (i == u_shadow_light && n_dot_l > 0.0 && shadow_visibility(n) < 0.5) n_dot_l = -1.0;
+#endif
+    vec3 contribution = u_light_color[i] * ramp(n_dot_l, shadow) * reach;
     bool lit_here = !shadow && reach > 0.0;
     any_lit = any_lit || lit_here;
 #ifdef COMBINE_SUM

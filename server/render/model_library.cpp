@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "scene/demo_model.h"
+#include "scene/bundle_import.h"
 #include "scene/obj_import.h"
 
 namespace toond::render {
@@ -24,7 +25,7 @@ std::shared_ptr<const scene::Model> ModelLibrary::get(const std::string& id) {
   // Import outside the lock: a large model must not stall other requests.
   std::optional<scene::Bundle> bundle = store_.load(id);
   if (!bundle) return nullptr;
-  auto model = std::make_shared<const scene::Model>(scene::import_obj_bundle(*bundle));
+  auto model = std::make_shared<const scene::Model>(scene::import_bundle(*bundle));
   std::lock_guard lock(mutex_);
   if (!models_.count(id)) {
     models_.emplace(id, model);

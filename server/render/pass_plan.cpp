@@ -6,7 +6,9 @@ namespace toond::render {
 
 const char* pass_name(Pass pass) {
   switch (pass) {
+    case Pass::Shadow: return "shadow";
     case Pass::Main: return "main";
+    case Pass::Floor: return "floor";
     case Pass::HullOutline: return "hull_outline";
     case Pass::Resolve: return "resolve";
     case Pass::Readback: return "readback";
@@ -31,7 +33,23 @@ std::string PassPlan::describe() const {
 PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   PassPlan plan;
   plan.samples = params.msaa;
+  // Shadows need a light that casts them (the first directional one) and a
+  // lit shading mode to darken.
+  if (params.shadows.enabled && params.mode != ShadingMode::Flat) {
+    for (std::size_t i = 0; i < params.lights.size(); ++i) {
+      if (params.lights[i].kind == LightKind::Directional) {
+        plan.shadow_light = static_cast<int>(i);
+        break;
+      }
+    }
+  }
+  if (plan.shadow_light >= 0) {
+    plan.passes.push_back(Pass::Shadow);
+    plan.main_defines.push_back("SHADOWS");
+    if (params.shadows.pcf > 0) plan.main_defines.push_back("SHADOW_PCF " + std::to_string(params.shadows.pcf));
+  }
   plan.passes.push_back(Pass::Main);
+  if (params.floor.enabled) plan.passes.push_back(Pass::Floor);
 
   switch (params.mode) {
     case ShadingMode::Cel:

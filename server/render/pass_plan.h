@@ -11,7 +11,9 @@
 namespace toond::render {
 
 enum class Pass {
+  Shadow,       // depth from the shadow-casting light
   Main,         // cel/phong/flat shading of the model, marks the stencil
+  Floor,        // the ground plane (no stencil mark: it gets no outline)
   HullOutline,  // inverted hull outside the stencil mark
   Resolve,      // multisample resolve
   Readback,     // pixels back to the CPU
@@ -33,6 +35,7 @@ struct PassPlan {
   bool sample_textures = false;
   int samples = 1;
   int supersample = 1;
+  int shadow_light = -1;  // index into RenderParams::lights, -1: no shadows
 
   bool has(Pass pass) const;
   // The passes as a comma-separated list, e.g. for the Server-Timing header.

@@ -109,6 +109,17 @@ RenderParams RenderParams::from_json(const json& j) {
   p.contour.threshold = contour.at("threshold").get<float>();
   p.contour.color = srgb_to_linear(vec3_of(contour.at("color")));
 
+  const json& shadows = j.at("shadows");
+  p.shadows.enabled = shadows.at("enabled").get<bool>();
+  p.shadows.map_size = shadows.at("map_size").get<int>();
+  p.shadows.pcf = shadows.at("pcf").get<int>();
+  p.shadows.bias_texels = shadows.at("bias").get<float>();
+
+  const json& floor = j.at("floor");
+  p.floor.enabled = floor.at("enabled").get<bool>();
+  p.floor.color = srgb_to_linear(vec3_of(floor.at("color")));
+  p.floor.size = floor.at("size").get<float>();
+
   const json& outline = j.at("outline");
   p.outline.enabled = outline.at("enabled").get<bool>();
   p.outline.width_px = outline.at("width").get<float>();

@@ -72,6 +72,19 @@ struct ContourParams {
   glm::vec3 color{0.0f};  // linear
 };
 
+struct ShadowParams {
+  bool enabled = false;
+  int map_size = 2048;
+  int pcf = 1;
+  float bias_texels = 1.5f;
+};
+
+struct FloorParams {
+  bool enabled = false;
+  glm::vec3 color{0.7f};  // linear
+  float size = 4;         // half side, in bounding radii
+};
+
 enum class OutlineColorMode { Fixed, Texture, Material };
 
 struct OutlineParams {
@@ -113,6 +126,8 @@ struct RenderParams {
   RimParams rim;
   HalftoneParams halftone;
   ContourParams contour;
+  ShadowParams shadows;
+  FloorParams floor;
   OutlineParams outline;
   int msaa = 1;
   int supersample = 1;

@@ -5,6 +5,7 @@
 #include "gpu/gpu_error.h"
 #include "image/downsample.h"
 #include "render/camera.h"
+#include "render/shadow_fit.h"
 
 namespace toond::render {
 namespace {
@@ -32,7 +33,46 @@ void check_gl(const char* where) {
   }
 }
 
+// A square ground plane just under the model's lowest point (a hair lower,
+// so a flat-bottomed model does not z-fight with it), facing up.
+scene::Model make_floor(const scene::Bounds& bounds, float size) {
+  const float half = bounds.radius() * size;
+  const glm::vec3 c = bounds.centre();
+  const float y = bounds.min.y - bounds.radius() * 1e-3f;
+  scene::Model floor;
+  scene::Mesh& m = floor.mesh;
+  m.positions = {{c.x - half, y, c.z - half}, {c.x + half, y, c.z - half}, {c.x + half, y, c.z + half},
+                 {c.x - half, y, c.z + half}};
+  m.normals.assign(4, glm::vec3(0, 1, 0));
+  m.outline_normals.assign(4, glm::vec3(0, 1, 0));
+  m.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  m.indices = {0, 2, 1, 0, 3, 2};
+  m.submeshes = {{0, 6, 0}};
+  m.bounds = {m.positions[0], m.positions[2]};
+  floor.materials.push_back({});
+  return floor;
+}
+
 }  // namespace
+
+gpu::ShadowMap& Renderer::shadow_map_for(int size) {
+  if (!shadow_map_ || shadow_map_->size() != size) {
+    shadow_map_.reset();
+    shadow_map_.emplace(size);
+  }
+  return *shadow_map_;
+}
+
+const GpuModel& Renderer::floor_for(const GpuModel& model, float size) {
+  const scene::Bounds& b = model.bounds();
+  if (!floor_ || floor_size_ != size || floor_bounds_.min != b.min || floor_bounds_.max != b.max) {
+    floor_.reset();
+    floor_.emplace(make_floor(b, size));
+    floor_bounds_ = b;
+    floor_size_ = size;
+  }
+  return *floor_;
+}
 
 gpu::RenderTarget& Renderer::target_for(int width, int height, int samples) {
   if (!target_ || !target_->matches(width, height, samples)) {
@@ -47,6 +87,31 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
   RenderOutput out;
   out.plan = plan.describe();
   PassTimer timer(out.timings);
+
+  std::optional<ShadowFit> shadow;
+  if (plan.has(Pass::Shadow)) {
+    const Light& caster = params.lights[static_cast<std::size_t>(plan.shadow_light)];
+    shadow = fit_shadow(caster.direction, model.bounds(), params.shadows.map_size);
+    gpu::ShadowMap& map = shadow_map_for(params.shadows.map_size);
+    map.bind_for_drawing();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_STENCIL_TEST);
+    // Slope-scaled bias for surfaces the light grazes; the normal offset in
+    // the main pass handles the rest.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(2.0f, 2.0f);
+    gpu::Program& program = programs_.get("shadow.vert", "shadow.frag", {});
+    program.use();
+    program.set("u_light_view_projection", glm::mat4(shadow->view_projection));
+    model.bind();
+    model.draw_all();
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    check_gl("shadow pass");
+    timer.mark(Pass::Shadow);
+  }
 
   // Supersampling draws everything `ss` times larger, pixel sizes included,
   // then averages back down; the look is the same, the edges smoother.
@@ -106,15 +171,9 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
       ramp_at.push_back(stop.at);
       ramp_color.push_back(stop.color);
     }
-    for (const scene::Submesh& sub : model.submeshes()) {
-      const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
-      std::vector<std::string> defines = plan.main_defines;
-      const bool textured = plan.sample_textures && material.texture >= 0;
-      if (textured) defines.push_back("HAS_TEXTURE");
-      gpu::Program& program = programs_.get("toon.vert", "toon.frag", defines);
-      program.use();
+    // Uniforms every main-pass program of this render shares.
+    auto set_main_uniforms = [&](gpu::Program& program) {
       program.set("u_view_projection", view_projection);
-      program.set("u_base_color", material.diffuse);
       program.set("u_ambient", params.ambient);
       program.set("u_steps", static_cast<float>(params.steps));
       program.set("u_eye", glm::vec3(camera.eye));
@@ -145,14 +204,50 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
       program.set("u_ramp_count", static_cast<int>(ramp_at.size()));
       program.set_array("u_ramp_at", ramp_at);
       program.set_array("u_ramp_color", ramp_color);
+    };
+    auto set_shadow_uniforms = [&](gpu::Program& program) {
+      program.set("u_shadow_matrix", glm::mat4(shadow->view_projection));
+      program.set("u_shadow_light", plan.shadow_light);
+      program.set("u_shadow_texel", 1.0f / static_cast<float>(params.shadows.map_size));
+      program.set("u_shadow_offset", static_cast<float>(shadow->texel_world * params.shadows.bias_texels));
+      glBindTextureUnit(1, shadow_map_->texture());
+      program.set("u_shadow_map", 1);
+    };
+    for (const scene::Submesh& sub : model.submeshes()) {
+      const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
+      std::vector<std::string> defines = plan.main_defines;
+      const bool textured = plan.sample_textures && material.texture >= 0;
+      if (textured) defines.push_back("HAS_TEXTURE");
+      gpu::Program& program = programs_.get("toon.vert", "toon.frag", defines);
+      program.use();
+      set_main_uniforms(program);
+      program.set("u_base_color", material.diffuse);
       if (textured) {
         glBindTextureUnit(0, model.texture(material.texture));
         program.set("u_diffuse_map", 0);
       }
+      if (shadow) set_shadow_uniforms(program);
       model.draw(sub);
     }
     check_gl("main pass");
     timer.mark(Pass::Main);
+
+    if (plan.has(Pass::Floor)) {
+      // Same shading as the model, but no stencil mark: the floor is never
+      // outlined, and the model's outline may cross it.
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      const GpuModel& floor = floor_for(model, params.floor.size);
+      gpu::Program& program = programs_.get("toon.vert", "toon.frag", plan.main_defines);
+      program.use();
+      set_main_uniforms(program);
+      program.set("u_base_color", params.floor.color);
+      if (shadow) set_shadow_uniforms(program);
+      floor.bind();
+      floor.draw_all();
+      model.bind();
+      check_gl("floor pass");
+      timer.mark(Pass::Floor);
+    }
   }
 
   if (plan.has(Pass::HullOutline)) {

@@ -6,6 +6,7 @@
 
 #include "gpu/program_cache.h"
 #include "gpu/render_target.h"
+#include "gpu/shadow_map.h"
 #include "image/image.h"
 #include "render/gpu_model.h"
 #include "render/pass_plan.h"
@@ -32,9 +33,15 @@ class Renderer {
 
  private:
   gpu::RenderTarget& target_for(int width, int height, int samples);
+  gpu::ShadowMap& shadow_map_for(int size);
+  const GpuModel& floor_for(const GpuModel& model, float size);
 
   gpu::ProgramCache& programs_;
   std::optional<gpu::RenderTarget> target_;  // reused while the size stays the same
+  std::optional<gpu::ShadowMap> shadow_map_;
+  std::optional<GpuModel> floor_;             // rebuilt when the model's bounds change
+  scene::Bounds floor_bounds_;
+  float floor_size_ = 0;
 };
 
 }  // namespace toond::render

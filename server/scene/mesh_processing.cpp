@@ -205,6 +205,67 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
   return offsets;
 }
 
+glm::vec3 any_perpendicular(const glm::vec3& n_in) {
+  glm::dvec3 n(n_in);
+  const double len = glm::length(n);
+  n = len > 0.0 && std::isfinite(len) ? n / len : glm::dvec3(0.0, 1.0, 0.0);
+  const double sign = std::copysign(1.0, n.z);
+  const double a = -1.0 / (sign + n.z);
+  const double b = n.x * n.y * a;
+  return to_unit_float(glm::dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x));
+}
+
+std::vector<glm::vec4> compute_tangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                                        std::span<const glm::vec2> texcoords,
+                                        std::span<const std::uint32_t> indices) {
+  std::vector<glm::dvec3> tangent_sum(positions.size(), glm::dvec3(0.0));
+  std::vector<glm::dvec3> bitangent_sum(positions.size(), glm::dvec3(0.0));
+  if (texcoords.size() >= positions.size()) {
+    for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&p)[3],
+                                                     const glm::dvec3&, const glm::dvec3& angles) {
+      const glm::dvec2 uv[3] = {texcoords[i[0]], texcoords[i[1]], texcoords[i[2]]};
+      const glm::dvec2 d1 = uv[1] - uv[0];
+      const glm::dvec2 d2 = uv[2] - uv[0];
+      const glm::dvec2 d3 = uv[2] - uv[1];
+      // Twice the signed UV area; against the longest UV edge, as for
+      // positions, so the test does not depend on the texture's scale.
+      const double r = d1.x * d2.y - d2.x * d1.y;
+      const double longest = std::max({glm::dot(d1, d1), glm::dot(d2, d2), glm::dot(d3, d3)});
+      if (!(std::abs(r) > kDegenerateRatio * longest) || !std::isfinite(r)) return;
+      const glm::dvec3 e1 = p[1] - p[0];
+      const glm::dvec3 e2 = p[2] - p[0];
+      const glm::dvec3 t = glm::dvec3(to_unit_float((e1 * d2.y - e2 * d1.y) / r));
+      const glm::dvec3 b = glm::dvec3(to_unit_float((e2 * d1.x - e1 * d2.x) / r));
+      if (t == glm::dvec3(0.0) || b == glm::dvec3(0.0)) return;
+      for (int k = 0; k < 3; ++k) {
+        tangent_sum[i[k]] += t * angles[k];
+        bitangent_sum[i[k]] += b * angles[k];
+      }
+    });
+  }
+
+  std::vector<glm::vec4> tangents(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    glm::dvec3 n = v < normals.size() ? glm::dvec3(to_unit_float(glm::dvec3(normals[v]))) : glm::dvec3(0.0);
+    if (n == glm::dvec3(0.0)) n = glm::dvec3(0.0, 1.0, 0.0);
+    const glm::dvec3& sum = tangent_sum[v];
+    const glm::dvec3 t = sum - n * glm::dot(n, sum);
+    const double len = glm::length(t);
+    // Nearly along the normal, what is left after Gram-Schmidt is noise.
+    if (len > 1e-6 * glm::length(sum) && len > 0.0 && std::isfinite(len)) {
+      const glm::dvec3 unit = t / len;
+      const double w = glm::dot(glm::cross(n, unit), bitangent_sum[v]) < 0.0 ? -1.0 : 1.0;
+      const glm::vec3 tf = to_unit_float(unit);
+      if (tf != glm::vec3(0.0f)) {
+        tangents[v] = glm::vec4(tf, static_cast<float>(w));
+        continue;
+      }
+    }
+    tangents[v] = glm::vec4(any_perpendicular(glm::vec3(n)), 1.0f);
+  }
+  return tangents;
+}
+
 Bounds compute_bounds(std::span<const glm::vec3> positions) {
   if (positions.empty()) return {};
   Bounds b{positions.front(), positions.front()};

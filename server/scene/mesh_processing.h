@@ -50,6 +50,24 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
                                                std::span<const std::uint32_t> indices,
                                                std::span<const glm::vec3> shading_normals);
 
+// Some unit vector perpendicular to `n` (normalised first; +Y when it has no
+// direction), continuous in n everywhere but near -Z (Duff et al. 2017,
+// "Building an Orthonormal Basis, Revisited").
+glm::vec3 any_perpendicular(const glm::vec3& n);
+
+// Per-vertex tangents for normal mapping (see Mesh::tangents). Every
+// triangle with a positional and a UV area gives the directions of dP/dU and
+// dP/dV (the standard per-triangle derivation from its edges and UV
+// deltas); they are summed per vertex weighted by the corner angle, the
+// tangent sum is made orthogonal to the vertex's normal (Gram-Schmidt), and
+// w is -1 where the summed dP/dV points against cross(normal, tangent)
+// (mirrored UVs). Vertices that get no usable direction (UVs missing or
+// degenerate, or dP/dU along the normal) get any_perpendicular(normal),
+// w = +1. `normals` and `texcoords` are per vertex like `positions`.
+std::vector<glm::vec4> compute_tangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                                        std::span<const glm::vec2> texcoords,
+                                        std::span<const std::uint32_t> indices);
+
 Bounds compute_bounds(std::span<const glm::vec3> positions);
 
 }  // namespace toond::scene

@@ -9,19 +9,41 @@
 
 namespace toond::scene {
 
-// A decoded image, RGBA8, rows top to bottom, colour values sRGB-encoded
-// (alpha linear), as read from the bundle.
+// How a texture's RGB bytes are to be read (alpha is always linear).
+enum class ColorSpace {
+  Srgb,    // colour maps (map_Kd): sRGB-encoded, to be decoded when sampled
+  Linear,  // data maps (normal maps): the bytes are the values
+};
+
+// A decoded image, RGBA8, rows top to bottom, as read from the bundle. A file
+// that serves both as a colour map and as a normal map is stored twice, once
+// per colour space, so each copy can be uploaded with its own GL format.
 struct Texture {
   std::string path;  // path inside the bundle it came from
   int width = 0;
   int height = 0;
   std::vector<std::uint8_t> rgba;
+  ColorSpace color_space = ColorSpace::Srgb;
 };
 
 struct Material {
   std::string name;
   glm::vec3 diffuse{0.8f};     // Kd, linear (MTL values are taken as linear)
   int diffuse_texture = -1;    // index into Model::textures, -1 = none
+  // Tangent-space normal map (MTL map_Bump / bump / norm; Blender writes its
+  // normal maps as map_Bump), index into Model::textures, -1 = none. Always
+  // a ColorSpace::Linear texture. Convention: OpenGL / Blender, i.e. RGB =
+  // (n * 0.5 + 0.5) in the basis (Mesh::tangents.xyz, bitangent, normal),
+  // green along +V of the texture coordinates (V up, as OBJ has it).
+  int normal_texture = -1;
+  // Ks, linear, clamped to 0..1; 0 when the MTL gives none. Caution: the
+  // nvdiffrec MTLs (spot, bob) write "Ks 0 <roughness> <metalness>", e.g.
+  // "Ks 0 0.25 0"; kept as written, so a Phong reading of it is a faint
+  // green highlight.
+  glm::vec3 specular{0.0f};
+  // Ns, the Phong exponent, clamped to 0..1000 (the MTL range); 32 when the
+  // MTL gives none. Blender writes 0 for fully rough materials.
+  float shininess = 32.0f;
 };
 
 // A run of triangles drawn with one material.
@@ -49,7 +71,18 @@ struct Mesh {
                                            // every vertex at a position (no gaps at
                                            // hard edges), mitred at corners (see
                                            // compute_outline_normals)
-  std::vector<glm::vec2> texcoords;        // (0,0) where the OBJ had none
+  std::vector<glm::vec2> texcoords;        // (0,0) where the file had none
+  // Per vertex, for normal maps: xyz is a unit tangent orthogonal to the
+  // shading normal, pointing along +U of the texcoords; w = +1 or -1 is the
+  // handedness, bitangent = w * cross(normal, tangent.xyz) (points along +V).
+  // Where the UVs are missing or degenerate: some unit vector perpendicular
+  // to the normal, w = +1. Never NaN.
+  std::vector<glm::vec4> tangents;
+  // Vertex colours as the file gives them (OBJ "v x y z r g b", .m
+  // rgb=(r g b)), 0..1 and NOT linearised: like colour-picker values they
+  // are sRGB-encoded, to be decoded where they are used. Either empty (the
+  // file has none) or one per position.
+  std::vector<glm::vec3> colors;
   std::vector<std::uint32_t> indices;      // triangles
   std::vector<Submesh> submeshes;
   glm::dvec3 origin{0.0};  // model-space point that positions are relative to
@@ -62,6 +95,7 @@ struct Model {
   Mesh mesh;
   std::vector<Material> materials;  // never empty after import
   std::vector<Texture> textures;
+  bool has_vertex_colors = false;  // == !mesh.colors.empty()
   std::vector<std::string> warnings;
 };
 

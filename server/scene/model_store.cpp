@@ -16,7 +16,7 @@
 #include <system_error>
 #include <utility>
 
-#include "scene/obj_import.h"
+#include "scene/bundle_import.h"
 
 namespace toond::scene {
 namespace fs = std::filesystem;
@@ -159,7 +159,7 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle) {
 
   // The import runs unlocked: it can take a while (texture decoding) and
   // concerns only this bundle.
-  const Model model = import_obj_bundle(bundle);
+  const Model model = import_bundle(bundle);
   ModelInfo info;
   info.id = id;
   info.triangles = model.mesh.triangle_count();

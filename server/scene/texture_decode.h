@@ -16,8 +16,9 @@ struct TextureLimits {
   std::uint64_t max_pixels = 64ull * 1024 * 1024;
 };
 
-// Decodes `bytes` into an RGBA8 texture (colour left sRGB-encoded as stored;
-// 16-bit images are reduced to 8 bits). `path` is recorded in the result.
+// Decodes `bytes` into an RGBA8 texture (values left as stored, 16-bit
+// images reduced to 8 bits; color_space is Srgb, and an importer reading a
+// data map such as a normal map sets Linear). `path` is recorded in the result.
 // Throws std::runtime_error with a reason when the format is unknown, the
 // data is corrupt, or the image exceeds `limits`.
 Texture decode_texture(std::string_view bytes, const std::string& path, const TextureLimits& limits = {});

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "image/png_codec.h"
 #include "support/generated_models.h"
 #include "support/image_checks.h"
 #include "test_client.h"
@@ -328,6 +329,84 @@ TEST_F(Effects, OutlineColourFromTheMaterialDarkened) {
       }
   EXPECT_GT(ring, 500u);
   EXPECT_EQ(wrong, 0u);
+}
+
+// The sphere lit from straight ahead: nothing it faces is behind anything,
+// so shadows on must not change one pixel (no acne, no stray shadow).
+TEST_F(Effects, NoShadowAcneOnAConvexModelLitFromTheFront) {
+  auto client = daemon().client();
+  json params = base();
+  params["lights"] = {{{"type", "directional"}, {"direction", {0, 0, -1}}}};
+  params["shading"] = {{"steps", 4}};
+  const auto without = render_ok(client, params);
+  for (int map_size : {512, 2048}) {
+    params["shadows"] = {{"enabled", true}, {"map_size", map_size}};
+    const auto with = render_ok(client, params);
+    std::size_t differ = 0;
+    for (int y = 0; y < 256; ++y)
+      for (int x = 0; x < 256; ++x) differ += rgb_at(with, x, y) != rgb_at(without, x, y) ? 1 : 0;
+    EXPECT_EQ(differ, 0u) << "map " << map_size;
+  }
+}
+
+class FloorAndShadows : public Effects {
+ protected:
+  json scene() const {
+    json params = base();
+    params["camera"] = {{"yaw", 20}, {"pitch", 35}};
+    params["lights"] = {{{"type", "directional"}, {"direction", {0.3, -1, -0.2}}}};
+    params["floor"] = {{"enabled", true}, {"size", 1.6}, {"color", {0.9, 0.9, 0.85}}};
+    return params;
+  }
+};
+
+TEST_F(FloorAndShadows, FloorIsDarkerUnderTheModelWithShadowsOn) {
+  auto client = daemon().client();
+  json params = scene();
+  const auto lit = render_ok(client, params);
+  params["shadows"] = {{"enabled", true}};
+  auto res = post_json(client, "/render", params);
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200);
+  EXPECT_EQ(res->get_header_value("X-Toond-Passes"), "shadow,main,floor,readback");
+  const auto shadowed = image::decode_png(res->body);
+  std::size_t darker = 0, brighter = 0;
+  for (int y = 0; y < 256; ++y)
+    for (int x = 0; x < 256; ++x) {
+      const double a = luminance(rgb_at(lit, x, y)), b = luminance(rgb_at(shadowed, x, y));
+      darker += b < a ? 1 : 0;
+      brighter += b > a ? 1 : 0;
+    }
+  EXPECT_GT(darker, 1000u) << "a shadow on the floor";
+  EXPECT_EQ(brighter, 0u);
+}
+
+TEST_F(FloorAndShadows, FloorGetsNoOutline) {
+  auto client = daemon().client();
+  json params = scene();
+  params["floor"]["enabled"] = false;
+  const auto sphere_only = render_ok(client, params);
+  params["floor"]["enabled"] = true;
+  const auto bare = render_ok(client, params);
+  params["outline"] = {{"enabled", true}, {"width", 3}, {"color", {1, 0, 0}}};
+  const auto outlined = render_ok(client, params);
+  // Every outline pixel hugs the sphere's silhouette, none the floor's edge.
+  const auto sphere_mask = foreground_mask(sphere_only);
+  std::size_t ring = 0, far_from_sphere = 0;
+  for (int y = 0; y < 256; y += 1)
+    for (int x = 0; x < 256; x += 1) {
+      if (rgb_at(bare, x, y) == rgb_at(outlined, x, y)) continue;
+      ++ring;
+      bool near = false;
+      for (int dy = -5; dy <= 5 && !near; ++dy)
+        for (int dx = -5; dx <= 5 && !near; ++dx) {
+          const int xx = x + dx, yy = y + dy;
+          near = xx >= 0 && yy >= 0 && xx < 256 && yy < 256 && sphere_mask[static_cast<std::size_t>(yy) * 256 + xx];
+        }
+      far_from_sphere += near ? 0 : 1;
+    }
+  EXPECT_GT(ring, 200u);
+  EXPECT_EQ(far_from_sphere, 0u);
 }
 
 TEST_F(Effects, EveryPresetLooksDifferent) {

@@ -177,6 +177,106 @@ TEST(MeshProcessing, TriangleAnglesSumToPi) {
   EXPECT_NEAR(angles.y, std::atan2(4.0, 3.0), 1e-12);
 }
 
+// A unit quad in the XY plane facing +Z, two triangles, with the given UVs.
+struct TangentCase {
+  std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  std::vector<glm::vec3> normals = std::vector<glm::vec3>(4, glm::vec3(0, 0, 1));
+  std::vector<std::uint32_t> indices{0, 1, 2, 0, 2, 3};
+  std::vector<glm::vec2> uvs;
+  std::vector<glm::vec4> run() const { return compute_tangents(positions, normals, uvs, indices); }
+};
+
+void expect_tangent_frame(const glm::vec4& t, const glm::vec3& n) {
+  ASSERT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w));
+  EXPECT_NEAR(glm::length(glm::vec3(t)), 1.0f, kTol);
+  EXPECT_NEAR(glm::dot(glm::vec3(t), n), 0.0f, kTol);
+  EXPECT_TRUE(t.w == 1.0f || t.w == -1.0f);
+}
+
+TEST(MeshProcessing, TangentAlongUWithRightHandedUVs) {
+  TangentCase q;
+  q.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (const auto& t : q.run()) {
+    expect_tangent_frame(t, {0, 0, 1});
+    EXPECT_NEAR(glm::length(glm::vec3(t) - glm::vec3(1, 0, 0)), 0.0f, kTol);
+    EXPECT_EQ(t.w, 1.0f);
+    // bitangent = w * cross(n, t) runs along +V, i.e. +Y here.
+    EXPECT_NEAR(glm::length(t.w * glm::cross(glm::vec3(0, 0, 1), glm::vec3(t)) - glm::vec3(0, 1, 0)), 0.0f, kTol);
+  }
+  // Scaled and rotated UVs: U along +Y, V along -X; still right-handed.
+  q.uvs = {{0, 0}, {0, -3}, {3, -3}, {3, 0}};
+  for (const auto& t : q.run()) {
+    expect_tangent_frame(t, {0, 0, 1});
+    EXPECT_NEAR(glm::length(glm::vec3(t) - glm::vec3(0, 1, 0)), 0.0f, kTol);
+    EXPECT_EQ(t.w, 1.0f);
+  }
+}
+
+TEST(MeshProcessing, MirroredUVsGiveNegativeHandedness) {
+  TangentCase q;
+  q.uvs = {{1, 0}, {0, 0}, {0, 1}, {1, 1}};  // U runs along -X
+  for (const auto& t : q.run()) {
+    expect_tangent_frame(t, {0, 0, 1});
+    EXPECT_NEAR(glm::length(glm::vec3(t) - glm::vec3(-1, 0, 0)), 0.0f, kTol);
+    EXPECT_EQ(t.w, -1.0f);
+    EXPECT_NEAR(glm::length(t.w * glm::cross(glm::vec3(0, 0, 1), glm::vec3(t)) - glm::vec3(0, 1, 0)), 0.0f, kTol);
+  }
+  q.uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};  // V runs along -Y
+  for (const auto& t : q.run()) {
+    EXPECT_NEAR(glm::length(glm::vec3(t) - glm::vec3(1, 0, 0)), 0.0f, kTol);
+    EXPECT_EQ(t.w, -1.0f);
+  }
+}
+
+TEST(MeshProcessing, TangentIsOrthogonalisedAgainstTheShadingNormal) {
+  TangentCase q;
+  q.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const glm::vec3 tilted = glm::normalize(glm::vec3(1, 0, 1));
+  q.normals.assign(4, tilted);
+  for (const auto& t : q.run()) {
+    expect_tangent_frame(t, tilted);
+    EXPECT_NEAR(glm::length(glm::vec3(t) - glm::normalize(glm::vec3(1, 0, -1))), 0.0f, kTol);
+    EXPECT_EQ(t.w, 1.0f);
+  }
+}
+
+TEST(MeshProcessing, DegenerateOrMissingUVsGiveAPerpendicularTangent) {
+  TangentCase q;
+  for (const auto& uvs : {std::vector<glm::vec2>(4, glm::vec2(0.5f)),                      // all equal
+                          std::vector<glm::vec2>{{0, 0}, {1, 1}, {2, 2}, {3, 3}},            // collinear
+                          std::vector<glm::vec2>{{0, 0}, {1e30f, 0}, {1e30f, 1e30f}, {0, 1e30f}},  // huge (still finite)
+                          std::vector<glm::vec2>{}}) {                                         // none
+    q.uvs = uvs;
+    const auto tangents = q.run();
+    ASSERT_EQ(tangents.size(), 4u);
+    for (const auto& t : tangents) {
+      expect_tangent_frame(t, {0, 0, 1});
+      EXPECT_EQ(t.w, 1.0f);
+    }
+  }
+  // Zero or non-finite normals still get a finite unit tangent.
+  q.uvs = std::vector<glm::vec2>(4, glm::vec2(0.0f));
+  q.normals.assign(4, glm::vec3(0.0f));
+  q.normals[1] = glm::vec3(std::nanf(""), 0, 0);
+  for (const auto& t : q.run()) {
+    ASSERT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z));
+    EXPECT_NEAR(glm::length(glm::vec3(t)), 1.0f, kTol);
+  }
+}
+
+TEST(MeshProcessing, AnyPerpendicularIsUnitAndPerpendicular) {
+  const TestMesh sphere = make_sphere(16, 8, 1.0f, {0, 0, 0});
+  std::vector<glm::vec3> directions = sphere.positions;
+  directions.insert(directions.end(), {{0, 0, 1}, {0, 0, -1}, {0, 1, 0}, {1e-30f, 0, -1}, {0, 0, 0}});
+  for (const auto& d : directions) {
+    const glm::vec3 p = any_perpendicular(d);
+    EXPECT_NEAR(glm::length(p), 1.0f, kTol) << d.x << " " << d.y << " " << d.z;
+    if (glm::length(d) > 0.0f) {
+      EXPECT_NEAR(glm::dot(p, glm::normalize(d)), 0.0f, kTol);
+    }
+  }
+}
+
 TEST(MeshProcessing, BoundsHoldEveryPosition) {
   const TestMesh sphere = make_sphere(8, 4, 1.5f, {10, 20, 30});
   const Bounds b = compute_bounds(sphere.positions);

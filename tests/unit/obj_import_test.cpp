@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "image/png_codec.h"
+#include "model_checks.h"
 #include "scene/import_error.h"
 #include "scene/mesh_processing.h"
 #include "scene/obj_import.h"
@@ -19,83 +19,16 @@
 namespace toond::scene {
 namespace {
 
-using Files = std::vector<std::pair<std::string, std::string>>;
-
-Bundle make_bundle(const Files& files) {
-  Bundle bundle;
-  for (const auto& [path, content] : files) bundle.add(path, content);
-  return bundle;
-}
-
-std::string tiny_png(std::uint8_t r, std::uint8_t g, std::uint8_t b, int w = 4, int h = 2) {
-  image::Image img;
-  img.width = w;
-  img.height = h;
-  img.rgba.resize(static_cast<std::size_t>(w) * h * 4);
-  for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
-    img.rgba[i] = r;
-    img.rgba[i + 1] = g;
-    img.rgba[i + 2] = b;
-    img.rgba[i + 3] = 255;
-  }
-  return image::encode_png(img);
-}
-
-bool has_warning(const Model& model, const std::string& needle) {
-  return std::any_of(model.warnings.begin(), model.warnings.end(),
-                     [&](const std::string& w) { return w.find(needle) != std::string::npos; });
-}
-
-std::string warnings_of(const Model& model) {
-  std::string all;
-  for (const auto& w : model.warnings) all += w + "\n";
-  return all;
-}
+using test_checks::expect_well_formed;
+using test_checks::has_warning;
+using test_checks::make_bundle;
+using test_checks::tiny_png;
+using test_checks::warnings_of;
 
 // Quads, positions only, the cube from 0 to 1.
 const std::string kQuadCube =
     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
     "f 1 4 3 2\nf 5 6 7 8\nf 1 5 8 4\nf 2 3 7 6\nf 4 8 7 3\nf 1 2 6 5\n";
-
-// Checks every invariant the GPU upload relies on.
-void expect_well_formed(const Model& m) {
-  const Mesh& mesh = m.mesh;
-  const std::size_t n = mesh.positions.size();
-  ASSERT_GT(n, 0u);
-  EXPECT_EQ(mesh.normals.size(), n);
-  EXPECT_EQ(mesh.outline_normals.size(), n);
-  EXPECT_EQ(mesh.texcoords.size(), n);
-  ASSERT_EQ(mesh.indices.size() % 3, 0u);
-  ASSERT_FALSE(m.materials.empty());
-  for (const auto i : mesh.indices) ASSERT_LT(i, n);
-  for (std::size_t v = 0; v < n; ++v) {
-    for (int k = 0; k < 3; ++k) {
-      ASSERT_TRUE(std::isfinite(mesh.positions[v][k]));
-      ASSERT_TRUE(glm::all(glm::lessThanEqual(mesh.bounds.min, mesh.positions[v])));
-      ASSERT_TRUE(glm::all(glm::lessThanEqual(mesh.positions[v], mesh.bounds.max)));
-    }
-    ASSERT_NEAR(glm::length(mesh.normals[v]), 1.0f, 1e-4f) << "vertex " << v;
-    // Outline offsets are at least unit length; mitred corners are longer,
-    // up to the 3-unit cap.
-    const float outline_length = glm::length(mesh.outline_normals[v]);
-    ASSERT_GE(outline_length, 1.0f - 1e-4f) << "vertex " << v;
-    ASSERT_LE(outline_length, 3.0f + 1e-4f) << "vertex " << v;
-    ASSERT_TRUE(std::isfinite(mesh.texcoords[v].x) && std::isfinite(mesh.texcoords[v].y));
-  }
-  std::uint32_t covered = 0;
-  for (const auto& sub : mesh.submeshes) {
-    EXPECT_EQ(sub.first_index, covered);
-    EXPECT_GT(sub.index_count, 0u);
-    EXPECT_EQ(sub.index_count % 3, 0u);
-    ASSERT_GE(sub.material, 0);
-    ASSERT_LT(static_cast<std::size_t>(sub.material), m.materials.size());
-    covered += sub.index_count;
-  }
-  EXPECT_EQ(covered, mesh.indices.size());
-  for (const auto& mat : m.materials) {
-    EXPECT_LT(mat.diffuse_texture, static_cast<int>(m.textures.size()));
-  }
-}
 
 TEST(ObjImport, QuadsAreTriangulatedAndMissingNormalsComputed) {
   const Model m = import_obj_bundle(make_bundle({{"cube.obj", kQuadCube}}));
@@ -105,6 +38,11 @@ TEST(ObjImport, QuadsAreTriangulatedAndMissingNormalsComputed) {
   EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
   ASSERT_EQ(m.materials.size(), 1u);
   EXPECT_EQ(m.materials[0].diffuse, glm::vec3(0.8f));
+  EXPECT_EQ(m.materials[0].normal_texture, -1);
+  EXPECT_EQ(m.materials[0].specular, glm::vec3(0.0f));
+  EXPECT_EQ(m.materials[0].shininess, 32.0f);
+  EXPECT_FALSE(m.has_vertex_colors);
+  EXPECT_TRUE(m.mesh.colors.empty());
   // Recentred on the bounds centre: positions are +-0.5, the centre is in origin.
   EXPECT_EQ(m.mesh.origin, glm::dvec3(0.5));
   EXPECT_EQ(m.mesh.bounds.min, glm::vec3(-0.5f));
@@ -363,6 +301,148 @@ TEST(ObjImport, TolerantSyntax) {
   EXPECT_EQ(m.mesh.triangle_count(), 3u);
 }
 
+TEST(ObjImport, VertexColoursArePerPositionThroughDeduplication) {
+  // Two triangles sharing an edge; the shared corners are split by their
+  // texture coordinates but keep their position's colour.
+  const std::string obj =
+      "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nv 1 1 0 0.25 0.5 0.75\n"
+      "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 0.5 0.5\n"
+      "f 1/1 2/2 3/3\nf 2/5 4/4 3/5\n";
+  const Model m = import_obj_bundle(make_bundle({{"c.obj", obj}}));
+  expect_well_formed(m);
+  ASSERT_TRUE(m.has_vertex_colors);
+  ASSERT_EQ(m.mesh.colors.size(), m.mesh.positions.size());
+  EXPECT_EQ(m.mesh.positions.size(), 6u);
+  const glm::vec3 expected[4] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.25f, 0.5f, 0.75f}};
+  const glm::vec3 corner[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  for (std::size_t v = 0; v < m.mesh.positions.size(); ++v) {
+    const glm::vec3 p = glm::vec3(glm::dvec3(m.mesh.positions[v]) + m.mesh.origin);
+    bool found = false;
+    for (int k = 0; k < 4; ++k) {
+      if (glm::length(p - corner[k]) < 1e-6f) {
+        EXPECT_EQ(m.mesh.colors[v], expected[k]) << "vertex " << v;
+        found = true;
+      }
+    }
+    EXPECT_TRUE(found);
+  }
+  // With vertex colours and no material, the colours show as painted.
+  ASSERT_EQ(m.materials.size(), 1u);
+  EXPECT_EQ(m.materials[0].diffuse, glm::vec3(1.0f));
+}
+
+TEST(ObjImport, VertexColoursOnlyWhenEveryVertexHasOne) {
+  const Model some = import_obj_bundle(make_bundle({{"c.obj", "v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n"}}));
+  expect_well_formed(some);
+  EXPECT_FALSE(some.has_vertex_colors);
+  EXPECT_TRUE(some.mesh.colors.empty());
+  // A fourth coordinate (w) is not a colour.
+  const Model w = import_obj_bundle(make_bundle({{"w.obj", "v 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 1 2 3\n"}}));
+  EXPECT_FALSE(w.has_vertex_colors);
+  // Bytes are read as 0..255, other out-of-range values clamped.
+  const Model bytes =
+      import_obj_bundle(make_bundle({{"b.obj", "v 0 0 0 255 0 0\nv 1 0 0 0 51 0\nv 0 1 0 0 0 255\nf 1 2 3\n"}}));
+  expect_well_formed(bytes);
+  ASSERT_TRUE(bytes.has_vertex_colors);
+  EXPECT_TRUE(has_warning(bytes, "0..255")) << warnings_of(bytes);
+  for (const auto& c : bytes.mesh.colors) EXPECT_NEAR(c.x + c.y + c.z, c.y > 0 ? 0.2f : 1.0f, 1e-6f);
+  const Model hdr =
+      import_obj_bundle(make_bundle({{"h.obj", "v 0 0 0 1.5 0 0\nv 1 0 0 0 -1 0\nv 0 1 0 0 0 1e999\nf 1 2 3\n"}}));
+  expect_well_formed(hdr);
+  EXPECT_TRUE(has_warning(hdr, "clamped")) << warnings_of(hdr);
+  EXPECT_TRUE(has_warning(hdr, "not a finite number")) << warnings_of(hdr);
+}
+
+TEST(ObjImport, SpecularAndShininessFromTheMtl) {
+  const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 2 4 3\n";
+  const std::string mtl = "newmtl a\nKd 1 1 1\nKs 0.5 0.25 2\nNs 96\nnewmtl b\nKd 1 1 1\nNs 5000\n";
+  const Model m = import_obj_bundle(make_bundle({{"m.obj", obj}, {"m.mtl", mtl}}));
+  expect_well_formed(m);
+  ASSERT_EQ(m.materials.size(), 2u);
+  EXPECT_EQ(m.materials[0].specular, glm::vec3(0.5f, 0.25f, 1.0f));  // clamped to 0..1
+  EXPECT_EQ(m.materials[0].shininess, 96.0f);
+  EXPECT_EQ(m.materials[1].specular, glm::vec3(0.0f));
+  EXPECT_EQ(m.materials[1].shininess, 1000.0f);  // clamped to the MTL range
+}
+
+TEST(ObjImport, NormalMapsAreLinearAndStoredApartFromColourMaps) {
+  const std::string obj =
+      "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n"
+      "usemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 2/2 4/4 3/3\nusemtl c\nf 1/1 4/4 3/3\n";
+  // a: map_Bump (Blender); b: the same file as both colour and normal map,
+  // via `bump`; c: `norm` wins over map_Bump.
+  const std::string mtl =
+      "newmtl a\nKd 1 1 1\nmap_Kd skin.png\nmap_Bump -bm 1 nor.png\n"
+      "newmtl b\nKd 1 1 1\nmap_Kd nor.png\nbump nor.png\n"
+      "newmtl c\nKd 1 1 1\nmap_Bump height.png\nnorm other.png\n";
+  const Model m = import_obj_bundle(make_bundle({{"m.obj", obj},
+                                                 {"m.mtl", mtl},
+                                                 {"skin.png", tiny_png(200, 100, 50)},
+                                                 {"nor.png", tiny_png(128, 128, 255)},
+                                                 {"other.png", tiny_png(120, 140, 250)},
+                                                 {"height.png", tiny_png(7, 7, 7)}}));
+  expect_well_formed(m);
+  EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
+  ASSERT_EQ(m.materials.size(), 3u);
+  // skin (sRGB), nor (linear), nor (sRGB), other (linear).
+  ASSERT_EQ(m.textures.size(), 4u);
+  const auto texture = [&](int slot) -> const Texture& { return m.textures.at(static_cast<std::size_t>(slot)); };
+  EXPECT_EQ(texture(m.materials[0].diffuse_texture).path, "skin.png");
+  EXPECT_EQ(texture(m.materials[0].normal_texture).path, "nor.png");
+  EXPECT_EQ(texture(m.materials[0].normal_texture).color_space, ColorSpace::Linear);
+  EXPECT_EQ(m.materials[1].normal_texture, m.materials[0].normal_texture);  // decoded once
+  EXPECT_EQ(texture(m.materials[1].diffuse_texture).path, "nor.png");
+  EXPECT_EQ(texture(m.materials[1].diffuse_texture).color_space, ColorSpace::Srgb);
+  EXPECT_NE(m.materials[1].diffuse_texture, m.materials[1].normal_texture);
+  EXPECT_EQ(m.materials[2].diffuse_texture, -1);
+  EXPECT_EQ(texture(m.materials[2].normal_texture).path, "other.png");
+  EXPECT_EQ(texture(m.materials[2].normal_texture).rgba[2], 250);
+}
+
+TEST(ObjImport, GreyBumpMapIsAHeightMapAndIgnored) {
+  const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n";
+  const std::string mtl = "newmtl a\nKd 1 1 1\nbump height.png\nmap_Kd height.png\n";
+  const Model m =
+      import_obj_bundle(make_bundle({{"m.obj", obj}, {"m.mtl", mtl}, {"height.png", tiny_png(9, 9, 9)}}));
+  expect_well_formed(m);
+  EXPECT_EQ(m.materials[0].normal_texture, -1);
+  EXPECT_EQ(m.materials[0].diffuse_texture, 0);  // still fine as a colour map
+  EXPECT_EQ(m.textures.size(), 1u);
+  EXPECT_TRUE(has_warning(m, "height map")) << warnings_of(m);
+}
+
+TEST(ObjImport, MissingNormalMapIsAWarning) {
+  const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n";
+  const Model m = import_obj_bundle(make_bundle({{"m.obj", obj}, {"m.mtl", "newmtl a\nmap_Bump gone_NOR.jpg\n"}}));
+  expect_well_formed(m);
+  EXPECT_EQ(m.materials[0].normal_texture, -1);
+  EXPECT_TRUE(has_warning(m, "gone_NOR.jpg")) << warnings_of(m);
+  EXPECT_TRUE(has_warning(m, "normal map")) << warnings_of(m);
+}
+
+TEST(ObjImport, TangentsFollowTheTextureCoordinates) {
+  // A quad in the XY plane facing +Z, U along +X and V along +Y; then the
+  // same with U mirrored; then with all UVs equal.
+  const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n";
+  const Model plain = import_obj_bundle(
+      make_bundle({{"p.obj", quad + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1/1 2/2/1 3/3/1 4/4/1\n"}}));
+  expect_well_formed(plain);
+  for (const auto& t : plain.mesh.tangents) {
+    EXPECT_NEAR(glm::length(glm::vec3(t) - glm::vec3(1, 0, 0)), 0.0f, 1e-6f);
+    EXPECT_EQ(t.w, 1.0f);
+  }
+  const Model mirrored = import_obj_bundle(
+      make_bundle({{"m.obj", quad + "vt 1 0\nvt 0 0\nvt 0 1\nvt 1 1\nf 1/1/1 2/2/1 3/3/1 4/4/1\n"}}));
+  expect_well_formed(mirrored);
+  for (const auto& t : mirrored.mesh.tangents) {
+    EXPECT_NEAR(glm::length(glm::vec3(t) - glm::vec3(-1, 0, 0)), 0.0f, 1e-6f);
+    EXPECT_EQ(t.w, -1.0f);
+  }
+  const Model flat = import_obj_bundle(make_bundle({{"f.obj", quad + "vt 0.5 0.5\nf 1/1/1 2/1/1 3/1/1 4/1/1\n"}}));
+  expect_well_formed(flat);  // finite, unit, perpendicular to +Z
+  for (const auto& t : flat.mesh.tangents) EXPECT_EQ(t.w, 1.0f);
+}
+
 TEST(ObjText, PreparationKeepsLineNumbersAndMeaning) {
   EXPECT_EQ(prepare_obj_text("v 1 2 3\nf 1// 2// 3//\n"), "v 1 2 3\nf 1 2 3\n");
   EXPECT_EQ(prepare_obj_text("f 1/1/ 2/2/ \\\n  3/3/\nv 0 0 0"), "f 1/1 2/2 3/3\n\nv 0 0 0\n");
@@ -421,6 +501,11 @@ TEST(ObjImportShared, Spot) {
   EXPECT_EQ(m.textures[0].height, 1024);
   ASSERT_EQ(m.materials.size(), 1u);
   EXPECT_EQ(m.materials[0].diffuse_texture, 0);
+  EXPECT_EQ(m.materials[0].normal_texture, -1);
+  // nvdiffrec's "Ks 0 0.25 0" (roughness, metalness) is kept as written.
+  EXPECT_NEAR(m.materials[0].specular.y, 0.25f, 1e-6f);
+  EXPECT_EQ(m.materials[0].specular.x, 0.0f);
+  EXPECT_EQ(m.materials[0].shininess, 32.0f);  // no Ns
   EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
 }
 
@@ -430,10 +515,28 @@ TEST(ObjImportShared, WindmillHasTwoTexturedMaterials) {
   expect_well_formed(m);
   EXPECT_EQ(m.mesh.triangle_count(), 2722u);
   ASSERT_EQ(m.materials.size(), 2u);
-  EXPECT_EQ(m.textures.size(), 2u);  // the two map_Kd; normal and specular maps are not diffuse
+  // The two map_Kd colour maps and the two map_Bump normal maps; map_Ns
+  // (specular) is not read.
+  EXPECT_EQ(m.textures.size(), 4u);
   EXPECT_EQ(m.mesh.submeshes.size(), 2u);
-  for (const auto& mat : m.materials) EXPECT_GE(mat.diffuse_texture, 0) << mat.name;
+  for (const auto& mat : m.materials) {
+    ASSERT_GE(mat.diffuse_texture, 0) << mat.name;
+    ASSERT_GE(mat.normal_texture, 0) << mat.name;
+    const Texture& colour = m.textures[static_cast<std::size_t>(mat.diffuse_texture)];
+    const Texture& normal = m.textures[static_cast<std::size_t>(mat.normal_texture)];
+    EXPECT_EQ(colour.color_space, ColorSpace::Srgb) << mat.name;
+    EXPECT_EQ(normal.color_space, ColorSpace::Linear) << mat.name;
+    EXPECT_NE(colour.path.find("_COL"), std::string::npos) << colour.path;
+    EXPECT_NE(normal.path.find("_NOR"), std::string::npos) << normal.path;
+    EXPECT_EQ(mat.specular, glm::vec3(0.0f));  // Ks 0 0 0
+    EXPECT_EQ(mat.shininess, 0.0f);            // Ns 0 (Blender: fully rough)
+  }
   EXPECT_NE(m.materials[0].diffuse_texture, m.materials[1].diffuse_texture);
+  EXPECT_NE(m.materials[0].normal_texture, m.materials[1].normal_texture);
+  EXPECT_FALSE(m.has_vertex_colors);
+  // UV-mapped: most vertices get a tangent from their UVs, and the tangent
+  // frame is orthonormal everywhere (expect_well_formed).
+  EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
 }
 
 TEST(ObjImportShared, DogTextureInSubfolderResolves) {

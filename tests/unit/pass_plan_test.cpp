@@ -52,6 +52,37 @@ TEST(PassPlan, ShadingModeAndRoundingBecomeDefines) {
   EXPECT_TRUE(has_define(plan_passes(params({{"shading", {{"mode", "flat"}}}}), {}), "MODE_FLAT"));
 }
 
+TEST(PassPlan, ShadowPassOnlyWithADirectionalLightThatCanCast) {
+  const json on = {{"shadows", {{"enabled", true}}}};
+  const PassPlan with_sun = plan_passes(params(on), {});
+  EXPECT_EQ(with_sun.describe(), "shadow,main,hull_outline,resolve,readback");
+  EXPECT_EQ(with_sun.shadow_light, 0);
+  EXPECT_TRUE(has_define(with_sun, "SHADOWS"));
+
+  json point_only = on;
+  point_only["lights"] = {{{"type", "point"}, {"position", {0, 1, 0}}}};
+  EXPECT_FALSE(plan_passes(params(point_only), {}).has(Pass::Shadow)) << "point lights cast no shadows";
+
+  json no_lights = on;
+  no_lights["lights"] = json::array();
+  EXPECT_FALSE(plan_passes(params(no_lights), {}).has(Pass::Shadow));
+
+  json flat = on;
+  flat["shading"] = {{"mode", "flat"}};
+  EXPECT_FALSE(plan_passes(params(flat), {}).has(Pass::Shadow)) << "unlit colour has nothing to darken";
+
+  json second = on;
+  second["lights"] = {{{"type", "point"}, {"position", {0, 1, 0}}}, {{"type", "directional"}}};
+  EXPECT_EQ(plan_passes(params(second), {}).shadow_light, 1) << "the first directional light casts";
+
+  EXPECT_FALSE(plan_passes(params(json::object()), {}).has(Pass::Shadow));
+}
+
+TEST(PassPlan, FloorIsItsOwnPassAfterTheModel) {
+  const PassPlan plan = plan_passes(params({{"floor", {{"enabled", true}}}, {"msaa", 1}}), {});
+  EXPECT_EQ(plan.describe(), "main,floor,hull_outline,readback");
+}
+
 TEST(PassPlan, ReadbackIsAlwaysLast) {
   for (const json& request : {json::object(), json{{"msaa", 1}, {"outline", {{"enabled", false}}}}}) {
     const PassPlan plan = plan_passes(params(request), {});

@@ -1,0 +1,56 @@
+#include "scene/bundle_import.h"
+
+#include <vector>
+
+#include "scene/import_error.h"
+#include "scene/m_import.h"
+#include "scene/obj_import.h"
+
+namespace toond::scene {
+namespace {
+
+char ascii_lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+
+std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+
+}  // namespace
+
+bool has_extension(std::string_view path, std::string_view extension) {
+  if (path.size() < extension.size()) return false;
+  const std::string_view tail = path.substr(path.size() - extension.size());
+  for (std::size_t i = 0; i < tail.size(); ++i) {
+    if (ascii_lower(tail[i]) != ascii_lower(extension[i])) return false;
+  }
+  return true;
+}
+
+std::string find_model_file(const Bundle& bundle, std::initializer_list<std::string_view> extensions,
+                            std::string_view noun) {
+  std::vector<std::string> found;
+  for (const auto& [path, content] : bundle.files()) {
+    for (const std::string_view extension : extensions) {
+      if (has_extension(path, extension)) {
+        found.push_back(path);
+        break;
+      }
+    }
+  }
+  if (found.size() == 1) return found.front();
+  std::string listing;
+  if (found.empty()) {
+    for (const auto& [path, content] : bundle.files()) listing += (listing.empty() ? "" : ", ") + quoted(path);
+    throw ImportError("", "the bundle holds no " + std::string(noun) + " file" +
+                              (listing.empty() ? std::string(" (it is empty)") : " (it holds " + listing + ")"));
+  }
+  for (const auto& path : found) listing += (listing.empty() ? "" : ", ") + quoted(path);
+  throw ImportError(found[1], "the bundle holds " + std::to_string(found.size()) + " " + std::string(noun) +
+                                  " files (" + listing + "); a bundle is one model with exactly one " +
+                                  std::string(noun) + " file");
+}
+
+Model import_bundle(const Bundle& bundle) {
+  const std::string path = find_model_file(bundle, {".obj", ".m"}, ".obj or .m");
+  return has_extension(path, ".m") ? import_m_bundle(bundle) : import_obj_bundle(bundle);
+}
+
+}  // namespace toond::scene

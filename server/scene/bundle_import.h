@@ -1,0 +1,30 @@
+#pragma once
+// The one entry point for turning an uploaded bundle into a Model, whatever
+// its model file's format.
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
+#include "scene/bundle.h"
+#include "scene/model.h"
+
+namespace toond::scene {
+
+// Imports the bundle's one model file with the importer its extension
+// (ASCII case-insensitive) names: .obj (import_obj_bundle, obj_import.h) or
+// .m (import_m_bundle, m_import.h). Throws ImportError naming the files when
+// the bundle holds no model file or more than one, and whatever the importer
+// throws.
+Model import_bundle(const Bundle& bundle);
+
+// Whether `path` ends in `extension` (".obj"), ASCII case-insensitive.
+bool has_extension(std::string_view path, std::string_view extension);
+
+// The path of the bundle's one file ending in any of `extensions`. Throws
+// ImportError naming the files when there is none (file: "") or more than
+// one (file: the second); `noun` is how messages name such a file (".obj",
+// ".obj or .m").
+std::string find_model_file(const Bundle& bundle, std::initializer_list<std::string_view> extensions,
+                            std::string_view noun);
+
+}  // namespace toond::scene

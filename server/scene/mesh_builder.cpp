@@ -1,0 +1,350 @@
+#include "scene/mesh_builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <unordered_map>
+
+#include "scene/import_error.h"
+#include "scene/mesh_processing.h"
+
+namespace toond::scene {
+
+void ImportWarnings::add(std::string message) {
+  if (!seen_.insert(message).second) return;
+  if (list_.size() < kMaxWarnings) {
+    list_.push_back(std::move(message));
+  } else {
+    ++dropped_;
+  }
+}
+
+std::vector<std::string> ImportWarnings::take() {
+  if (dropped_ > 0) list_.push_back(std::to_string(dropped_) + " further warnings left out");
+  dropped_ = 0;
+  seen_.clear();
+  return std::move(list_);
+}
+
+namespace {
+
+struct VertexKey {
+  std::uint32_t v;
+  std::int64_t vn;
+  std::int64_t vt;
+  std::int64_t smoothing;
+  bool operator==(const VertexKey&) const = default;
+};
+
+struct VertexKeyHash {
+  std::size_t operator()(const VertexKey& k) const noexcept {
+    std::uint64_t h = 1469598103934665603ull;
+    for (const std::uint64_t part : {static_cast<std::uint64_t>(k.v), static_cast<std::uint64_t>(k.vn),
+                                     static_cast<std::uint64_t>(k.vt), static_cast<std::uint64_t>(k.smoothing)}) {
+      h = (h ^ part) * 1099511628211ull;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+struct GroupKey {
+  std::uint32_t position;
+  std::int64_t smoothing;
+  bool operator==(const GroupKey&) const = default;
+};
+
+struct GroupKeyHash {
+  std::size_t operator()(const GroupKey& k) const noexcept {
+    return std::hash<std::uint64_t>()((static_cast<std::uint64_t>(k.position) << 20) ^
+                                      static_cast<std::uint64_t>(k.smoothing));
+  }
+};
+
+std::string plural(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+class Builder {
+ public:
+  Builder(MeshSource& source, ImportWarnings& warnings) : src_(source), warnings_(warnings) {}
+
+  Mesh run(const std::function<void(std::vector<SourceTriangle>&)>& assign_materials) {
+    check_positions();
+    check_indices();
+    sanitize_colors();
+    recentre();
+    drop_degenerate();
+    if (src_.triangles.empty()) {
+      throw ImportError(src_.file, src_.file + " has no faces to render (it holds only points, lines or "
+                                               "degenerate faces, or nothing at all)");
+    }
+    assign_materials(src_.triangles);
+    std::stable_sort(src_.triangles.begin(), src_.triangles.end(),
+                     [](const SourceTriangle& a, const SourceTriangle& b) { return a.material < b.material; });
+    build();
+    return std::move(mesh_);
+  }
+
+ private:
+  std::string describe_position(std::size_t i) const {
+    return src_.describe_position ? src_.describe_position(i) : "vertex " + std::to_string(i + 1);
+  }
+
+  void check_positions() const {
+    for (std::size_t i = 0; i < src_.positions.size(); ++i) {
+      const glm::dvec3& p = src_.positions[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+        throw ImportError(src_.file, src_.file + ": " + describe_position(i) +
+                                         " has a coordinate that is not a finite number");
+      }
+    }
+  }
+
+  void check_indices() {
+    const auto normal_count = static_cast<std::int64_t>(src_.normals.size());
+    const auto texcoord_count = static_cast<std::int64_t>(src_.texcoords.size());
+    std::size_t dropped = 0;
+    for (std::size_t t = 0; t < src_.triangles.size(); ++t) {
+      for (SourceCorner& corner : src_.triangles[t].corner) {
+        if (corner.position >= src_.positions.size()) {
+          throw ImportError(src_.file, src_.file + ": triangle " + std::to_string(t + 1) +
+                                           " refers to a vertex position that does not exist (the file defines " +
+                                           std::to_string(src_.positions.size()) + ")");
+        }
+        if (corner.normal < -1 || corner.normal >= normal_count) {
+          corner.normal = -1;
+          ++dropped;
+        }
+        if (corner.texcoord < -1 || corner.texcoord >= texcoord_count) {
+          corner.texcoord = -1;
+          ++dropped;
+        }
+      }
+    }
+    if (dropped > 0) {
+      warnings_.add(src_.file + ": " + std::to_string(dropped) +
+                    " normal or texture-coordinate references point past the end of their lists and were ignored");
+    }
+  }
+
+  void sanitize_colors() {
+    auto& colors = src_.colors;
+    if (colors.empty()) return;
+    if (colors.size() != src_.positions.size()) {
+      warnings_.add(src_.file + ": not every vertex has a colour; the vertex colours were ignored");
+      colors.clear();
+      return;
+    }
+    std::size_t not_finite = 0;
+    double highest = 0.0;
+    double lowest = 0.0;
+    bool all_whole = true;
+    for (auto& c : colors) {
+      for (int k = 0; k < 3; ++k) {
+        if (!std::isfinite(c[k])) {
+          c[k] = 1.0;
+          ++not_finite;
+        }
+        highest = std::max(highest, c[k]);
+        lowest = std::min(lowest, c[k]);
+        all_whole = all_whole && c[k] == std::floor(c[k]);
+      }
+    }
+    if (not_finite > 0) {
+      warnings_.add(src_.file + ": " + plural(not_finite, "vertex colour component was", "vertex colour components were") +
+                    " not a finite number and became 1");
+    }
+    if (highest > 1.0 && highest <= 255.0 && all_whole && lowest >= 0.0) {
+      // Some exporters write bytes; dividing keeps the picture.
+      for (auto& c : colors) c /= 255.0;
+      warnings_.add(src_.file + ": the vertex colours are whole numbers up to 255 and were read as 0..255");
+    } else if (highest > 1.0 || lowest < 0.0) {
+      for (auto& c : colors) c = glm::clamp(c, 0.0, 1.0);
+      warnings_.add(src_.file + ": vertex colours outside 0..1 were clamped");
+    }
+  }
+
+  void recentre() {
+    if (src_.triangles.empty()) return;
+    // The centre is taken in double from the file's own numbers, so that a
+    // model far from its origin keeps full float precision once recentred.
+    glm::dvec3 lo(std::numeric_limits<double>::infinity());
+    glm::dvec3 hi(-std::numeric_limits<double>::infinity());
+    for (const auto& tri : src_.triangles) {
+      for (const auto& corner : tri.corner) {
+        lo = glm::min(lo, src_.positions[corner.position]);
+        hi = glm::max(hi, src_.positions[corner.position]);
+      }
+    }
+    origin_ = (lo + hi) * 0.5;
+    const glm::dvec3 extent = hi - lo;
+    if (!std::isfinite(extent.x) || !std::isfinite(extent.y) || !std::isfinite(extent.z) ||
+        std::max({extent.x, extent.y, extent.z}) > static_cast<double>(std::numeric_limits<float>::max()) * 0.5) {
+      throw ImportError(src_.file, src_.file + ": the model's extent is too large to render");
+    }
+  }
+
+  glm::dvec3 position(std::uint32_t v) const { return src_.positions[v] - origin_; }
+
+  void drop_degenerate() {
+    std::size_t degenerate = 0;
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < src_.triangles.size(); ++t) {
+      const SourceTriangle& tri = src_.triangles[t];
+      glm::dvec3 exact[3];
+      glm::dvec3 rounded[3];
+      for (int c = 0; c < 3; ++c) {
+        exact[c] = position(tri.corner[c].position);
+        rounded[c] = glm::dvec3(glm::vec3(exact[c]));
+      }
+      // The GPU sees the float corners: a face that collapses there is as
+      // degenerate as one that is flat in the file.
+      if (is_degenerate_triangle(exact[0], exact[1], exact[2]) ||
+          is_degenerate_triangle(rounded[0], rounded[1], rounded[2])) {
+        ++degenerate;
+        continue;
+      }
+      src_.triangles[kept++] = tri;
+    }
+    src_.triangles.resize(kept);
+    if (degenerate > 0) {
+      warnings_.add(src_.file + ": " + plural(degenerate, "degenerate (zero-area) triangle was", "degenerate (zero-area) triangles were") +
+                    " dropped");
+    }
+  }
+
+  bool normal_usable(std::int64_t vn) const {
+    if (vn < 0) return false;
+    const double len = glm::length(src_.normals[static_cast<std::size_t>(vn)]);
+    return std::isfinite(len) && len > 1e-20;
+  }
+
+  // Smoothing off: corners share a vertex only with faces lying in the same
+  // plane (the triangles of one polygon), keyed by the face normal's bits.
+  // Negative, so it never meets a smoothing group's key.
+  std::int64_t flat_key(const SourceTriangle& tri) const {
+    const glm::vec3 n(triangle_normal(position(tri.corner[0].position), position(tri.corner[1].position),
+                                      position(tri.corner[2].position)));
+    std::uint32_t bits[3];
+    std::memcpy(bits, &n[0], sizeof bits);
+    std::uint64_t h = 1469598103934665603ull;
+    for (const auto b : bits) h = (h ^ b) * 1099511628211ull;
+    return -1 - static_cast<std::int64_t>(h >> 2);
+  }
+
+  void build() {
+    Mesh& mesh = mesh_;
+    mesh.origin = origin_;
+    const auto& triangles = src_.triangles;
+    const bool with_colors = !src_.colors.empty();
+
+    bool smoothing_in_use = false;
+    for (const auto& tri : triangles) {
+      for (const auto& corner : tri.corner) {
+        if (tri.smoothing != 0 && !normal_usable(corner.normal)) smoothing_in_use = true;
+      }
+    }
+
+    std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> vertex_of;
+    std::vector<std::int64_t> smoothing_of_vertex;
+    std::vector<bool> needs_normal;
+    std::size_t bad_texcoords = 0;
+    mesh.indices.reserve(triangles.size() * 3);
+
+    for (const auto& tri : triangles) {
+      for (const auto& corner : tri.corner) {
+        const bool has_normal = normal_usable(corner.normal);
+        // Vertices without a usable normal are told apart by where their
+        // computed normal may average: the whole mesh, one smoothing group,
+        // or (smoothing off) only their own face.
+        std::int64_t smoothing = 0;
+        if (!has_normal) {
+          if (!smoothing_in_use) {
+            smoothing = 1;
+          } else if (tri.smoothing != 0) {
+            smoothing = 2 + static_cast<std::int64_t>(tri.smoothing);
+          } else {
+            smoothing = flat_key(tri);
+          }
+        }
+        const VertexKey key{corner.position, has_normal ? corner.normal : -1, corner.texcoord, smoothing};
+        const auto [it, inserted] = vertex_of.emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+        if (inserted) {
+          if (mesh.positions.size() >= std::numeric_limits<std::uint32_t>::max()) {
+            throw ImportError(src_.file, src_.file + " has too many vertices");
+          }
+          mesh.positions.emplace_back(position(corner.position));
+          glm::vec3 normal(0.0f);
+          if (has_normal) normal = glm::vec3(glm::normalize(src_.normals[static_cast<std::size_t>(corner.normal)]));
+          mesh.normals.push_back(normal);
+          glm::vec2 uv(0.0f);
+          if (corner.texcoord >= 0) {
+            const glm::dvec2 raw = src_.texcoords[static_cast<std::size_t>(corner.texcoord)];
+            if (std::isfinite(raw.x) && std::isfinite(raw.y) && std::abs(raw.x) < 1e30 && std::abs(raw.y) < 1e30) {
+              uv = glm::vec2(raw);
+            } else {
+              ++bad_texcoords;
+            }
+          }
+          mesh.texcoords.push_back(uv);
+          if (with_colors) mesh.colors.emplace_back(src_.colors[corner.position]);
+          smoothing_of_vertex.push_back(smoothing);
+          needs_normal.push_back(!has_normal);
+        }
+        mesh.indices.push_back(it->second);
+      }
+    }
+    if (bad_texcoords > 0) {
+      warnings_.add(src_.file + ": " + std::to_string(bad_texcoords) +
+                    " texture coordinates were not finite numbers and were set to 0");
+    }
+
+    if (std::find(needs_normal.begin(), needs_normal.end(), true) != needs_normal.end()) {
+      const auto position_class = group_by_position(mesh.positions);
+      std::unordered_map<GroupKey, std::uint32_t, GroupKeyHash> group_ids;
+      std::vector<std::uint32_t> groups(mesh.positions.size());
+      for (std::size_t v = 0; v < groups.size(); ++v) {
+        // A vertex that brought its own normal forms a group of its own
+        // (its computed normal is discarded anyway).
+        const GroupKey key = needs_normal[v]
+                                 ? GroupKey{position_class[v], smoothing_of_vertex[v]}
+                                 : GroupKey{static_cast<std::uint32_t>(v), std::numeric_limits<std::int64_t>::min()};
+        groups[v] = group_ids.emplace(key, static_cast<std::uint32_t>(group_ids.size())).first->second;
+      }
+      const auto computed = compute_grouped_normals(mesh.positions, mesh.indices, groups);
+      for (std::size_t v = 0; v < groups.size(); ++v) {
+        if (needs_normal[v]) mesh.normals[v] = computed[v];
+      }
+    }
+
+    mesh.outline_normals = compute_outline_normals(mesh.positions, mesh.indices, mesh.normals);
+    mesh.tangents = compute_tangents(mesh.positions, mesh.normals, mesh.texcoords, mesh.indices);
+    mesh.bounds = compute_bounds(mesh.positions);
+
+    for (std::size_t t = 0; t < triangles.size();) {
+      Submesh sub;
+      sub.material = triangles[t].material;
+      sub.first_index = static_cast<std::uint32_t>(t * 3);
+      std::size_t end = t;
+      while (end < triangles.size() && triangles[end].material == sub.material) ++end;
+      sub.index_count = static_cast<std::uint32_t>((end - t) * 3);
+      mesh.submeshes.push_back(sub);
+      t = end;
+    }
+  }
+
+  MeshSource& src_;
+  ImportWarnings& warnings_;
+  glm::dvec3 origin_{0.0};
+  Mesh mesh_;
+};
+
+}  // namespace
+
+Mesh build_mesh(MeshSource& source, ImportWarnings& warnings,
+                const std::function<void(std::vector<SourceTriangle>&)>& assign_materials) {
+  return Builder(source, warnings).run(assign_materials);
+}
+
+}  // namespace toond::scene

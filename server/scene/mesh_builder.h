@@ -1,0 +1,88 @@
+#pragma once
+// What every importer does once its parser has read a file: the checks,
+// recentring, repairs and derived vertex streams that turn the file's
+// indexed lists into a Mesh. The OBJ and .m importers fill a MeshSource and
+// call build_mesh, so both models get exactly the same treatment.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/model.h"
+
+namespace toond::scene {
+
+// The warnings of one import. A broken export can repeat one complaint per
+// face; the answer must stay readable, so each message is kept once and at
+// most kMaxWarnings are kept at all.
+class ImportWarnings {
+ public:
+  static constexpr std::size_t kMaxWarnings = 40;
+
+  void add(std::string message);
+  // The list, with a closing note when some were left out.
+  std::vector<std::string> take();
+
+ private:
+  std::vector<std::string> list_;
+  std::unordered_set<std::string> seen_;
+  std::size_t dropped_ = 0;
+};
+
+struct SourceCorner {
+  std::uint32_t position = 0;  // into MeshSource::positions
+  std::int64_t normal = -1;    // into MeshSource::normals, -1 = none
+  std::int64_t texcoord = -1;  // into MeshSource::texcoords, -1 = none
+};
+
+struct SourceTriangle {
+  SourceCorner corner[3];
+  // The importer's own material id until build_mesh's assign_materials has
+  // run, an index into Model::materials after.
+  int material = -1;
+  // OBJ smoothing group, 0 = none or off. Only consulted for corners
+  // without a usable normal.
+  unsigned smoothing = 0;
+};
+
+// A model as its file lists it, in double precision, not yet checked.
+struct MeshSource {
+  std::string file;  // the bundle path: named in messages and ImportError::file
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::dvec3> normals;    // need not be unit length, may be unusable
+  std::vector<glm::dvec2> texcoords;
+  std::vector<glm::dvec3> colors;     // empty, or one per position (0..1 expected)
+  std::vector<SourceTriangle> triangles;
+  // Names position `i` in messages, e.g. "vertex 12 (line 40)"; only called
+  // on failure. Unset: "vertex i+1".
+  std::function<std::string(std::size_t)> describe_position;
+};
+
+// Builds the mesh of `source` (whose triangles it consumes):
+// - every position must be finite, every corner's position index in range
+//   (ImportError naming the file, and the vertex or triangle); normal and
+//   texcoord indices out of range are dropped with a warning;
+// - positions are recentred on the centre of the used positions' box,
+//   computed in double (Mesh::origin); an extent beyond float range is an
+//   ImportError;
+// - triangles with no area, in the file's numbers or after rounding to
+//   float, are dropped with a warning; none left is an ImportError;
+// - assign_materials(triangles) then sets every remaining triangle's
+//   material to an index into the model's materials (so an importer can
+//   keep only the materials in use);
+// - vertices are shared by (position, normal, texcoord, smoothing), so a
+//   position's colour goes with every vertex made from it; normals that
+//   are missing, zero or not finite are computed (angle-weighted, averaged
+//   per position within the mesh, the smoothing group or, with smoothing
+//   off where groups are used, the face); texcoords that are not finite
+//   become (0,0) and colours are sanitised, each with a warning;
+// - outline normals, tangents and bounds are derived, and triangles are
+//   sorted (stably) into one submesh per material.
+Mesh build_mesh(MeshSource& source, ImportWarnings& warnings,
+                const std::function<void(std::vector<SourceTriangle>&)>& assign_materials);
+
+}  // namespace toond::scene

@@ -1,0 +1,3 @@
+#version 430 core
+// Depth only: the fixed-function depth write is the whole output.
+void main() {}

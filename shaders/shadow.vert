@@ -1,0 +1,6 @@
+#version 430 core
+// Shadow pass: depth as the shadow-casting light sees the model.
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_light_view_projection;
+
+void main() { gl_Position = u_light_view_projection * vec4(a_position, 1.0); }
