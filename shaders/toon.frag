@@ -12,12 +12,14 @@
 // Variants (#defines, chosen by the pass plan):
 //   MODE_CEL | MODE_PHONG | MODE_FLAT      ROUND_CEIL | ROUND_FLOOR | ROUND_ROUND
 //   TWO_TONE | RAMP (cel only; replace the bands)
-//   BASE_WHITE   HAS_TEXTURE   COMBINE_SUM   HAS_POINT_LIGHTS   SPECULAR
+//   BASE_WHITE   HAS_TEXTURE   VERTEX_COLOR   NORMAL_MAP   COMBINE_SUM   HAS_POINT_LIGHTS   SPECULAR
 //   RIM (+ RIM_MASK_LIT | RIM_MASK_SHADOW)   CONTOUR_EVEN | CONTOUR_FRESNEL
 //   HALFTONE_DOTS | HALFTONE_CHECKER   SHADOWS (+ SHADOW_PCF n: (2n+1)² taps)
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_texcoord;
+in vec4 v_tangent;
+in vec3 v_color;
 
 uniform vec3 u_base_color;  // material Kd, linear
 uniform float u_ambient;
@@ -36,6 +38,9 @@ uniform float u_light_radius[8];  // 0: unlimited
 
 #ifdef HAS_TEXTURE
 uniform sampler2D u_diffuse_map;  // sRGB texture: sampling returns linear values
+#endif
+#ifdef NORMAL_MAP
+uniform sampler2D u_normal_map;   // linear, tangent space, OpenGL convention (+Y = +V)
 #endif
 #ifdef SPECULAR
 uniform vec3 u_specular_color;
@@ -168,6 +173,11 @@ void main() {
 #ifdef HAS_TEXTURE
   albedo *= texture(u_diffuse_map, v_texcoord).rgb;
 #endif
+#ifdef VERTEX_COLOR
+  // Vertex colours are written like any colour picker's, sRGB-encoded.
+  vec3 vc = v_color;
+  albedo *= mix(vc / 12.92, pow((vc + 0.055) / 1.055, vec3(2.4)), step(0.04045, vc));
+#endif
 #endif
 
 #ifdef MODE_FLAT
@@ -177,6 +187,15 @@ void main() {
   // Both faces shade like the front, so open meshes (the teapot's shells)
   // look solid from inside too.
   vec3 n = normalize(v_normal);
+#ifdef NORMAL_MAP
+  // Tangent-space normal map in the (tangent, bitangent, normal) frame: with
+  // thresholded lighting its bumps turn into the drawn, hatched look of the
+  // reference reports.
+  vec3 t = normalize(v_tangent.xyz - n * dot(n, v_tangent.xyz));
+  vec3 b = cross(n, t) * v_tangent.w;
+  vec3 mapped = texture(u_normal_map, v_texcoord).xyz * 2.0 - 1.0;
+  n = normalize(mat3(t, b, n) * mapped);
+#endif
   if (!gl_FrontFacing) n = -n;
   vec3 v = u_orthographic != 0 ? -u_view_dir : normalize(u_eye - v_position);
 

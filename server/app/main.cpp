@@ -1,6 +1,7 @@
 // toond: starts the render thread (EGL context), opens the model store and
 // serves the HTTP API until SIGINT/SIGTERM, then finishes accepted work.
 #include <csignal>
+#include <filesystem>
 #include <iostream>
 
 #include <httplib.h>
@@ -34,7 +35,11 @@ int run(const toond::app::Options& options) {
   }
 
   toond::scene::ModelStore store(options.data_dir);
-  toond::render::RenderService renderer({options.gpu, options.queue});
+  toond::render::RenderService::Options render_options;
+  render_options.gpu_index = options.gpu;
+  render_options.queue_capacity = options.queue;
+  render_options.shader_dir = options.shader_dir;
+  toond::render::RenderService renderer(render_options);
   toond::render::ModelLibrary library(store, 16);
 
   httplib::Server server;
@@ -51,7 +56,9 @@ int run(const toond::app::Options& options) {
     return 1;
   }
   std::cerr << "toond: GL " << renderer.gl_info().version << " on " << renderer.gl_info().renderer
-            << " (" << renderer.gl_info().platform << "), data in " << options.data_dir << "\n";
+            << " (" << renderer.gl_info().platform << "), data in " << options.data_dir
+            << (options.shader_dir.empty() ? "" : ", shaders from " + options.shader_dir + " (reloaded on change)")
+            << "\n";
   std::cout << "listening on http://" << options.host << ":" << port << std::endl;
 
   g_server = &server;
@@ -79,6 +86,15 @@ int main(int argc, char** argv) {
   if (options.version) {
     std::cout << "toond " << TOOND_VERSION << "\n";
     return 0;
+  }
+  if (!options.shader_dir.empty()) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(options.shader_dir, ec)) {
+      std::cerr << "toond: --shader-dir " << options.shader_dir << ": "
+                << (std::filesystem::exists(options.shader_dir, ec) ? "not a directory" : "no such directory")
+                << "\n";
+      return 2;
+    }
   }
   try {
     return run(options);

@@ -37,6 +37,13 @@ Usage: toond [options]
   --max-upload-bytes N   largest request body accepted (default 268435456)
   --threads N            HTTP worker threads (default 8)
   --render-timeout S     seconds a request waits for its render (default 60)
+  --shader-dir DIR       read the GLSL files (the names in shaders/) from DIR
+                         instead of the embedded copies, and recompile before a
+                         render when one changed. A file missing in DIR is an
+                         error (no fallback to the embedded copy). A file that
+                         does not compile fails that render (500 "shader_error"
+                         naming the file and line); the previous shaders keep
+                         serving until the file is fixed.
   --version              print the version and exit
   -h, --help             this text
 
@@ -77,6 +84,9 @@ Options parse_options(const std::vector<std::string>& args) {
       o.max_upload_bytes = static_cast<std::size_t>(parse_int(a, value(), 1024, 1LL << 40));
     } else if (a == "--threads") {
       o.threads = static_cast<int>(parse_int(a, value(), 1, 1024));
+    } else if (a == "--shader-dir") {
+      o.shader_dir = value();
+      if (o.shader_dir.empty()) throw std::invalid_argument("--shader-dir needs a directory");
     } else if (a == "--render-timeout") {
       o.render_timeout_s = static_cast<double>(parse_int(a, value(), 1, 86400));
     } else {

@@ -16,6 +16,9 @@ struct Options {
   std::size_t max_upload_bytes = 256u << 20;
   int threads = 8;
   double render_timeout_s = 60;
+  // Empty: the shaders embedded in the binary. Otherwise GLSL files are read
+  // from this folder and recompiled when they change (look development).
+  std::string shader_dir;
   bool list_gpus = false;
   bool help = false;
   bool version = false;

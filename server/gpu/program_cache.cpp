@@ -1,8 +1,24 @@
 #include "gpu/program_cache.h"
 
 #include <algorithm>
+#include <set>
+
+#include "gpu/shader_compile_error.h"
 
 namespace toond::gpu {
+
+ProgramCache::ProgramCache(SourceLookup lookup)
+    : sources_(std::make_unique<FixedShaderSources>(std::move(lookup))) {}
+
+ProgramCache::ProgramCache(std::unique_ptr<ShaderSources> sources) : sources_(std::move(sources)) {}
+
+const std::string& ProgramCache::text(const std::string& name) {
+  auto it = live_.find(name);
+  if (it != live_.end()) return it->second;
+  std::string source = sources_->read(name);  // throws: nothing is remembered
+  if (sources_->can_change()) disk_[name] = DiskText{source, nullptr};
+  return live_.emplace(name, std::move(source)).first->second;
+}
 
 Program& ProgramCache::get(const std::string& vertex, const std::string& fragment,
                            std::vector<std::string> defines) {
@@ -10,10 +26,66 @@ Program& ProgramCache::get(const std::string& vertex, const std::string& fragmen
   std::string key = vertex + "|" + fragment;
   for (const auto& d : defines) key += "|" + d;
   auto it = programs_.find(key);
-  if (it != programs_.end()) return *it->second;
-  auto program = std::make_unique<Program>(ShaderSource{vertex, lookup_(vertex)},
-                                           ShaderSource{fragment, lookup_(fragment)}, defines);
-  return *programs_.emplace(key, std::move(program)).first->second;
+  if (it != programs_.end()) return *it->second.program;
+  auto program = std::make_unique<Program>(ShaderSource{vertex, text(vertex)},
+                                           ShaderSource{fragment, text(fragment)}, defines);
+  Entry entry{vertex, fragment, std::move(defines), std::move(program)};
+  return *programs_.emplace(key, std::move(entry)).first->second.program;
+}
+
+ProgramCache::Reload ProgramCache::refresh() {
+  if (!sources_->can_change()) return {};
+  const std::vector<std::string> changed = sources_->changed();
+  if (changed.empty()) return {};
+
+  for (const auto& name : changed) {
+    // Reading records what was seen, so an edit is looked at once.
+    DiskText latest;
+    try {
+      latest.text = sources_->read(name);
+    } catch (const GpuError&) {
+      latest.error = std::current_exception();
+    }
+    // A file no cached program was built from is read again when needed.
+    if (live_.contains(name)) disk_[name] = std::move(latest);
+  }
+
+  // Every file whose latest text is not the live one: edits made since the
+  // last good state, including ones that did not compile then.
+  std::set<std::string> stale;
+  for (const auto& [name, latest] : disk_) {
+    if (latest.error) std::rethrow_exception(latest.error);
+    if (latest.text != live_.at(name)) stale.insert(name);
+  }
+  if (stale.empty()) return {};
+
+  // Build every affected variant before swapping any in: the cache never
+  // mixes old and new texts, and a failure leaves it untouched.
+  std::vector<std::pair<Entry*, std::unique_ptr<Program>>> rebuilt;
+  auto text_of = [&](const std::string& name) -> const std::string& {
+    return stale.contains(name) ? disk_.at(name).text : live_.at(name);
+  };
+  for (auto& [key, entry] : programs_) {
+    if (!stale.contains(entry.vertex) && !stale.contains(entry.fragment)) continue;
+    rebuilt.emplace_back(&entry, std::make_unique<Program>(ShaderSource{entry.vertex, text_of(entry.vertex)},
+                                                           ShaderSource{entry.fragment, text_of(entry.fragment)},
+                                                           entry.defines));
+  }
+
+  Reload reload;
+  for (auto& [entry, program] : rebuilt) entry->program = std::move(program);
+  for (const auto& name : stale) {
+    live_[name] = disk_.at(name).text;
+    reload.files.push_back(name);
+  }
+  reload.programs = rebuilt.size();
+  return reload;
+}
+
+void ProgramCache::clear() {
+  programs_.clear();
+  live_.clear();
+  disk_.clear();
 }
 
 }  // namespace toond::gpu

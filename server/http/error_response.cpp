@@ -6,6 +6,7 @@
 
 #include "gpu/gpu_error.h"
 #include "gpu/shader_compile_error.h"
+#include "gpu/shader_log.h"
 #include "render/render_service.h"
 #include "request_error.h"
 #include "scene/import_error.h"
@@ -32,7 +33,16 @@ void write_exception(httplib::Response& res, std::exception_ptr ep) {
     write_error(res, 503, "busy", std::string(e.what()) + "; retry shortly");
   } catch (const gpu::ShaderCompileError& e) {
     std::cerr << "toond: " << e.what() << "\n";
-    write_error(res, 500, "shader_error", e.log(), e.file());
+    // "toon.frag:12: syntax error, …" up front, the driver's whole log beside
+    // it, and the line (of the file: with_defines keeps numbering) when known.
+    const gpu::ShaderLogError first = gpu::first_shader_error(e.log());
+    std::string message = e.file();
+    if (first.line) message += ":" + std::to_string(*first.line);
+    message += ": " + (first.text.empty() ? std::string("does not compile") : first.text);
+    nlohmann::json error = {{"code", "shader_error"}, {"message", message}, {"path", e.file()}, {"log", e.log()}};
+    if (first.line) error["line"] = *first.line;
+    res.status = 500;
+    res.set_content(nlohmann::json{{"error", error}}.dump(), "application/json");
   } catch (const gpu::GpuError& e) {
     std::cerr << "toond: GPU error: " << e.what() << "\n";
     write_error(res, 500, "gpu_error", e.what());

@@ -8,19 +8,31 @@ namespace toond::render {
 namespace {
 
 // Attribute locations shared with shaders/*.vert.
-enum Attribute : GLuint { kPosition = 0, kNormal = 1, kTexcoord = 2, kOutlineNormal = 3 };
+enum Attribute : GLuint {
+  kPosition = 0,
+  kNormal = 1,
+  kTexcoord = 2,
+  kOutlineNormal = 3,
+  kTangent = 4,
+  kColor = 5,
+};
 
 struct Vertex {
   float position[3];
   float normal[3];
   float texcoord[2];
   float outline_normal[3];
+  float tangent[4];  // xyz, w = bitangent handedness
+  float color[3];    // sRGB-encoded vertex colour; white without one
 };
 
 gpu::Texture upload_texture(const scene::Texture& tex, std::size_t& bytes) {
   gpu::Texture t = gpu::Texture::create(GL_TEXTURE_2D);
   const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(tex.width, tex.height))));
-  glTextureStorage2D(t.id(), levels, GL_SRGB8_ALPHA8, tex.width, tex.height);
+  // Colour maps decode from sRGB when sampled; normal maps hold vectors and
+  // must come back exactly as stored.
+  const GLenum format = tex.color_space == scene::ColorSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+  glTextureStorage2D(t.id(), levels, format, tex.width, tex.height);
   // Images are stored top row first; OBJ texture coordinates put v = 0 at
   // the bottom, which is GL's first row. Upload the rows reversed.
   const std::size_t row = static_cast<std::size_t>(tex.width) * 4;
@@ -53,7 +65,12 @@ GpuModel::GpuModel(const scene::Model& model)
     const glm::vec2 uv = i < mesh.texcoords.size() ? mesh.texcoords[i] : glm::vec2(0.0f);
     std::memcpy(v.texcoord, &uv, sizeof v.texcoord);
     std::memcpy(v.outline_normal, &mesh.outline_normals[i], sizeof v.outline_normal);
+    const glm::vec4 t = i < mesh.tangents.size() ? mesh.tangents[i] : glm::vec4(1, 0, 0, 1);
+    std::memcpy(v.tangent, &t, sizeof v.tangent);
+    const glm::vec3 c = i < mesh.colors.size() ? mesh.colors[i] : glm::vec3(1.0f);
+    std::memcpy(v.color, &c, sizeof v.color);
   }
+  has_vertex_colors_ = !mesh.colors.empty();
   index_count_ = mesh.indices.size();
 
   vertices_ = gpu::Buffer::create();
@@ -76,10 +93,12 @@ GpuModel::GpuModel(const scene::Model& model)
   attribute(kNormal, 3, offsetof(Vertex, normal));
   attribute(kTexcoord, 2, offsetof(Vertex, texcoord));
   attribute(kOutlineNormal, 3, offsetof(Vertex, outline_normal));
+  attribute(kTangent, 4, offsetof(Vertex, tangent));
+  attribute(kColor, 3, offsetof(Vertex, color));
 
   for (const scene::Texture& tex : model.textures) textures_.push_back(upload_texture(tex, gpu_bytes_));
   for (const scene::Material& m : model.materials) {
-    materials_.push_back({m.diffuse, m.diffuse_texture});
+    materials_.push_back({m.diffuse, m.diffuse_texture, m.normal_texture});
   }
 }
 

@@ -11,7 +11,8 @@ namespace toond::render {
 
 struct GpuMaterial {
   glm::vec3 diffuse{0.8f};
-  int texture = -1;  // index into GpuModel::textures()
+  int texture = -1;         // index into GpuModel::textures()
+  int normal_texture = -1;  // tangent-space normal map, linear
 };
 
 class GpuModel {
@@ -27,6 +28,12 @@ class GpuModel {
   const std::vector<GpuMaterial>& materials() const { return materials_; }
   GLuint texture(int index) const { return textures_[static_cast<std::size_t>(index)].id(); }
   bool has_textures() const { return !textures_.empty(); }
+  bool has_vertex_colors() const { return has_vertex_colors_; }
+  bool has_normal_maps() const {
+    for (const GpuMaterial& m : materials_)
+      if (m.normal_texture >= 0) return true;
+    return false;
+  }
   const scene::Bounds& bounds() const { return bounds_; }
   // The model-space point the vertex positions are relative to.
   const glm::dvec3& origin() const { return origin_; }
@@ -42,6 +49,7 @@ class GpuModel {
   scene::Bounds bounds_;
   glm::dvec3 origin_{0.0};
   std::size_t index_count_ = 0;
+  bool has_vertex_colors_ = false;
   std::size_t gpu_bytes_ = 0;
 };
 

@@ -71,6 +71,9 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   // A white base ignores the material, so its textures are never read.
   plan.sample_textures = model.has_textures && params.base == BaseColor::Material;
   if (params.base == BaseColor::White) plan.main_defines.push_back("BASE_WHITE");
+  if (params.base == BaseColor::Material && model.has_vertex_colors) plan.main_defines.push_back("VERTEX_COLOR");
+  // Normal maps only bend the lighting: unlit colour never reads them.
+  plan.use_normal_maps = model.has_normal_maps && params.mode != ShadingMode::Flat;
 
   // Lighting effects change nothing on unlit (flat) colour or without lights.
   const bool lit = params.mode != ShadingMode::Flat && !params.lights.empty();

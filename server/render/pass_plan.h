@@ -24,6 +24,8 @@ const char* pass_name(Pass pass);
 // What the plan needs to know about a model.
 struct ModelTraits {
   bool has_textures = false;
+  bool has_normal_maps = false;
+  bool has_vertex_colors = false;
 };
 
 struct PassPlan {
@@ -33,6 +35,7 @@ struct PassPlan {
   // #defines of the hull outline programs (where its colour comes from).
   std::vector<std::string> outline_defines;
   bool sample_textures = false;
+  bool use_normal_maps = false;  // per material: NORMAL_MAP where it has one
   int samples = 1;
   int supersample = 1;
   int shadow_light = -1;  // index into RenderParams::lights, -1: no shadows

@@ -1,10 +1,12 @@
 #include "render/render_service.h"
 
+#include <iostream>
 #include <list>
 #include <unordered_map>
 
 #include "gpu/gpu_error.h"
 #include "gpu/program_cache.h"
+#include "gpu/shader_source.h"
 #include "render/gpu_model.h"
 #include "toond_shader_files.h"
 
@@ -15,6 +17,11 @@ std::string embedded_shader(const std::string& name) {
   const std::string_view text = toond::shader_files::find(name);
   if (text.empty()) throw gpu::GpuError("no embedded shader named " + name);
   return std::string(text);
+}
+
+std::unique_ptr<gpu::ShaderSources> shader_sources(const std::string& shader_dir) {
+  if (shader_dir.empty()) return std::make_unique<gpu::FixedShaderSources>(embedded_shader);
+  return std::make_unique<gpu::ShaderDirectory>(shader_dir);
 }
 
 // Most recently used models stay on the GPU; the least recently used one is
@@ -106,7 +113,9 @@ std::size_t RenderService::queue_depth() const {
 
 void RenderService::run(std::promise<void> started) {
   std::optional<gpu::EglContext> context;
+  std::unique_ptr<gpu::ShaderSources> sources;
   try {
+    sources = shader_sources(options_.shader_dir);
     context.emplace(gpu::EglContext::Options{options_.gpu_index});
     gl_info_ = context->info();
   } catch (...) {
@@ -114,7 +123,7 @@ void RenderService::run(std::promise<void> started) {
     return;
   }
   {
-    gpu::ProgramCache programs(embedded_shader);
+    gpu::ProgramCache programs(std::move(sources));
     GpuModelCache models(options_.gpu_model_capacity);
     Renderer renderer(programs);
     started.set_value();
@@ -134,6 +143,14 @@ void RenderService::run(std::promise<void> started) {
         continue;
       }
       try {
+        // With --shader-dir: pick up edited shader files (a stat per file
+        // when nothing changed; nothing at all for the embedded shaders).
+        const gpu::ProgramCache::Reload reload = programs.refresh();
+        if (!reload.files.empty()) {
+          std::cerr << "toond: reloaded";
+          for (const auto& f : reload.files) std::cerr << " " << f;
+          std::cerr << " (" << reload.programs << " program" << (reload.programs == 1 ? "" : "s") << " rebuilt)\n";
+        }
         const GpuModel& gpu_model = models.get(task.job->model_key, *task.job->model);
         task.promise.set_value(renderer.render(gpu_model, task.job->params));
       } catch (...) {

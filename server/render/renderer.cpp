@@ -83,7 +83,8 @@ gpu::RenderTarget& Renderer::target_for(int width, int height, int samples) {
 }
 
 RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params) {
-  const PassPlan plan = plan_passes(params, {model.has_textures()});
+  const PassPlan plan =
+      plan_passes(params, {model.has_textures(), model.has_normal_maps(), model.has_vertex_colors()});
   RenderOutput out;
   out.plan = plan.describe();
   PassTimer timer(out.timings);
@@ -218,10 +219,16 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
       std::vector<std::string> defines = plan.main_defines;
       const bool textured = plan.sample_textures && material.texture >= 0;
       if (textured) defines.push_back("HAS_TEXTURE");
+      const bool normal_mapped = plan.use_normal_maps && material.normal_texture >= 0;
+      if (normal_mapped) defines.push_back("NORMAL_MAP");
       gpu::Program& program = programs_.get("toon.vert", "toon.frag", defines);
       program.use();
       set_main_uniforms(program);
       program.set("u_base_color", material.diffuse);
+      if (normal_mapped) {
+        glBindTextureUnit(2, model.texture(material.normal_texture));
+        program.set("u_normal_map", 2);
+      }
       if (textured) {
         glBindTextureUnit(0, model.texture(material.texture));
         program.set("u_diffuse_map", 0);

@@ -142,6 +142,53 @@ TEST_F(Render, MultiMaterialModelShowsEveryMaterialsTexture) {
   }
 }
 
+// The windmill's map_Bump files are tangent-space normal maps: with them the
+// thresholded lighting of the same geometry changes over much of the model.
+TEST_F(Render, NormalMapsBendTheBands) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  auto client = daemon().client();
+  const auto folder = shared_models_dir() / "windmill";
+  auto render_with = [&](const std::vector<std::string>& files) {
+    auto res = upload_files(client, folder, files);
+    EXPECT_TRUE(res && (res->status == 200 || res->status == 201));
+    const json info = json::parse(res->body);
+    const std::string id = info["id"];
+    auto rendered = post_json(client, "/render", {{"model", id}, {"msaa", 1}, {"outline", {{"enabled", false}}},
+                                                  {"specular", {{"enabled", false}}}, {"shading", {{"base", "white"}}}});
+    EXPECT_TRUE(rendered && rendered->status == 200);
+    return image::decode_png(rendered->body);
+  };
+  const std::vector<std::string> base = {"windmill.obj", "windmill.mtl"};
+  std::vector<std::string> with_maps = base;
+  with_maps.insert(with_maps.end(), {"windmill_001_base_NOR.jpg", "windmill_001_lopatky_NOR.jpg"});
+  const auto flat = render_with(base);
+  const auto bumpy = render_with(with_maps);
+  // Same geometry, same light: only the normal maps can change the shading.
+  const auto mask = foreground_mask(flat);
+  std::size_t model = 0, changed = 0;
+  for (int y = 0; y < flat.height; ++y)
+    for (int x = 0; x < flat.width; ++x) {
+      if (!mask[static_cast<std::size_t>(y) * flat.width + x]) continue;
+      ++model;
+      changed += rgb_at(flat, x, y) != rgb_at(bumpy, x, y) ? 1 : 0;
+    }
+  EXPECT_GT(static_cast<double>(changed) / static_cast<double>(model), 0.05) << changed << " of " << model;
+}
+
+// OBJ vertex colours (v x y z r g b) are the base colour: in flat mode each
+// face shows exactly the colour its vertices give.
+TEST_F(Render, VertexColoursAreTheBaseColour) {
+  auto client = daemon().client();
+  const std::string quad =
+      "v -1 -1 0 1 0 0\nv 1 -1 0 1 0 0\nv 1 1 0 1 0 0\nv -1 1 0 1 0 0\n"
+      "v -1 -1 -1 0 0 1\nv 1 -1 -1 0 0 1\nv 1 1 -1 0 0 1\nv -1 1 -1 0 0 1\n"
+      "f 1 2 3 4\nf 5 6 7 8\n";
+  const std::string id = upload_obj_text(client, quad, "coloured.obj");
+  const auto img = render_ok(client, {{"model", id}, {"msaa", 1}, {"shading", {{"mode", "flat"}}},
+                                      {"camera", {{"yaw", 0}, {"pitch", 0}}}, {"outline", {{"enabled", false}}}});
+  EXPECT_EQ(rgb_at(img, img.width / 2, img.height / 2), (Rgb{255, 0, 0})) << "the front quad is red";
+}
+
 // The outline is the difference between a render with and without it: it
 // must lie outside the model, be dark, and close around the silhouette.
 void expect_closed_dark_ring(httplib::Client& client, json params, double width) {
