@@ -6,7 +6,9 @@
 // problem, e.g. three.js issue 19096). The offset is mitred at corners, so
 // every face plane moves out by the full width.
 //
-// The distance is `u_width_px` pixels at the vertex's own depth:
+// The distance is `u_width` pixels at the vertex's own depth (or, with
+// u_world_units, `u_width` model units, thinning with distance like a real
+// rim):
 // `u_world_per_px_at_w1` is the size of one pixel at clip w = 1, and a pixel
 // at depth w is w times that (w is 1 everywhere for orthographic views). A
 // silhouette point's normal lies in the image plane, so there the ring is
@@ -19,11 +21,13 @@ out vec2 v_texcoord;
 
 uniform mat4 u_view_projection;
 uniform float u_world_per_px_at_w1;
-uniform float u_width_px;
+uniform float u_width;        // pixels, or model units with u_world_units
+uniform int u_world_units;
 
 void main() {
   v_texcoord = a_texcoord;
   float w = (u_view_projection * vec4(a_position, 1.0)).w;
-  vec3 moved = a_position + a_outline_offset * (u_width_px * u_world_per_px_at_w1 * abs(w));
+  float distance = u_world_units != 0 ? u_width : u_width * u_world_per_px_at_w1 * abs(w);
+  vec3 moved = a_position + a_outline_offset * distance;
   gl_Position = u_view_projection * vec4(moved, 1.0);
 }

@@ -233,9 +233,14 @@ void ParamSchema::set_from_text(nlohmann::json& params, std::string_view dotted,
     if (raw.empty() || end != raw.c_str() + raw.size() || errno == ERANGE) fail("expected a number");
     value = v;
   } else {
-    // Arrays and objects are given as JSON: --set background=[1,1,1].
+    // Arrays and objects are given as JSON: --set background=[1,1,1]. A
+    // field that may be one of several types (outline.method: a name or a
+    // list of names) takes JSON when the text is JSON, else the plain text.
     value = json::parse(raw, nullptr, false);
-    if (value.is_discarded()) fail("expected JSON for a " + (type.empty() ? "value" : type));
+    if (value.is_discarded()) {
+      if (!type.empty()) fail("expected JSON for a " + type);
+      value = raw;
+    }
   }
 
   json* slot = &params;

@@ -2,6 +2,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gpu/gpu_error.h"
 #include "gpu/shader_compile_error.h"
 
 namespace toond::gpu {
@@ -26,6 +27,16 @@ Shader compile_stage(GLenum stage, const ShaderSource& source, const std::vector
   return shader;
 }
 
+GLenum stage_of(const std::string& name) {
+  auto ends_with = [&](std::string_view suffix) {
+    return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+  };
+  if (ends_with(".vert")) return GL_VERTEX_SHADER;
+  if (ends_with(".geom")) return GL_GEOMETRY_SHADER;
+  if (ends_with(".frag")) return GL_FRAGMENT_SHADER;
+  throw GpuError("shader file " + name + " has no stage extension (.vert, .geom, .frag)");
+}
+
 }  // namespace
 
 std::string with_defines(std::string_view source, const std::vector<std::string>& defines) {
@@ -43,15 +54,20 @@ std::string with_defines(std::string_view source, const std::vector<std::string>
 }
 
 Program::Program(const ShaderSource& vertex, const ShaderSource& fragment,
-                 const std::vector<std::string>& defines) {
-  Shader vs = compile_stage(GL_VERTEX_SHADER, vertex, defines);
-  Shader fs = compile_stage(GL_FRAGMENT_SHADER, fragment, defines);
+                 const std::vector<std::string>& defines)
+    : Program(std::vector<ShaderSource>{vertex, fragment}, defines) {}
+
+Program::Program(const std::vector<ShaderSource>& stages, const std::vector<std::string>& defines) {
+  std::vector<Shader> shaders;
+  std::string names;
+  for (const ShaderSource& source : stages) {
+    shaders.push_back(compile_stage(stage_of(source.name), source, defines));
+    names += (names.empty() ? "" : " + ") + source.name;
+  }
   program_ = ProgramObject::create();
-  glAttachShader(program_.id(), vs.id());
-  glAttachShader(program_.id(), fs.id());
+  for (const Shader& sh : shaders) glAttachShader(program_.id(), sh.id());
   glLinkProgram(program_.id());
-  glDetachShader(program_.id(), vs.id());
-  glDetachShader(program_.id(), fs.id());
+  for (const Shader& sh : shaders) glDetachShader(program_.id(), sh.id());
   GLint ok = GL_FALSE;
   glGetProgramiv(program_.id(), GL_LINK_STATUS, &ok);
   if (!ok) {
@@ -59,7 +75,7 @@ Program::Program(const ShaderSource& vertex, const ShaderSource& fragment,
     glGetProgramiv(program_.id(), GL_INFO_LOG_LENGTH, &length);
     std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
     glGetProgramInfoLog(program_.id(), static_cast<GLsizei>(log.size()), nullptr, log.data());
-    throw ShaderCompileError(vertex.name + " + " + fragment.name, log);
+    throw ShaderCompileError(names, log);
   }
 }
 

@@ -25,6 +25,9 @@ class Program {
   // driver's log when a stage does not compile or the program does not link.
   Program(const ShaderSource& vertex, const ShaderSource& fragment,
           const std::vector<std::string>& defines);
+  // Any set of stages; each stage is named by its file's extension (.vert,
+  // .geom, .frag).
+  Program(const std::vector<ShaderSource>& stages, const std::vector<std::string>& defines);
 
   GLuint id() const { return program_.id(); }
   void use() const { glUseProgram(program_.id()); }

@@ -22,14 +22,20 @@ const std::string& ProgramCache::text(const std::string& name) {
 
 Program& ProgramCache::get(const std::string& vertex, const std::string& fragment,
                            std::vector<std::string> defines) {
+  return get(std::vector<std::string>{vertex, fragment}, std::move(defines));
+}
+
+Program& ProgramCache::get(const std::vector<std::string>& stages, std::vector<std::string> defines) {
   std::sort(defines.begin(), defines.end());
-  std::string key = vertex + "|" + fragment;
+  std::string key;
+  for (const auto& file : stages) key += file + "|";
   for (const auto& d : defines) key += "|" + d;
   auto it = programs_.find(key);
   if (it != programs_.end()) return *it->second.program;
-  auto program = std::make_unique<Program>(ShaderSource{vertex, text(vertex)},
-                                           ShaderSource{fragment, text(fragment)}, defines);
-  Entry entry{vertex, fragment, std::move(defines), std::move(program)};
+  std::vector<ShaderSource> sources;
+  for (const auto& file : stages) sources.push_back({file, text(file)});
+  auto program = std::make_unique<Program>(sources, defines);
+  Entry entry{stages, std::move(defines), std::move(program)};
   return *programs_.emplace(key, std::move(entry)).first->second.program;
 }
 
@@ -66,10 +72,12 @@ ProgramCache::Reload ProgramCache::refresh() {
     return stale.contains(name) ? disk_.at(name).text : live_.at(name);
   };
   for (auto& [key, entry] : programs_) {
-    if (!stale.contains(entry.vertex) && !stale.contains(entry.fragment)) continue;
-    rebuilt.emplace_back(&entry, std::make_unique<Program>(ShaderSource{entry.vertex, text_of(entry.vertex)},
-                                                           ShaderSource{entry.fragment, text_of(entry.fragment)},
-                                                           entry.defines));
+    const bool affected = std::any_of(entry.stages.begin(), entry.stages.end(),
+                                      [&](const std::string& file) { return stale.contains(file); });
+    if (!affected) continue;
+    std::vector<ShaderSource> sources;
+    for (const auto& file : entry.stages) sources.push_back({file, text_of(file)});
+    rebuilt.emplace_back(&entry, std::make_unique<Program>(sources, entry.defines));
   }
 
   Reload reload;

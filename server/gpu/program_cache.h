@@ -30,6 +30,8 @@ class ProgramCache {
   // Throws ShaderCompileError (a GpuError) when the variant does not build.
   Program& get(const std::string& vertex, const std::string& fragment,
                std::vector<std::string> defines);
+  // The same for any set of stage files (e.g. with a geometry shader).
+  Program& get(const std::vector<std::string>& stages, std::vector<std::string> defines);
 
   struct Reload {
     std::vector<std::string> files;  // the edited files now in use
@@ -49,8 +51,7 @@ class ProgramCache {
 
  private:
   struct Entry {
-    std::string vertex;
-    std::string fragment;
+    std::vector<std::string> stages;  // file names
     std::vector<std::string> defines;
     std::unique_ptr<Program> program;
   };

@@ -10,6 +10,9 @@ const char* pass_name(Pass pass) {
     case Pass::Main: return "main";
     case Pass::Floor: return "floor";
     case Pass::HullOutline: return "hull_outline";
+    case Pass::Wireframe: return "wireframe";
+    case Pass::EdgePrepass: return "edge_prepass";
+    case Pass::Edges: return "edges";
     case Pass::Resolve: return "resolve";
     case Pass::Readback: return "readback";
     case Pass::Downsample: return "downsample";
@@ -98,8 +101,13 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
     plan.main_defines.push_back(params.contour.style == ContourStyle::Even ? "CONTOUR_EVEN" : "CONTOUR_FRESNEL");
   }
 
-  if (params.outline.enabled && params.outline.width_px > 0.0f) {
-    plan.passes.push_back(Pass::HullOutline);
+  if (params.outline.any()) {
+    if (params.outline.hull) plan.passes.push_back(Pass::HullOutline);
+    if (params.outline.wireframe) plan.passes.push_back(Pass::Wireframe);
+    if (params.outline.edges) {
+      plan.passes.push_back(Pass::EdgePrepass);
+      plan.passes.push_back(Pass::Edges);
+    }
     switch (params.outline.color_mode) {
       case OutlineColorMode::Fixed: break;
       case OutlineColorMode::Material: plan.outline_defines.push_back("OUTLINE_MATERIAL"); break;

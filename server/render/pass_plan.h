@@ -15,6 +15,9 @@ enum class Pass {
   Main,         // cel/phong/flat shading of the model, marks the stencil
   Floor,        // the ground plane (no stencil mark: it gets no outline)
   HullOutline,  // inverted hull outside the stencil mark
+  Wireframe,    // back-face edges widened into lines
+  EdgePrepass,  // normals and eye distances for the edge pass
+  Edges,        // screen-space depth/normal discontinuities
   Resolve,      // multisample resolve
   Readback,     // pixels back to the CPU
   Downsample,   // supersampled image averaged to the output size

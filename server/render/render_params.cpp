@@ -122,7 +122,18 @@ RenderParams RenderParams::from_json(const json& j) {
 
   const json& outline = j.at("outline");
   p.outline.enabled = outline.at("enabled").get<bool>();
-  p.outline.width_px = outline.at("width").get<float>();
+  p.outline.width = outline.at("width").get<float>();
+  p.outline.units = outline.at("units") == "world" ? OutlineUnits::World : OutlineUnits::Pixels;
+  const json& method = outline.at("method");
+  const json methods = method.is_array() ? method : json::array({method});
+  p.outline.hull = p.outline.wireframe = p.outline.edges = false;
+  for (const json& m : methods) {
+    p.outline.hull |= m == "hull";
+    p.outline.wireframe |= m == "wireframe";
+    p.outline.edges |= m == "edges";
+  }
+  p.outline.crease_angle_deg = outline.at("crease_angle").get<float>();
+  p.outline.depth_threshold = outline.at("depth_threshold").get<float>();
   p.outline.color = srgb_to_linear(vec3_of(outline.at("color")));
   const std::string color_mode = outline.at("color_mode");
   p.outline.color_mode = color_mode == "texture"    ? OutlineColorMode::Texture

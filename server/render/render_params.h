@@ -87,12 +87,21 @@ struct FloorParams {
 
 enum class OutlineColorMode { Fixed, Texture, Material };
 
+enum class OutlineUnits { Pixels, World };
+
 struct OutlineParams {
   bool enabled = true;
-  float width_px = 2;
+  bool hull = true;
+  bool wireframe = false;
+  bool edges = false;
+  float width = 2;  // in `units`
+  OutlineUnits units = OutlineUnits::Pixels;
   glm::vec3 color{0.0f};  // linear
   OutlineColorMode color_mode = OutlineColorMode::Fixed;
   float darken = 0.6f;
+  float crease_angle_deg = 40;
+  float depth_threshold = 0.02f;  // fraction of the model's size
+  bool any() const { return enabled && width > 0.0f && (hull || wireframe || edges); }
 };
 
 struct TwoToneParams {

@@ -55,6 +55,14 @@ scene::Model make_floor(const scene::Bounds& bounds, float size) {
 
 }  // namespace
 
+gpu::NormalDepthTarget& Renderer::normal_depth_for(int width, int height) {
+  if (!normal_depth_ || !normal_depth_->matches(width, height)) {
+    normal_depth_.reset();
+    normal_depth_.emplace(width, height);
+  }
+  return *normal_depth_;
+}
+
 gpu::ShadowMap& Renderer::shadow_map_for(int size) {
   if (!shadow_map_ || shadow_map_->size() != size) {
     shadow_map_.reset();
@@ -257,6 +265,28 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
     }
   }
 
+  // Hull and wireframe lines take their colour the same way.
+  auto set_outline_colour_and_draw = [&](gpu::Program& program) {
+    program.set("u_outline_color", params.outline.color);
+    program.set("u_darken", params.outline.darken);
+    if (plan.outline_defines.empty()) {
+      model.draw_all();
+      return;
+    }
+    // The colour comes from each material, so draw material by material.
+    for (const scene::Submesh& sub : model.submeshes()) {
+      const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
+      program.set("u_base_color", material.diffuse);
+      const bool textured = material.texture >= 0;
+      program.set("u_has_texture", textured ? 1 : 0);
+      if (textured) {
+        glBindTextureUnit(0, model.texture(material.texture));
+        program.set("u_diffuse_map", 0);
+      }
+      model.draw(sub);
+    }
+  };
+
   if (plan.has(Pass::HullOutline)) {
     glStencilFunc(GL_NOTEQUAL, 1, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
@@ -267,27 +297,64 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
     // spans `height` pixels over 2 units.
     const double world_per_px = 2.0 / (camera.projection[1][1] * draw_height);
     program.set("u_world_per_px_at_w1", static_cast<float>(world_per_px));
-    program.set("u_width_px", params.outline.width_px * px);
-    program.set("u_outline_color", params.outline.color);
-    program.set("u_darken", params.outline.darken);
-    if (plan.outline_defines.empty()) {
-      model.draw_all();
-    } else {
-      // The colour comes from each material, so draw material by material.
-      for (const scene::Submesh& sub : model.submeshes()) {
-        const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
-        program.set("u_base_color", material.diffuse);
-        const bool textured = material.texture >= 0;
-        program.set("u_has_texture", textured ? 1 : 0);
-        if (textured) {
-          glBindTextureUnit(0, model.texture(material.texture));
-          program.set("u_diffuse_map", 0);
-        }
-        model.draw(sub);
-      }
-    }
+    const bool world = params.outline.units == OutlineUnits::World;
+    program.set("u_world_units", world ? 1 : 0);
+    program.set("u_width", world ? params.outline.width : params.outline.width * px);
+    set_outline_colour_and_draw(program);
     check_gl("hull outline pass");
     timer.mark(Pass::HullOutline);
+  }
+
+  if (plan.has(Pass::Wireframe)) {
+    // After the model: its front faces hide the back-face lines except where
+    // they show past the silhouette or over folds. Line pixels of back faces
+    // lie behind the front faces they border, so no stencil is needed.
+    glDisable(GL_STENCIL_TEST);
+    gpu::Program& program = programs_.get(std::vector<std::string>{"wire.vert", "wire.geom", "hull.frag"},
+                                          plan.outline_defines);
+    program.use();
+    program.set("u_view_projection", view_projection);
+    program.set("u_viewport", glm::vec2(static_cast<float>(draw_width), static_cast<float>(draw_height)));
+    // Half of each line lies inside the silhouette, under the front faces:
+    // lines twice as wide leave `width` pixels showing.
+    program.set("u_line_px", 2.0f * params.outline.width * px);
+    set_outline_colour_and_draw(program);
+    check_gl("wireframe pass");
+    timer.mark(Pass::Wireframe);
+  }
+
+  if (plan.has(Pass::Edges)) {
+    gpu::NormalDepthTarget& normals = normal_depth_for(draw_width, draw_height);
+    normals.bind_for_drawing();
+    glDisable(GL_STENCIL_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    gpu::Program& prepass = programs_.get("toon.vert", "normal_depth.frag", {});
+    prepass.use();
+    prepass.set("u_view_projection", view_projection);
+    prepass.set("u_eye", glm::vec3(camera.eye));
+    prepass.set("u_view_dir", glm::vec3(glm::normalize(camera.target - camera.eye)));
+    prepass.set("u_orthographic", params.camera.projection == Projection::Orthographic ? 1 : 0);
+    model.bind();
+    model.draw_all();
+    check_gl("edge prepass");
+    timer.mark(Pass::EdgePrepass);
+
+    target.bind_for_drawing();
+    glDisable(GL_DEPTH_TEST);
+    gpu::Program& edges = programs_.get("fullscreen.vert", "edges.frag", {});
+    edges.use();
+    glBindTextureUnit(0, normals.texture());
+    edges.set("u_normal_depth", 0);
+    edges.set("u_reach", std::max(0.5f * params.outline.width * px, 1.0f));
+    edges.set("u_depth_threshold", params.outline.depth_threshold * 2.0f * model.bounds().radius());
+    edges.set("u_cos_crease", static_cast<float>(std::cos(glm::radians(params.outline.crease_angle_deg))));
+    edges.set("u_edge_color", params.outline.color);
+    glBindVertexArray(fullscreen_vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
+    check_gl("edge pass");
+    timer.mark(Pass::Edges);
   }
 
   glBindVertexArray(0);

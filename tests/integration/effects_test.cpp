@@ -409,6 +409,81 @@ TEST_F(FloorAndShadows, FloorGetsNoOutline) {
   EXPECT_EQ(far_from_sphere, 0u);
 }
 
+// Back-face wireframe lines show past the silhouette `width` pixels wide.
+TEST_F(Effects, WireframeOutlineHasTheRequestedWidth) {
+  auto client = daemon().client();
+  json params = base();
+  const auto bare = render_ok(client, params);
+  for (double width : {2.0, 5.0}) {
+    params["outline"] = {{"enabled", true}, {"method", "wireframe"}, {"width", width}, {"color", {0, 0, 0}}};
+    EXPECT_NEAR(outline_width_px(bare, render_ok(client, params)), width, 1.0) << "width " << width;
+  }
+}
+
+// The edge pass finds creases the hull cannot: a cube's inner edges.
+TEST_F(Effects, EdgePassDrawsCreasesInsideTheSilhouette) {
+  auto client = daemon().client();
+  const std::string cube = upload_obj_text(client, cube_obj(), "cube.obj");
+  json params = base();
+  params["model"] = cube;
+  params["camera"] = {{"yaw", 30}, {"pitch", 25}};
+  const auto bare = render_ok(client, params);
+  const auto inside = foreground_mask(bare);
+  auto dark_inside = [&](const json& outline) {
+    params["outline"] = outline;
+    const auto img = render_ok(client, params);
+    std::size_t n = 0;
+    for (int y = 0; y < 256; ++y)
+      for (int x = 0; x < 256; ++x)
+        if (inside[static_cast<std::size_t>(y) * 256 + x] && rgb_at(img, x, y) != rgb_at(bare, x, y)) {
+          EXPECT_EQ(rgb_at(img, x, y), (Rgb{0, 0, 0}));
+          ++n;
+        }
+    return n;
+  };
+  EXPECT_EQ(dark_inside({{"method", "hull"}, {"width", 3}, {"color", {0, 0, 0}}}), 0u);
+  // Three inner edges of about 100 pixels each, a few pixels wide.
+  const std::size_t creased = dark_inside({{"method", "edges"}, {"width", 3}, {"color", {0, 0, 0}}});
+  EXPECT_GT(creased, 300u);
+  // A crease angle above the cube's 90° finds no crease: what is left inside
+  // is only the silhouette line's inner half.
+  const std::size_t uncreased =
+      dark_inside({{"method", "edges"}, {"width", 3}, {"color", {0, 0, 0}}, {"crease_angle", 120}});
+  EXPECT_LT(uncreased * 2, creased);
+}
+
+TEST_F(Effects, OutlineMethodsCombine) {
+  auto client = daemon().client();
+  json params = base();
+  params["outline"] = {{"enabled", true}, {"method", {"hull", "wireframe", "edges"}}, {"width", 2}};
+  auto res = post_json(client, "/render", params);
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_EQ(res->get_header_value("X-Toond-Passes"), "main,hull_outline,wireframe,edge_prepass,edges,readback");
+  params["outline"]["method"] = {"hull", "hull"};
+  res = post_json(client, "/render", params);
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 400) << "a method named twice";
+  EXPECT_EQ(error_of(res)["path"], "/outline/method");
+}
+
+// In world units the hull is a fixed thickness in model space: twice as far
+// away, half as many pixels.
+TEST_F(Effects, OutlineInWorldUnitsThinsWithDistance) {
+  auto client = daemon().client();
+  auto width_at = [&](double distance) {
+    json params = base();
+    params["camera"]["distance"] = distance;
+    params["camera"]["fov"] = 30;
+    const auto bare = render_ok(client, params);
+    params["outline"] = {{"enabled", true}, {"units", "world"}, {"width", 0.08}};
+    return outline_width_px(bare, render_ok(client, params));
+  };
+  const double near = width_at(4.0), far = width_at(8.0);
+  EXPECT_GT(near, 4.0);
+  EXPECT_NEAR(near / far, 2.0, 0.4) << near << " px at 4, " << far << " px at 8";
+}
+
 TEST_F(Effects, EveryPresetLooksDifferent) {
   auto client = daemon().client();
   auto res = client.Get("/presets");

@@ -78,6 +78,20 @@ TEST(PassPlan, ShadowPassOnlyWithADirectionalLightThatCanCast) {
   EXPECT_FALSE(plan_passes(params(json::object()), {}).has(Pass::Shadow));
 }
 
+TEST(PassPlan, OutlineMethodsEachAddTheirPasses) {
+  auto passes = [](const json& method) {
+    return plan_passes(params({{"msaa", 1}, {"outline", {{"method", method}}}}), {}).describe();
+  };
+  EXPECT_EQ(passes("hull"), "main,hull_outline,readback");
+  EXPECT_EQ(passes("wireframe"), "main,wireframe,readback");
+  EXPECT_EQ(passes("edges"), "main,edge_prepass,edges,readback");
+  EXPECT_EQ(passes(json{"edges", "hull"}), "main,hull_outline,edge_prepass,edges,readback");
+  EXPECT_EQ(plan_passes(params({{"msaa", 1}, {"outline", {{"method", json{"wireframe", "edges"}}, {"width", 0}}}}), {})
+                .describe(),
+            "main,readback")
+      << "width 0 draws no outline by any method";
+}
+
 TEST(PassPlan, FloorIsItsOwnPassAfterTheModel) {
   const PassPlan plan = plan_passes(params({{"floor", {{"enabled", true}}}, {"msaa", 1}}), {});
   EXPECT_EQ(plan.describe(), "main,floor,hull_outline,readback");

@@ -1,0 +1,59 @@
+#version 430 core
+// Back-face wireframe lines of a chosen pixel width. Core profile has no wide
+// lines, so each edge of a back-facing triangle becomes a quad `u_line_px`
+// pixels across. Front faces drawn in the main pass hide the lines except
+// where back faces show past them: at the silhouette and at folds, which is
+// what makes it an outline. Culling happens here, before the quads exist,
+// since GL would cull the emitted quads, not the source triangle.
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 12) out;
+
+in vec2 g_texcoord[];
+out vec2 v_texcoord;
+
+uniform vec2 u_viewport;  // pixels
+uniform float u_line_px;
+
+vec2 to_screen(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * u_viewport; }
+
+void emit_edge(int a, int b) {
+  vec4 ca = gl_in[a].gl_Position;
+  vec4 cb = gl_in[b].gl_Position;
+  vec2 sa = to_screen(ca);
+  vec2 sb = to_screen(cb);
+  vec2 along = sb - sa;
+  float len = length(along);
+  if (len < 1e-6) return;
+  along /= len;
+  // Half the width to each side, and half a width past each end so that
+  // neighbouring edges join without notches.
+  vec2 side = vec2(-along.y, along.x) * (0.5 * u_line_px);
+  vec2 ext = along * (0.5 * u_line_px);
+  vec2 to_ndc = 2.0 / u_viewport;
+  gl_Position = vec4(ca.xy + (-side - ext) * to_ndc * ca.w, ca.zw);
+  v_texcoord = g_texcoord[a];
+  EmitVertex();
+  gl_Position = vec4(ca.xy + (side - ext) * to_ndc * ca.w, ca.zw);
+  v_texcoord = g_texcoord[a];
+  EmitVertex();
+  gl_Position = vec4(cb.xy + (-side + ext) * to_ndc * cb.w, cb.zw);
+  v_texcoord = g_texcoord[b];
+  EmitVertex();
+  gl_Position = vec4(cb.xy + (side + ext) * to_ndc * cb.w, cb.zw);
+  v_texcoord = g_texcoord[b];
+  EmitVertex();
+  EndPrimitive();
+}
+
+void main() {
+  // Triangles crossing the eye plane would project inside out; skip them.
+  if (gl_in[0].gl_Position.w <= 0.0 || gl_in[1].gl_Position.w <= 0.0 || gl_in[2].gl_Position.w <= 0.0) return;
+  vec2 p0 = to_screen(gl_in[0].gl_Position);
+  vec2 p1 = to_screen(gl_in[1].gl_Position);
+  vec2 p2 = to_screen(gl_in[2].gl_Position);
+  float area = (p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y);
+  if (area > 0.0) return;  // counter-clockwise on screen: a front face
+  emit_edge(0, 1);
+  emit_edge(1, 2);
+  emit_edge(2, 0);
+}
