@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/egl_context.h"
+#include "support/gl_context_test.h"
 #include "gpu/program.h"
 #include "gpu/render_target.h"
 #include "gpu/shader_compile_error.h"
@@ -18,18 +19,10 @@ TEST(WithDefines, SourceWithoutVersion) {
   EXPECT_EQ(with_defines("void main() {}\n", {"A"}), "#define A\n#line 1\nvoid main() {}\n");
 }
 
-class Gpu : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { context_ = new EglContext(EglContext::Options{}); }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  static inline EglContext* context_ = nullptr;
-};
+class Gpu : public test::GlContextTest {};
 
 TEST_F(Gpu, ContextIsCoreFourThreeOrNewer) {
-  const GlInfo& info = context_->info();
+  const GlInfo& info = context().info();
   EXPECT_FALSE(info.renderer.empty());
   EXPECT_TRUE(info.major > 4 || (info.major == 4 && info.minor >= 3)) << info.version;
   EXPECT_FALSE(info.platform.empty());
