@@ -1,5 +1,6 @@
 #include "cli_args.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdlib>
@@ -70,8 +71,9 @@ Verb verb_from_name(std::string_view name) {
   if (name == "health") return Verb::health;
   if (name == "upload") return Verb::upload;
   if (name == "render") return Verb::render;
+  if (name == "gallery") return Verb::gallery;
   throw UsageError("unknown command '" + std::string(name) +
-                   "' (commands: health, upload, render; see toon --help)");
+                   "' (commands: health, upload, render, gallery; see toon --help)");
 }
 
 std::string read_params_text(const std::string& file) {
@@ -95,6 +97,40 @@ std::string plain_json_error(const std::string& what) {
   return what;
 }
 
+// Which verbs take a verb-specific flag.
+bool flag_allowed(std::string_view flag, Verb verb) {
+  if (flag == "--quiet") return verb == Verb::upload;
+  if (flag == "-o") return verb == Verb::render || verb == Verb::gallery;
+  if (flag == "--models" || flag == "--size" || flag == "--all" || flag == "--only") {
+    return verb == Verb::gallery;
+  }
+  return verb == Verb::render;  // --model, --params, --set
+}
+
+int parse_size(const std::string& text) {
+  const bool digits = is_index(text) && text.size() <= 5;
+  const long value = digits ? std::strtol(text.c_str(), nullptr, 10) : 0;
+  if (!digits || value < 16 || value > 4096) {
+    throw UsageError("--size '" + text + "': expected a whole number of pixels from 16 to 4096");
+  }
+  return static_cast<int>(value);
+}
+
+std::vector<std::string> split_names(const std::string& text) {
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    std::string name = text.substr(start, comma - start);
+    if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos) {
+      throw UsageError("--only '" + text + "': expected model folder names separated by commas");
+    }
+    names.push_back(std::move(name));
+    start = comma + 1;
+  }
+  return names;
+}
+
 }  // namespace
 
 std::string_view verb_name(Verb verb) {
@@ -102,6 +138,7 @@ std::string_view verb_name(Verb verb) {
     case Verb::health: return "health";
     case Verb::upload: return "upload";
     case Verb::render: return "render";
+    case Verb::gallery: return "gallery";
     case Verb::none: break;
   }
   return "";
@@ -161,7 +198,7 @@ std::optional<std::string> server_from_environment() {
 Options parse_args(const std::vector<std::string>& args,
                    const std::optional<std::string>& env_server) {
   Options o;
-  std::optional<std::string> server, model, params, output;
+  std::optional<std::string> server, model, params, output, models_dir, size;
   std::vector<std::string> positionals;
   std::vector<std::string> seen_flags;  // verb-specific ones, to check against the verb later
   bool verb_seen = false;
@@ -219,6 +256,19 @@ Options parse_args(const std::vector<std::string>& args,
       if (value.empty()) throw UsageError("-o needs a file name (or - for standard output)");
       set_once(output, value, "-o");
       seen_flags.push_back("-o");
+    } else if (c.take("--models", value)) {
+      if (value.empty()) throw UsageError("--models needs a folder");
+      set_once(models_dir, value, "--models");
+      seen_flags.push_back("--models");
+    } else if (c.take("--size", value)) {
+      set_once(size, value, "--size");
+      seen_flags.push_back("--size");
+    } else if (a == "--all") {
+      o.all_models = true;
+      seen_flags.push_back("--all");
+    } else if (c.take("--only", value)) {
+      for (std::string& name : split_names(value)) o.only.push_back(std::move(name));
+      seen_flags.push_back("--only");
     } else {
       throw UsageError("unknown option '" + a + "' (see toon --help)");
     }
@@ -227,6 +277,8 @@ Options parse_args(const std::vector<std::string>& args,
   if (model) o.model_id = *model;
   if (params) o.params_file = *params;
   if (output) o.output = *output;
+  if (models_dir) o.models_dir = *models_dir;
+  if (size) o.size = parse_size(*size);
 
   // Help and version answer without a server, so a bad URL must not stop them.
   if (o.help || o.version) return o;
@@ -241,13 +293,13 @@ Options parse_args(const std::vector<std::string>& args,
   parse_server_url(o.server);
   while (o.server.size() > 1 && o.server.back() == '/') o.server.pop_back();
 
-  if (o.verb == Verb::none) throw UsageError("no command given (health, upload or render)");
+  if (o.verb == Verb::none) {
+    throw UsageError("no command given (health, upload, render or gallery)");
+  }
 
   const std::string verb(verb_name(o.verb));
   for (const std::string& flag : seen_flags) {
-    const bool allowed = (flag == "--quiet" && o.verb == Verb::upload) ||
-                         (flag != "--quiet" && o.verb == Verb::render);
-    if (!allowed)
+    if (!flag_allowed(flag, o.verb))
       throw UsageError(verb + " does not take " + flag + " (see toon " + verb + " --help)");
   }
 
@@ -275,6 +327,15 @@ Options parse_args(const std::vector<std::string>& args,
       if (o.output.empty()) {
         throw UsageError("render needs -o OUT.png (or -o - for standard output)");
       }
+      break;
+    case Verb::gallery:
+      if (!positionals.empty()) {
+        throw UsageError("gallery takes no arguments, got '" + positionals.front() +
+                         "' (the models come from --models DIR)");
+      }
+      if (o.output.empty()) throw UsageError("gallery needs -o OUTDIR, the folder to write");
+      if (o.output == "-") throw UsageError("gallery writes a folder; -o - is not possible");
+      if (o.all_models && !o.only.empty()) throw UsageError("give either --all or --only, not both");
       break;
     case Verb::none: break;
   }
@@ -368,6 +429,29 @@ Options:
                         --set background=[1,1,1] --set lights.0.intensity=1.5
   -o, --output FILE   where to write the PNG (required; - for standard output)
 )";
+    case Verb::gallery:
+      return R"(Usage: toon [--server URL] gallery [--models DIR] [--all | --only NAME[,NAME...]]
+                            [--size N] -o OUTDIR
+
+Renders every preset the daemon offers (GET /presets) and one look per
+effect (specular, rim, halftone, contours, shadows, two-tone, a colour ramp,
+outline colours, antialiasing, coloured and point lights) on each model, and
+writes OUTDIR/<model>/<look>.png, OUTDIR/contact-sheet.png (rows are models,
+columns are looks) and OUTDIR/index.html, which shows every image with its
+exact parameters and the `toon render` command that repeats it.
+A model is a folder of DIR with exactly one .obj directly inside; its MTL
+files and textures are found as `toon upload` finds them. Progress goes to
+stderr. A failed render is reported and the rest still run and are written;
+the exit status is then 1.
+
+Options:
+  --models DIR        the folder of model folders (default: ../shared/models)
+  --all               every model folder in DIR (default: spot,
+                      kenney-cube-pet-dog, windmill, stanford-bunny, utah-teapot)
+  --only NAME[,NAME]  just these model folders, in this order; may be repeated
+  --size N            width and height of each render in pixels (default 256)
+  -o, --output DIR    the folder to write (created if missing; required)
+)";
     case Verb::none: break;
   }
   return R"(toon - command-line client for toond, the toon-rendering daemon
@@ -377,11 +461,15 @@ Usage:
   toon [--server URL] upload PATH.obj [-q]
   toon [--server URL] render [PATH.obj | --model ID] [--params FILE.json]
                              [--set key.sub=value ...] -o OUT.png
+  toon [--server URL] gallery [--models DIR] [--all | --only NAME,...] [--size N]
+                              -o OUTDIR
 
 Commands:
   health    show the daemon's status and the OpenGL renderer it uses
   upload    store an OBJ with its MTL files and textures; prints the model id
   render    render a PNG of a local OBJ, a stored model or the demo model
+  gallery   render every preset and effect on a folder of models into PNGs,
+            a contact sheet and an HTML index
   help CMD  show the options of one command (same as toon CMD --help)
 
 Global options (before or after the command):

@@ -17,6 +17,9 @@ class ParamSchema;
 namespace toond::cli {
 
 inline constexpr std::string_view kDefaultServer = "http://127.0.0.1:8080";
+// `toon gallery` defaults: the shared models beside a checkout, 256² renders.
+inline constexpr std::string_view kDefaultModelsDir = "../shared/models";
+inline constexpr int kDefaultGallerySize = 256;
 
 // Everything the user got wrong before a request is made: exit status 2.
 class UsageError : public std::runtime_error {
@@ -24,7 +27,7 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class Verb { none, health, upload, render };
+enum class Verb { none, health, upload, render, gallery };
 
 struct Options {
   Verb verb = Verb::none;
@@ -40,7 +43,13 @@ struct Options {
   std::string model_id;
   std::string params_file;                                // "-" reads standard input
   std::vector<std::pair<std::string, std::string>> sets;  // in command-line order
-  std::string output;                                     // "-" writes to standard output
+  std::string output;                                     // "-" writes to standard output;
+                                                          // gallery: the output folder
+  // gallery
+  std::string models_dir = std::string(kDefaultModelsDir);
+  int size = kDefaultGallerySize;
+  bool all_models = false;
+  std::vector<std::string> only;  // --only NAME[,NAME]: these model folders, in this order
 };
 
 // `args` excludes argv[0]. `env_server` is TOOND_URL (nullopt when unset), a

@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bundle_scan.h"
+#include "connection.h"
+#include "gallery_command.h"
 #include "param_schema.h"
 #include "reply.h"
 
@@ -19,95 +21,6 @@ namespace toond::cli {
 namespace {
 
 using nlohmann::json;
-
-constexpr time_t kConnectTimeoutS = 5;
-// A large model at 4096² with 8× MSAA on llvmpipe, behind a queue, can take
-// minutes; the daemon answers 503 itself when its queue is full.
-constexpr time_t kReadTimeoutS = 300;
-
-class Connection {
- public:
-  explicit Connection(const std::string& server)
-      : server_(server), url_(parse_server_url(server)), client_(url_.scheme_host_port) {
-    client_.set_connection_timeout(kConnectTimeoutS, 0);
-    client_.set_read_timeout(kReadTimeoutS, 0);
-    client_.set_write_timeout(kReadTimeoutS, 0);
-    client_.set_default_headers({{"User-Agent", std::string("toon/") + TOOND_VERSION}});
-  }
-
-  httplib::Result get(const std::string& path) { return client_.Get(url_.base_path + path); }
-  httplib::Result post_json(const std::string& path, const json& body) {
-    return client_.Post(url_.base_path + path, body.dump(), "application/json");
-  }
-  httplib::Result post_multipart(const std::string& path,
-                                 const httplib::MultipartFormDataItems& items) {
-    return client_.Post(url_.base_path + path, items);
-  }
-
-  // Prints why no answer came and returns the exit status for it.
-  int network_failure(const httplib::Result& result) const {
-    const httplib::Error e = result.error();
-    switch (e) {
-      case httplib::Error::Connection:
-        std::cerr << "toon: cannot reach toond at " << server_
-                  << " (connection failed; is the daemon running?)\n";
-        break;
-      case httplib::Error::ConnectionTimeout:
-        std::cerr << "toon: cannot reach toond at " << server_ << " (no connection within "
-                  << kConnectTimeoutS << " s)\n";
-        break;
-      case httplib::Error::Read:
-        std::cerr << "toon: no answer from toond at " << server_
-                  << " (connection closed, or nothing within " << kReadTimeoutS << " s)\n";
-        break;
-      case httplib::Error::Write:
-        std::cerr << "toon: cannot reach toond at " << server_
-                  << " (the connection broke while sending)\n";
-        break;
-      default:
-        std::cerr << "toon: cannot reach toond at " << server_ << " (" << httplib::to_string(e)
-                  << ")\n";
-        break;
-    }
-    return 1;
-  }
-
- private:
-  std::string server_;
-  ServerUrl url_;
-  httplib::Client client_;
-};
-
-int error_reply(const httplib::Response& response) {
-  std::cerr << "toon: "
-            << describe_error_reply(response.status, response.body,
-                                    response.get_header_value("Retry-After"))
-            << "\n";
-  return 1;
-}
-
-void print_warnings(const std::vector<std::string>& warnings) {
-  for (const std::string& w : warnings) std::cerr << "toon: warning: " << w << "\n";
-}
-
-httplib::MultipartFormDataItems bundle_parts(const BundleScan& scan) {
-  httplib::MultipartFormDataItems items;
-  for (const BundleFile& f : scan.files) {
-    items.push_back({"file", f.content, f.name, content_type_for(f.name)});
-  }
-  return items;
-}
-
-std::string bundle_summary(const BundleScan& scan) {
-  std::uint64_t bytes = 0;
-  std::string names;
-  for (const BundleFile& f : scan.files) {
-    bytes += f.content.size();
-    names += " " + f.name;
-  }
-  return std::to_string(scan.files.size()) + (scan.files.size() == 1 ? " file" : " files") + " (" +
-         human_bytes(bytes) + "):" + names;
-}
 
 int health(const Options& options) {
   Connection conn(options.server);
@@ -261,6 +174,7 @@ int run_command(const Options& options) {
       case Verb::health: return health(options);
       case Verb::upload: return upload(options);
       case Verb::render: return render(options);
+      case Verb::gallery: return run_gallery(options);
       case Verb::none: break;
     }
     std::cerr << usage_text(Verb::none);
