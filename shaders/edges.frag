@@ -7,7 +7,7 @@
 // on how large the model is.
 uniform sampler2D u_normal_depth;  // xyz normal, w distance from the eye; w = 0: background
 uniform float u_reach;             // pixels: half the line width
-uniform float u_depth_threshold;   // model units
+uniform float u_depth_threshold;   // scene units
 uniform float u_cos_crease;
 uniform vec3 u_edge_color;         // linear
 

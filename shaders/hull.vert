@@ -7,7 +7,7 @@
 // every face plane moves out by the full width.
 //
 // The distance is `u_width` pixels at the vertex's own depth (or, with
-// u_world_units, `u_width` model units, thinning with distance like a real
+// u_world_units, `u_width` scene units, thinning with distance like a real
 // rim):
 // `u_world_per_px_at_w1` is the size of one pixel at clip w = 1, and a pixel
 // at depth w is w times that (w is 1 everywhere for orthographic views). A
@@ -20,14 +20,29 @@ layout(location = 3) in vec3 a_outline_offset;
 out vec2 v_texcoord;
 
 uniform mat4 u_view_projection;
+uniform mat4 u_model;          // mesh → scene (frame) coordinates
+uniform mat3 u_normal_matrix;  // inverse-transpose of u_model's 3×3
 uniform float u_world_per_px_at_w1;
-uniform float u_width;        // pixels, or model units with u_world_units
+uniform float u_width;        // pixels, or scene units with u_world_units
 uniform int u_world_units;
 
 void main() {
   v_texcoord = a_texcoord;
-  float w = (u_view_projection * vec4(a_position, 1.0)).w;
+  vec3 position = (u_model * vec4(a_position, 1.0)).xyz;
+  // The offset turns with the surface (the normal matrix), then gets back
+  // its own length, so the ring stays `u_width` wide whatever the object's
+  // scale. Exact where the offset is the smooth normal (length 1) under any
+  // scale, and for mitred corners (length 1/cos) under uniform scale. Under
+  // non-uniform scale a hard corner's faces move out somewhat more or less
+  // than `u_width` (an exact mitre would need the face normals). Scaling
+  // the offset by the 3×3 instead would widen the outline of a scaled-up
+  // object and tilt smooth normals off the surface.
+  float len = length(a_outline_offset);
+  vec3 turned = u_normal_matrix * a_outline_offset;
+  float turned_len = length(turned);
+  vec3 offset = turned_len > 0.0 ? turned * (len / turned_len) : vec3(0.0);
+  float w = (u_view_projection * vec4(position, 1.0)).w;
   float distance = u_world_units != 0 ? u_width : u_width * u_world_per_px_at_w1 * abs(w);
-  vec3 moved = a_position + a_outline_offset * distance;
+  vec3 moved = position + offset * distance;
   gl_Position = u_view_projection * vec4(moved, 1.0);
 }

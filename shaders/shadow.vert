@@ -2,5 +2,6 @@
 // Shadow pass: depth as the shadow-casting light sees the model.
 layout(location = 0) in vec3 a_position;
 uniform mat4 u_light_view_projection;
+uniform mat4 u_model;  // mesh → scene (frame) coordinates
 
-void main() { gl_Position = u_light_view_projection * vec4(a_position, 1.0); }
+void main() { gl_Position = u_light_view_projection * (u_model * vec4(a_position, 1.0)); }

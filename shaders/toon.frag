@@ -68,10 +68,10 @@ uniform float u_halftone_ink_mix;
 
 #ifdef SHADOWS
 uniform sampler2DShadow u_shadow_map;
-uniform mat4 u_shadow_matrix;   // mesh coordinates → light clip space
+uniform mat4 u_shadow_matrix;   // scene (frame) coordinates → light clip space
 uniform int u_shadow_light;     // which light casts
 uniform float u_shadow_texel;   // one texel in the map's [0,1] coordinates
-uniform float u_shadow_offset;  // normal offset in mesh units, against acne
+uniform float u_shadow_offset;  // normal offset in scene units, against acne
 #endif
 
 layout(location = 0) out vec4 o_color;

@@ -1,7 +1,9 @@
 #version 430 core
 // Main pass vertex stage. Positions arrive relative to the model's origin
-// (recentred in double precision on the CPU), so the float maths here stays
-// precise however far the model sits from its own coordinate origin.
+// (recentred in double precision on the CPU); u_model places them in the
+// scene, relative to the scene's middle (composed in double on the CPU), so
+// the float maths here stays precise however far the model sits from its
+// own coordinate origin. Lighting happens in that scene-relative space.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_texcoord;
@@ -9,6 +11,8 @@ layout(location = 4) in vec4 a_tangent;  // xyz, w = bitangent handedness
 layout(location = 5) in vec3 a_color;    // sRGB-encoded vertex colour
 
 uniform mat4 u_view_projection;
+uniform mat4 u_model;          // mesh → scene (frame) coordinates
+uniform mat3 u_normal_matrix;  // inverse-transpose of u_model's 3×3
 
 out vec3 v_position;
 out vec3 v_normal;
@@ -17,10 +21,12 @@ out vec4 v_tangent;
 out vec3 v_color;
 
 void main() {
-  v_position = a_position;
-  v_normal = a_normal;
+  vec4 world = u_model * vec4(a_position, 1.0);
+  v_position = world.xyz;
+  v_normal = u_normal_matrix * a_normal;
   v_texcoord = a_texcoord;
-  v_tangent = a_tangent;
+  // Tangents lie in the surface: they follow the model matrix itself.
+  v_tangent = vec4(mat3(u_model) * a_tangent.xyz, a_tangent.w);
   v_color = a_color;
-  gl_Position = u_view_projection * vec4(a_position, 1.0);
+  gl_Position = u_view_projection * world;
 }

@@ -56,20 +56,41 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     // Check what the client sent first, so errors point at its own fields;
     // then lay it over its preset and fill the defaults.
     schema.validate(request);
+    // A scene names its models per object; one request cannot do both (a
+    // multipart upload names the uploaded bundle as `model`, so it cannot
+    // carry objects either).
+    if (request.contains("model") && request.contains("objects")) {
+      throw RequestError(400, "invalid_parameter",
+                         "/objects: give either `model` or `objects`, not both", "/objects");
+    }
     render::RenderJob job;
     job.params = render::RenderParams::from_json(
         schema.validate_and_complete(proto::Presets::builtin().expand(request)));
     render::check_render_budget(job.params);
-    if (job.params.model.empty()) {
-      job.model_key = "demo";
-      job.model = context.library.demo();
+    if (!job.params.objects.empty()) {
+      for (std::size_t i = 0; i < job.params.objects.size(); ++i) {
+        const render::SceneObject& object = job.params.objects[i];
+        render::JobObject o;
+        o.model_key = object.model;
+        o.model = context.library.get(object.model);
+        if (!o.model) {
+          throw RequestError(404, "unknown_model", "no stored model with id " + object.model,
+                             "/objects/" + std::to_string(i) + "/model");
+        }
+        o.transform = object.matrix();
+        job.objects.push_back(std::move(o));
+      }
+    } else if (job.params.model.empty()) {
+      job.objects.push_back({"demo", context.library.demo(), glm::dmat4(1.0)});
     } else {
-      job.model_key = job.params.model;
-      job.model = context.library.get(job.params.model);
-      if (!job.model) {
+      render::JobObject o;
+      o.model_key = job.params.model;
+      o.model = context.library.get(job.params.model);
+      if (!o.model) {
         throw RequestError(404, "unknown_model", "no stored model with id " + job.params.model,
                            "/model");
       }
+      job.objects.push_back(std::move(o));
     }
 
     const auto submitted = Clock::now();

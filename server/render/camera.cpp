@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -53,6 +55,45 @@ CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, 
     cam.projection = glm::perspective(fov_y, aspect, cam.near_plane, cam.far_plane);
   }
   return cam;
+}
+
+SceneFrame frame_scene(const std::vector<ScenePart>& parts) {
+  auto translation = [](const glm::dvec3& d) {
+    glm::dmat4 m(1.0);
+    m[3] = glm::dvec4(d, 1.0);
+    return m;
+  };
+  // The union of the parts' boxes, each box's corners through `matrix(i)`.
+  auto union_bounds = [&](auto&& matrix) {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const glm::dmat4 m = matrix(i);
+      const glm::dvec3 a(parts[i].bounds.min), b(parts[i].bounds.max);
+      for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 corner(c & 1 ? b.x : a.x, c & 2 ? b.y : a.y, c & 4 ? b.z : a.z);
+        const glm::dvec3 p(m * glm::dvec4(corner, 1.0));
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+    }
+    return std::pair{lo, hi};
+  };
+  std::vector<glm::dmat4> to_scene;
+  for (const ScenePart& part : parts) to_scene.push_back(part.transform * translation(part.origin));
+
+  SceneFrame frame;
+  if (parts.empty()) return frame;
+  if (parts.size() == 1) {
+    frame.origin = glm::dvec3(to_scene[0][3]);
+  } else {
+    const auto [lo, hi] = union_bounds([&](std::size_t i) { return to_scene[i]; });
+    frame.origin = (lo + hi) * 0.5;
+  }
+  const glm::dmat4 recentre = translation(-frame.origin);
+  for (const glm::dmat4& m : to_scene) frame.matrices.push_back(recentre * m);
+  const auto [lo, hi] = union_bounds([&](std::size_t i) { return frame.matrices[i]; });
+  frame.bounds = {glm::vec3(lo), glm::vec3(hi)};
+  return frame;
 }
 
 }  // namespace toond::render

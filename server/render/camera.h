@@ -2,6 +2,8 @@
 // Orbit camera fitted to the model's bounds. Pure maths, in double precision:
 // the matrices are only rounded to float once, after the model's origin has
 // been taken out, so large offsets and extreme scales lose nothing.
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "render/render_params.h"
@@ -24,5 +26,29 @@ struct CameraSetup {
 // narrower of the two fields of view; near/far hug the bounds so depth
 // precision does not depend on the model's scale.
 CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, double aspect);
+
+// One object of a scene as the framing sees it: its mesh's bounds (relative
+// to the mesh's origin), that origin, and its transform (model → scene).
+struct ScenePart {
+  scene::Bounds bounds;
+  glm::dvec3 origin{0.0};
+  glm::dmat4 transform{1.0};
+};
+
+// The coordinates a render works in: scene coordinates less `origin`, a
+// point at the scene's middle, so that float maths on the GPU stays precise
+// however far the scene sits from its own origin.
+struct SceneFrame {
+  glm::dvec3 origin{0.0};           // in scene coordinates
+  std::vector<glm::dmat4> matrices;  // per part: mesh coordinates → frame
+  scene::Bounds bounds;              // union of the parts' bounds, frame coordinates
+};
+
+// Matrices are T(-origin) × transform × T(part origin), in double. One part
+// frames on its own transformed origin, so a single untransformed model gets
+// exactly the identity and its own bounds (renders bit for bit as before
+// scenes existed); several frame on the centre of the union of their
+// transformed bounds (each box's eight corners through its matrix).
+SceneFrame frame_scene(const std::vector<ScenePart>& parts);
 
 }  // namespace toond::render

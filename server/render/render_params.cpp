@@ -18,6 +18,31 @@ glm::dvec3 dvec3_of(const json& a) {
 
 }  // namespace
 
+glm::dmat4 SceneObject::matrix() const {
+  // Built element by element rather than through glm::rotate so that a zero
+  // angle, a unit scale and a zero offset give exactly the identity.
+  auto rotation = [](int axis, double deg) {
+    glm::dmat4 r(1.0);
+    if (deg == 0.0) return r;
+    const double a = glm::radians(deg);
+    const double c = std::cos(a), s = std::sin(a);
+    const int i = (axis + 1) % 3, k = (axis + 2) % 3;  // the plane the axis turns
+    r[i][i] = c;
+    r[i][k] = s;
+    r[k][i] = -s;
+    r[k][k] = c;
+    return r;
+  };
+  glm::dmat4 m(1.0);
+  m[3] = glm::dvec4(translate, 1.0);
+  m = m * rotation(2, rotate_deg.z) * rotation(1, rotate_deg.y) * rotation(0, rotate_deg.x);
+  glm::dmat4 s(1.0);
+  s[0][0] = scale.x;
+  s[1][1] = scale.y;
+  s[2][2] = scale.z;
+  return m * s;
+}
+
 float srgb_to_linear(float c) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
@@ -29,6 +54,18 @@ glm::vec3 srgb_to_linear(const glm::vec3& c) {
 RenderParams RenderParams::from_json(const json& j) {
   RenderParams p;
   p.model = j.value("model", "");
+  if (const auto objects = j.find("objects"); objects != j.end()) {
+    for (const json& o : *objects) {
+      SceneObject object;
+      object.model = o.at("model").get<std::string>();
+      const json& t = o.at("transform");
+      object.translate = dvec3_of(t.at("translate"));
+      object.rotate_deg = dvec3_of(t.at("rotate"));
+      const json& s = t.at("scale");
+      object.scale = s.is_array() ? dvec3_of(s) : glm::dvec3(s.get<double>());
+      p.objects.push_back(object);
+    }
+  }
   p.width = j.at("width").get<int>();
   p.height = j.at("height").get<int>();
   const json& bg = j.at("background");

@@ -116,8 +116,20 @@ struct RampStop {
   glm::vec3 color{1.0f};  // linear; a grey ramp's value v is (v, v, v)
 };
 
+// One object of a scene: a stored model placed by scale, then rotation
+// about X, then Y, then Z (degrees), then translation.
+struct SceneObject {
+  std::string model;
+  glm::dvec3 translate{0.0};
+  glm::dvec3 rotate_deg{0.0};
+  glm::dvec3 scale{1.0};
+  // Model coordinates → scene coordinates, in double precision.
+  glm::dmat4 matrix() const;
+};
+
 struct RenderParams {
-  std::string model;  // empty: the demo model
+  std::string model;  // empty: the demo model (or the scene's objects)
+  std::vector<SceneObject> objects;  // empty: `model` alone, untransformed
   int width = 512;
   int height = 512;
   glm::vec4 background{1.0f};  // linear rgb, alpha

@@ -1,5 +1,6 @@
 #include "render/render_service.h"
 
+#include <algorithm>
 #include <iostream>
 #include <list>
 #include <unordered_map>
@@ -30,7 +31,11 @@ class GpuModelCache {
  public:
   explicit GpuModelCache(std::size_t capacity) : capacity_(capacity) {}
 
-  const GpuModel& get(const std::string& key, const scene::Model& model) {
+  // Keys in `pinned` (the current scene's objects) are never evicted, so a
+  // scene with more objects than the capacity holds them all until its
+  // render is done; the next load trims the cache back.
+  const GpuModel& get(const std::string& key, const scene::Model& model,
+                      const std::vector<std::string>& pinned = {}) {
     auto it = index_.find(key);
     if (it != index_.end()) {
       order_.splice(order_.begin(), order_, it->second);
@@ -39,9 +44,14 @@ class GpuModelCache {
     auto gpu_model = std::make_unique<GpuModel>(model);
     order_.emplace_front(key, std::move(gpu_model));
     index_[key] = order_.begin();
-    while (order_.size() > capacity_) {
-      index_.erase(order_.back().first);
-      order_.pop_back();
+    auto victim = order_.end();
+    while (order_.size() > capacity_ && victim != order_.begin()) {
+      --victim;
+      if (std::find(pinned.begin(), pinned.end(), victim->first) != pinned.end() || victim == order_.begin()) {
+        continue;
+      }
+      index_.erase(victim->first);
+      victim = order_.erase(victim);
     }
     return *order_.front().second;
   }
@@ -151,8 +161,16 @@ void RenderService::run(std::promise<void> started) {
           for (const auto& f : reload.files) std::cerr << " " << f;
           std::cerr << " (" << reload.programs << " program" << (reload.programs == 1 ? "" : "s") << " rebuilt)\n";
         }
-        const GpuModel& gpu_model = models.get(task.job->model_key, *task.job->model);
-        task.promise.set_value(renderer.render(gpu_model, task.job->params));
+        // Load them all first: references stay valid while the cache holds
+        // them, and a scene larger than the cache must not evict its own
+        // objects mid-way (see GpuModelCache::get's `pinned`).
+        std::vector<RenderObject> objects;
+        std::vector<std::string> pinned;
+        for (const JobObject& o : task.job->objects) pinned.push_back(o.model_key);
+        for (const JobObject& o : task.job->objects) {
+          objects.push_back({models.get(o.model_key, *o.model, pinned), o.transform});
+        }
+        task.promise.set_value(renderer.render(objects, task.job->params));
       } catch (...) {
         // A failed render fails that request only; drain GL errors so the
         // next one starts clean.

@@ -20,9 +20,15 @@
 
 namespace toond::render {
 
-struct RenderJob {
+// One object of a job's scene.
+struct JobObject {
   std::string model_key;  // GPU cache key: the model id, or "demo"
   std::shared_ptr<const scene::Model> model;
+  glm::dmat4 transform{1.0};  // model → scene coordinates
+};
+
+struct RenderJob {
+  std::vector<JobObject> objects;  // at least one; a lone model has the identity
   RenderParams params;
 };
 

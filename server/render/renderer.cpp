@@ -71,8 +71,7 @@ gpu::ShadowMap& Renderer::shadow_map_for(int size) {
   return *shadow_map_;
 }
 
-const GpuModel& Renderer::floor_for(const GpuModel& model, float size) {
-  const scene::Bounds& b = model.bounds();
+const GpuModel& Renderer::floor_for(const scene::Bounds& b, float size) {
   if (!floor_ || floor_size_ != size || floor_bounds_.min != b.min || floor_bounds_.max != b.max) {
     floor_.reset();
     floor_.emplace(make_floor(b, size));
@@ -90,9 +89,35 @@ gpu::RenderTarget& Renderer::target_for(int width, int height, int samples) {
   return *target_;
 }
 
-RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params) {
-  const PassPlan plan =
-      plan_passes(params, {model.has_textures(), model.has_normal_maps(), model.has_vertex_colors()});
+RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const RenderParams& params) {
+  if (objects.empty()) throw gpu::GpuError("a render needs at least one object");
+  ModelTraits traits;
+  std::vector<ScenePart> parts;
+  for (const RenderObject& o : objects) {
+    traits.has_textures |= o.model.has_textures();
+    traits.has_normal_maps |= o.model.has_normal_maps();
+    traits.has_vertex_colors |= o.model.has_vertex_colors();
+    parts.push_back({o.model.bounds(), o.model.origin(), o.transform});
+  }
+  const PassPlan plan = plan_passes(params, traits);
+  // Everything below works in the frame's coordinates: scene coordinates
+  // less a point at the scene's middle. Each object's matrix takes its
+  // (origin-relative) mesh there; it was composed in double and is only
+  // rounded to float now.
+  const SceneFrame frame = frame_scene(parts);
+  const scene::Bounds& bounds = frame.bounds;
+  std::vector<glm::mat4> model_matrix;
+  std::vector<glm::mat3> normal_matrix;
+  for (const glm::dmat4& m : frame.matrices) {
+    model_matrix.emplace_back(m);
+    // Inverse-transpose of the upper 3×3: normals stay perpendicular to the
+    // surface under non-uniform scale.
+    normal_matrix.emplace_back(glm::transpose(glm::inverse(glm::dmat3(m))));
+  }
+  auto set_object = [&](gpu::Program& program, std::size_t i) {
+    program.set("u_model", model_matrix[i]);
+    program.set("u_normal_matrix", normal_matrix[i]);
+  };
   RenderOutput out;
   out.plan = plan.describe();
   PassTimer timer(out.timings);
@@ -100,7 +125,7 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
   std::optional<ShadowFit> shadow;
   if (plan.has(Pass::Shadow)) {
     const Light& caster = params.lights[static_cast<std::size_t>(plan.shadow_light)];
-    shadow = fit_shadow(caster.direction, model.bounds(), params.shadows.map_size);
+    shadow = fit_shadow(caster.direction, bounds, params.shadows.map_size);
     gpu::ShadowMap& map = shadow_map_for(params.shadows.map_size);
     map.bind_for_drawing();
     glEnable(GL_DEPTH_TEST);
@@ -115,8 +140,11 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
     gpu::Program& program = programs_.get("shadow.vert", "shadow.frag", {});
     program.use();
     program.set("u_light_view_projection", glm::mat4(shadow->view_projection));
-    model.bind();
-    model.draw_all();
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      program.set("u_model", model_matrix[i]);
+      objects[i].model.bind();
+      objects[i].model.draw_all();
+    }
     glDisable(GL_POLYGON_OFFSET_FILL);
     check_gl("shadow pass");
     timer.mark(Pass::Shadow);
@@ -130,7 +158,7 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
   const int draw_height = params.height * ss;
   gpu::RenderTarget& target = target_for(draw_width, draw_height, plan.samples);
   target.bind_for_drawing();
-  const CameraSetup camera = fit_camera(params.camera, model.bounds(),
+  const CameraSetup camera = fit_camera(params.camera, bounds,
                                         static_cast<double>(params.width) / params.height);
   const glm::mat4 view_projection = camera.view_projection();
 
@@ -147,22 +175,21 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
   glClearStencil(0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
-  model.bind();
-
   // Main pass: shade, and mark every covered sample in the stencil so the
   // hull outline can only land outside the model.
   {
     glStencilFunc(GL_ALWAYS, 1, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-    // Light positions are in model coordinates; the mesh was recentred on
-    // `origin` in double precision, so point lights move with it.
+    // Light positions are in scene coordinates (a lone model's own); the
+    // render works relative to the frame's origin, so point lights move
+    // with it.
     std::vector<glm::vec3> light_vec;
     std::vector<glm::vec3> light_color;
     std::vector<int> light_is_point;
     std::vector<float> light_radius;
     for (const Light& l : params.lights) {
       if (l.kind == LightKind::Point) {
-        light_vec.push_back(glm::vec3(l.position - model.origin()));
+        light_vec.push_back(glm::vec3(l.position - frame.origin));
       } else {
         const double len = glm::length(l.direction);
         // A zero direction has no way to travel; it lights nothing.
@@ -222,27 +249,32 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
       glBindTextureUnit(1, shadow_map_->texture());
       program.set("u_shadow_map", 1);
     };
-    for (const scene::Submesh& sub : model.submeshes()) {
-      const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
-      std::vector<std::string> defines = plan.main_defines;
-      const bool textured = plan.sample_textures && material.texture >= 0;
-      if (textured) defines.push_back("HAS_TEXTURE");
-      const bool normal_mapped = plan.use_normal_maps && material.normal_texture >= 0;
-      if (normal_mapped) defines.push_back("NORMAL_MAP");
-      gpu::Program& program = programs_.get("toon.vert", "toon.frag", defines);
-      program.use();
-      set_main_uniforms(program);
-      program.set("u_base_color", material.diffuse);
-      if (normal_mapped) {
-        glBindTextureUnit(2, model.texture(material.normal_texture));
-        program.set("u_normal_map", 2);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      const GpuModel& model = objects[i].model;
+      model.bind();
+      for (const scene::Submesh& sub : model.submeshes()) {
+        const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
+        std::vector<std::string> defines = plan.main_defines;
+        const bool textured = plan.sample_textures && material.texture >= 0;
+        if (textured) defines.push_back("HAS_TEXTURE");
+        const bool normal_mapped = plan.use_normal_maps && material.normal_texture >= 0;
+        if (normal_mapped) defines.push_back("NORMAL_MAP");
+        gpu::Program& program = programs_.get("toon.vert", "toon.frag", defines);
+        program.use();
+        set_main_uniforms(program);
+        set_object(program, i);
+        program.set("u_base_color", material.diffuse);
+        if (normal_mapped) {
+          glBindTextureUnit(2, model.texture(material.normal_texture));
+          program.set("u_normal_map", 2);
+        }
+        if (textured) {
+          glBindTextureUnit(0, model.texture(material.texture));
+          program.set("u_diffuse_map", 0);
+        }
+        if (shadow) set_shadow_uniforms(program);
+        model.draw(sub);
       }
-      if (textured) {
-        glBindTextureUnit(0, model.texture(material.texture));
-        program.set("u_diffuse_map", 0);
-      }
-      if (shadow) set_shadow_uniforms(program);
-      model.draw(sub);
     }
     check_gl("main pass");
     timer.mark(Pass::Main);
@@ -251,39 +283,47 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
       // Same shading as the model, but no stencil mark: the floor is never
       // outlined, and the model's outline may cross it.
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      const GpuModel& floor = floor_for(model, params.floor.size);
+      const GpuModel& floor = floor_for(bounds, params.floor.size);
       gpu::Program& program = programs_.get("toon.vert", "toon.frag", plan.main_defines);
       program.use();
       set_main_uniforms(program);
+      // The floor is made in frame coordinates already.
+      program.set("u_model", glm::mat4(1.0f));
+      program.set("u_normal_matrix", glm::mat3(1.0f));
       program.set("u_base_color", params.floor.color);
       if (shadow) set_shadow_uniforms(program);
       floor.bind();
       floor.draw_all();
-      model.bind();
       check_gl("floor pass");
       timer.mark(Pass::Floor);
     }
   }
 
   // Hull and wireframe lines take their colour the same way.
+  // Object by object, each under its own matrices.
   auto set_outline_colour_and_draw = [&](gpu::Program& program) {
     program.set("u_outline_color", params.outline.color);
     program.set("u_darken", params.outline.darken);
-    if (plan.outline_defines.empty()) {
-      model.draw_all();
-      return;
-    }
-    // The colour comes from each material, so draw material by material.
-    for (const scene::Submesh& sub : model.submeshes()) {
-      const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
-      program.set("u_base_color", material.diffuse);
-      const bool textured = material.texture >= 0;
-      program.set("u_has_texture", textured ? 1 : 0);
-      if (textured) {
-        glBindTextureUnit(0, model.texture(material.texture));
-        program.set("u_diffuse_map", 0);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      const GpuModel& model = objects[i].model;
+      set_object(program, i);
+      model.bind();
+      if (plan.outline_defines.empty()) {
+        model.draw_all();
+        continue;
       }
-      model.draw(sub);
+      // The colour comes from each material, so draw material by material.
+      for (const scene::Submesh& sub : model.submeshes()) {
+        const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
+        program.set("u_base_color", material.diffuse);
+        const bool textured = material.texture >= 0;
+        program.set("u_has_texture", textured ? 1 : 0);
+        if (textured) {
+          glBindTextureUnit(0, model.texture(material.texture));
+          program.set("u_diffuse_map", 0);
+        }
+        model.draw(sub);
+      }
     }
   };
 
@@ -335,8 +375,11 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
     prepass.set("u_eye", glm::vec3(camera.eye));
     prepass.set("u_view_dir", glm::vec3(glm::normalize(camera.target - camera.eye)));
     prepass.set("u_orthographic", params.camera.projection == Projection::Orthographic ? 1 : 0);
-    model.bind();
-    model.draw_all();
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      set_object(prepass, i);
+      objects[i].model.bind();
+      objects[i].model.draw_all();
+    }
     check_gl("edge prepass");
     timer.mark(Pass::EdgePrepass);
 
@@ -347,7 +390,7 @@ RenderOutput Renderer::render(const GpuModel& model, const RenderParams& params)
     glBindTextureUnit(0, normals.texture());
     edges.set("u_normal_depth", 0);
     edges.set("u_reach", std::max(0.5f * params.outline.width * px, 1.0f));
-    edges.set("u_depth_threshold", params.outline.depth_threshold * 2.0f * model.bounds().radius());
+    edges.set("u_depth_threshold", params.outline.depth_threshold * 2.0f * bounds.radius());
     edges.set("u_cos_crease", static_cast<float>(std::cos(glm::radians(params.outline.crease_angle_deg))));
     edges.set("u_edge_color", params.outline.color);
     glBindVertexArray(fullscreen_vao_.id());

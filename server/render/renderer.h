@@ -26,17 +26,29 @@ struct RenderOutput {
   std::string plan;  // PassPlan::describe()
 };
 
+// One object of the scene: a model on the GPU and its transform (model
+// coordinates → scene coordinates; the identity for a lone model).
+struct RenderObject {
+  const GpuModel& model;
+  glm::dmat4 transform{1.0};
+};
+
 class Renderer {
  public:
   explicit Renderer(gpu::ProgramCache& programs) : programs_(programs) {}
 
-  RenderOutput render(const GpuModel& model, const RenderParams& params);
+  // Every object shares the camera, the lights and the passes; camera fit,
+  // shadow fit and floor use the union of their transformed bounds.
+  RenderOutput render(const std::vector<RenderObject>& objects, const RenderParams& params);
+  RenderOutput render(const GpuModel& model, const RenderParams& params) {
+    return render({RenderObject{model, glm::dmat4(1.0)}}, params);
+  }
 
  private:
   gpu::RenderTarget& target_for(int width, int height, int samples);
   gpu::ShadowMap& shadow_map_for(int size);
   gpu::NormalDepthTarget& normal_depth_for(int width, int height);
-  const GpuModel& floor_for(const GpuModel& model, float size);
+  const GpuModel& floor_for(const scene::Bounds& bounds, float size);
 
   gpu::ProgramCache& programs_;
   std::optional<gpu::RenderTarget> target_;  // reused while the size stays the same
@@ -45,7 +57,7 @@ class Renderer {
   // Core profile draws need a bound VAO even when the vertex shader makes
   // its own positions (the full-screen triangle).
   gpu::VertexArray fullscreen_vao_ = gpu::VertexArray::create();
-  std::optional<GpuModel> floor_;             // rebuilt when the model's bounds change
+  std::optional<GpuModel> floor_;             // rebuilt when the scene's bounds change
   scene::Bounds floor_bounds_;
   float floor_size_ = 0;
 };

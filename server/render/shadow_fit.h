@@ -9,7 +9,7 @@
 namespace toond::render {
 
 struct ShadowFit {
-  glm::dmat4 view_projection{1.0};  // mesh coordinates → light clip space
+  glm::dmat4 view_projection{1.0};  // frame coordinates (those of `bounds`) → light clip space
   double texel_world = 0;           // world size of one shadow-map texel
 };
 

@@ -93,5 +93,75 @@ TEST(Camera, CameraInsideTheBoundsKeepsAPositiveNearPlane) {
   EXPECT_LT(cam.near_plane, 0.1);
 }
 
+// Scenes: several models with transforms share one frame.
+
+TEST(SceneFrame, OneUntransformedModelGetsExactlyTheIdentityAndItsOwnBounds) {
+  // A model far from its own origin: the mesh is stored relative to it.
+  ScenePart part{box({-1.25f, -0.5f, -2}, {1.25f, 0.75f, 2}), {1e5 + 0.3, -7e4, 12345.678}, glm::dmat4(1.0)};
+  const SceneFrame frame = frame_scene({part});
+  EXPECT_EQ(frame.origin, part.origin);
+  ASSERT_EQ(frame.matrices.size(), 1u);
+  EXPECT_EQ(frame.matrices[0], glm::dmat4(1.0)) << "bit for bit, so a lone model renders as before";
+  EXPECT_EQ(frame.bounds.min, part.bounds.min);
+  EXPECT_EQ(frame.bounds.max, part.bounds.max);
+}
+
+TEST(SceneFrame, UnionOfTransformedBoundsCentredOnTheScene) {
+  SceneObject left, right;
+  left.translate = {-2, 0, 0};
+  right.translate = {2, 0, 0};
+  right.scale = glm::dvec3(2.0);
+  const scene::Bounds unit = box({-1, -1, -1}, {1, 1, 1});
+  const SceneFrame frame = frame_scene({{unit, {0, 0, 0}, left.matrix()}, {unit, {0, 0, 0}, right.matrix()}});
+  // Scene x spans -3..4, y and z -2..2: centre (0.5, 0, 0).
+  EXPECT_NEAR(frame.origin.x, 0.5, 1e-12);
+  EXPECT_NEAR(frame.origin.y, 0.0, 1e-12);
+  EXPECT_NEAR(frame.bounds.min.x, -3.5f, 1e-6f);
+  EXPECT_NEAR(frame.bounds.max.x, 3.5f, 1e-6f);
+  EXPECT_NEAR(frame.bounds.min.y, -2.0f, 1e-6f);
+  EXPECT_NEAR(frame.bounds.max.z, 2.0f, 1e-6f);
+  // The right cube's mesh corner (1,1,1) lands at scene (4,2,2), frame (3.5,2,2).
+  const glm::dvec3 p(frame.matrices[1] * glm::dvec4(1, 1, 1, 1));
+  EXPECT_NEAR(p.x, 3.5, 1e-12);
+  EXPECT_NEAR(p.y, 2.0, 1e-12);
+}
+
+TEST(SceneFrame, FarFromTheOriginTheFrameKeepsFullPrecision) {
+  // Two unit boxes a hair apart, 1e5 away: float scene coordinates could not
+  // tell 1e5 + 1e-3 from 1e5, the frame's can.
+  SceneObject a, b;
+  a.translate = {1e5, 1e5, -1e5};
+  b.translate = {1e5 + 2.001, 1e5, -1e5};
+  const scene::Bounds unit = box({-1, -1, -1}, {1, 1, 1});
+  const SceneFrame frame = frame_scene({{unit, {0, 0, 0}, a.matrix()}, {unit, {0, 0, 0}, b.matrix()}});
+  const glm::mat4 fa(frame.matrices[0]), fb(frame.matrices[1]);
+  EXPECT_NEAR(fb[3].x - fa[3].x, 2.001f, 1e-6f);
+  EXPECT_NEAR(frame.bounds.max.x - frame.bounds.min.x, 4.001f, 1e-6f);
+}
+
+TEST(SceneObject, RotatesAboutXThenYThenZAfterScaling) {
+  SceneObject o;
+  EXPECT_EQ(o.matrix(), glm::dmat4(1.0)) << "the defaults are exactly the identity";
+  o.rotate_deg = {0, 90, 0};
+  // About +Y by 90°: +X goes to -Z.
+  glm::dvec3 p(o.matrix() * glm::dvec4(1, 0, 0, 1));
+  EXPECT_NEAR(p.x, 0, 1e-12);
+  EXPECT_NEAR(p.z, -1, 1e-12);
+  // X first, then Z: +Y → (about X 90°) +Z → (about Z 90°) stays +Z.
+  o.rotate_deg = {90, 0, 90};
+  p = glm::dvec3(o.matrix() * glm::dvec4(0, 1, 0, 1));
+  EXPECT_NEAR(p.z, 1, 1e-12);
+  // +X → (about X) +X → (about Z 90°) +Y.
+  p = glm::dvec3(o.matrix() * glm::dvec4(1, 0, 0, 1));
+  EXPECT_NEAR(p.y, 1, 1e-12);
+  // Scale applies before rotation and translation.
+  o.rotate_deg = {0, 0, 90};
+  o.scale = {2, 3, 4};
+  o.translate = {10, 0, 0};
+  p = glm::dvec3(o.matrix() * glm::dvec4(1, 0, 0, 1));
+  EXPECT_NEAR(p.x, 10, 1e-12);
+  EXPECT_NEAR(p.y, 2, 1e-12);
+}
+
 }  // namespace
 }  // namespace toond::render
