@@ -1,5 +1,6 @@
 // The `toon` CLI without a daemon: argument parsing, --set against the
 // schema, bundle discovery on disk, and the wording of server errors.
+#include "cli_test_helpers.h"
 #include "cli_args.h"
 
 #include <gtest/gtest.h>
@@ -31,20 +32,8 @@ Options parse(const Args& args, std::optional<std::string> env = std::nullopt) {
   return parse_args(args, env);
 }
 
-// The UsageError message `f` throws, or "" when it throws none.
-template <typename F>
-std::string usage_error(F&& f) {
-  try {
-    f();
-  } catch (const UsageError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool contains(const std::string& haystack, const std::string& needle) {
-  return haystack.find(needle) != std::string::npos;
-}
+using cli_test::contains;
+using cli_test::usage_error;
 
 // ---------------------------------------------------------------- --server
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_test_helpers.h"
 #include "cli_args.h"
 #include "gallery_looks.h"
 #include "gallery_page.h"
@@ -48,19 +49,8 @@ std::vector<ModelView> some_views() {
           view_for_model("windmill", schema()), ModelView{180, 0}, ModelView{-90, 40}};
 }
 
-template <typename F>
-std::string usage_error(F&& f) {
-  try {
-    f();
-  } catch (const UsageError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool contains(const std::string& haystack, const std::string& needle) {
-  return haystack.find(needle) != std::string::npos;
-}
+using cli_test::contains;
+using cli_test::usage_error;
 
 // ---------------------------------------------------------------- looks
 
