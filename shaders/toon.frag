@@ -12,7 +12,7 @@
 // Variants (#defines, chosen by the pass plan):
 //   MODE_CEL | MODE_PHONG | MODE_FLAT      ROUND_CEIL | ROUND_FLOOR | ROUND_ROUND
 //   TWO_TONE | RAMP (cel only; replace the bands)
-//   BASE_WHITE   HAS_TEXTURE   VERTEX_COLOR   NORMAL_MAP   COMBINE_SUM   HAS_POINT_LIGHTS   SPECULAR
+//   BASE_WHITE   HAS_TEXTURE   VERTEX_COLOR   NORMAL_MAP   SHADE_COLOR   COMBINE_SUM   HAS_POINT_LIGHTS   SPECULAR
 //   RIM (+ RIM_MASK_LIT | RIM_MASK_SHADOW)   CONTOUR_EVEN | CONTOUR_FRESNEL
 //   HALFTONE_DOTS | HALFTONE_CHECKER   SHADOWS (+ SHADOW_PCF n: (2n+1)² taps)
 in vec3 v_position;
@@ -22,6 +22,9 @@ in vec4 v_tangent;
 in vec3 v_color;
 
 uniform vec3 u_base_color;  // material Kd, linear
+#ifdef SHADE_COLOR
+uniform vec3 u_shade_color;  // linear: the colour of the darkest band
+#endif
 uniform float u_ambient;
 uniform float u_steps;
 uniform vec3 u_eye;         // camera position, same coordinates as v_position
@@ -236,7 +239,13 @@ void main() {
   diffuse = min(diffuse, vec3(1.0));
   // One number for "how lit": drives rim masking and the halftone.
   float level = max(diffuse.r, max(diffuse.g, diffuse.b));
+#ifdef SHADE_COLOR
+  // The material's own shade colour in the darkest band, blending to the
+  // lit colour as the bands rise.
+  vec3 color = mix(u_shade_color, albedo, diffuse);
+#else
   vec3 color = albedo * (vec3(u_ambient) + (1.0 - u_ambient) * diffuse);
+#endif
 #ifdef SPECULAR
   color = mix(color, u_specular_color, highlight * u_specular_strength);
 #endif

@@ -10,6 +10,7 @@
 namespace toond::render {
 
 struct GpuMaterial {
+  std::string name;  // as in the MTL, for per-material request parameters
   glm::vec3 diffuse{0.8f};
   int texture = -1;         // index into GpuModel::textures()
   int normal_texture = -1;  // tangent-space normal map, linear

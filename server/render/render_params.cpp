@@ -110,6 +110,9 @@ RenderParams RenderParams::from_json(const json& j) {
                                      : glm::vec3(stop.at("value").get<float>());
     p.ramp.push_back(r);
   }
+  for (const auto& [name, colour] : shading.at("shade_colors").items()) {
+    p.shade_colors[name] = srgb_to_linear(vec3_of(colour));
+  }
   std::stable_sort(p.ramp.begin(), p.ramp.end(), [](const RampStop& a, const RampStop& b) { return a.at < b.at; });
   p.rounding = rounding == "floor" ? Rounding::Floor
                : rounding == "round" ? Rounding::Round

@@ -3,6 +3,7 @@
 // that ParamSchema::validate_and_complete() has checked and filled with the
 // schema's defaults, so every field is present and in range here; names and
 // defaults live in proto/render-params.schema.json, not in this file.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -143,6 +144,7 @@ struct RenderParams {
   Rounding rounding = Rounding::Ceil;
   TwoToneParams two_tone;
   std::vector<RampStop> ramp;  // sorted by `at`; empty: bands
+  std::map<std::string, glm::vec3> shade_colors;  // material name → linear shade colour
   SpecularParams specular;
   RimParams rim;
   HalftoneParams halftone;

@@ -259,11 +259,16 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
         if (textured) defines.push_back("HAS_TEXTURE");
         const bool normal_mapped = plan.use_normal_maps && material.normal_texture >= 0;
         if (normal_mapped) defines.push_back("NORMAL_MAP");
+        // A shade colour changes nothing where nothing is lit to blend from.
+        const auto shade = params.shade_colors.find(material.name);
+        const bool shaded = shade != params.shade_colors.end() && params.mode != ShadingMode::Flat;
+        if (shaded) defines.push_back("SHADE_COLOR");
         gpu::Program& program = programs_.get("toon.vert", "toon.frag", defines);
         program.use();
         set_main_uniforms(program);
         set_object(program, i);
         program.set("u_base_color", material.diffuse);
+        if (shaded) program.set("u_shade_color", shade->second);
         if (normal_mapped) {
           glBindTextureUnit(2, model.texture(material.normal_texture));
           program.set("u_normal_map", 2);

@@ -310,6 +310,25 @@ TEST_F(RampEffects, RampStopsSetLevelsAndColoursAtTheirNdotL) {
   EXPECT_EQ(at_radius(img, 0.95).r, srgb_byte(0.2));
 }
 
+// A per-material shade colour replaces material × ambient in the darkest
+// band and leaves the fully lit band alone; other materials keep theirs.
+TEST_F(RampEffects, ShadeColourPerMaterial) {
+  auto client = daemon().client();
+  json params = front_lit();
+  params["ambient"] = 0.3;
+  params["shading"] = {{"steps", 2}};
+  params["lights"] = {{{"type", "directional"}, {"direction", {-1, 0, 0}}}};  // lights the right half
+  const auto plain = render_ok(client, params);
+  params["shading"]["shade_colors"] = {{"default", {0, 0, 1}}};
+  const auto blue = render_ok(client, params);
+  const int cx = 128, cy = 128;
+  EXPECT_EQ(rgb_at(blue, cx - 60, cy), (Rgb{0, 0, 255})) << "the unlit left half takes the shade colour";
+  EXPECT_EQ(rgb_at(blue, cx + 60, cy), rgb_at(plain, cx + 60, cy)) << "the top band is unchanged";
+  params["shading"]["shade_colors"] = {{"no_such_material", {0, 0, 1}}};
+  const auto other = render_ok(client, params);
+  EXPECT_EQ(other.rgba, plain.rgba) << "a colour for another material changes nothing";
+}
+
 TEST_F(Effects, OutlineColourFromTheMaterialDarkened) {
   auto client = daemon().client();
   json params = base();
