@@ -144,7 +144,7 @@ TEST_F(Render, MultiMaterialModelShowsEveryMaterialsTexture) {
 
 // The windmill's map_Bump files are tangent-space normal maps: with them the
 // thresholded lighting of the same geometry changes over much of the model.
-TEST_F(Render, NormalMapsBendTheBands) {
+TEST_F(Render, NormalMapsChangeTheShading) {
   TOOND_REQUIRE_SHARED_MODELS();
   auto client = daemon().client();
   const auto folder = shared_models_dir() / "windmill";
