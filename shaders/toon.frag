@@ -15,6 +15,7 @@
 //   BASE_WHITE   HAS_TEXTURE   VERTEX_COLOR   NORMAL_MAP   SHADE_COLOR   COMBINE_SUM   HAS_POINT_LIGHTS   SPECULAR
 //   RIM (+ RIM_MASK_LIT | RIM_MASK_SHADOW)   CONTOUR_EVEN | CONTOUR_FRESNEL
 //   HALFTONE_DOTS | HALFTONE_CHECKER   SHADOWS (+ SHADOW_PCF n: (2n+1)² taps)
+//   BAND_AA (bands or TWO_TONE: edges blended across a pixel)
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_texcoord;
@@ -114,11 +115,36 @@ uniform float u_ramp_at[16];
 uniform vec3 u_ramp_color[16];
 #endif
 
+#if defined(MODE_CEL) && !defined(TWO_TONE) && !defined(RAMP)
+// The band index for N·L × steps (band edges at integers, or at
+// half-integers when rounding to nearest).
+float band_of(float x) {
+#if defined(ROUND_FLOOR)
+  return floor(x);
+#elif defined(ROUND_ROUND)
+  return floor(x + 0.5);
+#else
+  return ceil(x);
+#endif
+}
+#endif
+
 // The lighting ramp: the diffuse level (or colour) for a value of N·L, and
 // whether that value lies in the shadow band, the ramp's lowest step.
-vec3 ramp(float n_dot_l, out bool shadow) {
+// `footprint` is how much N·L changes across one pixel (0: unknown); with
+// BAND_AA a pixel that straddles a band edge gets the two bands mixed by
+// how much of it lies on each side (a box filter of the step across the
+// edge), so the edge lands at its sub-pixel position. `shadow` stays the
+// hard answer: highlights and rim masks keep their crisp edges.
+vec3 ramp(float n_dot_l, float footprint, out bool shadow) {
 #if defined(TWO_TONE)
   shadow = n_dot_l < u_two_tone_threshold;
+#ifdef BAND_AA
+  if (footprint > 0.0) {
+    float lit = clamp(0.5 + (n_dot_l - u_two_tone_threshold) / footprint, 0.0, 1.0);
+    return vec3(mix(u_two_tone_shadow, 1.0, lit));
+  }
+#endif
   return vec3(shadow ? u_two_tone_shadow : 1.0);
 #elif defined(RAMP)
   // Stops are sorted by `at`; below the first one there is no light.
@@ -134,14 +160,24 @@ vec3 ramp(float n_dot_l, out bool shadow) {
   return level;
 #elif defined(MODE_CEL)
   float x = clamp(n_dot_l, 0.0, 1.0) * u_steps;
-#if defined(ROUND_FLOOR)
-  float b = floor(x) / u_steps;
-#elif defined(ROUND_ROUND)
-  float b = floor(x + 0.5) / u_steps;
-#else
-  float b = ceil(x) / u_steps;
-#endif
+  float b = band_of(x) / u_steps;
   shadow = b <= 0.0;
+#ifdef BAND_AA
+  float px = footprint * u_steps;  // band units per pixel
+  if (px > 0.0) {
+#if defined(ROUND_ROUND)
+    float edge = floor(x) + 0.5;  // the nearest edge: half-integers
+#else
+    float edge = floor(x + 0.5);  // integers
+#endif
+    float below = band_of(clamp(edge - 0.5, 0.0, u_steps));
+    float above = band_of(clamp(edge + 0.5, 0.0, u_steps));
+    // Signed distance to the edge in pixels, from the unclamped N·L so the
+    // terminator (N·L = 0) is smoothed too.
+    float over = clamp(0.5 + (n_dot_l * u_steps - edge) / px, 0.0, 1.0);
+    return vec3(mix(below, above, over) / u_steps);
+  }
+#endif
   return vec3(b);
 #else
   shadow = n_dot_l <= 0.0;
@@ -210,12 +246,17 @@ void main() {
     vec3 l = toward_light(i, reach);
     bool shadow;
     float n_dot_l = dot(n, l);
+    // Taken before shadowing changes N·L: a shadow's edge is no band edge.
+    float footprint = 0.0;
+#ifdef BAND_AA
+    footprint = length(vec2(dFdx(n_dot_l), dFdy(n_dot_l)));
+#endif
 #ifdef SHADOWS
     // A shadowed point is quantized into the shadow band like a point
     // facing away: the (filtered) visibility is thresholded, never blended.
     if (i == u_shadow_light && n_dot_l > 0.0 && shadow_visibility(n) < 0.5) n_dot_l = -1.0;
 #endif
-    vec3 contribution = u_light_color[i] * ramp(n_dot_l, shadow) * reach;
+    vec3 contribution = u_light_color[i] * ramp(n_dot_l, footprint, shadow) * reach;
     bool lit_here = !shadow && reach > 0.0;
     any_lit = any_lit || lit_here;
 #ifdef COMBINE_SUM

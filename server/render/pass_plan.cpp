@@ -54,6 +54,8 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   plan.passes.push_back(Pass::Main);
   if (params.floor.enabled) plan.passes.push_back(Pass::Floor);
 
+  // Without a light every point sits in the same band: no edge to smooth.
+  const bool band_edges_to_smooth = params.band_aa && !params.lights.empty();
   switch (params.mode) {
     case ShadingMode::Cel:
       plan.main_defines.push_back("MODE_CEL");
@@ -61,7 +63,9 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
         plan.main_defines.push_back("RAMP");
       } else if (params.two_tone.enabled) {
         plan.main_defines.push_back("TWO_TONE");
+        if (band_edges_to_smooth) plan.main_defines.push_back("BAND_AA");
       } else {
+        if (band_edges_to_smooth) plan.main_defines.push_back("BAND_AA");
         // Rounding only matters when N·L is quantized into equal bands.
         plan.main_defines.push_back(params.rounding == Rounding::Floor   ? "ROUND_FLOOR"
                                     : params.rounding == Rounding::Round ? "ROUND_ROUND"

@@ -97,6 +97,7 @@ RenderParams RenderParams::from_json(const json& j) {
   p.base = shading.at("base") == "white" ? BaseColor::White : BaseColor::Material;
   p.steps = shading.at("steps").get<int>();
   const std::string rounding = shading.at("rounding");
+  p.band_aa = shading.at("band_aa").get<bool>();
   const json& two_tone = shading.at("two_tone");
   p.two_tone.enabled = two_tone.at("enabled").get<bool>();
   p.two_tone.threshold = two_tone.at("threshold").get<float>();

@@ -142,6 +142,7 @@ struct RenderParams {
   BaseColor base = BaseColor::Material;
   int steps = 3;
   Rounding rounding = Rounding::Ceil;
+  bool band_aa = true;  // blend band edges across a pixel
   TwoToneParams two_tone;
   std::vector<RampStop> ramp;  // sorted by `at`; empty: bands
   std::map<std::string, glm::vec3> shade_colors;  // material name → linear shade colour

@@ -216,7 +216,8 @@ TEST_F(Effects, CheckerHalftoneOnlyTouchesTheMidBands) {
   auto client = daemon().client();
   json params = base();
   params["lights"] = {{{"type", "directional"}, {"direction", {-1, 0, -0.4}}}};
-  params["shading"] = {{"steps", 3}};
+  // Hard bands, so "the brightest band" is one colour.
+  params["shading"] = {{"steps", 3}, {"band_aa", false}};
   const auto plain = render_ok(client, params);
   params["halftone"] = {{"enabled", true}, {"style", "checker"}, {"cell", 4}};
   const auto checked = render_ok(client, params);
@@ -286,7 +287,8 @@ class RampEffects : public Effects {
 TEST_F(RampEffects, TwoTonePaletteHasTwoColoursSplitAtTheThreshold) {
   auto client = daemon().client();
   json params = front_lit();
-  params["shading"] = {{"two_tone", {{"enabled", true}, {"threshold", 0.25}, {"shadow_factor", 0.25}}}};
+  params["shading"] = {{"two_tone", {{"enabled", true}, {"threshold", 0.25}, {"shadow_factor", 0.25}}},
+                       {"band_aa", false}};
   const auto img = render_ok(client, params);
   EXPECT_EQ(colour_histogram(img, foreground_mask(img)).size(), 2u);
   // Kd 0.8: lit 0.8, shadow a quarter of it, 0.2 (linear).

@@ -57,4 +57,19 @@ std::string cube_obj(double h, glm::dvec3 c) {
   return obj;
 }
 
+std::string disk_obj(int segments, double radius) {
+  const double pi = std::acos(-1.0);
+  std::string obj = "# flat disk facing +Z\nvn 0 0 1\n";
+  obj += vec_line("v", glm::dvec3(0.0));
+  for (int s = 0; s < segments; ++s) {
+    const double phi = 2.0 * pi * s / segments;
+    obj += vec_line("v", glm::dvec3(std::cos(phi), std::sin(phi), 0.0) * radius);
+  }
+  for (int s = 0; s < segments; ++s) {
+    const int a = 2 + s, b = 2 + (s + 1) % segments;
+    obj += "f 1//1 " + std::to_string(a) + "//1 " + std::to_string(b) + "//1\n";
+  }
+  return obj;
+}
+
 }  // namespace toond::test

@@ -97,6 +97,61 @@ TEST(PassPlan, FloorIsItsOwnPassAfterTheModel) {
   EXPECT_EQ(plan.describe(), "main,floor,hull_outline,readback");
 }
 
+TEST(PassPlan, NoTextureSamplingForAWhiteBase) {
+  const PassPlan plan = plan_passes(params({{"shading", {{"base", "white"}}}}), {true});
+  EXPECT_FALSE(plan.sample_textures) << "a white base never reads the material's texture";
+  EXPECT_TRUE(plan_passes(params(json::object()), {true}).sample_textures);
+}
+
+TEST(PassPlan, NoNormalMapMathsWithoutANormalMap) {
+  EXPECT_FALSE(plan_passes(params(json::object()), {true, false}).use_normal_maps);
+  EXPECT_TRUE(plan_passes(params(json::object()), {true, true}).use_normal_maps);
+  EXPECT_FALSE(plan_passes(params({{"shading", {{"mode", "flat"}}}}), {true, true}).use_normal_maps)
+      << "unlit colour never reads the normal map";
+  for (const json& request : {json::object(), json{{"shading", {{"mode", "phong"}}}}}) {
+    EXPECT_FALSE(has_define(plan_passes(params(request), {true, false}), "NORMAL_MAP"))
+        << "NORMAL_MAP is per material, never shared";
+  }
+}
+
+TEST(PassPlan, NoHalftoneMathsWhenOff) {
+  auto halftone = [](const PassPlan& plan) {
+    return has_define(plan, "HALFTONE_DOTS") || has_define(plan, "HALFTONE_CHECKER");
+  };
+  EXPECT_FALSE(halftone(plan_passes(params(json::object()), {})));
+  EXPECT_FALSE(halftone(plan_passes(params({{"halftone", {{"enabled", false}, {"style", "checker"}}}}), {})));
+  EXPECT_TRUE(has_define(plan_passes(params({{"halftone", {{"enabled", true}}}}), {}), "HALFTONE_DOTS"));
+  EXPECT_TRUE(has_define(plan_passes(params({{"halftone", {{"enabled", true}, {"style", "checker"}}}}), {}),
+                         "HALFTONE_CHECKER"));
+  EXPECT_FALSE(halftone(plan_passes(params({{"halftone", {{"enabled", true}}}, {"shading", {{"mode", "flat"}}}}), {})))
+      << "unlit colour has no light level to screen";
+}
+
+TEST(PassPlan, EffectsThatAreOffAddNoShaderFeature) {
+  const PassPlan plan = plan_passes(
+      params({{"specular", {{"enabled", false}}}, {"rim", {{"enabled", false}}}, {"contour", {{"enabled", false}}}}),
+      {});
+  for (const char* d : {"SPECULAR", "RIM", "CONTOUR_EVEN", "CONTOUR_FRESNEL", "SHADOWS", "COMBINE_SUM",
+                        "HAS_POINT_LIGHTS", "VERTEX_COLOR", "SHADE_COLOR"}) {
+    EXPECT_FALSE(has_define(plan, d)) << d;
+  }
+  EXPECT_FALSE(has_define(plan_passes(params({{"specular", {{"strength", 0}}}}), {}), "SPECULAR"))
+      << "a highlight of strength 0 changes nothing";
+  EXPECT_FALSE(has_define(plan_passes(params({{"lights", json::array()}}), {}), "SPECULAR"))
+      << "no light, no highlight";
+}
+
+TEST(PassPlan, BandEdgesAreSmoothedOnlyWhereThereAreBandEdges) {
+  EXPECT_TRUE(has_define(plan_passes(params(json::object()), {}), "BAND_AA")) << "on by default";
+  EXPECT_TRUE(has_define(plan_passes(params({{"shading", {{"two_tone", {{"enabled", true}}}}}}), {}), "BAND_AA"));
+  EXPECT_FALSE(has_define(plan_passes(params({{"shading", {{"band_aa", false}}}}), {}), "BAND_AA"));
+  EXPECT_FALSE(has_define(plan_passes(params({{"shading", {{"mode", "phong"}}}}), {}), "BAND_AA"))
+      << "smooth shading has no bands";
+  EXPECT_FALSE(has_define(plan_passes(params({{"shading", {{"mode", "flat"}}}}), {}), "BAND_AA"));
+  EXPECT_FALSE(has_define(plan_passes(params({{"lights", json::array()}}), {}), "BAND_AA"))
+      << "without light every point is in the same band";
+}
+
 TEST(PassPlan, ReadbackIsAlwaysLast) {
   for (const json& request : {json::object(), json{{"msaa", 1}, {"outline", {{"enabled", false}}}}}) {
     const PassPlan plan = plan_passes(params(request), {});

@@ -1,0 +1,167 @@
+// Renders checked against analytic truth. An orthographic, front-lit sphere
+// with exact normals has N·L = sqrt(1 − r²/R²) at distance r from its
+// centre, so with N ceil-rounded bands the edge between band k and k+1 lies
+// at r = R·sqrt(1 − (k/N)²). A flat disk with a hull outline of W pixels has
+// a ring exactly W pixels wide. Edges are measured along many rays to a
+// fraction of a pixel in linear light.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "support/edge_measure.h"
+#include "support/generated_models.h"
+#include "test_client.h"
+
+namespace toond::test {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kSize = 512;
+constexpr int kRays = 720;
+
+class AnalyticOracle : public SharedDaemonTest {
+ protected:
+  // Fine enough that the tessellation moves no edge by a hundredth of a
+  // pixel (normals are exact at the vertices and nearly so between them).
+  static const std::string& sphere_id() {
+    static const std::string id = [] {
+      auto client = daemon().client();
+      return upload_obj_text(client, sphere_obj(192, 96), "sphere.obj");
+    }();
+    return id;
+  }
+
+  static json sphere_params(int steps, int msaa, bool band_aa = true) {
+    return {{"model", sphere_id()},
+            {"width", kSize},
+            {"height", kSize},
+            {"background", {0, 0, 0}},
+            {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}},
+            {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}, {"color", {1, 1, 1}}, {"intensity", 1}}}},
+            {"ambient", 0},
+            {"shading", {{"mode", "cel"}, {"steps", steps}, {"rounding", "ceil"}, {"base", "white"}, {"band_aa", band_aa}}},
+            {"specular", {{"enabled", false}}},
+            {"outline", {{"enabled", false}}},
+            {"msaa", msaa}};
+  }
+
+  // The silhouette from an unlit white render: every covered fraction of a
+  // pixel is white, so the coverage is the linear value itself.
+  static DiskEstimate silhouette(int msaa) {
+    auto client = daemon().client();
+    json params = sphere_params(1, msaa);
+    params["shading"]["mode"] = "flat";
+    return estimate_disk(LinearChannel(render_ok(client, params), 1));
+  }
+
+  // Band-edge errors (measured minus analytic radius, in pixels) over every
+  // ray and every inner edge of an N-band render.
+  static ErrorStats band_edge_errors(int steps, int msaa, const DiskEstimate& disk, bool band_aa = true) {
+    auto client = daemon().client();
+    const auto img = render_ok(client, sphere_params(steps, msaa, band_aa));
+    const LinearChannel grey(img, 1);
+    ErrorStats stats;
+    for (int k = 1; k < steps; ++k) {
+      const double expected = disk.radius * std::sqrt(1.0 - double(k * k) / double(steps * steps));
+      // Levels are k/N in linear light (white light, white base, no ambient).
+      const double midpoint = (k + 0.5) / steps;
+      for (int i = 0; i < kRays; ++i) {
+        const double angle = 2.0 * kPi * (i + 0.5) / kRays;
+        const auto found =
+            ray_crossing(grey, disk.centre_x, disk.centre_y, angle, expected - 1.5, expected + 1.5, midpoint);
+        if (found) stats.add(*found - expected);
+        else ++stats.missing;
+      }
+    }
+    std::printf("[oracle] steps %d msaa %d band_aa %d: band-edge error mean %.3f px, max %.3f px over %zu edges (%zu missing)\n",
+                steps, msaa, band_aa ? 1 : 0, stats.mean_abs, stats.max_abs, stats.count, stats.missing);
+    return stats;
+  }
+};
+
+// The multisample resolve averages in linear light: the coverage-weighted
+// area at 8 samples matches the pixel count without multisampling. An
+// average of sRGB-encoded values would shrink the disk by about a third of
+// a pixel of radius.
+TEST_F(AnalyticOracle, MultisampleResolveAveragesInLinearLight) {
+  const DiskEstimate hard = silhouette(1);
+  const DiskEstimate smooth = silhouette(8);
+  ASSERT_GT(hard.radius, 100.0);
+  EXPECT_NEAR(smooth.radius, hard.radius, 0.05);
+  EXPECT_NEAR(smooth.centre_x, kSize / 2.0, 0.05);
+  EXPECT_NEAR(smooth.centre_y, kSize / 2.0, 0.05);
+}
+
+TEST_F(AnalyticOracle, SphereBandEdgesWithoutMultisampling) {
+  const DiskEstimate disk = silhouette(8);
+  for (int steps : {3, 5}) {
+    const ErrorStats e = band_edge_errors(steps, 1, disk);
+    EXPECT_EQ(e.missing, 0u) << "steps " << steps;
+    EXPECT_LE(e.mean_abs, 0.35) << "steps " << steps;
+  }
+}
+
+TEST_F(AnalyticOracle, SphereBandEdgesWithMsaa4) {
+  const DiskEstimate disk = silhouette(8);
+  for (int steps : {3, 5}) {
+    const ErrorStats e = band_edge_errors(steps, 4, disk);
+    EXPECT_EQ(e.missing, 0u) << "steps " << steps;
+    EXPECT_LE(e.mean_abs, 0.2) << "steps " << steps;
+    EXPECT_LE(e.max_abs, 0.6) << "steps " << steps;
+  }
+}
+
+// MSAA alone only smooths triangle edges: band edges inside triangles stay
+// pixel steps, off by up to half a pixel's diagonal. The targets above
+// need the band edges antialiased.
+TEST_F(AnalyticOracle, WithoutBandAntialiasingMsaa4MissesTheTarget) {
+  const DiskEstimate disk = silhouette(8);
+  for (int msaa : {1, 4}) {
+    const ErrorStats hard = band_edge_errors(5, msaa, disk, false);
+    const ErrorStats smooth = band_edge_errors(5, msaa, disk, true);
+    EXPECT_GT(hard.max_abs, 0.6) << "msaa " << msaa;
+    EXPECT_LT(smooth.mean_abs, hard.mean_abs / 2) << "msaa " << msaa;
+  }
+}
+
+// A flat white disk on blue with a red hull outline of W px: along every
+// ray the ring runs from where green falls (white → red) to where red falls
+// (red → blue), and is W ± 0.5 px wide.
+TEST_F(AnalyticOracle, DiskOutlineRingIsTheWidthAllRound) {
+  auto client = daemon().client();
+  const std::string disk_id = upload_obj_text(client, disk_obj(256), "disk.obj");
+  json params = {{"model", disk_id},
+                 {"width", kSize},
+                 {"height", kSize},
+                 {"background", {0, 0, 1}},
+                 {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}},
+                 {"shading", {{"mode", "flat"}, {"base", "white"}}},
+                 {"msaa", 4}};
+  params["outline"] = {{"enabled", false}};
+  const DiskEstimate disk = estimate_disk(LinearChannel(render_ok(client, params), 1));
+  ASSERT_GT(disk.radius, 100.0);
+  for (double width : {1.0, 2.0, 4.5}) {
+    params["outline"] = {{"enabled", true}, {"method", "hull"}, {"width", width}, {"color", {1, 0, 0}}};
+    const auto img = render_ok(client, params);
+    const LinearChannel red(img, 0), green(img, 1);
+    ErrorStats stats;
+    for (int i = 0; i < kRays; ++i) {
+      const double angle = 2.0 * kPi * (i + 0.5) / kRays;
+      const auto inner = ray_crossing(green, disk.centre_x, disk.centre_y, angle, disk.radius - 2, disk.radius + 2, 0.5);
+      const auto outer = ray_crossing(red, disk.centre_x, disk.centre_y, angle, disk.radius - 2,
+                                      disk.radius + width + 2, 0.5);
+      if (inner && outer) stats.add(*outer - *inner - width);
+      else ++stats.missing;
+    }
+    std::printf("[oracle] disk outline %.1f px: width error mean %.3f px, max %.3f px over %zu rays\n", width,
+                stats.mean_abs, stats.max_abs, stats.count);
+    EXPECT_EQ(stats.missing, 0u) << "width " << width;
+    EXPECT_LE(stats.max_abs, 0.5) << "width " << width;
+  }
+}
+
+}  // namespace
+}  // namespace toond::test
