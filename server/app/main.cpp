@@ -47,6 +47,10 @@ int run(const toond::app::Options& options) {
   server.set_payload_max_length(options.max_upload_bytes);
   toond::http::ServiceContext context{store, library, renderer,
                                       std::chrono::milliseconds(static_cast<long long>(options.render_timeout_s * 1000))};
+  // Edited shaders change the image of the same parameters: no cache then.
+  if (options.result_cache_bytes > 0 && options.shader_dir.empty()) {
+    context.results = std::make_unique<toond::render::ResultCache>(options.result_cache_bytes);
+  }
   toond::http::register_routes(server, context);
 
   const int port = options.port == 0 ? server.bind_to_any_port(options.host)

@@ -36,6 +36,10 @@ Usage: toond [options]
   --queue N              render jobs allowed to wait (default 32); beyond: 503
   --max-upload-bytes N   largest request body accepted (default 268435456)
   --threads N            HTTP worker threads (default 8)
+  --result-cache-mb N    memory for finished PNGs answering identical requests
+                         (same model and parameters) without rendering; least
+                         recently used out first (default 64; 0: off; always
+                         off with --shader-dir)
   --render-timeout S     seconds a request waits for its render (default 60)
   --shader-dir DIR       read the GLSL files (the names in shaders/) from DIR
                          instead of the embedded copies, and recompile before a
@@ -82,6 +86,8 @@ Options parse_options(const std::vector<std::string>& args) {
       o.queue = static_cast<std::size_t>(parse_int(a, value(), 1, 100000));
     } else if (a == "--max-upload-bytes") {
       o.max_upload_bytes = static_cast<std::size_t>(parse_int(a, value(), 1024, 1LL << 40));
+    } else if (a == "--result-cache-mb") {
+      o.result_cache_bytes = static_cast<std::size_t>(parse_int(a, value(), 0, 1 << 20)) << 20;
     } else if (a == "--threads") {
       o.threads = static_cast<int>(parse_int(a, value(), 1, 1024));
     } else if (a == "--shader-dir") {

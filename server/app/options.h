@@ -15,6 +15,8 @@ struct Options {
   std::size_t queue = 32;
   std::size_t max_upload_bytes = 256u << 20;
   int threads = 8;
+  // Finished PNGs kept for identical requests; 0 turns the cache off.
+  std::size_t result_cache_bytes = std::size_t{64} << 20;
   double render_timeout_s = 60;
   // Empty: the shaders embedded in the binary. Otherwise GLSL files are read
   // from this folder and recompiled when they change (look development).

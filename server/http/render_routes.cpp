@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "http/bundle_upload.h"
+#include "http/render_answer.h"
 #include "http/routes.h"
 #include "image/png_codec.h"
 #include "render/render_budget.h"
@@ -64,8 +65,8 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
                          "/objects: give either `model` or `objects`, not both", "/objects");
     }
     render::RenderJob job;
-    job.params = render::RenderParams::from_json(
-        schema.validate_and_complete(proto::Presets::builtin().expand(request)));
+    const nlohmann::json completed = schema.validate_and_complete(proto::Presets::builtin().expand(request));
+    job.params = render::RenderParams::from_json(completed);
     render::check_render_budget(job.params);
     if (!job.params.objects.empty()) {
       for (std::size_t i = 0; i < job.params.objects.size(); ++i) {
@@ -93,6 +94,11 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
       job.objects.push_back(std::move(o));
     }
 
+    // Completed parameters name content-addressed models (and bundle files
+    // inside them): they decide every byte of the PNG.
+    const std::string cache_key = completed.dump();
+    if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
+
     const auto submitted = Clock::now();
     auto future = context.renderer.submit(std::move(job));
     if (future.wait_for(context.render_deadline) != std::future_status::ready) {
@@ -109,8 +115,12 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     const double png_ms = std::chrono::duration<double, std::milli>(Clock::now() - png_start).count();
 
     res.set_header("Server-Timing", server_timing(out, queue_ms < 0 ? 0 : queue_ms, png_ms));
-    res.set_header("X-Toond-Passes", out.plan);
-    res.set_content(std::move(png), "image/png");
+    auto answer = std::make_shared<render::CachedRender>();
+    answer->etag = render::etag_of(png);
+    answer->png = std::move(png);
+    answer->passes = out.plan;
+    answer_render(req, res, *answer);
+    if (context.results) context.results->put(cache_key, std::move(answer));
   });
 }
 

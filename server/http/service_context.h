@@ -2,9 +2,11 @@
 // What the routes share: the model store, the in-memory model library, the
 // render thread and the daemon's limits.
 #include <chrono>
+#include <memory>
 
 #include "render/model_library.h"
 #include "render/render_service.h"
+#include "render/result_cache.h"
 #include "scene/model_store.h"
 
 namespace toond::http {
@@ -14,6 +16,8 @@ struct ServiceContext {
   render::ModelLibrary& library;
   render::RenderService& renderer;
   std::chrono::milliseconds render_deadline{60000};
+  // Finished renders by canonical parameters; null: every request renders.
+  std::unique_ptr<render::ResultCache> results{};
 };
 
 }  // namespace toond::http

@@ -1,0 +1,63 @@
+#pragma once
+// Finished renders kept in memory, keyed by what fully decides the image:
+// the canonical (preset-expanded, default-completed) parameters, which name
+// the content-addressed models. An identical request is answered from here
+// without touching the render thread. Bounded by bytes, least recently used
+// out first; thread-safe.
+#include <cstddef>
+#include <list>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <unordered_map>
+
+namespace toond::render {
+
+struct CachedRender {
+  std::string png;
+  std::string etag;    // strong validator of `png`, quoted: "\"…\""
+  std::string passes;  // X-Toond-Passes of the render that made it
+  std::string lod;     // X-Toond-Lod of the render that made it
+};
+
+// A strong ETag for a body: its 64-bit FNV-1a hash, quoted. The same bytes
+// get the same tag on every replica.
+std::string etag_of(const std::string& body);
+
+// Whether an If-None-Match header value matches `etag` ("*", or one of a
+// comma-separated list; weak tags compare by their opaque part).
+bool etag_matches(const std::string& if_none_match, const std::string& etag);
+
+class ResultCache {
+ public:
+  // 0 bytes: caches nothing.
+  explicit ResultCache(std::size_t capacity_bytes) : capacity_(capacity_bytes) {}
+
+  std::shared_ptr<const CachedRender> find(const std::string& key);
+  // Keeps `render` unless it alone is larger than the whole cache.
+  void put(const std::string& key, std::shared_ptr<const CachedRender> render);
+
+  std::size_t capacity_bytes() const { return capacity_; }
+  std::size_t bytes() const;
+  std::size_t entries() const;
+  std::size_t hits() const;
+  std::size_t misses() const;
+
+ private:
+  struct Entry {
+    std::string key;
+    std::shared_ptr<const CachedRender> render;
+    std::size_t bytes;
+  };
+  static std::size_t cost(const std::string& key, const CachedRender& r);
+
+  const std::size_t capacity_;
+  mutable std::mutex mutex_;
+  std::list<Entry> lru_;  // most recently used first
+  std::unordered_map<std::string, std::list<Entry>::iterator> index_;
+  std::size_t bytes_ = 0;
+  std::size_t hits_ = 0;
+  std::size_t misses_ = 0;
+};
+
+}  // namespace toond::render
