@@ -38,10 +38,22 @@ std::string server_timing(const render::RenderOutput& out, double queue_ms, doub
   return s.str();
 }
 
+// POST /models/{id}/render takes its model from the path (so a load
+// balancer can hash on it); a `model` in the body must agree.
+void apply_path_model(nlohmann::json& request, const std::string& id) {
+  if (!request.is_object()) return;  // validation reports the body's type
+  if (request.contains("model") && request["model"] != id) {
+    throw RequestError(400, "model_mismatch",
+                       "/model: the body names a different model than the path (" + id + ")", "/model");
+  }
+  request["model"] = id;
+}
+
 }  // namespace
 
 void register_render_routes(httplib::Server& server, ServiceContext& context) {
-  server.Post("/render", [&context](const httplib::Request& req, httplib::Response& res) {
+  const auto render = [&context](const httplib::Request& req, httplib::Response& res) {
+    const auto started = Clock::now();
     nlohmann::json request;
     if (req.is_multipart_form_data()) {
       const auto params_part = req.files.find("params");
@@ -52,6 +64,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     } else {
       request = parse_params(req.body, "the request body");
     }
+    if (req.matches.size() > 1) apply_path_model(request, req.matches[1].str());
 
     const auto& schema = proto::ParamSchema::render_params();
     // Check what the client sent first, so errors point at its own fields;
@@ -121,7 +134,13 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     answer->passes = out.plan;
     answer_render(req, res, *answer);
     if (context.results) context.results->put(cache_key, std::move(answer));
-  });
+    // The same stages as Server-Timing: waiting in the queue, each pass, PNG.
+    out.timings.push_back({"queue", queue_ms < 0 ? 0 : queue_ms});
+    out.timings.push_back({"png", png_ms});
+    context.metrics.observe_render(std::chrono::duration<double>(Clock::now() - started).count(), out.timings);
+  };
+  server.Post("/render", render);
+  server.Post("/models/([0-9a-f]{16,64})/render", render);
 }
 
 }  // namespace toond::http

@@ -8,6 +8,7 @@ void register_routes(httplib::Server& server, ServiceContext& context) {
   register_info_routes(server, context);
   register_model_routes(server, context);
   register_render_routes(server, context);
+  register_metrics_routes(server, context);
 
   server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
     write_exception(res, ep);

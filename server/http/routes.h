@@ -12,5 +12,7 @@ void register_routes(httplib::Server& server, ServiceContext& context);
 void register_info_routes(httplib::Server& server, ServiceContext& context);
 void register_model_routes(httplib::Server& server, ServiceContext& context);
 void register_render_routes(httplib::Server& server, ServiceContext& context);
+// GET /metrics, and the logger hook that counts every answered request.
+void register_metrics_routes(httplib::Server& server, ServiceContext& context);
 
 }  // namespace toond::http

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <memory>
 
+#include "http/service_metrics.h"
 #include "render/model_library.h"
 #include "render/render_service.h"
 #include "render/result_cache.h"
@@ -16,6 +17,8 @@ struct ServiceContext {
   render::ModelLibrary& library;
   render::RenderService& renderer;
   std::chrono::milliseconds render_deadline{60000};
+  // Default-constructed with the context: GET /metrics and the hooks that feed it.
+  ServiceMetrics metrics{};
   // Finished renders by canonical parameters; null: every request renders.
   std::unique_ptr<render::ResultCache> results{};
 };

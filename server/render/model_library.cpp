@@ -14,6 +14,12 @@ ModelLibrary::ModelLibrary(scene::ModelStore& store, std::size_t capacity)
       demo_(std::make_shared<const scene::Model>(scene::import_obj_bundle(scene::make_demo_bundle()))) {}
 
 std::shared_ptr<const scene::Model> ModelLibrary::get(const std::string& id) {
+  // Replicas share the data directory: a model another replica deleted must
+  // stop rendering here too, not live on in this one's memory.
+  if (!store_.contains(id)) {
+    forget(id);
+    return nullptr;
+  }
   {
     std::lock_guard lock(mutex_);
     if (auto it = models_.find(id); it != models_.end()) {

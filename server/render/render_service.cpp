@@ -56,6 +56,13 @@ class GpuModelCache {
     return *order_.front().second;
   }
 
+  std::size_t size() const { return order_.size(); }
+  std::size_t bytes() const {
+    std::size_t total = 0;
+    for (const Entry& e : order_) total += e.second->gpu_bytes();
+    return total;
+  }
+
   void forget(const std::string& key) {
     auto it = index_.find(key);
     if (it == index_.end()) return;
@@ -150,6 +157,8 @@ void RenderService::run(std::promise<void> started) {
       }
       if (!task.job) {
         models.forget(task.forget_key);
+        gpu_models_loaded_ = models.size();
+        gpu_model_bytes_ = models.bytes();
         continue;
       }
       try {
@@ -170,6 +179,8 @@ void RenderService::run(std::promise<void> started) {
         for (const JobObject& o : task.job->objects) {
           objects.push_back({models.get(o.model_key, *o.model, pinned), o.transform});
         }
+        gpu_models_loaded_ = models.size();
+        gpu_model_bytes_ = models.bytes();
         task.promise.set_value(renderer.render(objects, task.job->params));
       } catch (...) {
         // A failed render fails that request only; drain GL errors so the

@@ -3,6 +3,7 @@
 // handlers hand it jobs through a bounded queue and wait on a future. A full
 // queue refuses at once (the caller answers 503 + Retry-After) instead of
 // letting requests pile up behind a slow render.
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <deque>
@@ -64,6 +65,9 @@ class RenderService {
   // Drops the model's GPU copy (after DELETE /models/{id}).
   void forget(const std::string& model_key);
   std::size_t queue_depth() const;
+  // What the GPU model cache holds now (for GET /metrics).
+  std::size_t gpu_models_loaded() const { return gpu_models_loaded_.load(); }
+  std::size_t gpu_model_bytes() const { return gpu_model_bytes_.load(); }
 
  private:
   struct Task {
@@ -80,6 +84,9 @@ class RenderService {
   std::condition_variable wake_;
   std::deque<Task> queue_;
   bool stopping_ = false;
+  // Written by the render thread after each task, read by any thread.
+  std::atomic<std::size_t> gpu_models_loaded_{0};
+  std::atomic<std::size_t> gpu_model_bytes_{0};
   std::thread thread_;
 };
 

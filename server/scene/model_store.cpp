@@ -147,8 +147,12 @@ std::string bundle_id(const Bundle& bundle) {
 
 ModelStore::ModelStore(fs::path data_dir) : root_(std::move(data_dir) / "models") {
   fs::create_directories(root_);
+  const auto stale_before = fs::file_time_type::clock::now() - kStaleTempAge;
   for (const auto& entry : fs::directory_iterator(root_)) {
-    if (entry.path().filename().string().starts_with(kTempPrefix)) remove_quietly(entry.path());
+    if (!entry.path().filename().string().starts_with(kTempPrefix)) continue;
+    std::error_code ec;
+    const auto written = fs::last_write_time(entry.path(), ec);
+    if (!ec && written < stale_before) remove_quietly(entry.path());
   }
   fsync_dir(root_);
 }
@@ -219,6 +223,11 @@ std::optional<ModelInfo> ModelStore::info(const std::string& id) const {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) return std::nullopt;
   return ModelInfo::from_json(nlohmann::json::parse(read_file(path)));
+}
+
+bool ModelStore::contains(const std::string& id) const {
+  std::error_code ec;
+  return valid_id(id) && fs::is_regular_file(root_ / id / "info.json", ec);
 }
 
 std::optional<Bundle> ModelStore::load(const std::string& id) const {

@@ -3,6 +3,7 @@
 // hash of the bundle's paths and bytes, so the same bundle always gets the
 // same id. Every model is written to a temporary folder, fsynced and renamed
 // into place, so a crash never leaves a half-written model behind.
+#include <chrono>
 #include <filesystem>
 #include <mutex>
 #include <optional>
@@ -36,8 +37,11 @@ std::string bundle_id(const Bundle& bundle);
 class ModelStore {
  public:
   // Opens (creating when needed) DIR/models. Leftover temporary folders from
-  // an interrupted upload are removed.
+  // an interrupted upload or delete are removed once they are older than
+  // kStaleTempAge: replicas share the data directory, so a fresh one may be
+  // another process's upload in flight.
   explicit ModelStore(std::filesystem::path data_dir);
+  static constexpr std::chrono::minutes kStaleTempAge{60};
 
   struct PutResult {
     ModelInfo info;
@@ -48,6 +52,9 @@ class ModelStore {
   PutResult put(const Bundle& bundle);
 
   std::optional<ModelInfo> info(const std::string& id) const;
+  // Whether the model is stored now: one stat, cheap enough for every render
+  // (another replica may have removed it).
+  bool contains(const std::string& id) const;
   std::optional<Bundle> load(const std::string& id) const;
   std::vector<ModelInfo> list() const;
   bool remove(const std::string& id);

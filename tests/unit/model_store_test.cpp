@@ -134,9 +134,35 @@ TEST_F(ModelStoreTest, LeftoverTemporaryFoldersAreCleaned) {
   fs::create_directories(dir_ / "models" / ".tmp-0123-abc" / "files");
   std::ofstream(dir_ / "models" / ".tmp-0123-abc" / "files" / "half.obj") << "v 0 0";
   fs::create_directories(dir_ / "models" / ".tmp-removed-xyz");
+  const auto long_ago = fs::file_time_type::clock::now() - ModelStore::kStaleTempAge - std::chrono::minutes(1);
+  fs::last_write_time(dir_ / "models" / ".tmp-0123-abc", long_ago);
+  fs::last_write_time(dir_ / "models" / ".tmp-removed-xyz", long_ago);
   ModelStore store(dir_);
   EXPECT_TRUE(entries().empty());
   EXPECT_TRUE(store.list().empty());
+}
+
+// Replicas share the data directory: one starting up must not delete the
+// upload another is writing right now.
+TEST_F(ModelStoreTest, AFreshTemporaryFolderIsAnotherProcesssUploadAndStays) {
+  fs::create_directories(dir_ / "models" / ".tmp-0123-abc" / "files");
+  std::ofstream(dir_ / "models" / ".tmp-0123-abc" / "files" / "half.obj") << "v 0 0";
+  ModelStore store(dir_);
+  EXPECT_EQ(entries(), std::set<std::string>{".tmp-0123-abc"});
+  EXPECT_TRUE(store.list().empty());
+}
+
+TEST_F(ModelStoreTest, TwoStoresOnOneFolderSeeEachOthersChanges) {
+  ModelStore a(dir_);
+  ModelStore b(dir_);
+  const std::string id = a.put(triangle_bundle()).info.id;
+  EXPECT_TRUE(b.contains(id));
+  ASSERT_EQ(b.list().size(), 1u);
+  EXPECT_TRUE(b.load(id));
+  EXPECT_FALSE(b.put(triangle_bundle()).created);
+  EXPECT_TRUE(b.remove(id));
+  EXPECT_FALSE(a.contains(id));
+  EXPECT_TRUE(a.list().empty());
 }
 
 TEST_F(ModelStoreTest, RejectedBundleLeavesNothingBehind) {

@@ -1,0 +1,36 @@
+// GET /metrics: Prometheus text format. Requests are counted by the server's
+// logger hook (it runs once per answered request, after the error handler
+// has settled the status), so no route has to count itself.
+#include "http/routes.h"
+
+namespace toond::http {
+
+void register_metrics_routes(httplib::Server& server, ServiceContext& context) {
+  MetricsRegistry& registry = context.metrics.registry();
+  registry.gauge("toond_render_queue_depth", "Render jobs waiting for the render thread.",
+                 [&context] { return static_cast<double>(context.renderer.queue_depth()); });
+  registry.gauge("toond_models_stored", "Models in the data directory (shared by every replica that mounts it).",
+                 [&context] { return static_cast<double>(context.store.list().size()); });
+  registry.gauge("toond_gpu_models_loaded", "Models whose GPU copy this replica holds (its GPU LRU).",
+                 [&context] { return static_cast<double>(context.renderer.gpu_models_loaded()); });
+  registry.gauge("toond_gpu_model_bytes",
+                 "GPU memory held by the loaded models: vertex and index buffers and textures with mipmaps.",
+                 [&context] { return static_cast<double>(context.renderer.gpu_model_bytes()); });
+  // The result cache counts its own lookups; without a cache both stay 0.
+  registry.counter_from("toond_result_cache_hits_total", "Render requests answered from the result cache.",
+                        [&context] { return context.results ? static_cast<double>(context.results->hits()) : 0.0; });
+  registry.counter_from("toond_result_cache_misses_total", "Render requests the result cache could not answer.",
+                        [&context] { return context.results ? static_cast<double>(context.results->misses()) : 0.0; });
+  registry.gauge("toond_result_cache_bytes", "Bytes of PNGs the result cache holds.",
+                 [&context] { return context.results ? static_cast<double>(context.results->bytes()) : 0.0; });
+
+  server.set_logger([&context](const httplib::Request& req, const httplib::Response& res) {
+    context.metrics.count_request(req.method, route_label(req.path), res.status);
+  });
+
+  server.Get("/metrics", [&context](const httplib::Request&, httplib::Response& res) {
+    res.set_content(context.metrics.registry().exposition(), "text/plain; version=0.0.4; charset=utf-8");
+  });
+}
+
+}  // namespace toond::http

@@ -1,0 +1,49 @@
+#include "http/service_metrics.h"
+
+#include <regex>
+
+namespace toond::http {
+namespace {
+
+// Renders take milliseconds on a GPU and up to seconds on llvmpipe at large
+// sizes; passes are a fraction of that.
+const std::vector<double> kRenderBounds = {0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1, 2.5, 5, 10, 30};
+const std::vector<double> kPassBounds = {0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1, 5};
+
+}  // namespace
+
+ServiceMetrics::ServiceMetrics()
+    : requests_(registry_.counter("toond_http_requests_total", "HTTP requests answered, by method, route and status.",
+                                  {"method", "route", "status"})),
+      render_seconds_(registry_.histogram("toond_render_seconds",
+                                          "Render requests from parsing to the encoded PNG, in seconds.", {},
+                                          kRenderBounds)),
+      pass_seconds_(registry_.histogram("toond_render_pass_seconds",
+                                        "Time of each render stage as in Server-Timing (queue wait, each GPU pass, png), "
+                                        "in seconds.", {"pass"},
+                                        kPassBounds)) {}
+
+void ServiceMetrics::count_request(const std::string& method, const std::string& route, int status) {
+  requests_.add({method, route, std::to_string(status)});
+}
+
+void ServiceMetrics::observe_render(double seconds, const std::vector<render::PassTiming>& passes) {
+  render_seconds_.observe({}, seconds);
+  for (const render::PassTiming& p : passes) pass_seconds_.observe({p.pass}, p.ms / 1000.0);
+}
+
+
+std::string route_label(const std::string& path) {
+  static const std::regex model_path("/models/[0-9a-f]{16,64}");
+  static const std::regex model_render_path("/models/[0-9a-f]{16,64}/render");
+  static const std::vector<std::string> fixed = {"/",       "/healthz", "/schema", "/presets",
+                                                 "/models", "/render",  "/metrics"};
+  for (const std::string& f : fixed) {
+    if (path == f) return f;
+  }
+  if (std::regex_match(path, model_render_path)) return "/models/{id}/render";
+  if (std::regex_match(path, model_path)) return "/models/{id}";
+  return "other";
+}
+
+}  // namespace toond::http

@@ -1,0 +1,39 @@
+#pragma once
+// toond's own metrics, served by GET /metrics (server/http/metrics_routes.cpp).
+// Events are counted where they happen (requests by the server's logger
+// hook, renders by the render route); what other parts count already
+// (result-cache hits) and levels (queue depth, models stored and on the GPU,
+// GPU bytes) are read at scrape time (metrics_routes.cpp).
+#include <string>
+#include <vector>
+
+#include "http/metrics.h"
+#include "render/renderer.h"
+
+namespace toond::http {
+
+class ServiceMetrics {
+ public:
+  ServiceMetrics();
+
+  // One answered HTTP request; `route` is the route's template
+  // (route_label), never the raw path, so ids do not multiply series.
+  void count_request(const std::string& method, const std::string& route, int status);
+  // One finished render: whole request (parse to PNG) and each pass.
+  void observe_render(double seconds, const std::vector<render::PassTiming>& passes);
+
+  MetricsRegistry& registry() { return registry_; }
+  const CounterFamily& requests() const { return requests_; }
+
+ private:
+  MetricsRegistry registry_;
+  CounterFamily& requests_;
+  HistogramFamily& render_seconds_;
+  HistogramFamily& pass_seconds_;
+};
+
+// The route template a request path belongs to ("/models/{id}/render"), or
+// "other" for paths no route serves.
+std::string route_label(const std::string& path);
+
+}  // namespace toond::http

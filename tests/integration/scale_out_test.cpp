@@ -1,0 +1,140 @@
+// Scale-out as deployed: three toond replicas sharing one data directory
+// behind Debian's nginx, configured with the shipped docker/nginx snippets
+// (consistent hashing on the model id of /models/{id}/render, retry on the
+// next replica when one is gone).
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+
+#include "support/generated_models.h"
+#include "support/nginx_balancer.h"
+#include "support/prometheus_text.h"
+#include "test_client.h"
+
+namespace toond::test {
+namespace {
+
+constexpr int kReplicas = 3;
+constexpr int kRendersPerModel = 3;
+const nlohmann::json kParams = {{"width", 64}, {"height", 64}};
+
+std::string scrape(const Daemon& replica) {
+  auto client = replica.client();
+  auto res = client.Get("/metrics");
+  if (!res || res->status != 200) {
+    ADD_FAILURE() << "GET /metrics on " << replica.url() << " failed";
+    return {};
+  }
+  return res->body;
+}
+
+double balancer_renders_seen(const Daemon& replica) {
+  return counter_value(scrape(replica), request_series("POST", "/models/{id}/render", 200));
+}
+
+// Renders `id` `times` times through the balancer and returns the index of
+// the one replica whose /metrics counted them all (-1, with a failure, when
+// they did not all land on one).
+int replica_serving(httplib::Client& balancer, const std::string& id, int times,
+                    const std::vector<std::unique_ptr<Daemon>>& replicas, const std::string& expected_png) {
+  std::vector<double> before;
+  for (const auto& r : replicas) before.push_back(r->running() ? balancer_renders_seen(*r) : 0);
+  for (int i = 0; i < times; ++i) {
+    auto res = post_json(balancer, "/models/" + id + "/render", kParams);
+    if (!res || res->status != 200) {
+      ADD_FAILURE() << "render of " << id << " through the balancer failed";
+      return -1;
+    }
+    EXPECT_EQ(res->body, expected_png) << id;
+  }
+  int serving = -1;
+  for (std::size_t i = 0; i < replicas.size(); ++i) {
+    if (!replicas[i]->running()) continue;
+    const double delta = balancer_renders_seen(*replicas[i]) - before[i];
+    if (delta == 0) continue;
+    EXPECT_EQ(delta, times) << id << " was split across replicas";
+    EXPECT_EQ(serving, -1) << id << " landed on more than one replica";
+    serving = static_cast<int>(i);
+  }
+  EXPECT_NE(serving, -1) << "no replica counted the renders of " << id;
+  return serving;
+}
+
+TEST(ScaleOut, ReplicasBehindNginxShareModelsKeepEachOnOneReplicaAndSurviveLosingOne) {
+  const std::string nginx = NginxBalancer::find_nginx();
+  if (nginx.empty()) GTEST_SKIP() << "nginx is not installed (scripts/install-deps.sh installs nginx-light)";
+
+  const auto data_dir = make_temp_dir("toond-scale-out");
+  {
+    std::vector<std::unique_ptr<Daemon>> replicas;
+    std::vector<std::string> upstreams;
+    for (int i = 0; i < kReplicas; ++i) {
+      replicas.push_back(std::make_unique<Daemon>(data_dir));
+      upstreams.push_back(replicas.back()->url().substr(std::string("http://").size()));
+    }
+    NginxBalancer balancer_process(nginx, upstreams, TOOND_NGINX_SNIPPET_DIR);
+    httplib::Client balancer(balancer_process.url());
+    balancer.set_read_timeout(120);
+
+    // Uploads go through the balancer, to whichever replica it picks.
+    const std::vector<std::pair<std::string, std::string>> bundles = {
+        {"ball.obj", sphere_obj(24, 12)},
+        {"box.obj", cube_obj(1.0)},
+        {"far.obj", sphere_obj(16, 8, 3.0, glm::dvec3(1e4, 0, 0))},
+        {"small_box.obj", cube_obj(0.25, glm::dvec3(0, 5, 0))},
+        {"fine.obj", sphere_obj(40, 20)},
+        {"big_box.obj", cube_obj(50.0)},
+    };
+    std::vector<std::string> ids;
+    for (const auto& [name, obj] : bundles) {
+      ids.push_back(upload_obj_text(balancer, obj, name));
+      ASSERT_FALSE(ids.back().empty()) << name;
+    }
+
+    // Every replica lists every model and renders it, byte for byte like
+    // the balancer does.
+    std::map<std::string, std::string> png;
+    for (const std::string& id : ids) {
+      auto res = post_json(balancer, "/models/" + id + "/render", kParams);
+      ASSERT_TRUE(res);
+      ASSERT_EQ(res->status, 200) << res->body;
+      png[id] = res->body;
+    }
+    for (const auto& replica : replicas) {
+      auto client = replica->client();
+      auto listed = client.Get("/models");
+      ASSERT_TRUE(listed);
+      EXPECT_EQ(nlohmann::json::parse(listed->body)["models"].size(), ids.size()) << replica->url();
+      for (const std::string& id : ids) {
+        auto res = post_json(client, "/models/" + id + "/render", kParams);
+        ASSERT_TRUE(res);
+        ASSERT_EQ(res->status, 200) << res->body;
+        EXPECT_EQ(res->body, png[id]) << id << " on " << replica->url();
+      }
+    }
+
+    // Each model's balancer renders land on one replica.
+    std::map<std::string, int> owner;
+    for (const std::string& id : ids) owner[id] = replica_serving(balancer, id, kRendersPerModel, replicas, png[id]);
+
+    // Lose the replica serving the first model: every render through the
+    // balancer still succeeds, and each model lands on one survivor.
+    const int lost = owner[ids.front()];
+    ASSERT_GE(lost, 0);
+    replicas[static_cast<std::size_t>(lost)]->stop();
+    for (const std::string& id : ids) {
+      const int now = replica_serving(balancer, id, 2, replicas, png[id]);
+      EXPECT_NE(now, lost);
+      // Consistent hashing moves only the lost replica's models.
+      if (owner[id] != lost) {
+        EXPECT_EQ(now, owner[id]) << id;
+      }
+    }
+    if (HasFailure()) ADD_FAILURE() << "nginx error log:\n" << balancer_process.error_log();
+  }
+  std::filesystem::remove_all(data_dir);
+}
+
+}  // namespace
+}  // namespace toond::test
