@@ -134,10 +134,8 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     answer->passes = out.plan;
     answer_render(req, res, *answer);
     if (context.results) context.results->put(cache_key, std::move(answer));
-    // The same stages as Server-Timing: waiting in the queue, each pass, PNG.
-    out.timings.push_back({"queue", queue_ms < 0 ? 0 : queue_ms});
-    out.timings.push_back({"png", png_ms});
-    context.metrics.observe_render(std::chrono::duration<double>(Clock::now() - started).count(), out.timings);
+    context.metrics.observe_render(std::chrono::duration<double>(Clock::now() - started).count(), out.timings,
+                                   queue_ms < 0 ? 0 : queue_ms, png_ms);
   };
   server.Post("/render", render);
   server.Post("/models/([0-9a-f]{16,64})/render", render);

@@ -27,9 +27,12 @@ void ServiceMetrics::count_request(const std::string& method, const std::string&
   requests_.add({method, route, std::to_string(status)});
 }
 
-void ServiceMetrics::observe_render(double seconds, const std::vector<render::PassTiming>& passes) {
+void ServiceMetrics::observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms,
+                                    double png_ms) {
   render_seconds_.observe({}, seconds);
+  pass_seconds_.observe({"queue"}, queue_ms / 1000.0);
   for (const render::PassTiming& p : passes) pass_seconds_.observe({p.pass}, p.ms / 1000.0);
+  pass_seconds_.observe({"png"}, png_ms / 1000.0);
 }
 
 

@@ -19,8 +19,10 @@ class ServiceMetrics {
   // One answered HTTP request; `route` is the route's template
   // (route_label), never the raw path, so ids do not multiply series.
   void count_request(const std::string& method, const std::string& route, int status);
-  // One finished render: whole request (parse to PNG) and each pass.
-  void observe_render(double seconds, const std::vector<render::PassTiming>& passes);
+  // One finished render: whole request (parse to PNG), and the stages of
+  // its Server-Timing header: queue wait, each pass, PNG encoding.
+  void observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms,
+                      double png_ms);
 
   MetricsRegistry& registry() { return registry_; }
   const CounterFamily& requests() const { return requests_; }
