@@ -1,13 +1,21 @@
 // toond: starts the render thread (EGL context), opens the model store and
 // serves the HTTP API until SIGINT/SIGTERM, then finishes accepted work.
+#include <pthread.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <thread>
 
 #include <httplib.h>
 
 #include "app/options.h"
 #include "gpu/egl_context.h"
+#include "http/access_control.h"
 #include "http/routes.h"
 #include "render/model_library.h"
 #include "render/render_service.h"
@@ -15,13 +23,46 @@
 
 namespace {
 
-httplib::Server* g_server = nullptr;
-
-void on_signal(int) {
-  // httplib's stop() only flips flags and shuts the listening socket down,
-  // which is safe enough here: the main thread returns from listen().
-  if (g_server) g_server->stop();
+// SIGINT/SIGTERM are blocked in every thread and taken by one thread with
+// sigwait, so stopping the server runs as ordinary code, not in a signal
+// handler. stop() ends listen(); httplib then lets every accepted request
+// finish, and the render thread finishes the jobs already queued before it
+// stops: a render in flight completes and the exit status is 0.
+sigset_t termination_signals() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  return set;
 }
+
+class SignalStopper {
+ public:
+  explicit SignalStopper(httplib::Server& server)
+      : thread_([this, &server] {
+          const sigset_t set = termination_signals();
+          int signal = 0;
+          sigwait(&set, &signal);
+          if (done_) return;
+          std::cerr << "toond: " << (signal == SIGINT ? "SIGINT" : "SIGTERM")
+                    << ", finishing the requests in flight\n";
+          // A signal that comes before listen() has started must still stop it.
+          while (!done_ && !server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+          server.stop();
+        }) {}
+  ~SignalStopper() {
+    done_ = true;
+    // Wakes the waiting thread when the server stopped for another reason.
+    ::kill(::getpid(), SIGTERM);
+    thread_.join();
+  }
+  SignalStopper(const SignalStopper&) = delete;
+  SignalStopper& operator=(const SignalStopper&) = delete;
+
+ private:
+  std::atomic<bool> done_{false};
+  std::thread thread_;
+};
 
 int run(const toond::app::Options& options) {
   if (options.list_gpus) {
@@ -33,6 +74,11 @@ int run(const toond::app::Options& options) {
     }
     return 0;
   }
+
+  // Before any thread starts, so every thread inherits the mask.
+  const sigset_t signals = termination_signals();
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);  // a client that hangs up is a failed write, not a crash
 
   toond::scene::ModelStore store(options.data_dir);
   toond::render::RenderService::Options render_options;
@@ -47,11 +93,14 @@ int run(const toond::app::Options& options) {
   server.set_payload_max_length(options.max_upload_bytes);
   toond::http::ServiceContext context{store, library, renderer,
                                       std::chrono::milliseconds(static_cast<long long>(options.render_timeout_s * 1000))};
+  context.limits = options.limits;
+  context.limits.max_upload_bytes = options.max_upload_bytes;
   // Edited shaders change the image of the same parameters: no cache then.
   if (options.result_cache_bytes > 0 && options.shader_dir.empty()) {
     context.results = std::make_unique<toond::render::ResultCache>(options.result_cache_bytes);
   }
   toond::http::register_routes(server, context);
+  toond::http::install_access_control(server, options.access);
 
   const int port = options.port == 0 ? server.bind_to_any_port(options.host)
                                      : (server.bind_to_port(options.host, options.port) ? options.port : -1);
@@ -65,11 +114,8 @@ int run(const toond::app::Options& options) {
             << "\n";
   std::cout << "listening on http://" << options.host << ":" << port << std::endl;
 
-  g_server = &server;
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  SignalStopper stopper(server);
   const bool ok = server.listen_after_bind();
-  g_server = nullptr;
   return ok ? 0 : 1;
 }
 
@@ -79,6 +125,7 @@ int main(int argc, char** argv) {
   toond::app::Options options;
   try {
     options = toond::app::parse_options(std::vector<std::string>(argv + 1, argv + argc));
+    toond::app::apply_access_environment(options.access);
   } catch (const std::invalid_argument& e) {
     std::cerr << "toond: " << e.what() << "\n";
     return 2;

@@ -1,5 +1,6 @@
 #include "app/options.h"
 
+#include <cstdlib>
 #include <stdexcept>
 
 namespace toond::app {
@@ -40,7 +41,9 @@ Usage: toond [options]
                          (same model and parameters) without rendering; least
                          recently used out first (default 64; 0: off; always
                          off with --shader-dir)
-  --render-timeout S     seconds a request waits for its render (default 60)
+  --render-timeout S     seconds a request waits for its render (default 60;
+                         fractions allowed). Past it: 503 "deadline_exceeded"
+                         with Retry-After, and a job not yet started is dropped
   --shader-dir DIR       read the GLSL files (the names in shaders/) from DIR
                          instead of the embedded copies, and recompile before a
                          render when one changed. A file missing in DIR is an
@@ -50,7 +53,7 @@ Usage: toond [options]
                          serving until the file is fixed.
   --version              print the version and exit
   -h, --help             this text
-
+)" + limit_usage() + R"(
 Routes: GET /healthz, GET/POST /models, GET/DELETE /models/{id}, POST /render,
 GET /schema, GET / (web page). See proto/openapi.yaml.
 )";
@@ -94,7 +97,14 @@ Options parse_options(const std::vector<std::string>& args) {
       o.shader_dir = value();
       if (o.shader_dir.empty()) throw std::invalid_argument("--shader-dir needs a directory");
     } else if (a == "--render-timeout") {
-      o.render_timeout_s = static_cast<double>(parse_int(a, value(), 1, 86400));
+      const std::string& v = value();
+      char* end = nullptr;
+      const double seconds = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end != '\0' || !(seconds >= 0.001 && seconds <= 86400)) {
+        throw std::invalid_argument("--render-timeout expects seconds in 0.001..86400, got '" + v + "'");
+      }
+      o.render_timeout_s = seconds;
+    } else if (parse_limit_option(args, i, o.limits, o.access)) {
     } else {
       throw std::invalid_argument("unknown option '" + a + "' (see --help)");
     }

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "app/limit_options.h"
+
 namespace toond::app {
 
 struct Options {
@@ -21,6 +23,10 @@ struct Options {
   // Empty: the shaders embedded in the binary. Otherwise GLSL files are read
   // from this folder and recompiled when they change (look development).
   std::string shader_dir;
+  // --max-* (server/app/limit_options.cpp); max_upload_bytes above wins
+  // over limits.max_upload_bytes.
+  http::RequestLimits limits;
+  http::AccessOptions access;  // --token / TOOND_TOKEN, --cors-origin
   bool list_gpus = false;
   bool help = false;
   bool version = false;

@@ -8,8 +8,10 @@
 #include "gpu/shader_compile_error.h"
 #include "gpu/shader_log.h"
 #include "render/render_service.h"
+#include "limit_error.h"
 #include "request_error.h"
 #include "scene/import_error.h"
+#include "scene/import_limits.h"
 
 namespace toond::http {
 
@@ -17,17 +19,37 @@ void write_error(httplib::Response& res, int status, const std::string& code,
                  const std::string& message, const std::string& path) {
   res.status = status;
   nlohmann::json body = {{"error", {{"code", code}, {"message", message}, {"path", path}}}};
-  res.set_content(body.dump(), "application/json");
+  res.set_content(dump_for_client(body), "application/json");
+}
+
+void write_limit_error(httplib::Response& res, int status, const std::string& code, const std::string& limit,
+                       const std::string& message, const std::string& path) {
+  res.status = status;
+  nlohmann::json body = {{"error", {{"code", code}, {"message", message}, {"path", path}, {"limit", limit}}}};
+  res.set_content(dump_for_client(body), "application/json");
+}
+
+std::string dump_for_client(const nlohmann::json& body) {
+  // Messages quote what the client sent; bytes that are not UTF-8 become
+  // U+FFFD instead of making the answer itself fail.
+  return body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 void write_exception(httplib::Response& res, std::exception_ptr ep) {
   try {
     std::rethrow_exception(ep);
+  } catch (const LimitError& e) {
+    write_limit_error(res, e.status(), e.code(), e.limit(), e.what(), e.path());
+  } catch (const scene::ImportLimitError& e) {
+    write_limit_error(res, 422, "limit_exceeded", e.limit(), e.what(), e.file());
   } catch (const RequestError& e) {
     if (e.status() == 503) res.set_header("Retry-After", "5");
     write_error(res, e.status(), e.code(), e.what(), e.path());
   } catch (const scene::ImportError& e) {
     write_error(res, 422, "bad_bundle", e.what(), e.file());
+  } catch (const render::DeadlineExceeded& e) {
+    res.set_header("Retry-After", "5");
+    write_error(res, 503, "deadline_exceeded", e.what());
   } catch (const render::QueueFull& e) {
     res.set_header("Retry-After", "1");
     write_error(res, 503, "busy", std::string(e.what()) + "; retry shortly");
@@ -42,7 +64,7 @@ void write_exception(httplib::Response& res, std::exception_ptr ep) {
     nlohmann::json error = {{"code", "shader_error"}, {"message", message}, {"path", e.file()}, {"log", e.log()}};
     if (first.line) error["line"] = *first.line;
     res.status = 500;
-    res.set_content(nlohmann::json{{"error", error}}.dump(), "application/json");
+    res.set_content(dump_for_client({{"error", error}}), "application/json");
   } catch (const gpu::GpuError& e) {
     std::cerr << "toond: GPU error: " << e.what() << "\n";
     write_error(res, 500, "gpu_error", e.what());

@@ -12,22 +12,22 @@ constexpr const char* kIdPattern = "/models/([0-9a-f]{16,64})";
 
 void register_model_routes(httplib::Server& server, ServiceContext& context) {
   server.Post("/models", [&context](const httplib::Request& req, httplib::Response& res) {
-    const scene::Bundle bundle = bundle_from_multipart(req);
-    const auto result = context.store.put(bundle);
+    const scene::Bundle bundle = bundle_from_multipart(req, {}, context.limits);
+    const auto result = context.store.put(bundle, context.limits.import);
     res.status = result.created ? 201 : 200;
-    res.set_content(result.info.to_json().dump(), "application/json");
+    res.set_content(dump_for_client(result.info.to_json()), "application/json");
   });
 
   server.Get("/models", [&context](const httplib::Request&, httplib::Response& res) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& info : context.store.list()) list.push_back(info.to_json());
-    res.set_content(nlohmann::json{{"models", list}}.dump(), "application/json");
+    res.set_content(dump_for_client({{"models", list}}), "application/json");
   });
 
   server.Get(kIdPattern, [&context](const httplib::Request& req, httplib::Response& res) {
     const std::string id = req.matches[1];
     if (auto info = context.store.info(id)) {
-      res.set_content(info->to_json().dump(), "application/json");
+      res.set_content(dump_for_client(info->to_json()), "application/json");
     } else {
       write_error(res, 404, "unknown_model", "no model with id " + id, "/models/" + id);
     }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "http/bundle_upload.h"
+#include "http/request_limits.h"
 #include "http/render_answer.h"
 #include "http/routes.h"
 #include "image/png_codec.h"
@@ -18,16 +19,6 @@ namespace toond::http {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-nlohmann::json parse_params(const std::string& text, const std::string& where) {
-  if (text.empty()) return nlohmann::json::object();
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw RequestError(400, "malformed_json",
-                       where + " is not valid JSON (byte " + std::to_string(e.byte) + ")", "");
-  }
-}
 
 std::string server_timing(const render::RenderOutput& out, double queue_ms, double png_ms) {
   std::ostringstream s;
@@ -57,18 +48,19 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     nlohmann::json request;
     if (req.is_multipart_form_data()) {
       const auto params_part = req.files.find("params");
-      request = parse_params(params_part == req.files.end() ? "" : params_part->second.content,
-                             "the params part");
-      const scene::Bundle bundle = bundle_from_multipart(req, "params");
-      request["model"] = context.store.put(bundle).info.id;
+      request = parse_limited_json(params_part == req.files.end() ? "" : params_part->second.content,
+                                   context.limits, "the params part");
+      const scene::Bundle bundle = bundle_from_multipart(req, "params", context.limits);
+      request["model"] = context.store.put(bundle, context.limits.import).info.id;
     } else {
-      request = parse_params(req.body, "the request body");
+      request = parse_limited_json(req.body, context.limits, "the request body");
     }
     if (req.matches.size() > 1) apply_path_model(request, req.matches[1].str());
 
     const auto& schema = proto::ParamSchema::render_params();
     // Check what the client sent first, so errors point at its own fields;
     // then lay it over its preset and fill the defaults.
+    check_request_counts(request, context.limits);
     schema.validate(request);
     // A scene names its models per object; one request cannot do both (a
     // multipart upload names the uploaded bundle as `model`, so it cannot
@@ -80,7 +72,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     render::RenderJob job;
     const nlohmann::json completed = schema.validate_and_complete(proto::Presets::builtin().expand(request));
     job.params = render::RenderParams::from_json(completed);
-    render::check_render_budget(job.params);
+    render::check_render_budget(job.params, context.limits.render);
     if (!job.params.objects.empty()) {
       for (std::size_t i = 0; i < job.params.objects.size(); ++i) {
         const render::SceneObject& object = job.params.objects[i];
@@ -113,9 +105,14 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
 
     const auto submitted = Clock::now();
+    // Past the deadline the render thread skips the job instead of drawing
+    // an image nobody waits for any more.
+    job.deadline = submitted + context.render_deadline;
     auto future = context.renderer.submit(std::move(job));
     if (future.wait_for(context.render_deadline) != std::future_status::ready) {
-      throw RequestError(503, "deadline_exceeded", "the render did not finish within the deadline");
+      throw RequestError(503, "deadline_exceeded",
+                         "the render did not finish within the limit --render-timeout = " +
+                             std::to_string(context.render_deadline.count()) + " ms");
     }
     render::RenderOutput out = future.get();
     double render_ms = 0;

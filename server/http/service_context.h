@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "http/service_metrics.h"
+#include "http/request_limits.h"
 #include "render/model_library.h"
 #include "render/render_service.h"
 #include "render/result_cache.h"
@@ -17,6 +18,7 @@ struct ServiceContext {
   render::ModelLibrary& library;
   render::RenderService& renderer;
   std::chrono::milliseconds render_deadline{60000};
+  RequestLimits limits{};
   // Default-constructed with the context: GET /metrics and the hooks that feed it.
   ServiceMetrics metrics{};
   // Finished renders by canonical parameters; null: every request renders.

@@ -2,27 +2,50 @@
 
 #include <string>
 
-#include "request_error.h"
+#include "limit_error.h"
 
 namespace toond::render {
+namespace {
 
-void check_render_budget(const RenderParams& p) {
+std::string count(double n) { return std::to_string(static_cast<unsigned long long>(n)); }
+
+}  // namespace
+
+void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
+  const double pixels = static_cast<double>(p.width) * p.height;
+  if (pixels > static_cast<double>(limits.max_output_pixels)) {
+    throw LimitError(422, "--max-output-pixels",
+                     "width × height = " + count(pixels) + " pixels, more than the limit --max-output-pixels = " +
+                         count(static_cast<double>(limits.max_output_pixels)),
+                     "/width");
+  }
+  if (p.lights.size() > limits.max_lights) {
+    throw LimitError(422, "--max-lights",
+                     std::to_string(p.lights.size()) + " lights, more than the limit --max-lights = " +
+                         std::to_string(limits.max_lights),
+                     "/lights");
+  }
+  if (p.objects.size() > limits.max_objects) {
+    throw LimitError(422, "--max-objects",
+                     std::to_string(p.objects.size()) + " objects, more than the limit --max-objects = " +
+                         std::to_string(limits.max_objects),
+                     "/objects");
+  }
   const double side_w = static_cast<double>(p.width) * p.supersample;
   const double side_h = static_cast<double>(p.height) * p.supersample;
   if (side_w > kMaxDrawnSide || side_h > kMaxDrawnSide) {
-    throw RequestError(422, "too_large",
-                       "width/height × supersample exceeds " + std::to_string(kMaxDrawnSide) +
-                           " pixels on a side; lower supersample",
-                       "/supersample");
+    throw LimitError(422, "--max-samples",
+                     "width/height × supersample exceeds " + std::to_string(kMaxDrawnSide) +
+                         " pixels on a side, the largest framebuffer drawn; lower supersample",
+                     "/supersample");
   }
   const double samples = side_w * side_h * p.msaa;
-  if (samples > kMaxDrawnSamples) {
-    throw RequestError(422, "too_large",
-                       "width × height × supersample² × msaa = " + std::to_string(static_cast<long long>(samples)) +
-                           " samples, more than the " +
-                           std::to_string(static_cast<long long>(kMaxDrawnSamples)) +
-                           " one render may draw; lower msaa or supersample",
-                       p.msaa > 1 ? "/msaa" : "/supersample");
+  if (samples > static_cast<double>(limits.max_samples)) {
+    throw LimitError(422, "--max-samples",
+                     "width × height × supersample² × msaa = " + count(samples) +
+                         " samples, more than the limit --max-samples = " +
+                         count(static_cast<double>(limits.max_samples)) + "; lower msaa or supersample",
+                     p.msaa > 1 ? "/msaa" : "/supersample");
   }
 }
 

@@ -161,6 +161,10 @@ void RenderService::run(std::promise<void> started) {
         gpu_model_bytes_ = models.bytes();
         continue;
       }
+      if (task.job->deadline && std::chrono::steady_clock::now() > *task.job->deadline) {
+        task.promise.set_exception(std::make_exception_ptr(DeadlineExceeded()));
+        continue;
+      }
       try {
         // With --shader-dir: pick up edited shader files (a stat per file
         // when nothing changed; nothing at all for the embedded shaders).

@@ -31,6 +31,15 @@ struct JobObject {
 struct RenderJob {
   std::vector<JobObject> objects;  // at least one; a lone model has the identity
   RenderParams params;
+  // Unset: none. A job still queued when its deadline passes is skipped
+  // (its future throws DeadlineExceeded); one already drawing finishes.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
+};
+
+// Set on a job's future when its deadline passed before it was started.
+class DeadlineExceeded : public std::runtime_error {
+ public:
+  DeadlineExceeded() : std::runtime_error("the render's deadline passed while it waited in the queue") {}
 };
 
 // Thrown by submit() when the queue is full.

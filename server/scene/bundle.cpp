@@ -27,6 +27,53 @@ bool is_absolute(std::string_view p) {
   return p.size() >= 2 && p[1] == ':' && ((p[0] >= 'A' && p[0] <= 'Z') || (p[0] >= 'a' && p[0] <= 'z'));
 }
 
+// Bundle names end up in JSON answers and on disk: they must be UTF-8 (a
+// stray byte would make every later answer about the model unprintable) and
+// hold no control characters (a newline in a name would forge log lines).
+std::optional<std::string> unprintable_reason(std::string_view name) {
+  for (std::size_t i = 0; i < name.size();) {
+    const auto c = static_cast<unsigned char>(name[i]);
+    if (c < 0x20 || c == 0x7f) return "a control character";
+    std::size_t extra = 0;
+    if (c < 0x80) {
+      extra = 0;
+    } else if ((c & 0xe0) == 0xc0 && c >= 0xc2) {
+      extra = 1;
+    } else if ((c & 0xf0) == 0xe0) {
+      extra = 2;
+    } else if ((c & 0xf8) == 0xf0 && c <= 0xf4) {
+      extra = 3;
+    } else {
+      return "bytes that are not UTF-8";
+    }
+    if (i + extra >= name.size()) {
+      return "bytes that are not UTF-8";
+    }
+    for (std::size_t k = 1; k <= extra; ++k) {
+      if ((static_cast<unsigned char>(name[i + k]) & 0xc0) != 0x80) return "bytes that are not UTF-8";
+    }
+    i += extra + 1;
+  }
+  return std::nullopt;
+}
+
+// The name as a message may show it: bytes outside printable ASCII as \xNN.
+std::string printable(std::string_view name) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (const char ch : name.substr(0, 200)) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c < 0x7f) {
+      out += ch;
+    } else {
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 0xf];
+    }
+  }
+  return out;
+}
+
 std::string_view folder_of(std::string_view path) {
   const auto slash = path.rfind('/');
   return slash == std::string_view::npos ? std::string_view{} : path.substr(0, slash);
@@ -68,8 +115,11 @@ std::optional<std::string> normalize_path(std::string_view path) {
 
 void Bundle::add(std::string_view path, std::string content) {
   auto normal = normalize_path(path);
-  // The raw name may hold a NUL; keep the reported name printable.
-  std::string shown(path.substr(0, path.find('\0')));
+  // The raw name may hold a NUL or worse; keep the reported name printable.
+  const std::string shown = printable(path);
+  if (const auto reason = unprintable_reason(path)) {
+    throw ImportError(shown, "file name '" + shown + "' holds " + *reason + "; bundle file names must be printable UTF-8");
+  }
   if (!normal) {
     throw ImportError(shown, "file name '" + shown +
                                  "' is not a safe relative path inside the bundle "

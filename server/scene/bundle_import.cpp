@@ -48,9 +48,9 @@ std::string find_model_file(const Bundle& bundle, std::initializer_list<std::str
                                   std::string(noun) + " file");
 }
 
-Model import_bundle(const Bundle& bundle) {
+Model import_bundle(const Bundle& bundle, const ImportLimits& limits) {
   const std::string path = find_model_file(bundle, {".obj", ".m"}, ".obj or .m");
-  return has_extension(path, ".m") ? import_m_bundle(bundle) : import_obj_bundle(bundle);
+  return has_extension(path, ".m") ? import_m_bundle(bundle, limits) : import_obj_bundle(bundle, limits);
 }
 
 }  // namespace toond::scene

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "scene/bundle.h"
+#include "scene/import_limits.h"
 #include "scene/model.h"
 
 namespace toond::scene {
@@ -15,7 +16,8 @@ namespace toond::scene {
 // .m (import_m_bundle, m_import.h). Throws ImportError naming the files when
 // the bundle holds no model file or more than one, and whatever the importer
 // throws.
-Model import_bundle(const Bundle& bundle);
+// `limits` bound what an upload may make (ImportLimitError beyond).
+Model import_bundle(const Bundle& bundle, const ImportLimits& limits = {});
 
 // Whether `path` ends in `extension` (".obj"), ASCII case-insensitive.
 bool has_extension(std::string_view path, std::string_view extension);

@@ -77,11 +77,13 @@ struct Face {
 
 class Parser {
  public:
-  Parser(std::string path, std::string_view text) : path_(std::move(path)), text_(text) {}
+  Parser(std::string path, std::string_view text, const ImportLimits& limits)
+      : path_(std::move(path)), text_(text), limits_(limits) {}
 
   Model run() {
     parse();
     MeshSource source = make_source();
+    source.limits = limits_;
     Model model;
     model.mesh = build_mesh(source, warnings_, [](std::vector<SourceTriangle>& triangles) {
       for (auto& tri : triangles) tri.material = 0;
@@ -315,6 +317,7 @@ class Parser {
 
   std::string path_;
   std::string_view text_;
+  ImportLimits limits_;
   ImportWarnings warnings_;
 
   std::vector<glm::dvec3> positions_;
@@ -341,9 +344,9 @@ class Parser {
 
 }  // namespace
 
-Model import_m_bundle(const Bundle& bundle) {
+Model import_m_bundle(const Bundle& bundle, const ImportLimits& limits) {
   const std::string path = find_model_file(bundle, {".m"}, ".m");
-  return Parser(path, *bundle.find(path)).run();
+  return Parser(path, *bundle.find(path), limits).run();
 }
 
 }  // namespace toond::scene

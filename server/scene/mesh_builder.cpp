@@ -12,6 +12,22 @@
 namespace toond::scene {
 
 void ImportWarnings::add(std::string message) {
+  // Messages quote the file's own names and text; the answer is JSON, so any
+  // byte that would not make valid UTF-8 is shown as '?'.
+  for (std::size_t i = 0; i < message.size();) {
+    const auto c = static_cast<unsigned char>(message[i]);
+    std::size_t extra = c < 0x80 ? 0 : (c & 0xe0) == 0xc0 && c >= 0xc2 ? 1 : (c & 0xf0) == 0xe0 ? 2
+                                   : (c & 0xf8) == 0xf0 && c <= 0xf4  ? 3
+                                                                      : 99;
+    bool ok = extra != 99 && i + extra < message.size();
+    for (std::size_t k = 1; ok && k <= extra; ++k) ok = (static_cast<unsigned char>(message[i + k]) & 0xc0) == 0x80;
+    if (c < 0x20 && c != '\t') ok = false;
+    if (!ok) {
+      message[i++] = '?';
+      continue;
+    }
+    i += extra + 1;
+  }
   if (!seen_.insert(message).second) return;
   if (list_.size() < kMaxWarnings) {
     list_.push_back(std::move(message));
@@ -70,6 +86,7 @@ class Builder {
   Builder(MeshSource& source, ImportWarnings& warnings) : src_(source), warnings_(warnings) {}
 
   Mesh run(const std::function<void(std::vector<SourceTriangle>&)>& assign_materials) {
+    check_limits();
     check_positions();
     check_indices();
     sanitize_colors();
@@ -89,6 +106,21 @@ class Builder {
  private:
   std::string describe_position(std::size_t i) const {
     return src_.describe_position ? src_.describe_position(i) : "vertex " + std::to_string(i + 1);
+  }
+
+  void check_limits() const {
+    if (src_.positions.size() > src_.limits.max_vertices) {
+      throw ImportLimitError(src_.file, "--max-vertices",
+                             src_.file + " has " + std::to_string(src_.positions.size()) +
+                                 " vertex positions, more than the limit --max-vertices = " +
+                                 std::to_string(src_.limits.max_vertices));
+    }
+    if (src_.triangles.size() > src_.limits.max_triangles) {
+      throw ImportLimitError(src_.file, "--max-triangles",
+                             src_.file + " has " + std::to_string(src_.triangles.size()) +
+                                 " triangles, more than the limit --max-triangles = " +
+                                 std::to_string(src_.limits.max_triangles));
+    }
   }
 
   void check_positions() const {

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/import_limits.h"
 #include "scene/model.h"
 
 namespace toond::scene {
@@ -60,9 +61,13 @@ struct MeshSource {
   // Names position `i` in messages, e.g. "vertex 12 (line 40)"; only called
   // on failure. Unset: "vertex i+1".
   std::function<std::string(std::size_t)> describe_position;
+  // Vertex and triangle counts allowed (ImportLimitError beyond).
+  ImportLimits limits;
 };
 
 // Builds the mesh of `source` (whose triangles it consumes):
+// - more positions or triangles than source.limits allow is an
+//   ImportLimitError naming the flag;
 // - every position must be finite, every corner's position index in range
 //   (ImportError naming the file, and the vertex or triangle); normal and
 //   texcoord indices out of range are dropped with a warning;

@@ -157,13 +157,13 @@ ModelStore::ModelStore(fs::path data_dir) : root_(std::move(data_dir) / "models"
   fsync_dir(root_);
 }
 
-ModelStore::PutResult ModelStore::put(const Bundle& bundle) {
+ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& limits) {
   const std::string id = bundle_id(bundle);
   if (auto existing = info(id)) return {std::move(*existing), false};
 
   // The import runs unlocked: it can take a while (texture decoding) and
   // concerns only this bundle.
-  const Model model = import_bundle(bundle);
+  const Model model = import_bundle(bundle, limits);
   ModelInfo info;
   info.id = id;
   info.triangles = model.mesh.triangle_count();
@@ -187,7 +187,8 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle) {
       }
       write_file_durably(target, content);
     }
-    write_file_durably(temp / "info.json", info.to_json().dump(2) + "\n");
+    write_file_durably(temp / "info.json",
+                       info.to_json().dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     std::sort(dirs.begin(), dirs.end());
     dirs.erase(std::unique(dirs.begin(), dirs.end()), dirs.end());
     for (const auto& dir : dirs) fsync_dir(dir);

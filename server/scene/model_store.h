@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/bundle.h"
+#include "scene/import_limits.h"
 
 namespace toond::scene {
 
@@ -47,9 +48,9 @@ class ModelStore {
     ModelInfo info;
     bool created = false;  // false: the same bundle was already stored
   };
-  // Imports the bundle (throws ImportError when it is not a model), then
-  // stores it. Thread-safe.
-  PutResult put(const Bundle& bundle);
+  // Imports the bundle (throws ImportError when it is not a model, and
+  // ImportLimitError beyond `limits`), then stores it. Thread-safe.
+  PutResult put(const Bundle& bundle, const ImportLimits& limits = {});
 
   std::optional<ModelInfo> info(const std::string& id) const;
   // Whether the model is stored now: one stat, cheap enough for every render

@@ -181,11 +181,13 @@ std::vector<std::string> texture_name_candidates(const std::string& raw) {
 
 class Importer {
  public:
-  explicit Importer(const Bundle& bundle) : bundle_(bundle), obj_path_(find_obj(bundle)) {}
+  Importer(const Bundle& bundle, const ImportLimits& limits)
+      : bundle_(bundle), obj_path_(find_obj(bundle)), limits_(limits) {}
 
   Model run() {
     parse();
     MeshSource source = make_source();
+    source.limits = limits_;
     model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
       build_materials(triangles);
     });
@@ -327,8 +329,23 @@ class Importer {
     int slot = -1;
     try {
       TextureLimits limits;
-      limits.max_pixels = std::min(limits.max_pixels, texture_pixels_left_);
-      Texture texture = decode_texture(*bundle_.find(*path), *path, limits);
+      limits.max_pixels = std::min(limits_.max_texture_pixels, texture_pixels_left_);
+      Texture texture;
+      try {
+        texture = decode_texture(*bundle_.find(*path), *path, limits);
+      } catch (const TextureTooLarge& e) {
+        // Over the daemon's limit for one image: the upload is refused, so
+        // the client learns which file to shrink. Over what is left of the
+        // model's total, the texture is left out below with a warning.
+        if (e.pixels() > limits_.max_texture_pixels) {
+          throw ImportLimitError(*path, "--max-texture-pixels",
+                                 *path + ": the image is " + std::to_string(e.width()) + "x" +
+                                     std::to_string(e.height()) + " = " + std::to_string(e.pixels()) +
+                                     " pixels, more than the limit --max-texture-pixels = " +
+                                     std::to_string(limits_.max_texture_pixels));
+        }
+        throw;
+      }
       texture.color_space = space;
       if (!colour_map && is_greyscale(texture)) {
         warnings_.add(*path + ": the bump map of material " + quoted(material_name) +
@@ -340,6 +357,8 @@ class Importer {
         model_.textures.push_back(std::move(texture));
         slot = static_cast<int>(model_.textures.size()) - 1;
       }
+    } catch (const ImportLimitError&) {
+      throw;
     } catch (const std::exception& e) {
       warnings_.add(*path + ": " + kind + " of material " + quoted(material_name) + " cannot be used: " + e.what() +
                     "; " + fallback);
@@ -406,6 +425,7 @@ class Importer {
 
   const Bundle& bundle_;
   std::string obj_path_;
+  ImportLimits limits_;
   ImportWarnings warnings_;
   std::unique_ptr<BundleMaterialReader> reader_;
   tinyobj::attrib_t attrib_;
@@ -423,6 +443,6 @@ class Importer {
 
 }  // namespace
 
-Model import_obj_bundle(const Bundle& bundle) { return Importer(bundle).run(); }
+Model import_obj_bundle(const Bundle& bundle, const ImportLimits& limits) { return Importer(bundle, limits).run(); }
 
 }  // namespace toond::scene

@@ -1,5 +1,7 @@
 #include "scene/obj_text.h"
 
+#include <vector>
+
 namespace toond::scene {
 namespace {
 
@@ -36,6 +38,48 @@ std::string fix_corners(std::string_view keyword, std::string_view rest) {
     out += ' ';
     out += corner;
     i = end;
+  }
+  return out;
+}
+
+// tinyobj triangulates a polygon by ear clipping, whose cost grows with the
+// square (up to the cube) of its corner count: one uploaded face of 100 000
+// corners would keep the importer busy for hours. Larger faces than any
+// modelling tool writes are cut into a fan here instead.
+constexpr std::size_t kMaxEarClippedCorners = 256;
+
+std::size_t corner_count(std::string_view rest) {
+  std::size_t count = 0;
+  bool in_token = false;
+  for (const char c : rest) {
+    const bool blank = is_blank(c);
+    if (!blank && !in_token) ++count;
+    in_token = !blank;
+  }
+  return count;
+}
+
+// "f a b c d …" as the fan "f a b c", "f a c d", …: one line per triangle,
+// so the lines after it shift (only for such oversized faces).
+std::string fan_of(std::string_view rest) {
+  std::vector<std::string_view> corners;
+  std::size_t i = 0;
+  while (i < rest.size()) {
+    while (i < rest.size() && is_blank(rest[i])) ++i;
+    std::size_t end = i;
+    while (end < rest.size() && !is_blank(rest[end])) ++end;
+    if (end > i) corners.push_back(rest.substr(i, end - i));
+    i = end;
+  }
+  std::string out;
+  for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+    if (!out.empty()) out += '\n';
+    out += "f ";
+    out += corners[0];
+    out += ' ';
+    out += corners[k];
+    out += ' ';
+    out += corners[k + 1];
   }
   return out;
 }
@@ -111,7 +155,10 @@ std::string prepare_obj_text(std::string_view text) {
     std::string_view rest;
     std::string_view line(joined);
     if (split_statement(line, keyword, rest)) {
-      if ((keyword == "f" || keyword == "l" || keyword == "p") && needs_corner_fix(rest)) {
+      if (keyword == "f" && corner_count(rest) > kMaxEarClippedCorners) {
+        const std::string fixed = needs_corner_fix(rest) ? fix_corners(keyword, rest) : std::string(line);
+        out += fan_of(std::string_view(fixed).substr(fixed.find('f') + 1));
+      } else if ((keyword == "f" || keyword == "l" || keyword == "p") && needs_corner_fix(rest)) {
         out += fix_corners(keyword, rest);
       } else if (keyword == "mtllib" && rest.find('\\') != std::string_view::npos) {
         out += "mtllib";

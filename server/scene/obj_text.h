@@ -16,6 +16,9 @@ namespace toond::scene {
 // - `usemtl` names containing blanks become material_alias(name), since
 //   tinyobj keeps only the first word of a usemtl name but the whole line of
 //   a newmtl name.
+// - A face of more than 256 corners becomes a triangle fan, one `f` line per
+//   triangle (tinyobj's ear clipping would take time growing with the
+//   square of the corners or worse); only such faces shift later lines.
 std::string prepare_obj_text(std::string_view text);
 
 // A single-token stand-in for a material name: trimmed, each run of blanks

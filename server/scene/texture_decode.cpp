@@ -2,12 +2,42 @@
 
 #include <climits>
 #include <cstring>
+#include <algorithm>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <stdexcept>
 
 #include <stb_image.h>
 
 namespace toond::scene {
+namespace {
+
+void check_limits(std::uint64_t width, std::uint64_t height, const TextureLimits& limits) {
+  const auto side = static_cast<std::uint64_t>(limits.max_dimension);
+  if (width > side || height > side || width * height > limits.max_pixels) {
+    const auto w = static_cast<int>(std::min<std::uint64_t>(width, INT_MAX));
+    const auto h = static_cast<int>(std::min<std::uint64_t>(height, INT_MAX));
+    throw TextureTooLarge(w, h, "the image is " + std::to_string(width) + "x" + std::to_string(height) +
+                                    ", larger than the limit of " + std::to_string(limits.max_dimension) +
+                                    " per side and " + std::to_string(limits.max_pixels) + " pixels");
+  }
+}
+
+// Width and height from a PNG's IHDR chunk (big-endian, right after the
+// 8-byte signature and the chunk's length and type), when it is a PNG.
+std::optional<std::pair<std::uint64_t, std::uint64_t>> png_header_size(std::string_view bytes) {
+  static constexpr std::string_view kSignature("\x89PNG\r\n\x1a\n", 8);
+  if (bytes.size() < 24 || bytes.substr(0, 8) != kSignature || bytes.substr(12, 4) != "IHDR") return std::nullopt;
+  const auto be32 = [&](std::size_t at) {
+    std::uint64_t v = 0;
+    for (std::size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+    return v;
+  };
+  return std::make_pair(be32(16), be32(20));
+}
+
+}  // namespace
 
 Texture decode_texture(std::string_view bytes, const std::string& path, const TextureLimits& limits) {
   if (bytes.empty()) throw std::runtime_error("the file is empty");
@@ -18,16 +48,16 @@ Texture decode_texture(std::string_view bytes, const std::string& path, const Te
   int width = 0;
   int height = 0;
   int channels = 0;
+  if (const auto size = png_header_size(bytes)) {
+    // stb_image's own header check refuses very large PNGs as "unknown image
+    // type"; read the size first so the answer says what is wrong.
+    check_limits(size->first, size->second, limits);
+  }
   if (!stbi_info_from_memory(data, length, &width, &height, &channels)) {
     throw std::runtime_error(std::string("not a readable image (") + stbi_failure_reason() + ")");
   }
   if (width <= 0 || height <= 0) throw std::runtime_error("the image has no pixels");
-  if (width > limits.max_dimension || height > limits.max_dimension ||
-      static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) > limits.max_pixels) {
-    throw std::runtime_error("the image is " + std::to_string(width) + "x" + std::to_string(height) +
-                             ", larger than the limit of " + std::to_string(limits.max_dimension) + " per side and " +
-                             std::to_string(limits.max_pixels) + " pixels");
-  }
+  check_limits(width, height, limits);
 
   int decoded_w = 0;
   int decoded_h = 0;

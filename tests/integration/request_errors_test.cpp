@@ -85,10 +85,10 @@ TEST_F(RequestErrors, RenderBeyondTheSampleBudgetNamesTheKnobToLower) {
   auto client = daemon().client();
   const auto error = expect_error(
       post_json(client, "/render", {{"width", 4096}, {"height", 4096}, {"supersample", 2}, {"msaa", 8}}), 422,
-      "too_large", "/msaa");
+      "limit_exceeded", "/msaa");
   EXPECT_NE(error["message"].get<std::string>().find("samples"), std::string::npos);
   expect_error(post_json(client, "/render", {{"width", 4096}, {"height", 4096}, {"supersample", 3}, {"msaa", 1}}),
-               422, "too_large", "/supersample");
+               422, "limit_exceeded", "/supersample");
 }
 
 TEST_F(RequestErrors, MissingModel) {

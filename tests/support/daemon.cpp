@@ -132,6 +132,13 @@ int Daemon::stop() {
   return status;
 }
 
+void Daemon::kill_hard() {
+  if (pid_ <= 0) return;
+  kill(pid_, SIGKILL);
+  wait_for_exit(pid_, std::chrono::seconds(10));
+  pid_ = -1;
+}
+
 ProcessResult run_process(const std::vector<std::string>& argv_in,
                           const std::vector<std::string>& extra_env) {
   std::vector<std::string> args = argv_in;

@@ -23,6 +23,9 @@ class Daemon {
   httplib::Client client() const;
   // Sends SIGTERM and waits; returns the exit status (or -1).
   int stop();
+  // SIGKILL, as a crash or power cut would end it; returns once it is gone.
+  void kill_hard();
+  int pid() const { return pid_; }
   bool running() const { return pid_ > 0; }
 
  private:
