@@ -24,7 +24,7 @@ std::string server_timing(const render::RenderOutput& out, double queue_ms, doub
   std::ostringstream s;
   s.precision(3);
   s << std::fixed << "queue;dur=" << queue_ms;
-  for (const auto& t : out.timings) s << ", " << t.pass << ";dur=" << t.ms;
+  for (const auto& t : out.timings) s << ", " << t.pass << ";dur=" << t.ms << (t.gpu ? ";desc=gpu" : "");
   s << ", png;dur=" << png_ms;
   return s.str();
 }
@@ -116,7 +116,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     }
     render::RenderOutput out = future.get();
     double render_ms = 0;
-    for (const auto& t : out.timings) render_ms += t.ms;
+    for (const auto& t : out.timings) render_ms += t.cpu_ms;
     const double queue_ms =
         std::chrono::duration<double, std::milli>(Clock::now() - submitted).count() - render_ms;
 

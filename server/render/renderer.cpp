@@ -5,26 +5,11 @@
 #include "gpu/gpu_error.h"
 #include "image/downsample.h"
 #include "render/camera.h"
+#include "render/pass_timer.h"
 #include "render/shadow_fit.h"
 
 namespace toond::render {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-class PassTimer {
- public:
-  explicit PassTimer(std::vector<PassTiming>& out) : out_(out) {}
-  void mark(Pass pass) {
-    const auto now = Clock::now();
-    out_.push_back({pass_name(pass), std::chrono::duration<double, std::milli>(now - start_).count()});
-    start_ = now;
-  }
-
- private:
-  std::vector<PassTiming>& out_;
-  Clock::time_point start_ = Clock::now();
-};
 
 void check_gl(const char* where) {
   const GLenum error = glGetError();

@@ -218,6 +218,45 @@ TEST_F(NumericalStress, NoSelfShadowOnTheLitSideOfAConvexModel) {
   }
 }
 
+// A cube standing on the floor, lit from the upper right: its shadow must
+// start at its left side, where it touches the floor. A depth bias large
+// enough to lift shadows off their casters ("peter-panning") leaves a lit
+// strip of floor between the cube and its shadow.
+TEST_F(NumericalStress, ShadowTouchesItsCasterAtTheContact) {
+  auto client = daemon().client();
+  json params = grey_params(upload(cube_obj(1.0), "cube.obj"));
+  params["msaa"] = 1;
+  params["width"] = 384;
+  params["height"] = 384;
+  params["camera"] = {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 20}};
+  params["lights"] = {{{"type", "directional"}, {"direction", {-1, -1, 0}}}};
+  params["shading"]["band_aa"] = false;
+  const auto cube_only = render_ok(client, params);
+  params["floor"] = {{"enabled", true}, {"size", 3}, {"color", {0.8, 0.8, 0.8}}};
+  const auto lit = render_ok(client, params);
+  for (int map_size : {512, 2048}) {
+    params["shadows"] = {{"enabled", true}, {"map_size", map_size}};
+    const auto shadowed = render_ok(client, params);
+    const int w = shadowed.width;
+    auto darkened = [&](int x, int y) {
+      return x >= 0 && luminance(rgb_at(shadowed, x, y)) < luminance(rgb_at(lit, x, y)) - 0.05;
+    };
+    std::size_t rows = 0, gaps = 0;
+    for (int y = 0; y < shadowed.height; ++y) {
+      int left = 0;
+      while (left < w && rgb_at(cube_only, left, y) == Rgb{153, 153, 153}) ++left;
+      if (left == w) continue;
+      bool shadow_near = false;
+      for (int x = left - 10; x < left - 2; ++x) shadow_near = shadow_near || darkened(x, y);
+      if (!shadow_near) continue;
+      ++rows;
+      gaps += darkened(left - 2, y) ? 0 : 1;
+    }
+    EXPECT_GT(rows, 20u) << "map " << map_size << ": the shadow reaches the cube on that many rows";
+    EXPECT_EQ(gaps, 0u) << "map " << map_size << ": rows with more than a pixel of lit floor before the shadow";
+  }
+}
+
 // Meshes that break naive code: zero-area triangles, zero-length and
 // flipped normals, duplicated vertices, a big index count. Each uploads
 // and renders something sane.
