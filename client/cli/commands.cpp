@@ -122,6 +122,19 @@ class OutputFile {
   bool committed_ = false;
 };
 
+// A stored model renders through POST /models/{id}/render, which a load
+// balancer in front of several replicas hashes on (docker/nginx/); anything
+// else, and an id of the wrong shape (the server names the error), through
+// POST /render.
+std::string render_route(const json& params) {
+  const auto model = params.find("model");
+  if (model == params.end() || !model->is_string()) return "/render";
+  const std::string& id = model->get_ref<const std::string&>();
+  const bool id_shaped = id.size() >= 16 && id.size() <= 64 &&
+                         id.find_first_not_of("0123456789abcdef") == std::string::npos;
+  return id_shaped ? "/models/" + id + "/render" : "/render";
+}
+
 int render(const Options& options) {
   // Everything that can be checked locally is, before a byte is sent.
   const json params = build_render_params(options, proto::ParamSchema::render_params());
@@ -134,7 +147,7 @@ int render(const Options& options) {
 
   Connection conn(options.server);
   httplib::Result result = [&] {
-    if (options.obj_path.empty()) return conn.post_json("/render", params);
+    if (options.obj_path.empty()) return conn.post_json(render_route(params), params);
     std::cerr << "toon: uploading " << bundle_summary(scan) << "\n";
     httplib::MultipartFormDataItems items = bundle_parts(scan);
     items.push_back({"params", params.dump(), "", "application/json"});

@@ -2,7 +2,12 @@
 // path, so a load balancer can hash on the model.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
+#include "image/png_codec.h"
 #include "support/generated_models.h"
+#include "support/prometheus_text.h"
 #include "test_client.h"
 
 namespace toond::test {
@@ -63,6 +68,25 @@ TEST_F(ModelRenderRoute, AnUnknownModelIs404AndParametersAreStillValidated) {
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 400);
   EXPECT_EQ(error_of(bad)["path"], "/width");
+}
+
+// `toon render --model ID` goes through the model's path, so the CLI behind a
+// load balancer keeps each model on one replica too.
+TEST_F(ModelRenderRoute, TheCliRendersAStoredModelThroughItsPath) {
+  auto client = daemon().client();
+  const std::string id = upload_obj_text(client, sphere_obj(20, 10), "cli_ball.obj");
+  ASSERT_FALSE(id.empty());
+  const std::string series = request_series("POST", "/models/{id}/render", 200);
+  const double before = counter_value(client.Get("/metrics")->body, series);
+  const auto out = make_temp_dir("toon-cli-route") / "out.png";
+  const ProcessResult run = run_process({TOON_BINARY, "render", "--server", daemon().url(), "--model", id, "--set",
+                                         "width=40", "--set", "height=40", "-o", out.string()});
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(counter_value(client.Get("/metrics")->body, series), before + 1);
+  std::ifstream file(out, std::ios::binary);
+  const std::string png((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(image::decode_png(png).width, 40);
+  std::filesystem::remove_all(out.parent_path());
 }
 
 }  // namespace
