@@ -98,14 +98,14 @@ render::PassTiming timing(const std::string& pass, double ms) {
 
 TEST(Metrics, ServiceMetricsTimeRendersAndEachStage) {
   ServiceMetrics metrics;
-  metrics.observe_render(0.02, {timing("shade", 4.0), timing("outline", 1.0)}, 0.5, 2.0);
+  metrics.observe_render(0.02, {timing("shade", 4.0), timing("outline", 1.0)}, 1.5, 2.0);
   const std::string text = metrics.registry().exposition();
   EXPECT_NE(text.find("toond_render_seconds_count 1\n"), std::string::npos) << text;
   EXPECT_NE(text.find("toond_render_seconds_bucket{le=\"0.025\"} 1\n"), std::string::npos) << text;
   EXPECT_NE(text.find("toond_render_seconds_bucket{le=\"0.01\"} 0\n"), std::string::npos) << text;
   EXPECT_NE(text.find("toond_render_pass_seconds_sum{pass=\"shade\"} 0.004\n"), std::string::npos) << text;
   EXPECT_NE(text.find("toond_render_pass_seconds_count{pass=\"outline\"} 1\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("toond_render_pass_seconds_sum{pass=\"queue\"} 0.0005\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("toond_render_pass_seconds_sum{pass=\"queue\"} 0.0015\n"), std::string::npos) << text;
   EXPECT_NE(text.find("toond_render_pass_seconds_sum{pass=\"png\"} 0.002\n"), std::string::npos) << text;
 }
 
