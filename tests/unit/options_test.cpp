@@ -34,6 +34,14 @@ TEST(DaemonOptions, BadValuesNameTheFlag) {
   }
 }
 
+TEST(DaemonOptions, ResultCacheSizeInMegabytes) {
+  EXPECT_EQ(parse_options({}).result_cache_bytes, std::size_t{64} << 20);
+  EXPECT_EQ(parse_options({"--result-cache-mb", "0"}).result_cache_bytes, 0u);
+  EXPECT_EQ(parse_options({"--result-cache-mb", "3"}).result_cache_bytes, std::size_t{3} << 20);
+  EXPECT_THROW(parse_options({"--result-cache-mb", "-1"}), std::invalid_argument);
+  EXPECT_NE(usage().find("--result-cache-mb"), std::string::npos);
+}
+
 TEST(DaemonOptions, UsageMentionsEveryFlag) {
   for (const char* flag : {"--listen", "--data-dir", "--gpu", "--list-gpus", "--queue", "--max-upload-bytes",
                            "--threads", "--render-timeout"}) {
