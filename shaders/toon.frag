@@ -88,7 +88,10 @@ layout(location = 0) out vec4 o_color;
 float shadow_visibility(vec3 n) {
   vec4 p = u_shadow_matrix * vec4(v_position + n * u_shadow_offset, 1.0);
   vec3 c = p.xyz / p.w * 0.5 + 0.5;
-  if (c.z > 1.0) return 1.0;
+  // Past the far plane (floor beyond the model's bounds, seen from the
+  // light) is behind every occluder in the map: compare at the far plane, so
+  // it is shadowed where the map holds anything and lit where it is empty.
+  c.z = min(c.z, 1.0);
   float lit = 0.0;
   float taps = 0.0;
 #ifdef SHADOW_PCF

@@ -5,6 +5,7 @@
 // every time.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -218,10 +219,11 @@ TEST_F(NumericalStress, NoSelfShadowOnTheLitSideOfAConvexModel) {
   }
 }
 
-// A cube standing on the floor, lit from the upper right: its shadow must
-// start at its left side, where it touches the floor. A depth bias large
-// enough to lift shadows off their casters ("peter-panning") leaves a lit
-// strip of floor between the cube and its shadow.
+// A cube standing on the floor, lit at 45° from the upper right: its shadow
+// starts at its left side, where it touches the floor, and runs a cube's
+// width to the left. No lit strip between the cube and its shadow (shadows
+// lifted off their casters, "peter-panning"), and no shadow cut short where
+// the floor lies past the model's bounds as the light sees them.
 TEST_F(NumericalStress, ShadowTouchesItsCasterAtTheContact) {
   auto client = daemon().client();
   json params = grey_params(upload(cube_obj(1.0), "cube.obj"));
@@ -241,19 +243,25 @@ TEST_F(NumericalStress, ShadowTouchesItsCasterAtTheContact) {
     auto darkened = [&](int x, int y) {
       return x >= 0 && luminance(rgb_at(shadowed, x, y)) < luminance(rgb_at(lit, x, y)) - 0.05;
     };
-    std::size_t rows = 0, gaps = 0;
+    std::size_t rows = 0, gaps = 0, short_rows = 0;
     for (int y = 0; y < shadowed.height; ++y) {
       int left = 0;
       while (left < w && rgb_at(cube_only, left, y) == Rgb{153, 153, 153}) ++left;
       if (left == w) continue;
+      int right = left;
+      while (right < w && rgb_at(cube_only, right, y) != Rgb{153, 153, 153}) ++right;
       bool shadow_near = false;
       for (int x = left - 10; x < left - 2; ++x) shadow_near = shadow_near || darkened(x, y);
       if (!shadow_near) continue;
       ++rows;
       gaps += darkened(left - 2, y) ? 0 : 1;
+      bool full_length = true;
+      for (int x = std::max(0, left - (right - left) * 9 / 10); x < left - 2; ++x) full_length = full_length && darkened(x, y);
+      short_rows += full_length ? 0 : 1;
     }
     EXPECT_GT(rows, 20u) << "map " << map_size << ": the shadow reaches the cube on that many rows";
     EXPECT_EQ(gaps, 0u) << "map " << map_size << ": rows with more than a pixel of lit floor before the shadow";
+    EXPECT_EQ(short_rows, 0u) << "map " << map_size << ": rows where the shadow stops short of a cube's width";
   }
 }
 
