@@ -139,6 +139,13 @@ void Daemon::kill_hard() {
   pid_ = -1;
 }
 
+void Daemon::crash() {
+  if (pid_ <= 0) return;
+  kill(pid_, SIGKILL);
+  wait_for_exit(pid_, std::chrono::seconds(5));
+  pid_ = -1;
+}
+
 ProcessResult run_process(const std::vector<std::string>& argv_in,
                           const std::vector<std::string>& extra_env) {
   std::vector<std::string> args = argv_in;

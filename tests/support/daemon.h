@@ -23,6 +23,8 @@ class Daemon {
   httplib::Client client() const;
   // Sends SIGTERM and waits; returns the exit status (or -1).
   int stop();
+  // SIGKILL: a crash, nothing finished or closed politely; then reaped.
+  void crash();
   // SIGKILL, as a crash or power cut would end it; returns once it is gone.
   void kill_hard();
   int pid() const { return pid_; }
