@@ -39,6 +39,8 @@ void ServiceMetrics::observe_render(double seconds, const std::vector<render::Pa
 std::string route_label(const std::string& path) {
   static const std::regex model_path("/models/[0-9a-f]{16,64}");
   static const std::regex model_render_path("/models/[0-9a-f]{16,64}/render");
+  // The web page's embedded files (web_page_routes.cpp).
+  static const std::regex page_file(R"(/(?:[A-Za-z0-9_-]+/)*[A-Za-z0-9_.-]+\.(?:html|js|css|svg|png|ico|json))");
   static const std::vector<std::string> fixed = {"/",       "/healthz", "/schema", "/presets",
                                                  "/models", "/render",  "/metrics"};
   for (const std::string& f : fixed) {
@@ -46,6 +48,7 @@ std::string route_label(const std::string& path) {
   }
   if (std::regex_match(path, model_render_path)) return "/models/{id}/render";
   if (std::regex_match(path, model_path)) return "/models/{id}";
+  if (std::regex_match(path, page_file)) return "/{file}";
   return "other";
 }
 

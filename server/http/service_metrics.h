@@ -34,8 +34,8 @@ class ServiceMetrics {
   HistogramFamily& pass_seconds_;
 };
 
-// The route template a request path belongs to ("/models/{id}/render"), or
-// "other" for paths no route serves.
+// The route template a request path belongs to ("/models/{id}/render",
+// "/{file}" for the web page's files), or "other" for paths no route serves.
 std::string route_label(const std::string& path);
 
 }  // namespace toond::http

@@ -80,6 +80,9 @@ TEST(Metrics, RoutesAreLabelledByTemplateNotByPath) {
   EXPECT_EQ(route_label("/models/" + id + "/render"), "/models/{id}/render");
   EXPECT_EQ(route_label("/models/" + id + "/other"), "other");
   EXPECT_EQ(route_label("/no/such/route"), "other");
+  EXPECT_EQ(route_label("/app.js"), "/{file}");
+  EXPECT_EQ(route_label("/lib/controls.css"), "/{file}");
+  EXPECT_EQ(route_label("/../etc/passwd"), "other");
 }
 
 TEST(Metrics, CountersKeptElsewhereAreReadAtScrapeAndTypedAsCounters) {
