@@ -15,6 +15,8 @@ packages=(
   libcpp-httplib-dev libssl-dev nlohmann-json3-dev libvalijson-dev
   # tests, shader checks, benchmarks
   libgtest-dev libgmock-dev glslang-tools libbenchmark-dev
+  # libFuzzer targets (scripts/fuzz.sh): clang and its fuzzer runtime
+  clang libclang-rt-14-dev
   # the scale-out test's load balancer (tests/integration/scale_out_test.cpp)
   nginx-light
 )

@@ -22,3 +22,6 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir build-asan --output-on-failure -j "$jobs" --timeout 900
+
+echo "== fuzzing (libFuzzer + ASan + UBSan, clang, 20 s per target)"
+scripts/fuzz.sh 20

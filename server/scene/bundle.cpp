@@ -110,6 +110,9 @@ std::optional<std::string> normalize_path(std::string_view path) {
     if (!out.empty()) out += '/';
     out += seg;
   }
+  // "./C:/x" or "a/../C:/x" only becomes a drive path once normalised
+  // (found by tests/fuzz/fuzz_multipart).
+  if (is_absolute(out)) return std::nullopt;
   return out;
 }
 

@@ -6,10 +6,27 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <stdexcept>
 
 namespace toond::test {
+namespace {
+
+// Whether `in` holds a status line, headers and as many body bytes as
+// Content-Length says.
+bool answer_complete(const std::string& in) {
+  const auto head_end = in.find("\r\n\r\n");
+  if (head_end == std::string::npos) return false;
+  std::string head = in.substr(0, head_end);
+  for (auto& c : head) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const auto at = head.find("\r\ncontent-length:");
+  if (at == std::string::npos) return false;
+  const std::size_t length = std::stoul(head.substr(at + 17));
+  return in.size() >= head_end + 4 + length;
+}
+
+}  // namespace
 
 RawAnswer send_raw(const std::string& url, const std::string& bytes, int timeout_s, bool hang_up) {
   const auto colon = url.rfind(':');
@@ -40,6 +57,7 @@ RawAnswer send_raw(const std::string& url, const std::string& bytes, int timeout
     const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
     if (n <= 0) break;
     in.append(buf, static_cast<std::size_t>(n));
+    if (answer_complete(in)) break;  // a kept-alive connection need not close
   }
   ::close(fd);
   RawAnswer answer;
