@@ -85,6 +85,7 @@ int run(const toond::app::Options& options) {
   render_options.gpu_index = options.gpu;
   render_options.queue_capacity = options.queue;
   render_options.shader_dir = options.shader_dir;
+  render_options.gpu_model_bytes = options.gpu_cache_bytes;
   toond::render::RenderService renderer(render_options);
   toond::render::ModelLibrary library(store, 16);
 

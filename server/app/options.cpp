@@ -41,6 +41,9 @@ Usage: toond [options]
                          (same model and parameters) without rendering; least
                          recently used out first (default 64; 0: off; always
                          off with --shader-dir)
+  --gpu-cache-mb N       GPU memory for models kept uploaded between renders
+                         (default 1024; at most 8 models); least recently used
+                         out first
   --render-timeout S     seconds a request waits for its render (default 60;
                          fractions allowed). Past it: 503 "deadline_exceeded"
                          with Retry-After, and a job not yet started is dropped
@@ -89,6 +92,8 @@ Options parse_options(const std::vector<std::string>& args) {
       o.queue = static_cast<std::size_t>(parse_int(a, value(), 1, 100000));
     } else if (a == "--max-upload-bytes") {
       o.max_upload_bytes = static_cast<std::size_t>(parse_int(a, value(), 1024, 1LL << 40));
+    } else if (a == "--gpu-cache-mb") {
+      o.gpu_cache_bytes = static_cast<std::size_t>(parse_int(a, value(), 1, 1 << 20)) << 20;
     } else if (a == "--result-cache-mb") {
       o.result_cache_bytes = static_cast<std::size_t>(parse_int(a, value(), 0, 1 << 20)) << 20;
     } else if (a == "--threads") {

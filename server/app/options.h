@@ -19,6 +19,8 @@ struct Options {
   int threads = 8;
   // Finished PNGs kept for identical requests; 0 turns the cache off.
   std::size_t result_cache_bytes = std::size_t{64} << 20;
+  // GPU memory for uploaded models kept between renders.
+  std::size_t gpu_cache_bytes = std::size_t{1} << 30;
   double render_timeout_s = 60;
   // Empty: the shaders embedded in the binary. Otherwise GLSL files are read
   // from this folder and recompiled when they change (look development).

@@ -1,14 +1,11 @@
 #include "render/render_service.h"
 
-#include <algorithm>
 #include <iostream>
-#include <list>
-#include <unordered_map>
 
 #include "gpu/gpu_error.h"
 #include "gpu/program_cache.h"
 #include "gpu/shader_source.h"
-#include "render/gpu_model.h"
+#include "render/gpu_model_cache.h"
 #include "toond_shader_files.h"
 
 namespace toond::render {
@@ -24,58 +21,6 @@ std::unique_ptr<gpu::ShaderSources> shader_sources(const std::string& shader_dir
   if (shader_dir.empty()) return std::make_unique<gpu::FixedShaderSources>(embedded_shader);
   return std::make_unique<gpu::ShaderDirectory>(shader_dir);
 }
-
-// Most recently used models stay on the GPU; the least recently used one is
-// dropped when the cache is full.
-class GpuModelCache {
- public:
-  explicit GpuModelCache(std::size_t capacity) : capacity_(capacity) {}
-
-  // Keys in `pinned` (the current scene's objects) are never evicted, so a
-  // scene with more objects than the capacity holds them all until its
-  // render is done; the next load trims the cache back.
-  const GpuModel& get(const std::string& key, const scene::Model& model,
-                      const std::vector<std::string>& pinned = {}) {
-    auto it = index_.find(key);
-    if (it != index_.end()) {
-      order_.splice(order_.begin(), order_, it->second);
-      return *it->second->second;
-    }
-    auto gpu_model = std::make_unique<GpuModel>(model);
-    order_.emplace_front(key, std::move(gpu_model));
-    index_[key] = order_.begin();
-    auto victim = order_.end();
-    while (order_.size() > capacity_ && victim != order_.begin()) {
-      --victim;
-      if (std::find(pinned.begin(), pinned.end(), victim->first) != pinned.end() || victim == order_.begin()) {
-        continue;
-      }
-      index_.erase(victim->first);
-      victim = order_.erase(victim);
-    }
-    return *order_.front().second;
-  }
-
-  std::size_t size() const { return order_.size(); }
-  std::size_t bytes() const {
-    std::size_t total = 0;
-    for (const Entry& e : order_) total += e.second->gpu_bytes();
-    return total;
-  }
-
-  void forget(const std::string& key) {
-    auto it = index_.find(key);
-    if (it == index_.end()) return;
-    order_.erase(it->second);
-    index_.erase(it);
-  }
-
- private:
-  using Entry = std::pair<std::string, std::unique_ptr<GpuModel>>;
-  std::size_t capacity_;
-  std::list<Entry> order_;
-  std::unordered_map<std::string, std::list<Entry>::iterator> index_;
-};
 
 }  // namespace
 
@@ -141,7 +86,7 @@ void RenderService::run(std::promise<void> started) {
   }
   {
     gpu::ProgramCache programs(std::move(sources));
-    GpuModelCache models(options_.gpu_model_capacity);
+    GpuModelCache models(options_.gpu_model_capacity, options_.gpu_model_bytes);
     Renderer renderer(programs);
     started.set_value();
 

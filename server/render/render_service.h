@@ -54,6 +54,7 @@ class RenderService {
     std::optional<int> gpu_index;
     std::size_t queue_capacity = 32;
     std::size_t gpu_model_capacity = 8;  // models kept on the GPU
+    std::size_t gpu_model_bytes = std::size_t{1} << 30;  // and their GPU memory at most
     // Empty: the shaders embedded at build time. Otherwise GLSL is read from
     // this folder and recompiled before a render when a file changed; a
     // broken edit fails that one render with a ShaderCompileError and the

@@ -42,6 +42,13 @@ TEST(DaemonOptions, ResultCacheSizeInMegabytes) {
   EXPECT_NE(usage().find("--result-cache-mb"), std::string::npos);
 }
 
+TEST(DaemonOptions, GpuCacheSizeInMegabytes) {
+  EXPECT_EQ(parse_options({}).gpu_cache_bytes, std::size_t{1} << 30);
+  EXPECT_EQ(parse_options({"--gpu-cache-mb", "16"}).gpu_cache_bytes, std::size_t{16} << 20);
+  EXPECT_THROW(parse_options({"--gpu-cache-mb", "0"}), std::invalid_argument);
+  EXPECT_NE(usage().find("--gpu-cache-mb"), std::string::npos);
+}
+
 TEST(DaemonOptions, UsageMentionsEveryFlag) {
   for (const char* flag : {"--listen", "--data-dir", "--gpu", "--list-gpus", "--queue", "--max-upload-bytes",
                            "--threads", "--render-timeout"}) {
