@@ -151,6 +151,13 @@ TEST(Load, SixteenClientsMixedForBoundedTime) {
   EXPECT_GT(pngs.load(), 0);
 
   ASSERT_GE(rss_samples.size(), 3u);
+#if defined(__SANITIZE_ADDRESS__)
+  // ASan keeps freed memory in quarantine (up to 256 MiB) and adds shadow
+  // memory, so the daemon's resident set says nothing about leaks here; the
+  // leak checker does. Everything else above was checked.
+  std::cout << "[load] RSS flatness not asserted under AddressSanitizer (quarantine)" << std::endl;
+  return;
+#endif
   const std::size_t warm = rss_samples.size() / 3;
   const long after_warm_up = rss_samples[warm];
   long highest_later = 0;
