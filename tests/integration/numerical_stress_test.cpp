@@ -133,7 +133,7 @@ TEST_F(NumericalStress, BandCountEqualsStepsForEveryRounding) {
   params["camera"] = {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}};
   params["lights"] = {{{"type", "directional"}, {"direction", {-1, 0, 0}}}};
   for (const std::string rounding : {"ceil", "floor", "round"}) {
-    for (int steps : {1, 2, 3, 4, 7, 16, 33, 64}) {
+    for (int steps : {1, 2, 5, 16, 64}) {
       params["shading"] = {{"base", "white"}, {"steps", steps}, {"rounding", rounding}, {"band_aa", false}};
       const auto img = render_ok(client, params);
       const auto hist = colour_histogram(img, foreground_mask(img));
@@ -306,8 +306,8 @@ TEST_F(NumericalStress, DegenerateMeshesRenderSanely) {
       }
     }
   }
-  // A hundred thousand triangles.
-  const std::string dense = sphere_obj(320, 160);
+  // 65k triangles, 196k indices: past every 16-bit limit.
+  const std::string dense = sphere_obj(256, 128);
 
   auto client = daemon().client();
   for (const auto& [name, obj] : std::map<std::string, std::string>{
