@@ -1,6 +1,9 @@
 // GET /metrics: Prometheus text that follows what the daemon did.
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
 #include "support/generated_models.h"
 #include "support/prometheus_text.h"
 #include "test_client.h"
@@ -41,16 +44,23 @@ TEST(MetricsRoute, CountsRequestsByRouteAndStatusAndTimesRendersAndPasses) {
   ASSERT_EQ(client.Get("/models/0123456789abcdef0123456789abcdef")->status, 404);
   ASSERT_EQ(client.Get("/no/such/route")->status, 404);
 
-  // The last request is counted just after its answer went out.
-  const std::string after = scrape_when(
-      client, [](const std::string& text) { return counter_value(text, request_series("GET", "other", 404)) == 1; });
-  EXPECT_EQ(counter_value(after, request_series("POST", "/models", 201)), 1);
-  EXPECT_EQ(counter_value(after, request_series("POST", "/render", 200)), 2);
-  EXPECT_EQ(counter_value(after, request_series("POST", "/render", 400)), 1);
-  EXPECT_EQ(counter_value(after, request_series("POST", "/models/{id}/render", 200)), 1);
-  EXPECT_EQ(counter_value(after, request_series("GET", "/models/{id}", 404)), 1);
+  // Each request is counted just after its answer went out: wait for them.
+  const std::vector<std::pair<std::string, double>> expected = {
+      {request_series("POST", "/models", 201), 1},
+      {request_series("POST", "/render", 200), 2},
+      {request_series("POST", "/render", 400), 1},
+      {request_series("POST", "/models/{id}/render", 200), 1},
+      {request_series("GET", "/models/{id}", 404), 1},
+      {request_series("GET", "other", 404), 1},
+  };
+  const std::string after = scrape_when(client, [&](const std::string& text) {
+    for (const auto& [series, count] : expected) {
+      if (counter_value(text, series) < count) return false;
+    }
+    return true;
+  });
+  for (const auto& [series, count] : expected) EXPECT_EQ(counter_value(after, series), count) << series;
   EXPECT_GE(counter_value(after, request_series("GET", "/metrics", 200)), 1) << "the first scrape";
-  EXPECT_EQ(counter_value(after, request_series("GET", "other", 404)), 1);
 
   // Three renders were made; the refused one is not a render.
   EXPECT_EQ(sample_value(after, "toond_render_seconds_count"), 3);

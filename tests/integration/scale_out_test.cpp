@@ -126,6 +126,19 @@ TEST(ScaleOut, ReplicasBehindNginxShareModelsKeepEachOnOneReplicaAndSurviveLosin
       }
     }
 
+    // Counters lag their answers a little: let every render so far be
+    // counted (once through the balancer, once on each replica, per model)
+    // before counting per model.
+    const double rendered = static_cast<double>(ids.size() * (1 + replicas.size()));
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    double counted = 0;
+    while (counted < rendered && std::chrono::steady_clock::now() < deadline) {
+      counted = 0;
+      for (const auto& replica : replicas) counted += balancer_renders_seen(*replica);
+      if (counted < rendered) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_EQ(counted, rendered);
+
     // Each model's balancer renders land on one replica.
     std::map<std::string, int> owner;
     for (const std::string& id : ids) owner[id] = replica_serving(balancer, id, kRendersPerModel, replicas, png[id]);
