@@ -121,7 +121,8 @@ void Bundle::add(std::string_view path, std::string content) {
   // The raw name may hold a NUL or worse; keep the reported name printable.
   const std::string shown = printable(path);
   if (const auto reason = unprintable_reason(path)) {
-    throw ImportError(shown, "file name '" + shown + "' holds " + *reason + "; bundle file names must be printable UTF-8");
+    throw ImportError(shown, "file name '" + shown + "' is not a safe relative path inside the bundle: it holds " +
+                                 *reason + "; names must be printable UTF-8");
   }
   if (!normal) {
     throw ImportError(shown, "file name '" + shown +
