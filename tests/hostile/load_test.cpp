@@ -1,4 +1,5 @@
-// A bounded load test on loopback: 16 clients mix renders, uploads and bad
+// A bounded load test on loopback: 16 clients mix renders (each with its
+// own camera yaw, so nearly none is a result-cache hit), uploads and bad
 // requests for TOOND_LOAD_SECONDS (default 10) against one daemon with a
 // small queue. Every answer must be 2xx, a 4xx the request deserved, or 503
 // (queue full, with Retry-After); every PNG must decode at the size asked;
@@ -56,7 +57,10 @@ std::string model_text(unsigned n) {
 TEST(Load, SixteenClientsMixedForBoundedTime) {
   const char* seconds_env = std::getenv("TOOND_LOAD_SECONDS");
   const int seconds = seconds_env ? std::atoi(seconds_env) : 10;
-  Daemon daemon({}, {"--queue", "4", "--threads", "16"});
+  // A 1 MiB result cache fills within the warm-up; the default (larger)
+  // one would still be filling with these all-different renders, which is
+  // bounded growth, not a leak, but would hide one.
+  Daemon daemon({}, {"--queue", "4", "--threads", "16", "--result-cache-mb", "1"});
   auto setup = daemon.client();
   const std::string model = upload_obj_text(setup, model_text(0));
   ASSERT_FALSE(model.empty());
@@ -76,7 +80,10 @@ TEST(Load, SixteenClientsMixedForBoundedTime) {
         const int pick = static_cast<int>(rng() % 10);
         if (pick < 5) {
           const int size = 32 + static_cast<int>(rng() % 4) * 32;
-          json params = {{"width", size}, {"height", size}, {"outline", {{"width", 2}}}};
+          // A random yaw: (nearly) every render is new, so the result
+          // cache does not answer it and the render thread is kept busy.
+          const double yaw = static_cast<double>(rng() % 36000) / 100.0 - 180.0;
+          json params = {{"width", size}, {"height", size}, {"outline", {{"width", 2}}}, {"camera", {{"yaw", yaw}}}};
           if (pick == 1) params["model"] = model;
           auto res = post_json(client, "/render", params);
           if (!res) {
