@@ -11,6 +11,8 @@ packages=(
   libegl-dev libgl-dev libglvnd-dev libegl-mesa0 libgl1-mesa-dri libgbm1
   # scene import, maths, images
   libglm-dev libtinyobjloader-dev libstb-dev libpng-dev zlib1g-dev
+  # vertex-cache order and levels of detail at import
+  libmeshoptimizer-dev
   # HTTP + JSON + schema validation
   libcpp-httplib-dev libssl-dev nlohmann-json3-dev libvalijson-dev
   # tests, shader checks, benchmarks

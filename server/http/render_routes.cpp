@@ -45,6 +45,19 @@ void apply_path_model(nlohmann::json& request, const std::string& id) {
   request["model"] = id;
 }
 
+// Per object, the level of detail drawn: "level=2/7; triangles=17362;
+// error_px=0.412", objects separated by ", ".
+std::string lod_header(const std::vector<render::LodUse>& lods) {
+  std::ostringstream s;
+  s.precision(3);
+  for (std::size_t i = 0; i < lods.size(); ++i) {
+    const render::LodUse& l = lods[i];
+    s << (i ? ", " : "") << "level=" << l.level << "/" << l.levels << "; triangles=" << l.triangles
+      << "; error_px=" << std::fixed << l.error_px << std::defaultfloat;
+  }
+  return s.str();
+}
+
 }  // namespace
 
 void register_render_routes(httplib::Server& server, ServiceContext& context) {
@@ -109,6 +122,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     const std::string cache_key = completed.dump();
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
 
+    const image::PngOptions png_options{job.params.png_compression};
     const auto submitted = Clock::now();
     // Past the deadline the render thread skips the job instead of drawing
     // an image nobody waits for any more.
@@ -126,10 +140,11 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
         std::chrono::duration<double, std::milli>(Clock::now() - submitted).count() - render_ms;
 
     const auto png_start = Clock::now();
-    std::string png = image::encode_png(out.image);
+    std::string png = image::encode_png(out.image, png_options);
     const double png_ms = std::chrono::duration<double, std::milli>(Clock::now() - png_start).count();
 
     res.set_header("Server-Timing", server_timing(out, queue_ms < 0 ? 0 : queue_ms, png_ms));
+    res.set_header("X-Toond-Lod", lod_header(out.lods));
     auto answer = std::make_shared<render::CachedRender>();
     answer->etag = render::etag_of(png);
     answer->png = std::move(png);

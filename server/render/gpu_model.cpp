@@ -55,7 +55,7 @@ gpu::Texture upload_texture(const scene::Texture& tex, std::size_t& bytes) {
 }  // namespace
 
 GpuModel::GpuModel(const scene::Model& model)
-    : submeshes_(model.mesh.submeshes), bounds_(model.mesh.bounds), origin_(model.mesh.origin) {
+    : bounds_(model.mesh.bounds), origin_(model.mesh.origin) {
   const scene::Mesh& mesh = model.mesh;
   std::vector<Vertex> vertices(mesh.positions.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
@@ -71,15 +71,26 @@ GpuModel::GpuModel(const scene::Model& model)
     std::memcpy(v.color, &c, sizeof v.color);
   }
   has_vertex_colors_ = !mesh.colors.empty();
-  index_count_ = mesh.indices.size();
+  // Every level's indices in one buffer, full detail first; each level's
+  // submesh ranges are moved to where its indices land.
+  std::vector<std::uint32_t> indices = mesh.indices;
+  levels_.push_back({mesh.submeshes, 0, mesh.indices.size()});
+  lod_errors_.push_back(0.0);
+  for (const scene::MeshLod& lod : mesh.lods) {
+    Level level{lod.submeshes, indices.size(), lod.indices.size()};
+    for (scene::Submesh& sub : level.submeshes) sub.first_index += static_cast<std::uint32_t>(level.first_index);
+    indices.insert(indices.end(), lod.indices.begin(), lod.indices.end());
+    levels_.push_back(std::move(level));
+    lod_errors_.push_back(lod.error);
+  }
 
   vertices_ = gpu::Buffer::create();
   glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                        vertices.data(), 0);
   indices_ = gpu::Buffer::create();
-  glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
-                       mesh.indices.data(), 0);
-  gpu_bytes_ = vertices.size() * sizeof(Vertex) + mesh.indices.size() * sizeof(std::uint32_t);
+  glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
+                       indices.data(), 0);
+  gpu_bytes_ = vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
 
   vao_ = gpu::VertexArray::create();
   glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
@@ -108,8 +119,10 @@ void GpuModel::draw(const scene::Submesh& submesh) const {
                                                sizeof(std::uint32_t)));
 }
 
-void GpuModel::draw_all() const {
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(index_count_), GL_UNSIGNED_INT, nullptr);
+void GpuModel::draw_all(std::size_t lod) const {
+  const Level& level = levels_[lod];
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(level.index_count), GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(level.first_index * sizeof(std::uint32_t)));
 }
 
 }  // namespace toond::render

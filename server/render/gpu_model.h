@@ -1,6 +1,6 @@
 #pragma once
-// A model's GPU copy: one interleaved vertex buffer, one index buffer, its
-// textures (sRGB, mipmapped, repeating) and per-material draw ranges.
+// A model's GPU copy: one interleaved vertex buffer, one index buffer (the
+// full mesh, then each coarser level of detail), its textures (sRGB, mipmapped, repeating) and per-material draw ranges.
 // Created and destroyed on the render thread only.
 #include <vector>
 
@@ -21,11 +21,19 @@ class GpuModel {
   explicit GpuModel(const scene::Model& model);
 
   void bind() const { glBindVertexArray(vao_.id()); }
-  // Draws one submesh (the VAO must be bound).
+  // Draws one submesh (the VAO must be bound); the ranges of every level
+  // index the one index buffer.
   void draw(const scene::Submesh& submesh) const;
-  void draw_all() const;
+  // Every triangle of a level of detail (0 = full detail).
+  void draw_all(std::size_t lod = 0) const;
 
-  const std::vector<scene::Submesh>& submeshes() const { return submeshes_; }
+  // The submeshes of a level of detail (0 = full detail).
+  const std::vector<scene::Submesh>& submeshes(std::size_t lod = 0) const { return levels_[lod].submeshes; }
+  // Level 0 is the full mesh; the rest come from scene::Mesh::lods.
+  std::size_t lod_count() const { return levels_.size(); }
+  // Per level, in the mesh's units: how far its surface may stray (0 at level 0).
+  const std::vector<double>& lod_errors() const { return lod_errors_; }
+  std::size_t triangles(std::size_t lod = 0) const { return levels_[lod].index_count / 3; }
   const std::vector<GpuMaterial>& materials() const { return materials_; }
   GLuint texture(int index) const { return textures_[static_cast<std::size_t>(index)].id(); }
   bool has_textures() const { return !textures_.empty(); }
@@ -46,10 +54,15 @@ class GpuModel {
   gpu::Buffer indices_;
   std::vector<gpu::Texture> textures_;
   std::vector<GpuMaterial> materials_;
-  std::vector<scene::Submesh> submeshes_;
+  struct Level {
+    std::vector<scene::Submesh> submeshes;  // ranges of the shared index buffer
+    std::size_t first_index = 0;            // the level's whole range
+    std::size_t index_count = 0;
+  };
+  std::vector<Level> levels_;
+  std::vector<double> lod_errors_;
   scene::Bounds bounds_;
   glm::dvec3 origin_{0.0};
-  std::size_t index_count_ = 0;
   bool has_vertex_colors_ = false;
   std::size_t gpu_bytes_ = 0;
 };

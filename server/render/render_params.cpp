@@ -188,3 +188,6 @@ RenderParams RenderParams::from_json(const json& j) {
 }
 
 }  // namespace toond::render
+  p.lod_auto = j.at("lod") == "auto";
+  p.lod_error_px = j.at("lod_error_px").get<double>();
+  p.png_compression = j.at("png_compression").get<int>();

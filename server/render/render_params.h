@@ -164,3 +164,6 @@ float srgb_to_linear(float c);
 glm::vec3 srgb_to_linear(const glm::vec3& c);
 
 }  // namespace toond::render
+  bool lod_auto = true;       // false: `lod` "full", every triangle
+  double lod_error_px = 0.5;  // the most a level's error may project to, output pixels
+  int png_compression = 3;    // zlib level of the answer

@@ -1,11 +1,13 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "gpu/gpu_error.h"
 #include "image/downsample.h"
 #include "render/camera.h"
 #include "render/pass_timer.h"
+#include "render/lod_choice.h"
 #include "render/shadow_fit.h"
 
 namespace toond::render {
@@ -44,6 +46,33 @@ gpu::NormalDepthTarget& Renderer::normal_depth_for(int width, int height) {
   if (!normal_depth_ || !normal_depth_->matches(width, height)) {
     normal_depth_.reset();
     normal_depth_.emplace(width, height);
+// Per object, the coarsest level whose error, at the object's nearest
+// distance from the camera, stays within the pixel budget. Scale in the
+// object's transform scales its error along.
+std::vector<LodUse> choose_levels(const std::vector<RenderObject>& objects, const SceneFrame& frame,
+                                  const RenderParams& params) {
+  const CameraSetup camera =
+      fit_camera(params.camera, frame.bounds, static_cast<double>(params.width) / params.height);
+  const bool ortho = params.camera.projection == Projection::Orthographic;
+  std::vector<LodUse> uses;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const GpuModel& model = objects[i].model;
+    const glm::dmat4& m = frame.matrices[i];
+    const double scale =
+        std::max({glm::length(glm::dvec3(m[0])), glm::length(glm::dvec3(m[1])), glm::length(glm::dvec3(m[2]))});
+    const glm::dvec3 centre = glm::dvec3(m * glm::dvec4(glm::dvec3(model.bounds().centre()), 1.0));
+    const double px_per_unit =
+        scale * pixels_per_unit(camera, ortho, centre, model.bounds().radius() * scale, params.height);
+    LodUse use;
+    use.levels = model.lod_count();
+    if (params.lod_auto) use.level = choose_lod(model.lod_errors(), px_per_unit, params.lod_error_px);
+    use.triangles = model.triangles(use.level);
+    use.error_px = model.lod_errors()[use.level] * px_per_unit;
+    uses.push_back(use);
+  }
+  return uses;
+}
+
   }
   return *normal_depth_;
 }
@@ -115,6 +144,10 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     map.bind_for_drawing();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
+  out.lods = choose_levels(objects, frame, params);
+  // Every pass draws an object at the same level, so the hull, the shadow
+  // and the edges all follow the surface that was shaded.
+  auto lod_of = [&](std::size_t i) { return out.lods[i].level; };
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);
     glDisable(GL_STENCIL_TEST);
@@ -128,7 +161,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     for (std::size_t i = 0; i < objects.size(); ++i) {
       program.set("u_model", model_matrix[i]);
       objects[i].model.bind();
-      objects[i].model.draw_all();
+      objects[i].model.draw_all(lod_of(i));
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     check_gl("shadow pass");
@@ -237,7 +270,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const GpuModel& model = objects[i].model;
       model.bind();
-      for (const scene::Submesh& sub : model.submeshes()) {
+      for (const scene::Submesh& sub : model.submeshes(lod_of(i))) {
         const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
         std::vector<std::string> defines = plan.main_defines;
         const bool textured = plan.sample_textures && material.texture >= 0;
@@ -299,11 +332,11 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
       set_object(program, i);
       model.bind();
       if (plan.outline_defines.empty()) {
-        model.draw_all();
+        model.draw_all(lod_of(i));
         continue;
       }
       // The colour comes from each material, so draw material by material.
-      for (const scene::Submesh& sub : model.submeshes()) {
+      for (const scene::Submesh& sub : model.submeshes(lod_of(i))) {
         const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
         program.set("u_base_color", material.diffuse);
         const bool textured = material.texture >= 0;
@@ -368,7 +401,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     for (std::size_t i = 0; i < objects.size(); ++i) {
       set_object(prepass, i);
       objects[i].model.bind();
-      objects[i].model.draw_all();
+      objects[i].model.draw_all(lod_of(i));
     }
     check_gl("edge prepass");
     timer.mark(Pass::EdgePrepass);

@@ -22,10 +22,19 @@ struct PassTiming {
   double cpu_ms = 0;  // wall time on the render thread, always
 };
 
+// The level of detail one object was drawn at (see lod_choice.h).
+struct LodUse {
+  std::size_t level = 0;      // 0 = full detail
+  std::size_t levels = 1;     // how many the model has
+  std::size_t triangles = 0;  // drawn per pass
+  double error_px = 0;        // the level's error projected to output pixels
+};
+
 struct RenderOutput {
   image::Image image;
   std::vector<PassTiming> timings;
   std::string plan;  // PassPlan::describe()
+  std::vector<LodUse> lods;  // one per object, in order
 };
 
 // One object of the scene: a model on the GPU and its transform (model

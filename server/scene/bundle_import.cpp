@@ -4,6 +4,7 @@
 
 #include "scene/import_error.h"
 #include "scene/m_import.h"
+#include "scene/mesh_lod.h"
 #include "scene/obj_import.h"
 
 namespace toond::scene {
@@ -50,7 +51,9 @@ std::string find_model_file(const Bundle& bundle, std::initializer_list<std::str
 
 Model import_bundle(const Bundle& bundle, const ImportLimits& limits) {
   const std::string path = find_model_file(bundle, {".obj", ".m"}, ".obj or .m");
-  return has_extension(path, ".m") ? import_m_bundle(bundle, limits) : import_obj_bundle(bundle, limits);
+  Model model = has_extension(path, ".m") ? import_m_bundle(bundle, limits) : import_obj_bundle(bundle, limits);
+  prepare_levels_of_detail(model.mesh);
+  return model;
 }
 
 }  // namespace toond::scene

@@ -15,7 +15,8 @@ namespace toond::scene {
 // (ASCII case-insensitive) names: .obj (import_obj_bundle, obj_import.h) or
 // .m (import_m_bundle, m_import.h). Throws ImportError naming the files when
 // the bundle holds no model file or more than one, and whatever the importer
-// throws.
+// throws. The mesh comes back with its levels of detail and in vertex-cache
+// order (prepare_levels_of_detail, mesh_lod.h).
 // `limits` bound what an upload may make (ImportLimitError beyond).
 Model import_bundle(const Bundle& bundle, const ImportLimits& limits = {});
 

@@ -61,6 +61,16 @@ struct Bounds {
   float radius() const { return glm::length(max - min) * 0.5f; }
 };
 
+// A coarser level of detail over the same vertices as its Mesh (see
+// scene/mesh_lod.h).
+struct MeshLod {
+  std::vector<std::uint32_t> indices;  // triangles
+  std::vector<Submesh> submeshes;      // ranges of `indices`, one per Mesh::submeshes entry, same materials
+  double error = 0;                    // how far the surface may stray from the full mesh, mesh units
+
+  std::size_t triangle_count() const { return indices.size() / 3; }
+};
+
 // Triangle mesh with one vertex stream. Positions are stored relative to
 // `origin` (computed in double precision) so that geometry far from the
 // model's own origin keeps full float precision on the GPU.
@@ -85,6 +95,7 @@ struct Mesh {
   std::vector<glm::vec3> colors;
   std::vector<std::uint32_t> indices;      // triangles
   std::vector<Submesh> submeshes;
+  std::vector<MeshLod> lods;  // coarser levels, finest first; empty: full detail only
   glm::dvec3 origin{0.0};  // model-space point that positions are relative to
   Bounds bounds;           // of `positions` (i.e. relative to origin)
 
