@@ -1,0 +1,109 @@
+#include "versus.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "bench_http.h"
+#include "gpu/egl_context.h"
+#include "gpu/render_target.h"
+#include "image/png_codec.h"
+#include "image_error.h"
+#include "stats.h"
+#include "throughput.h"
+
+namespace toond::bench {
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// What the server cannot avoid for one answer: clear the target, resolve
+// and read it back, encode the PNG. Measured here on a context of our own.
+json floor_of(const image::Image& content, int samples, int png_level, int repeats) {
+  gpu::EglContext context(gpu::EglContext::Options{});
+  gpu::RenderTarget target(content.width, content.height, samples);
+  std::vector<double> readback, encode;
+  for (int i = 0; i < repeats + 1; ++i) {
+    auto t0 = Clock::now();
+    target.bind_for_drawing();
+    glClearColor(1, 1, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    const image::Image back = target.read_back();
+    const double r = ms_since(t0);
+    t0 = Clock::now();
+    const std::string png = image::encode_png(content, {png_level});
+    const double e = ms_since(t0);
+    if (i == 0 || back.rgba.empty() || png.empty()) continue;  // the first one allocates
+    readback.push_back(r);
+    encode.push_back(e);
+  }
+  return {{"clear_readback_ms", median(readback)},
+          {"png_encode_ms", median(encode)},
+          {"total_ms", median(readback) + median(encode)}};
+}
+
+}  // namespace
+
+json run_versus(httplib::Client& client, const std::string& url, const std::filesystem::path& models, int repeats,
+                double load_seconds) {
+  std::cerr << "bench: toond side of the three.js comparison (bunny 512²)\n";
+  const std::string bunny = upload_folder(client, models / "stanford-bunny");
+  const json base = {{"model", bunny},
+                     {"width", 512},
+                     {"height", 512},
+                     {"shading", {{"steps", 3}}},
+                     {"specular", {{"enabled", false}}},
+                     {"outline", {{"enabled", true}, {"method", "hull"}}}};
+  json configs = json::array();
+  for (int msaa : {1, 4}) {
+    image::Image full_image;
+    for (const char* lod : {"full", "auto"}) {
+      json params = base;
+      params["msaa"] = msaa;
+      params["lod"] = lod;
+      render_timed(client, params);  // warm
+      std::vector<double> wall, server, png;
+      TimedRender last;
+      for (int i = 0; i < repeats; ++i) {
+        last = render_timed(client, params);
+        wall.push_back(last.wall_ms);
+        server.push_back(last.server_ms);
+        png.push_back(last.png_ms);
+      }
+      const image::Image img = image::decode_png(last.png);
+      json c = {{"msaa", msaa},
+                {"lod", lod},
+                {"lod_drawn", last.lod},
+                {"wall_ms", median(wall)},
+                {"wall_p90_ms", percentile(wall, 0.9)},
+                {"server_ms", median(server)},
+                {"png_ms", median(png)}};
+      if (std::string(lod) == "full") {
+        full_image = img;
+      } else {
+        const PixelError e = compare_images(full_image, img);
+        c["pct_pixels_off_vs_full"] = e.pct_off;
+        c["mean_abs_error_vs_full"] = e.mean_abs;
+      }
+      c["floor"] = floor_of(img, msaa, 3, repeats);
+      c["server_over_floor"] = c["server_ms"].get<double>() / c["floor"]["total_ms"].get<double>();
+      std::fprintf(stderr, "  msaa %d lod %-4s: request-to-PNG %7.2f ms, server %7.2f ms (floor %.2f ms)  [%s]\n",
+                   msaa, lod, c["wall_ms"].get<double>(), c["server_ms"].get<double>(),
+                   c["floor"]["total_ms"].get<double>(), last.lod.c_str());
+      configs.push_back(c);
+    }
+  }
+  json out = {{"model", "stanford-bunny"}, {"size", 512}, {"configs", configs}};
+  if (load_seconds > 0) {
+    std::cerr << "bench: load, default settings (auto LOD, msaa default)\n";
+    json params = base;
+    params.erase("specular");
+    out["load"] = throughput_json(run_throughput(url, params, {1, 4, 16}, load_seconds));
+  }
+  return out;
+}
+
+}  // namespace toond::bench
