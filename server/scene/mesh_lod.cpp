@@ -64,7 +64,10 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options
         lod.indices.insert(lod.indices.end(), simplified.begin(),
                            simplified.begin() + static_cast<std::ptrdiff_t>(written));
         out.index_count = static_cast<std::uint32_t>(written);
-        step_error = std::max(step_error, static_cast<double>(sub_error) * scale);
+        // meshopt's error is a quadric estimate; on a sphere the true
+        // farthest stray measured up to ~1.7× more (mesh_lod_test), so it is
+        // doubled to keep the pixel budget an upper bound.
+        step_error = std::max(step_error, 2.0 * static_cast<double>(sub_error) * scale);
       }
       lod.submeshes.push_back(out);
     }
