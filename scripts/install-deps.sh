@@ -21,6 +21,8 @@ packages=(
   clang libclang-rt-14-dev
   # the scale-out test's load balancer (tests/integration/scale_out_test.cpp)
   nginx-light
+  # the web page's browser test: Debian's chromium driven by playwright-core from npm
+  nodejs npm chromium
 )
 
 missing=()

@@ -1,10 +1,10 @@
-// GET /healthz, GET /schema, GET /presets, GET / (the web page).
+// GET /healthz, GET /schema, GET /presets, and the web page (web_page_routes).
 #include <nlohmann/json.hpp>
 
 #include "http/routes.h"
+#include "http/web_page_routes.h"
 #include "param_schema.h"
 #include "presets.h"
-#include "toond_web_files.h"
 
 namespace toond::http {
 
@@ -32,9 +32,7 @@ void register_info_routes(httplib::Server& server, ServiceContext& context) {
     res.set_content(proto::Presets::builtin().document().dump(2), "application/json");
   });
 
-  server.Get("/", [](const httplib::Request&, httplib::Response& res) {
-    res.set_content(std::string(toond::web_files::find("index.html")), "text/html; charset=utf-8");
-  });
+  register_web_page_routes(server);
 }
 
 }  // namespace toond::http

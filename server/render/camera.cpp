@@ -31,20 +31,27 @@ CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, 
   CameraSetup cam;
   double distance = params.distance;
   const bool ortho = params.projection == Projection::Orthographic;
+  // Zoom only scales what fitting chose; an explicit distance is taken as meant.
+  const double zoom = params.distance > 0.0 || !(params.zoom > 0.0) ? 1.0 : params.zoom;
   if (distance <= 0.0) {
-    distance = ortho ? radius * 3.0 : radius * kFrameMargin / std::sin(fov_min * 0.5);
+    distance = ortho ? radius * 3.0 : radius * kFrameMargin / std::sin(fov_min * 0.5) / zoom;
   }
-  cam.eye = centre + toward_eye * distance;
-  cam.target = centre;
   // Looking straight up or down makes +Y a bad up vector; pitch is limited to
   // ±89° by the schema, so +Y is always usable.
-  cam.view = glm::lookAt(cam.eye, centre, glm::dvec3(0, 1, 0));
+  const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), toward_eye));
+  const glm::dvec3 up = glm::cross(toward_eye, right);
+  // Strafing moves eye and target together, so the view direction (and with
+  // it the lighting seen) stays; in radii so it means the same at any scale.
+  const glm::dvec3 target = centre + (right * params.shift.x + up * params.shift.y) * radius;
+  cam.eye = target + toward_eye * distance;
+  cam.target = target;
+  cam.view = glm::lookAt(cam.eye, target, glm::dvec3(0, 1, 0));
 
   const double reach = radius * 1.01;
   cam.far_plane = distance + reach;
   if (ortho) {
     cam.near_plane = distance - reach;
-    double half_h = radius * kFrameMargin;
+    double half_h = radius * kFrameMargin / zoom;
     if (aspect < 1.0) half_h /= aspect;
     const double half_w = half_h * aspect;
     cam.projection = glm::ortho(-half_w, half_w, -half_h, half_h, cam.near_plane, cam.far_plane);

@@ -78,6 +78,8 @@ RenderParams RenderParams::from_json(const json& j) {
   p.camera.pitch_deg = cam.at("pitch").get<double>();
   p.camera.fov_deg = cam.at("fov").get<double>();
   p.camera.distance = cam.at("distance").get<double>();
+  p.camera.zoom = cam.at("zoom").get<double>();
+  p.camera.shift = glm::dvec2(cam.at("shift")[0].get<double>(), cam.at("shift")[1].get<double>());
 
   for (const json& l : j.at("lights")) {
     Light light;

@@ -23,6 +23,8 @@ struct CameraParams {
   double pitch_deg = 0;
   double fov_deg = 35;
   double distance = 0;  // 0: fit to the model's bounds
+  double zoom = 1;      // divides the fitted distance or frame; ignored with distance set
+  glm::dvec2 shift{0.0};  // eye and target moved along view right/up, in bounding radii
 };
 
 enum class LightKind { Directional, Point };

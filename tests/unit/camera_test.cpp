@@ -163,5 +163,54 @@ TEST(SceneObject, RotatesAboutXThenYThenZAfterScaling) {
   EXPECT_NEAR(p.y, 2, 1e-12);
 }
 
+// Zoom magnifies the fitted view: a point off centre lands twice as far
+// from the image centre at zoom 2 (exactly in orthographic, where only the
+// frame shrinks; in perspective the eye moves in, so a point on the
+// centre's depth plane is magnified by the distance ratio, also 2).
+TEST(Camera, ZoomMagnifiesTheFittedView) {
+  for (Projection proj : {Projection::Perspective, Projection::Orthographic}) {
+    CameraParams params;
+    params.projection = proj;
+    params.yaw_deg = 0;
+    params.pitch_deg = 0;
+    const auto base = fit_camera(params, box({-1, -1, -1}, {1, 1, 1}), 1.0);
+    params.zoom = 2;
+    const auto zoomed = fit_camera(params, box({-1, -1, -1}, {1, 1, 1}), 1.0);
+    EXPECT_NEAR(project(zoomed, {0.3, 0.2, 0}).x, 2 * project(base, {0.3, 0.2, 0}).x, 1e-9);
+    EXPECT_NEAR(project(zoomed, {0.3, 0.2, 0}).y, 2 * project(base, {0.3, 0.2, 0}).y, 1e-9);
+  }
+}
+
+TEST(Camera, ZoomLeavesAnExplicitDistanceAlone) {
+  CameraParams params;
+  params.distance = 10;
+  const auto base = fit_camera(params, box({-1, -1, -1}, {1, 1, 1}), 1.0);
+  params.zoom = 4;
+  const auto zoomed = fit_camera(params, box({-1, -1, -1}, {1, 1, 1}), 1.0);
+  EXPECT_NEAR(glm::length(zoomed.eye - base.eye), 0.0, 1e-12);
+}
+
+// Strafing right moves the model left in the image by the same amount at
+// any model scale, and keeps the view direction.
+TEST(Camera, ShiftStrafesInRadiiAndKeepsTheViewDirection) {
+  for (float scale : {1e-3f, 1.0f, 1e4f}) {
+    CameraParams params;
+    params.projection = Projection::Orthographic;
+    params.yaw_deg = 30;
+    params.pitch_deg = 10;
+    const auto bounds = box(glm::vec3(-scale), glm::vec3(scale));
+    const auto base = fit_camera(params, bounds, 1.0);
+    params.shift = {0.5, -0.25};
+    const auto moved = fit_camera(params, bounds, 1.0);
+    const glm::dvec3 centre = project(moved, {0, 0, 0});
+    // Half-height of the orthographic frame is radius * 1.08.
+    EXPECT_NEAR(centre.x, -0.5 / 1.08, 1e-5);
+    EXPECT_NEAR(centre.y, 0.25 / 1.08, 1e-5);
+    const glm::dvec3 dir_base = glm::normalize(base.target - base.eye);
+    const glm::dvec3 dir_moved = glm::normalize(moved.target - moved.eye);
+    EXPECT_NEAR(glm::length(dir_base - dir_moved), 0.0, 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace toond::render

@@ -1,0 +1,420 @@
+// The slider studio: controls from GET /schema, live renders from POST
+// /render, uploads to POST /models, the whole state in the URL's fragment.
+import { ControlPanel } from './controls.js';
+import { curlCommand, paramsJson, toonCommand } from './commands.js';
+import { installKeyboard } from './keyboard.js';
+import {
+  clone, effectiveParams, getPointer, paramsFromHash, paramsToHash, schemaDefaults, setPointer, withPreset,
+} from './params.js';
+import { ApiError, LostServer, RenderLoop } from './render_loop.js';
+import { bundlePaths, filesFromDrop, filesFromInput, uploadBundle } from './upload.js';
+
+const $ = (id) => document.getElementById(id);
+
+// Quick renders while something moves: the longer side at most this many
+// pixels, one sample, so llvmpipe answers within a frame or two.
+const QUICK_SIDE = 256;
+// Orbit speed in degrees per dragged pixel.
+const YAW_PER_PX = 0.5;
+const PITCH_PER_PX = 0.4;
+// A strafe step, in the model's bounding radii at zoom 1.
+const STRAFE_STEP = 0.1;
+// A light step: a fraction of a directional light's direction, or of a point
+// light's distance from the origin (at least one model unit).
+const LIGHT_STEP = 0.1;
+
+const studio = {
+  schema: null,
+  presets: {},
+  defaults: {},
+  params: paramsFromHash(location.hash),
+  panel: null,
+  loop: null,
+  renders: 0,
+  errors: 0,
+  imageUrl: null,
+  downloadUrl: null,
+  retryTimer: null,
+};
+
+function effective() {
+  return effectiveParams(studio.defaults, studio.presets, studio.params);
+}
+
+async function getJson(url) {
+  let res;
+  try {
+    res = await fetch(url);
+  } catch (e) {
+    throw new LostServer(e.message);
+  }
+  const body = await res.json().catch(() => null);
+  if (!res.ok) throw new ApiError(res.status, body);
+  return body;
+}
+
+// ---- state → screen -------------------------------------------------------
+
+function sync() {
+  const shown = effective();
+  studio.panel.render(shown);
+  $('preset-select').value = studio.params.preset ?? '';
+  ensureModelOption(studio.params.model);
+  $('model-select').value = studio.params.model ?? '';
+  const hash = paramsToHash(studio.params);
+  history.replaceState(null, '', hash || location.pathname);
+  const view = $('view');
+  view.style.aspectRatio = `${shown.width} / ${shown.height}`;
+  view.style.maxWidth = `${shown.width}px`;
+}
+
+function change(pointer, value, final) {
+  setPointer(studio.params, effective(), pointer, value);
+  sync();
+  studio.loop.request(final ? 'full' : 'quick');
+}
+
+function bodyFor(kind) {
+  const body = clone(studio.params);
+  if (kind === 'quick') {
+    const shown = effective();
+    const scale = Math.min(1, QUICK_SIDE / Math.max(shown.width, shown.height));
+    body.width = Math.max(16, Math.round(shown.width * scale));
+    body.height = Math.max(16, Math.round(shown.height * scale));
+    body.msaa = 1;
+    body.supersample = 1;
+  }
+  return body;
+}
+
+function showImage({ blob, kind, ms, timing, passes }) {
+  const view = $('view');
+  const url = URL.createObjectURL(blob);
+  if (studio.imageUrl && studio.imageUrl !== studio.downloadUrl) URL.revokeObjectURL(studio.imageUrl);
+  studio.imageUrl = url;
+  view.src = url;
+  studio.renders += 1;
+  view.dataset.renders = String(studio.renders);
+  view.dataset.kind = kind;
+  // For scripts (and the browser test): is this the answer to the latest state?
+  view.dataset.settled = studio.loop.next ? 'no' : 'yes';
+  if (kind === 'full') {
+    if (studio.downloadUrl) URL.revokeObjectURL(studio.downloadUrl);
+    studio.downloadUrl = url;
+    const link = $('download');
+    link.href = url;
+    link.removeAttribute('aria-disabled');
+  }
+  const server = timing.filter((t) => t.name !== 'queue').reduce((sum, t) => sum + t.ms, 0);
+  const detail = timing.map((t) => `${t.name} ${t.ms.toFixed(1)}`).join(', ');
+  $('timing').textContent = `${kind === 'quick' ? 'preview' : 'full quality'} · ${Math.round(ms)} ms round trip, `
+    + `${server.toFixed(1)} ms on the server (${detail}) · passes: ${passes || '—'}`;
+  studio.panel.clearErrors();
+  $('render-error').textContent = '';
+}
+
+function showRenderError(error) {
+  if (error instanceof LostServer) {
+    lostServer(error.retryAfter);
+    return;
+  }
+  studio.panel.clearErrors();
+  studio.errors += 1;
+  $('view').dataset.errors = String(studio.errors);
+  const where = error.path ? ` at ${error.path}` : '';
+  $('render-error').textContent = `${error.status} ${error.code ?? ''}${where}: ${error.message}`;
+  if (error.path) studio.panel.showError(error.path, error.message);
+}
+
+// ---- a lost server --------------------------------------------------------
+
+function lostServer(retryAfterSeconds) {
+  const banner = $('banner');
+  if (studio.retryTimer) return;
+  let wait = Math.max(1, retryAfterSeconds || 1);
+  const attempt = async () => {
+    try {
+      await getJson('/healthz');
+      banner.hidden = true;
+      studio.retryTimer = null;
+      document.body.classList.remove('offline');
+      await refreshModels();
+      studio.loop.request('full');
+    } catch {
+      wait = Math.min(wait * 2, 8);
+      banner.textContent = `Lost the toond server — retrying in ${wait} s…`;
+      studio.retryTimer = setTimeout(attempt, wait * 1000);
+    }
+  };
+  banner.textContent = `Lost the toond server — retrying in ${wait} s…`;
+  banner.hidden = false;
+  document.body.classList.add('offline');
+  studio.retryTimer = setTimeout(attempt, wait * 1000);
+}
+
+// ---- models and upload ------------------------------------------------------
+
+function modelLabel(model) {
+  const obj = (model.files ?? []).find((f) => /\.(obj|m)$/i.test(f)) ?? 'model';
+  return `${obj} · ${model.triangles} triangles · ${model.id.slice(0, 8)}`;
+}
+
+function ensureModelOption(id) {
+  if (!id) return;
+  const select = $('model-select');
+  if (![...select.options].some((o) => o.value === id)) {
+    select.append(new Option(id.slice(0, 12), id));
+  }
+}
+
+async function refreshModels() {
+  const { models } = await getJson('/models');
+  const select = $('model-select');
+  select.replaceChildren(new Option('demo model', ''));
+  for (const model of models) select.append(new Option(modelLabel(model), model.id));
+  ensureModelOption(studio.params.model);
+  select.value = studio.params.model ?? '';
+}
+
+async function upload(files) {
+  const status = $('upload-status');
+  const progress = $('upload-progress');
+  status.classList.remove('error');
+  let bundle;
+  try {
+    bundle = bundlePaths(files);
+  } catch (e) {
+    status.textContent = e.message;
+    status.classList.add('error');
+    return;
+  }
+  progress.hidden = false;
+  progress.value = 0;
+  status.textContent = `uploading ${bundle.length} files…`;
+  try {
+    const info = await uploadBundle(bundle, (fraction) => { progress.value = fraction; });
+    const warnings = info.warnings?.length ? ` · warnings: ${info.warnings.join('; ')}` : '';
+    status.textContent = `${modelLabel(info)}, ${info.textures} textures${warnings}`;
+    await refreshModels();
+    studio.params.model = info.id;
+    sync();
+    studio.loop.request('full');
+  } catch (e) {
+    status.textContent = e.path ? `${e.path}: ${e.message}` : e.message;
+    status.classList.add('error');
+  } finally {
+    progress.hidden = true;
+  }
+}
+
+function installUpload() {
+  for (const id of ['file-input', 'folder-input']) {
+    $(id).addEventListener('change', (e) => {
+      const files = filesFromInput(e.target.files);
+      e.target.value = '';
+      if (files.length) upload(files);
+    });
+  }
+  window.addEventListener('dragover', (e) => {
+    e.preventDefault();
+    document.body.classList.add('dragging');
+  });
+  window.addEventListener('dragleave', (e) => {
+    if (e.relatedTarget === null) document.body.classList.remove('dragging');
+  });
+  window.addEventListener('drop', async (e) => {
+    e.preventDefault();
+    document.body.classList.remove('dragging');
+    upload(await filesFromDrop(e.dataTransfer));
+  });
+  $('model-select').addEventListener('change', (e) => {
+    if (e.target.value) studio.params.model = e.target.value;
+    else delete studio.params.model;
+    sync();
+    studio.loop.request('full');
+  });
+}
+
+// ---- camera, lights, presets ------------------------------------------------
+
+function cameraSchema(name) {
+  return studio.schema.properties.camera.properties[name];
+}
+
+function clampTo(schema, value) {
+  return Math.min(schema.maximum, Math.max(schema.minimum, value));
+}
+
+function setCamera(values, final) {
+  studio.params.camera = { ...(studio.params.camera ?? {}), ...values };
+  sync();
+  studio.loop.request(final ? 'full' : 'quick');
+}
+
+function installOrbit() {
+  const viewport = $('viewport');
+  let drag = null;
+  viewport.addEventListener('pointerdown', (e) => {
+    if (e.button !== 0) return;
+    viewport.setPointerCapture(e.pointerId);
+    const cam = effective().camera;
+    drag = { x: e.clientX, y: e.clientY, yaw: cam.yaw, pitch: cam.pitch, moved: false };
+  });
+  viewport.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    const dx = e.clientX - drag.x;
+    const dy = e.clientY - drag.y;
+    if (!drag.moved && Math.abs(dx) + Math.abs(dy) < 2) return;
+    drag.moved = true;
+    // Yaw wraps into the schema's range; pitch stops at the poles.
+    let yaw = drag.yaw - dx * YAW_PER_PX;
+    yaw = ((((yaw + 180) % 360) + 360) % 360) - 180;
+    const pitch = clampTo(cameraSchema('pitch'), drag.pitch + dy * PITCH_PER_PX);
+    setCamera({ yaw: Math.round(yaw * 10) / 10, pitch: Math.round(pitch * 10) / 10 }, false);
+  });
+  const release = () => {
+    if (drag?.moved) studio.loop.request('full');
+    drag = null;
+  };
+  viewport.addEventListener('pointerup', release);
+  viewport.addEventListener('pointercancel', release);
+  let wheelTimer = null;
+  viewport.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    zoomBy(Math.exp(-e.deltaY * 0.0015), false);
+    clearTimeout(wheelTimer);
+    wheelTimer = setTimeout(() => studio.loop.request('full'), 250);
+  }, { passive: false });
+}
+
+function zoomBy(factor, final) {
+  const zoom = clampTo(cameraSchema('zoom'), effective().camera.zoom * factor);
+  setCamera({ zoom: Math.round(zoom * 1000) / 1000 }, final);
+}
+
+function strafe(direction) {
+  const cam = effective().camera;
+  const shift = [...cam.shift];
+  shift[0] = Math.round((shift[0] + (direction * STRAFE_STEP) / cam.zoom) * 1000) / 1000;
+  setCamera({ shift }, true);
+}
+
+function moveLight(axis, sign) {
+  const lights = effective().lights;
+  if (!lights?.length) return;
+  const light = lights[0];
+  const key = light.type === 'point' ? 'position' : 'direction';
+  const vector = [...(light[key] ?? [0, 0, 0])];
+  const reach = light.type === 'point' ? Math.max(1, Math.hypot(...vector)) : 1;
+  vector[axis] = Math.round((vector[axis] + sign * LIGHT_STEP * reach) * 1000) / 1000;
+  change(`/lights/0/${key}`, vector, true);
+}
+
+function choosePreset(name) {
+  if (name && !(name in studio.presets)) return;
+  studio.params = withPreset(studio.params, name);
+  sync();
+  studio.loop.request('full');
+}
+
+function resetView() {
+  delete studio.params.camera;
+  sync();
+  studio.loop.request('full');
+}
+
+function togglePanel() {
+  const hidden = document.body.classList.toggle('panel-hidden');
+  $('panel-toggle').setAttribute('aria-expanded', String(!hidden));
+}
+
+function toggleHelp() {
+  const help = $('help');
+  if (help.open) help.close();
+  else help.showModal();
+}
+
+// ---- output -------------------------------------------------------------------
+
+function installOutput() {
+  for (const button of document.querySelectorAll('[data-copy]')) {
+    button.addEventListener('click', async () => {
+      const kind = button.dataset.copy;
+      const params = studio.params;
+      const text = kind === 'json' ? paramsJson(params)
+        : kind === 'curl' ? curlCommand(location.origin, params) : toonCommand(location.origin, params);
+      const box = $('copy-text');
+      box.hidden = false;
+      box.value = text;
+      try {
+        await navigator.clipboard.writeText(text);
+        button.dataset.copied = 'yes';
+      } catch {
+        // No clipboard permission: the text is shown, selected, for Ctrl+C.
+        box.select();
+      }
+    });
+  }
+  $('download').addEventListener('click', (e) => {
+    if (!studio.downloadUrl) e.preventDefault();
+  });
+}
+
+// ---- start ----------------------------------------------------------------------
+
+async function loadContract() {
+  const [schema, presets] = await Promise.all([getJson('/schema'), getJson('/presets')]);
+  studio.schema = schema;
+  studio.presets = presets;
+  studio.defaults = schemaDefaults(schema);
+  const select = $('preset-select');
+  for (const [name, preset] of Object.entries(presets)) {
+    const option = new Option(name.replace(/_/g, ' '), name);
+    option.title = preset.description ?? '';
+    select.append(option);
+  }
+  select.addEventListener('change', () => choosePreset(select.value));
+}
+
+async function start() {
+  try {
+    await loadContract();
+  } catch (e) {
+    $('panel-status').textContent = `Could not load the schema: ${e.message}`;
+    lostServerThenReload();
+    return;
+  }
+  studio.panel = new ControlPanel($('panel'), studio.schema, {
+    change,
+    addItem: (pointer, item) => {
+      const list = [...(getPointer(effective(), pointer) ?? []), item];
+      change(pointer, list, true);
+    },
+    removeItem: (pointer) => change(pointer, undefined, true),
+  });
+  studio.loop = new RenderLoop({ bodyFor, onImage: showImage, onError: showRenderError });
+  installUpload();
+  installOrbit();
+  installOutput();
+  installKeyboard({ preset: choosePreset, zoom: (f) => zoomBy(f, true), strafe, moveLight, resetView, togglePanel, toggleHelp });
+  $('panel-toggle').addEventListener('click', togglePanel);
+  $('help-button').addEventListener('click', toggleHelp);
+  window.addEventListener('hashchange', () => {
+    studio.params = paramsFromHash(location.hash);
+    sync();
+    studio.loop.request('full');
+  });
+  sync();
+  studio.loop.request('full');
+  refreshModels().catch(() => {});
+}
+
+// Before the page has its schema there is nothing to retry but the start.
+function lostServerThenReload() {
+  const banner = $('banner');
+  banner.textContent = 'Lost the toond server — retrying…';
+  banner.hidden = false;
+  setTimeout(() => location.reload(), 3000);
+}
+
+start();
