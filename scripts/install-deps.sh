@@ -22,8 +22,16 @@ packages=(
   # the scale-out test's load balancer (tests/integration/scale_out_test.cpp)
   nginx-light
   # the web page's browser test: Debian's chromium driven by playwright-core from npm
-  nodejs npm chromium
+  chromium
 )
+
+# Node.js and npm are wanted as commands, not as Debian packages: machines that
+# already carry NodeSource's nodejs (which bundles npm) cannot also take Debian's
+# npm package ("held broken packages"), so Debian's pair is installed only where
+# the commands are missing.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
