@@ -6,10 +6,11 @@
 #include <nlohmann/json.hpp>
 
 #include "http/bundle_upload.h"
-#include "http/request_limits.h"
 #include "http/render_answer.h"
+#include "http/request_limits.h"
 #include "http/routes.h"
 #include "image/png_codec.h"
+#include "render/ramp_image.h"
 #include "render/render_budget.h"
 #include "param_schema.h"
 #include "presets.h"
@@ -34,15 +35,35 @@ std::string server_timing(const render::RenderOutput& out, double queue_ms, doub
   return s.str();
 }
 
-// POST /models/{id}/render takes its model from the path (so a load
-// balancer can hash on it); a `model` in the body must agree.
-void apply_path_model(nlohmann::json& request, const std::string& id) {
-  if (!request.is_object()) return;  // validation reports the body's type
-  if (request.contains("model") && request["model"] != id) {
-    throw RequestError(400, "model_mismatch",
-                       "/model: the body names a different model than the path (" + id + ")", "/model");
+// An image file a parameter names (at JSON pointer `pointer`), looked up in
+// the bundles of the job's models, first object first.
+std::shared_ptr<const scene::Texture> bundle_image(ServiceContext& context, const render::RenderJob& job,
+                                                   const std::string& path, const std::string& pointer) {
+  for (const render::JobObject& o : job.objects) {
+    try {
+      if (auto image = context.library.bundle_image(o.model_key, path)) return image;
+    } catch (const std::exception& e) {
+      throw RequestError(422, "bad_image", pointer + ": \"" + path + "\" is not a readable image: " + e.what(),
+                         pointer);
+    }
   }
-  request["model"] = id;
+  throw RequestError(422, "missing_file", pointer + ": the model's bundle has no file \"" + path + "\"", pointer);
+}
+
+// Turns the file names of a request into the images the render thread uses.
+void load_bundle_images(ServiceContext& context, render::RenderJob& job) {
+  render::RenderParams& params = job.params;
+  if (!params.ramp_image.empty()) {
+    const std::string pointer = "/shading/ramp_image";
+    try {
+      params.ramp = render::ramp_from_image(*bundle_image(context, job, params.ramp_image, pointer));
+    } catch (const render::RampImageError& e) {
+      throw RequestError(422, "bad_image", pointer + ": " + e.what(), pointer);
+    }
+  }
+  if (params.floor.enabled && !params.floor.texture.empty()) {
+    params.floor.image = bundle_image(context, job, params.floor.texture, "/floor/texture");
+  }
 }
 
 // Per object, the level of detail drawn: "level=2/7; triangles=17362;
@@ -56,6 +77,17 @@ std::string lod_header(const std::vector<render::LodUse>& lods) {
       << "; error_px=" << std::fixed << l.error_px << std::defaultfloat;
   }
   return s.str();
+}
+
+// POST /models/{id}/render takes its model from the path (so a load
+// balancer can hash on it); a `model` in the body must agree.
+void apply_path_model(nlohmann::json& request, const std::string& id) {
+  if (!request.is_object()) return;  // validation reports the body's type
+  if (request.contains("model") && request["model"] != id) {
+    throw RequestError(400, "model_mismatch",
+                       "/model: the body names a different model than the path (" + id + ")", "/model");
+  }
+  request["model"] = id;
 }
 
 }  // namespace
@@ -117,6 +149,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
       job.objects.push_back(std::move(o));
     }
 
+    load_bundle_images(context, job);
     // Completed parameters name content-addressed models (and bundle files
     // inside them): they decide every byte of the PNG.
     const std::string cache_key = completed.dump();
@@ -144,11 +177,11 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     const double png_ms = std::chrono::duration<double, std::milli>(Clock::now() - png_start).count();
 
     res.set_header("Server-Timing", server_timing(out, queue_ms < 0 ? 0 : queue_ms, png_ms));
-    res.set_header("X-Toond-Lod", lod_header(out.lods));
     auto answer = std::make_shared<render::CachedRender>();
     answer->etag = render::etag_of(png);
     answer->png = std::move(png);
     answer->passes = out.plan;
+    answer->lod = lod_header(out.lods);
     answer_render(req, res, *answer);
     if (context.results) context.results->put(cache_key, std::move(answer));
     context.metrics.observe_render(std::chrono::duration<double>(Clock::now() - started).count(), out.timings,

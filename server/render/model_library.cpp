@@ -5,6 +5,7 @@
 #include "scene/demo_model.h"
 #include "scene/bundle_import.h"
 #include "scene/obj_import.h"
+#include "scene/texture_decode.h"
 
 namespace toond::render {
 
@@ -48,6 +49,45 @@ void ModelLibrary::forget(const std::string& id) {
   std::lock_guard lock(mutex_);
   models_.erase(id);
   order_.remove(id);
+  for (auto it = image_order_.begin(); it != image_order_.end();) {
+    if (it->compare(0, id.size() + 1, id + '\n') == 0) {
+      images_.erase(*it);
+      it = image_order_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+}
+
+std::shared_ptr<const scene::Texture> ModelLibrary::bundle_image(const std::string& model_key,
+                                                                 const std::string& path) {
+  // Few distinct images serve many renders (one ramp, one floor per look).
+  constexpr std::size_t image_capacity = 32;
+  const std::string key = model_key + '\n' + path;
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = images_.find(key); it != images_.end()) {
+      image_order_.remove(key);
+      image_order_.push_front(key);
+      return it->second;
+    }
+  }
+  const std::optional<scene::Bundle> bundle =
+      model_key == "demo" ? std::optional<scene::Bundle>(scene::make_demo_bundle()) : store_.load(model_key);
+  if (!bundle) return nullptr;
+  const std::optional<std::string> resolved = bundle->resolve("", path);
+  if (!resolved) return nullptr;
+  auto image = std::make_shared<const scene::Texture>(scene::decode_texture(*bundle->find(*resolved), *resolved));
+  std::lock_guard lock(mutex_);
+  if (!images_.count(key)) {
+    images_.emplace(key, image);
+    image_order_.push_front(key);
+    while (image_order_.size() > image_capacity) {
+      images_.erase(image_order_.back());
+      image_order_.pop_back();
+    }
+  }
+  return image;
 }
 
 }  // namespace toond::render

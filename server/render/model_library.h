@@ -23,6 +23,14 @@ class ModelLibrary {
   std::shared_ptr<const scene::Model> demo() const { return demo_; }
   void forget(const std::string& id);
 
+  // An image file of a model's bundle ("demo": the built-in one) decoded
+  // as an sRGB colour image, for request parameters that name files
+  // (shading.ramp_image, floor.texture); kept for later renders. `path` is
+  // resolved inside the bundle only (Bundle::resolve). nullptr when the model
+  // or the file does not exist; throws std::runtime_error when the file is
+  // not a decodable image.
+  std::shared_ptr<const scene::Texture> bundle_image(const std::string& model_key, const std::string& path);
+
  private:
   scene::ModelStore& store_;
   std::size_t capacity_;
@@ -30,6 +38,8 @@ class ModelLibrary {
   std::mutex mutex_;
   std::list<std::string> order_;  // most recent first
   std::unordered_map<std::string, std::shared_ptr<const scene::Model>> models_;
+  std::list<std::string> image_order_;  // most recent first
+  std::unordered_map<std::string, std::shared_ptr<const scene::Texture>> images_;
 };
 
 }  // namespace toond::render

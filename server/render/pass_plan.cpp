@@ -77,6 +77,7 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   }
   // A white base ignores the material, so its textures are never read.
   plan.sample_textures = model.has_textures && params.base == BaseColor::Material;
+  plan.floor_textured = plan.has(Pass::Floor) && !params.floor.texture.empty() && params.base == BaseColor::Material;
   if (params.base == BaseColor::White) plan.main_defines.push_back("BASE_WHITE");
   if (params.base == BaseColor::Material && model.has_vertex_colors) plan.main_defines.push_back("VERTEX_COLOR");
   // Normal maps only bend the lighting: unlit colour never reads them.

@@ -39,6 +39,7 @@ struct PassPlan {
   std::vector<std::string> outline_defines;
   bool sample_textures = false;
   bool use_normal_maps = false;  // per material: NORMAL_MAP where it has one
+  bool floor_textured = false;   // the floor pass samples floor.texture
   int samples = 1;
   int supersample = 1;
   int shadow_light = -1;  // index into RenderParams::lights, -1: no shadows

@@ -113,6 +113,7 @@ RenderParams RenderParams::from_json(const json& j) {
                                      : glm::vec3(stop.at("value").get<float>());
     p.ramp.push_back(r);
   }
+  p.ramp_image = shading.at("ramp_image").get<std::string>();
   for (const auto& [name, colour] : shading.at("shade_colors").items()) {
     p.shade_colors[name] = srgb_to_linear(vec3_of(colour));
   }
@@ -162,6 +163,8 @@ RenderParams RenderParams::from_json(const json& j) {
   p.floor.enabled = floor.at("enabled").get<bool>();
   p.floor.color = srgb_to_linear(vec3_of(floor.at("color")));
   p.floor.size = floor.at("size").get<float>();
+  p.floor.texture = floor.at("texture").get<std::string>();
+  p.floor.texture_repeat = floor.at("texture_repeat").get<float>();
 
   const json& outline = j.at("outline");
   p.outline.enabled = outline.at("enabled").get<bool>();
@@ -186,10 +189,10 @@ RenderParams RenderParams::from_json(const json& j) {
 
   p.msaa = j.at("msaa").get<int>();
   p.supersample = j.at("supersample").get<int>();
+  p.lod_auto = j.at("lod") == "auto";
+  p.lod_error_px = j.at("lod_error_px").get<double>();
+  p.png_compression = j.at("png_compression").get<int>();
   return p;
 }
 
 }  // namespace toond::render
-  p.lod_auto = j.at("lod") == "auto";
-  p.lod_error_px = j.at("lod_error_px").get<double>();
-  p.png_compression = j.at("png_compression").get<int>();

@@ -4,11 +4,14 @@
 // schema's defaults, so every field is present and in range here; names and
 // defaults live in proto/render-params.schema.json, not in this file.
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
+
+#include "scene/model.h"
 
 namespace toond::render {
 
@@ -86,6 +89,11 @@ struct FloorParams {
   bool enabled = false;
   glm::vec3 color{0.7f};  // linear
   float size = 4;         // half side, in bounding radii
+  std::string texture;    // bundle path; empty: plain colour
+  float texture_repeat = 4;
+  // The decoded `texture`, filled by the HTTP layer (which reads bundles)
+  // before the job reaches the render thread; null for a plain floor.
+  std::shared_ptr<const scene::Texture> image;
 };
 
 enum class OutlineColorMode { Fixed, Texture, Material };
@@ -147,6 +155,9 @@ struct RenderParams {
   bool band_aa = true;  // blend band edges across a pixel
   TwoToneParams two_tone;
   std::vector<RampStop> ramp;  // sorted by `at`; empty: bands
+  // Bundle path of a ramp image; the HTTP layer turns it into `ramp` stops
+  // (ramp_from_image) before the job is queued.
+  std::string ramp_image;
   std::map<std::string, glm::vec3> shade_colors;  // material name → linear shade colour
   SpecularParams specular;
   RimParams rim;
@@ -157,6 +168,9 @@ struct RenderParams {
   OutlineParams outline;
   int msaa = 1;
   int supersample = 1;
+  bool lod_auto = true;       // false: `lod` "full", every triangle
+  double lod_error_px = 0.5;  // the most a level's error may project to, output pixels
+  int png_compression = 3;    // zlib level of the answer
 
   static RenderParams from_json(const nlohmann::json& completed);
 };
@@ -166,6 +180,3 @@ float srgb_to_linear(float c);
 glm::vec3 srgb_to_linear(const glm::vec3& c);
 
 }  // namespace toond::render
-  bool lod_auto = true;       // false: `lod` "full", every triangle
-  double lod_error_px = 0.5;  // the most a level's error may project to, output pixels
-  int png_compression = 3;    // zlib level of the answer

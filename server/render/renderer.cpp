@@ -21,8 +21,10 @@ void check_gl(const char* where) {
 }
 
 // A square ground plane just under the model's lowest point (a hair lower,
-// so a flat-bottomed model does not z-fight with it), facing up.
-scene::Model make_floor(const scene::Bounds& bounds, float size) {
+// so a flat-bottomed model does not z-fight with it), facing up; its texture
+// coordinates run over `repeat` tiles per side.
+scene::Model make_floor(const scene::Bounds& bounds, float size, float repeat,
+                        const std::shared_ptr<const scene::Texture>& image) {
   const float half = bounds.radius() * size;
   const glm::vec3 c = bounds.centre();
   const float y = bounds.min.y - bounds.radius() * 1e-3f;
@@ -32,20 +34,18 @@ scene::Model make_floor(const scene::Bounds& bounds, float size) {
                  {c.x - half, y, c.z + half}};
   m.normals.assign(4, glm::vec3(0, 1, 0));
   m.outline_normals.assign(4, glm::vec3(0, 1, 0));
-  m.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  m.texcoords = {{0, 0}, {repeat, 0}, {repeat, repeat}, {0, repeat}};
   m.indices = {0, 2, 1, 0, 3, 2};
   m.submeshes = {{0, 6, 0}};
   m.bounds = {m.positions[0], m.positions[2]};
   floor.materials.push_back({});
+  if (image) {
+    floor.textures.push_back(*image);
+    floor.materials[0].diffuse_texture = 0;
+  }
   return floor;
 }
 
-}  // namespace
-
-gpu::NormalDepthTarget& Renderer::normal_depth_for(int width, int height) {
-  if (!normal_depth_ || !normal_depth_->matches(width, height)) {
-    normal_depth_.reset();
-    normal_depth_.emplace(width, height);
 // Per object, the coarsest level whose error, at the object's nearest
 // distance from the camera, stays within the pixel budget. Scale in the
 // object's transform scales its error along.
@@ -73,6 +73,12 @@ std::vector<LodUse> choose_levels(const std::vector<RenderObject>& objects, cons
   return uses;
 }
 
+}  // namespace
+
+gpu::NormalDepthTarget& Renderer::normal_depth_for(int width, int height) {
+  if (!normal_depth_ || !normal_depth_->matches(width, height)) {
+    normal_depth_.reset();
+    normal_depth_.emplace(width, height);
   }
   return *normal_depth_;
 }
@@ -85,12 +91,16 @@ gpu::ShadowMap& Renderer::shadow_map_for(int size) {
   return *shadow_map_;
 }
 
-const GpuModel& Renderer::floor_for(const scene::Bounds& b, float size) {
-  if (!floor_ || floor_size_ != size || floor_bounds_.min != b.min || floor_bounds_.max != b.max) {
+const GpuModel& Renderer::floor_for(const scene::Bounds& b, const FloorParams& params, bool textured) {
+  const std::shared_ptr<const scene::Texture> image = textured ? params.image : nullptr;
+  if (!floor_ || floor_size_ != params.size || floor_repeat_ != params.texture_repeat || floor_image_ != image ||
+      floor_bounds_.min != b.min || floor_bounds_.max != b.max) {
     floor_.reset();
-    floor_.emplace(make_floor(b, size));
+    floor_.emplace(make_floor(b, params.size, params.texture_repeat, image));
     floor_bounds_ = b;
-    floor_size_ = size;
+    floor_size_ = params.size;
+    floor_repeat_ = params.texture_repeat;
+    floor_image_ = image;
   }
   return *floor_;
 }
@@ -134,6 +144,10 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   };
   RenderOutput out;
   out.plan = plan.describe();
+  out.lods = choose_levels(objects, frame, params);
+  // Every pass draws an object at the same level, so the hull, the shadow
+  // and the edges all follow the surface that was shaded.
+  auto lod_of = [&](std::size_t i) { return out.lods[i].level; };
   PassTimer timer(out.timings);
 
   std::optional<ShadowFit> shadow;
@@ -144,10 +158,6 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     map.bind_for_drawing();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-  out.lods = choose_levels(objects, frame, params);
-  // Every pass draws an object at the same level, so the hull, the shadow
-  // and the edges all follow the surface that was shaded.
-  auto lod_of = [&](std::size_t i) { return out.lods[i].level; };
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);
     glDisable(GL_STENCIL_TEST);
@@ -306,14 +316,21 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
       // Same shading as the model, but no stencil mark: the floor is never
       // outlined, and the model's outline may cross it.
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      const GpuModel& floor = floor_for(bounds, params.floor.size);
-      gpu::Program& program = programs_.get("toon.vert", "toon.frag", plan.main_defines);
+      const bool textured = plan.floor_textured && params.floor.image;
+      const GpuModel& floor = floor_for(bounds, params.floor, textured);
+      std::vector<std::string> defines = plan.main_defines;
+      if (textured) defines.push_back("HAS_TEXTURE");
+      gpu::Program& program = programs_.get("toon.vert", "toon.frag", defines);
       program.use();
       set_main_uniforms(program);
       // The floor is made in frame coordinates already.
       program.set("u_model", glm::mat4(1.0f));
       program.set("u_normal_matrix", glm::mat3(1.0f));
       program.set("u_base_color", params.floor.color);
+      if (textured) {
+        glBindTextureUnit(0, floor.texture(0));
+        program.set("u_diffuse_map", 0);
+      }
       if (shadow) set_shadow_uniforms(program);
       floor.bind();
       floor.draw_all();

@@ -59,7 +59,7 @@ class Renderer {
   gpu::RenderTarget& target_for(int width, int height, int samples);
   gpu::ShadowMap& shadow_map_for(int size);
   gpu::NormalDepthTarget& normal_depth_for(int width, int height);
-  const GpuModel& floor_for(const scene::Bounds& bounds, float size);
+  const GpuModel& floor_for(const scene::Bounds& bounds, const FloorParams& floor, bool textured);
 
   gpu::ProgramCache& programs_;
   std::optional<gpu::RenderTarget> target_;  // reused while the size stays the same
@@ -71,6 +71,8 @@ class Renderer {
   std::optional<GpuModel> floor_;             // rebuilt when the scene's bounds change
   scene::Bounds floor_bounds_;
   float floor_size_ = 0;
+  float floor_repeat_ = 0;
+  std::shared_ptr<const scene::Texture> floor_image_;  // the image floor_ was built with
 };
 
 }  // namespace toond::render

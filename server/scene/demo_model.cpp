@@ -77,6 +77,40 @@ std::string make_texture_png() {
   return image::encode_png(img);
 }
 
+// The reference reports' "sharp lighting map": 16 texels, 3 shades (the
+// shadow band over the first 6, a mid tone, the lit tone over the last 4),
+// for `shading.ramp_image`.
+std::string make_ramp_png() {
+  image::Image img;
+  img.width = 16;
+  img.height = 1;
+  img.rgba.resize(16 * 4);
+  for (int x = 0; x < 16; ++x) {
+    const std::uint8_t level = x < 6 ? 110 : x < 12 ? 190 : 255;
+    std::uint8_t* p = img.pixel(x, 0);
+    p[0] = p[1] = p[2] = level;
+    p[3] = 255;
+  }
+  return image::encode_png(img);
+}
+
+// Grey tiles for `floor.texture`: 2×2 squares per repeat.
+std::string make_floor_png() {
+  image::Image img;
+  img.width = 64;
+  img.height = 64;
+  img.rgba.resize(64 * 64 * 4);
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      const std::uint8_t level = ((x / 32) + (y / 32)) % 2 == 1 ? 150 : 235;
+      std::uint8_t* p = img.pixel(x, y);
+      p[0] = p[1] = p[2] = level;
+      p[3] = 255;
+    }
+  }
+  return image::encode_png(img);
+}
+
 void append_sphere(std::string& obj) {
   obj += "o sphere\ng sphere\nusemtl body\n";
   // Positions (and their normals, same order): top pole, rings 1..kRings-1,
@@ -204,6 +238,9 @@ Bundle make_demo_bundle() {
   bundle.add("demo.obj", std::move(obj));
   bundle.add("demo.mtl", mtl);
   bundle.add("textures/demo.png", make_texture_png());
+  // Not referenced by the MTL: files a request may name.
+  bundle.add("ramps/sharp.png", make_ramp_png());
+  bundle.add("textures/floor.png", make_floor_png());
   return bundle;
 }
 

@@ -19,7 +19,9 @@ TEST(DemoModel, IsDeterministic) {
   ASSERT_NE(a.find("demo.obj"), nullptr);
   ASSERT_NE(a.find("demo.mtl"), nullptr);
   ASSERT_NE(a.find("textures/demo.png"), nullptr);
-  EXPECT_EQ(a.files().size(), 3u);
+  ASSERT_NE(a.find("ramps/sharp.png"), nullptr);
+  ASSERT_NE(a.find("textures/floor.png"), nullptr);
+  EXPECT_EQ(a.files().size(), 5u);
 }
 
 TEST(DemoModel, ImportsCleanly) {

@@ -85,7 +85,8 @@ TEST_F(ModelStoreTest, PutStoresOnceAndReportsTheModel) {
   EXPECT_EQ(first.info.materials, 2u);
   EXPECT_EQ(first.info.textures, 1u);
   EXPECT_EQ(first.info.bytes, bundle.total_bytes());
-  EXPECT_EQ(first.info.files, (std::vector<std::string>{"demo.mtl", "demo.obj", "textures/demo.png"}));
+  EXPECT_EQ(first.info.files, (std::vector<std::string>{"demo.mtl", "demo.obj", "ramps/sharp.png", "textures/demo.png",
+                                      "textures/floor.png"}));
   EXPECT_TRUE(first.info.warnings.empty());
   EXPECT_TRUE(fs::is_regular_file(dir_ / "models" / first.info.id / "info.json"));
   EXPECT_TRUE(fs::is_regular_file(dir_ / "models" / first.info.id / "files" / "textures" / "demo.png"));
