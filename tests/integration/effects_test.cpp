@@ -301,7 +301,10 @@ TEST_F(RampEffects, TwoTonePaletteHasTwoColoursSplitAtTheThreshold) {
 TEST_F(RampEffects, RampStopsSetLevelsAndColoursAtTheirNdotL) {
   auto client = daemon().client();
   json params = front_lit();
-  params["shading"] = {{"ramp", json::array({json{{"at", 0}, {"value", 0.25}}, json{{"at", 0.5}, {"color", {1, 0, 0}}},
+  // The first stop starts at -1: silhouette samples whose interpolated
+  // normal tips just past 90° (N·L < 0) would otherwise fall below it, where
+  // the ramp documents no light.
+  params["shading"] = {{"ramp", json::array({json{{"at", -1}, {"value", 0.25}}, json{{"at", 0.5}, {"color", {1, 0, 0}}},
                                                json{{"at", 0.9}, {"value", 1}}})}};
   const auto img = render_ok(client, params);
   EXPECT_EQ(colour_histogram(img, foreground_mask(img)).size(), 3u);

@@ -45,7 +45,12 @@ TEST_F(HealthAndSchema, RootServesThePage) {
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 200);
   EXPECT_NE(res->get_header_value("Content-Type").find("text/html"), std::string::npos);
-  EXPECT_NE(res->body.find("/render"), std::string::npos);
+  // The page is a shell around its script module; the module drives /render.
+  EXPECT_NE(res->body.find("src=\"/app.js\""), std::string::npos);
+  auto script = client.Get("/app.js");
+  ASSERT_TRUE(script);
+  EXPECT_EQ(script->status, 200);
+  EXPECT_NE(script->body.find("/render"), std::string::npos);
 }
 
 TEST_F(HealthAndSchema, UnknownRouteIsJson404) {

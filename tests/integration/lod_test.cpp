@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <regex>
 
+#include "image/png_codec.h"
 #include "support/image_checks.h"
 #include "support/shared_models.h"
 #include "test_client.h"

@@ -46,7 +46,7 @@ TEST(ParamSchema, EveryDefaultInTheSchemaValidates) {
 
 TEST(ParamSchema, ErrorPathsPointAtTheField) {
   EXPECT_EQ(error_path({{"nope", 1}}), "/nope");
-  EXPECT_EQ(error_path({{"camera", {{"zoom", 2}}}}), "/camera/zoom");
+  EXPECT_EQ(error_path({{"camera", {{"zoom", 0}}}}), "/camera/zoom");
   EXPECT_EQ(error_path({{"camera", {{"pitch", 90}}}}), "/camera/pitch");
   EXPECT_EQ(error_path({{"width", 8}}), "/width");
   EXPECT_EQ(error_path({{"width", 100.5}}), "/width");
