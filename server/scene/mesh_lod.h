@@ -20,7 +20,7 @@ namespace toond::scene {
 
 struct LodOptions {
   // Each level aims at this fraction of the previous level's triangles.
-  double ratio = 0.5;
+  double ratio = 0.6;
   // No level below this many triangles; the chain stops there.
   std::size_t min_triangles = 64;
   // A level that keeps more than this fraction of the previous one's

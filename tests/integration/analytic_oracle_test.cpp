@@ -110,13 +110,14 @@ TEST_F(AnalyticOracle, SphereBandEdgesSitAtTheAnalyticRadii) {
     EXPECT_LE(e4.max_abs, 0.6) << "steps " << steps;
   }
   // MSAA alone only smooths triangle edges: band edges inside triangles
-  // stay pixel steps, off by up to half a pixel's diagonal. The targets
-  // need the band edges antialiased.
+  // stay pixel steps, off by up to about half a pixel whatever the MSAA
+  // level. Band-edge antialiasing places them to a fraction of that.
   for (int msaa : {1, 4}) {
     const ErrorStats hard = band_edge_errors(5, msaa, disk, false);
     const ErrorStats smooth = band_edge_errors(5, msaa, disk, true);
-    EXPECT_GT(hard.max_abs, 0.6) << "msaa " << msaa;
+    EXPECT_GT(hard.max_abs, 0.4) << "msaa " << msaa;
     EXPECT_LT(smooth.mean_abs, hard.mean_abs / 2) << "msaa " << msaa;
+    EXPECT_LT(smooth.max_abs, hard.max_abs / 2) << "msaa " << msaa;
   }
 }
 

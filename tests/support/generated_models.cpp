@@ -19,11 +19,15 @@ std::string sphere_obj(int segments, int rings, double radius, glm::dvec3 centre
   std::string obj = "# UV sphere\n";
   // Ring 0 is the north pole, ring `rings` the south pole; each ring holds
   // segments + 1 vertices so the seam has its own copies.
+  // The seam's copies and the poles are written with exactly the same
+  // coordinates, as an exporter sharing one `v` would (sin 2π and sin π are
+  // not 0 in floating point).
   for (int r = 0; r <= rings; ++r) {
     const double theta = pi * r / rings;
+    const double ring_radius = r == 0 || r == rings ? 0.0 : std::sin(theta);
     for (int s = 0; s <= segments; ++s) {
-      const double phi = 2.0 * pi * s / segments;
-      const glm::dvec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+      const double phi = s == segments ? 0.0 : 2.0 * pi * s / segments;
+      const glm::dvec3 n(ring_radius * std::cos(phi), std::cos(theta), -ring_radius * std::sin(phi));
       obj += vec_line("v", centre + n * radius);
       obj += vec_line("vn", n);
     }

@@ -117,11 +117,9 @@ TEST(MeshLod, ErrorBoundsHowFarALevelStraysFromTheSphere) {
   }
 }
 
-// DISABLED: known defect, open. The full mesh is closed, but coarse levels
-// show a few open edges (3-16 of thousands) near the generator's UV seam,
-// so the hull may gap there. Needs a position-welded simplification
-// (meshopt_generateShadowIndexBuffer) before it can pass.
-TEST(MeshLod, DISABLED_LevelsOfAClosedMeshStayClosedSoTheHullHasNoGaps) {
+// meshopt occasionally tears a coarse level (one open edge seen at 512 of
+// the sphere's triangles): the chain ends before such a level.
+TEST(MeshLod, LevelsOfAClosedMeshStayClosedSoTheHullHasNoGaps) {
   const Mesh mesh = imported_sphere();
   ASSERT_EQ(open_edges(mesh, mesh.indices), 0u);
   for (const MeshLod& lod : mesh.lods) EXPECT_EQ(open_edges(mesh, lod.indices), 0u) << lod.triangle_count();
@@ -137,11 +135,7 @@ TEST(MeshLod, DISABLED_LevelsOfAClosedMeshStayClosedSoTheHullHasNoGaps) {
   }
 }
 
-// DISABLED: known defect, open. The full mesh is closed, but coarse levels
-// show a few open edges (3-16 of thousands) near the generator's UV seam,
-// so the hull may gap there. Needs a position-welded simplification
-// (meshopt_generateShadowIndexBuffer) before it can pass.
-TEST(MeshLod, DISABLED_MaterialsMeetWithoutCracksOnEveryLevel) {
+TEST(MeshLod, MaterialsMeetWithoutCracksOnEveryLevel) {
   // The sphere split into two materials at its equator: each submesh is
   // simplified on its own, with its border locked.
   Mesh mesh = imported_sphere();
