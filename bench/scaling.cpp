@@ -75,7 +75,10 @@ Timing time_render(httplib::Client& client, const json& params, int repeats) {
 
 ScalingRow measure_row(httplib::Client& client, const std::string& axis, double size, const std::string& label,
                        json params, int repeats) {
-  ScalingRow row{axis, size, label};
+  ScalingRow row;
+  row.axis = axis;
+  row.size = size;
+  row.label = label;
   params["lod"] = "full";
   const Timing full = time_render(client, params, repeats);
   params["lod"] = "auto";

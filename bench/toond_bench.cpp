@@ -90,7 +90,9 @@ int main(int argc, char** argv) {
   try {
     const Args args = parse(argc, argv);
     fs::create_directories(args.out);
-    toond::test::Daemon daemon;
+    // Every point is rendered several times with identical parameters: the
+    // result cache would answer all but the first from memory.
+    toond::test::Daemon daemon({}, {"--result-cache-mb", "0"});
     httplib::Client client(daemon.url());
     client.set_read_timeout(300);
     client.set_write_timeout(300);
