@@ -310,19 +310,19 @@ Options parse_args(const std::vector<std::string>& args,
       }
       break;
     case Verb::upload:
-      if (positionals.empty()) throw UsageError("upload needs the path of an .obj file");
+      if (positionals.empty()) throw UsageError("upload needs the path of an .obj (or .m) file");
       if (positionals.size() > 1) {
-        throw UsageError("upload takes one .obj file, got '" + positionals[1] + "' too");
+        throw UsageError("upload takes one model file, got '" + positionals[1] + "' too");
       }
       o.obj_path = positionals.front();
       break;
     case Verb::render:
       if (positionals.size() > 1) {
-        throw UsageError("render takes at most one .obj file, got '" + positionals[1] + "' too");
+        throw UsageError("render takes at most one model file, got '" + positionals[1] + "' too");
       }
       if (!positionals.empty()) o.obj_path = positionals.front();
       if (!o.obj_path.empty() && !o.model_id.empty()) {
-        throw UsageError("give either PATH.obj or --model ID, not both");
+        throw UsageError("give either a model file or --model ID, not both");
       }
       if (o.output.empty()) {
         throw UsageError("render needs -o OUT.png (or -o - for standard output)");
@@ -399,23 +399,24 @@ OpenGL vendor, renderer and version it renders with.
 Exit status 0 when the status is "ok", 1 otherwise or when it cannot be reached.
 )";
     case Verb::upload:
-      return R"(Usage: toon [--server URL] upload PATH.obj [-q]
+      return R"(Usage: toon [--server URL] upload PATH.obj|PATH.m [-q]
 
 Sends an OBJ model to the daemon's store (POST /models) together with the
 MTL files its mtllib lines name and the textures those MTL files reference
 (map_Kd, map_Ks, map_Ns, map_d, map_Bump, bump, norm, disp). Files are sent
 with their path relative to the OBJ's folder; references that leave that
-folder are refused, missing files are reported and skipped.
+folder are refused, missing files are reported and skipped. A .m mesh
+(`Vertex i x y z {normal=(...)}` / `Face i a b c` lines) is sent alone.
 Prints the daemon's answer (id, triangles, materials, textures, warnings).
 
 Options:
   -q, --quiet   print only the model id
 )";
     case Verb::render:
-      return R"(Usage: toon [--server URL] render [PATH.obj | --model ID] [--params FILE.json]
+      return R"(Usage: toon [--server URL] render [PATH.obj|PATH.m | --model ID] [--params FILE.json]
                            [--set key.sub=value ...] -o OUT.png
 
-Renders a PNG (POST /render). With PATH.obj the model and its MTL files and
+Renders a PNG (POST /render). With PATH.obj (or a .m mesh) the model and its MTL files and
 textures are uploaded with the request; with --model a stored model is used;
 with neither the daemon's built-in demo model renders.
 
@@ -458,15 +459,16 @@ Options:
 
 Usage:
   toon [--server URL] health
-  toon [--server URL] upload PATH.obj [-q]
-  toon [--server URL] render [PATH.obj | --model ID] [--params FILE.json]
+  toon [--server URL] upload PATH.obj|PATH.m [-q]
+  toon [--server URL] render [PATH.obj|PATH.m | --model ID] [--params FILE.json]
                              [--set key.sub=value ...] -o OUT.png
   toon [--server URL] gallery [--models DIR] [--all | --only NAME,...] [--size N]
                               -o OUTDIR
 
 Commands:
   health    show the daemon's status and the OpenGL renderer it uses
-  upload    store an OBJ with its MTL files and textures; prints the model id
+  upload    store an OBJ with its MTL files and textures (or a .m mesh);
+            prints the model id
   render    render a PNG of a local OBJ, a stored model or the demo model
   gallery   render every preset and effect on a folder of models into PNGs,
             a contact sheet and an HTML index

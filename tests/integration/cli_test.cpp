@@ -1,6 +1,8 @@
 // The toon CLI against a real daemon: exit codes, files written, errors.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "image/png_codec.h"
 #include "support/image_checks.h"
 #include "support/shared_models.h"
@@ -69,6 +71,28 @@ TEST_F(Cli, RenderAPathUploadsItInOneCall) {
   const auto img = image::decode_png(read_file(png));
   EXPECT_EQ(img.width, 512);
   EXPECT_GT(coverage(foreground_mask(img)), 0.05);
+}
+
+// The reference viewers' .m meshes go through the same verbs as OBJ files.
+TEST_F(Cli, UploadsAndRendersADotMMesh) {
+  const auto mesh = out_dir() / "tetra.m";
+  {
+    std::ofstream out(mesh);
+    out << "# a tetrahedron\n"
+           "Vertex 1 0 0 0\nVertex 2 1 0 0\nVertex 3 0 1 0\nVertex 4 0 0 1\n"
+           "Face 1 1 3 2\nFace 2 1 2 4\nFace 3 1 4 3\nFace 4 2 3 4\n";
+  }
+  const auto upload = toon({"upload", mesh.string(), "--server", daemon().url()});
+  ASSERT_EQ(upload.status, 0) << upload.err;
+  const json info = json::parse(upload.out);
+  EXPECT_EQ(info["triangles"], 4);
+  EXPECT_EQ(info["files"], json::array({"tetra.m"}));
+
+  const auto png = out_dir() / "tetra.png";
+  const auto render = toon({"render", mesh.string(), "--set", "width=96", "--set", "height=96", "-o",
+                            png.string(), "--server", daemon().url()});
+  ASSERT_EQ(render.status, 0) << render.err;
+  EXPECT_GT(coverage(foreground_mask(image::decode_png(read_file(png)))), 0.05);
 }
 
 TEST_F(Cli, RenderWithParamsFileRendersTheDemo) {
