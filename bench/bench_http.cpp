@@ -29,6 +29,7 @@ std::string upload(httplib::Client& client, const httplib::MultipartFormDataItem
 
 double server_time_ms(const std::string& header, double* queue_ms, double* png_ms) {
   double total = 0;
+  double reported_total = -1;
   std::stringstream entries(header);
   std::string entry;
   while (std::getline(entries, entry, ',')) {
@@ -42,10 +43,16 @@ double server_time_ms(const std::string& header, double* queue_ms, double* png_m
       if (queue_ms) *queue_ms = ms;
       continue;
     }
+    if (name == "total") {
+      reported_total = ms;
+      continue;
+    }
     if (name == "png" && png_ms) *png_ms = ms;
     total += ms;
   }
-  return total;
+  // GPU-timed passes can overlap the render thread's time, so their sum can
+  // exceed the work's wall-clock time: the server's own total is preferred.
+  return reported_total >= 0 ? reported_total : total;
 }
 
 TimedRender render_timed(httplib::Client& client, const nlohmann::json& params) {

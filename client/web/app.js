@@ -105,8 +105,12 @@ function showImage({ blob, kind, ms, timing, passes }) {
     link.href = url;
     link.removeAttribute('aria-disabled');
   }
-  const server = timing.filter((t) => t.name !== 'queue').reduce((sum, t) => sum + t.ms, 0);
-  const detail = timing.map((t) => `${t.name} ${t.ms.toFixed(1)}`).join(', ');
+  // The server's own `total` (GPU-timed passes may overlap the thread's
+  // time, so they need not add up to it); older daemons: the sum.
+  const total = timing.find((t) => t.name === 'total');
+  const server = total ? total.ms
+    : timing.filter((t) => t.name !== 'queue').reduce((sum, t) => sum + t.ms, 0);
+  const detail = timing.filter((t) => t.name !== 'total').map((t) => `${t.name} ${t.ms.toFixed(1)}`).join(', ');
   $('timing').textContent = `${kind === 'quick' ? 'preview' : 'full quality'} · ${Math.round(ms)} ms round trip, `
     + `${server.toFixed(1)} ms on the server (${detail}) · passes: ${passes || '—'}`;
   studio.panel.clearErrors();

@@ -32,6 +32,12 @@ std::string server_timing(const render::RenderOutput& out, double queue_ms, doub
     if (t.gpu) s << ";desc=gpu;cpu=" << t.cpu_ms;
   }
   s << ", png;dur=" << png_ms;
+  // The request's own work from the render thread's first pass to the last
+  // PNG byte, without the queue: GPU-timed passes may overlap the thread's
+  // time, so the entries above need not add up to it.
+  double render_ms = 0;
+  for (const auto& t : out.timings) render_ms += t.cpu_ms;
+  s << ", total;dur=" << render_ms + png_ms;
   return s.str();
 }
 
@@ -182,6 +188,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     answer->png = std::move(png);
     answer->passes = out.plan;
     answer->lod = lod_header(out.lods);
+    answer->samples = out.samples;
     answer_render(req, res, *answer);
     if (context.results) context.results->put(cache_key, std::move(answer));
     context.metrics.observe_render(std::chrono::duration<double>(Clock::now() - started).count(), out.timings,

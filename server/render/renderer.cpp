@@ -185,6 +185,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   const int draw_width = params.width * ss;
   const int draw_height = params.height * ss;
   gpu::RenderTarget& target = target_for(draw_width, draw_height, plan.samples);
+  out.samples = target.samples();
   target.bind_for_drawing();
   const CameraSetup camera = fit_camera(params.camera, bounds,
                                         static_cast<double>(params.width) / params.height);

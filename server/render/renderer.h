@@ -35,6 +35,9 @@ struct RenderOutput {
   std::vector<PassTiming> timings;
   std::string plan;  // PassPlan::describe()
   std::vector<LodUse> lods;  // one per object, in order
+  // Samples per pixel the target really has: `msaa` clamped to the
+  // driver's GL_MAX_SAMPLES (llvmpipe: 4).
+  int samples = 1;
 };
 
 // One object of the scene: a model on the GPU and its transform (model

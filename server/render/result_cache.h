@@ -18,6 +18,7 @@ struct CachedRender {
   std::string etag;    // strong validator of `png`, quoted: "\"…\""
   std::string passes;  // X-Toond-Passes of the render that made it
   std::string lod;     // X-Toond-Lod of the render that made it
+  int samples = 1;     // X-Toond-Samples: MSAA samples the render had
 };
 
 // A strong ETag for a body: its 64-bit FNV-1a hash, quoted. The same bytes

@@ -397,5 +397,38 @@ TEST_F(Render, ServerTimingNamesThePassesThatRan) {
   EXPECT_EQ(with_outline->get_header_value("X-Toond-Passes"), "main,hull_outline,resolve,readback");
 }
 
+// `total` is the request's own work; the passes' thread times and the
+// encoding fit inside it.
+TEST_F(Render, ServerTimingEndsWithTheTotal) {
+  auto client = daemon().client();
+  auto res = post_json(client, "/render", {{"width", 64}, {"height", 64}, {"camera", {{"yaw", 17}}}});
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200);
+  const std::string timing = res->get_header_value("Server-Timing");
+  const auto total_at = timing.find("total;dur=");
+  ASSERT_NE(total_at, std::string::npos) << timing;
+  const double total = std::stod(timing.substr(total_at + 10));
+  const auto png_at = timing.find("png;dur=");
+  ASSERT_NE(png_at, std::string::npos) << timing;
+  EXPECT_GE(total, std::stod(timing.substr(png_at + 8))) << timing;
+  EXPECT_GT(total, 0.0);
+}
+
+// GL guarantees at least 4 samples; more are clamped to what the driver has,
+// and the answer says what was used.
+TEST_F(Render, SamplesHeaderSaysWhatMsaaReallyUsed) {
+  auto client = daemon().client();
+  auto samples = [&](int msaa) {
+    auto res = post_json(client, "/render", {{"width", 32}, {"height", 32}, {"msaa", msaa}});
+    EXPECT_TRUE(res && res->status == 200);
+    return res ? std::stoi(res->get_header_value("X-Toond-Samples", 0)) : -1;
+  };
+  EXPECT_EQ(samples(1), 1);
+  EXPECT_EQ(samples(4), 4);
+  const int eight = samples(8);
+  EXPECT_GE(eight, 4);
+  EXPECT_LE(eight, 8);
+}
+
 }  // namespace
 }  // namespace toond::test
