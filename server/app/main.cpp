@@ -86,6 +86,7 @@ int run(const toond::app::Options& options) {
   render_options.queue_capacity = options.queue;
   render_options.shader_dir = options.shader_dir;
   render_options.gpu_model_bytes = options.gpu_cache_bytes;
+  render_options.simulate_reset_every = options.simulate_gpu_reset;
   toond::render::RenderService renderer(render_options);
   toond::render::ModelLibrary library(store, 16);
 
@@ -110,7 +111,8 @@ int run(const toond::app::Options& options) {
     return 1;
   }
   std::cerr << "toond: GL " << renderer.gl_info().version << " on " << renderer.gl_info().renderer
-            << " (" << renderer.gl_info().platform << "), data in " << options.data_dir
+            << " (" << renderer.gl_info().platform
+            << (renderer.gl_info().robust ? ", robust context" : ", no reset notification") << "), data in " << options.data_dir
             << (options.shader_dir.empty() ? "" : ", shaders from " + options.shader_dir + " (reloaded on change)")
             << "\n";
   std::cout << "listening on http://" << options.host << ":" << port << std::endl;

@@ -54,6 +54,14 @@ Usage: toond [options]
                          does not compile fails that render (500 "shader_error"
                          naming the file and line); the previous shaders keep
                          serving until the file is fixed.
+  --simulate-gpu-reset N testing aid: every Nth render acts as if the GL context
+                         had been lost (a GPU reset), to exercise the recovery
+                         a real loss takes: that request gets 503 "gpu_reset"
+                         with Retry-After, the render thread makes a new
+                         context and uploads models again as they are used.
+                         Real losses are detected on robust contexts
+                         (EGL_EXT_create_context_robustness) where the driver
+                         has them.
   --version              print the version and exit
   -h, --help             this text
 )" + limit_usage() + R"(
@@ -101,6 +109,8 @@ Options parse_options(const std::vector<std::string>& args) {
     } else if (a == "--shader-dir") {
       o.shader_dir = value();
       if (o.shader_dir.empty()) throw std::invalid_argument("--shader-dir needs a directory");
+    } else if (a == "--simulate-gpu-reset") {
+      o.simulate_gpu_reset = static_cast<std::size_t>(parse_int(a, value(), 1, 1'000'000'000));
     } else if (a == "--render-timeout") {
       const std::string& v = value();
       char* end = nullptr;

@@ -25,6 +25,8 @@ struct Options {
   // Empty: the shaders embedded in the binary. Otherwise GLSL files are read
   // from this folder and recompiled when they change (look development).
   std::string shader_dir;
+  // Testing aid: every Nth render acts as if the GL context were lost.
+  std::size_t simulate_gpu_reset = 0;
   // --max-* (server/app/limit_options.cpp); max_upload_bytes above wins
   // over limits.max_upload_bytes.
   http::RequestLimits limits;

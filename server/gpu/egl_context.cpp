@@ -149,14 +149,30 @@ EglContext::EglContext(const Options& options) {
   }
   if (config_count < 1) fail("eglChooseConfig(OpenGL)");
   // Newest core version first; 4.3 is the floor (compute, debug output, SSBOs).
+  // Where the display can, the context is made robust with "lose context
+  // on reset", so a GPU reset is reported (glGetGraphicsResetStatus) and the
+  // render thread can start over instead of drawing into a dead context.
   static constexpr int versions[][2] = {{4, 6}, {4, 5}, {4, 4}, {4, 3}};
-  for (const auto& v : versions) {
-    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, v[0],
-                                      EGL_CONTEXT_MINOR_VERSION, v[1],
-                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                      EGL_NONE};
-    context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
+  const bool robustness =
+      has_extension(eglQueryString(display_, EGL_EXTENSIONS), "EGL_EXT_create_context_robustness");
+  for (const bool robust : {true, false}) {
+    if (robust && !robustness) continue;
+    for (const auto& v : versions) {
+      const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                        v[0],
+                                        EGL_CONTEXT_MINOR_VERSION,
+                                        v[1],
+                                        EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                        robust ? EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY_EXT : EGL_NONE,
+                                        EGL_LOSE_CONTEXT_ON_RESET_EXT,
+                                        EGL_NONE};
+      context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
+      if (context_ != EGL_NO_CONTEXT) {
+        info_.robust = robust;
+        break;
+      }
+    }
     if (context_ != EGL_NO_CONTEXT) break;
   }
   if (context_ == EGL_NO_CONTEXT) fail("eglCreateContext(OpenGL core >= 4.3)");

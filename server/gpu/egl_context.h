@@ -26,6 +26,7 @@ struct GlInfo {
   std::string version;
   std::string glsl_version;
   std::string platform;  // "device N" or "surfaceless"
+  bool robust = false;   // a lost context is reported (see reports_resets)
   int major = 0;
   int minor = 0;
 };
@@ -44,6 +45,11 @@ class EglContext {
   EglContext& operator=(const EglContext&) = delete;
 
   const GlInfo& info() const { return info_; }
+
+  // Whether the driver reports a lost context through
+  // glGetGraphicsResetStatus (EGL_EXT_create_context_robustness with
+  // "lose context on reset"); without it a reset is seen only as errors.
+  bool reports_resets() const { return info_.robust; }
 
   // Every EGL device the driver lists (empty without device enumeration).
   static std::vector<EglDeviceInfo> enumerate_devices();

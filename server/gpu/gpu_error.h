@@ -12,4 +12,12 @@ class GpuError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The GL context was lost (a GPU reset, a driver restart). The render that
+// saw it fails; the render thread makes a new context and uploads models
+// again as they are used, so a retry succeeds.
+class GpuReset : public GpuError {
+ public:
+  using GpuError::GpuError;
+};
+
 }  // namespace toond::gpu

@@ -65,6 +65,10 @@ void write_exception(httplib::Response& res, std::exception_ptr ep) {
     if (first.line) error["line"] = *first.line;
     res.status = 500;
     res.set_content(dump_for_client({{"error", error}}), "application/json");
+  } catch (const gpu::GpuReset& e) {
+    std::cerr << "toond: " << e.what() << "\n";
+    res.set_header("Retry-After", "1");
+    write_error(res, 503, "gpu_reset", e.what());
   } catch (const gpu::GpuError& e) {
     std::cerr << "toond: GPU error: " << e.what() << "\n";
     write_error(res, 500, "gpu_error", e.what());

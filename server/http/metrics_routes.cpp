@@ -11,6 +11,9 @@ void register_metrics_routes(httplib::Server& server, ServiceContext& context) {
                  [&context] { return static_cast<double>(context.renderer.queue_depth()); });
   registry.gauge("toond_models_stored", "Models in the data directory (shared by every replica that mounts it).",
                  [&context] { return static_cast<double>(context.store.list().size()); });
+  registry.counter_from("toond_gpu_context_resets_total",
+                        "Lost GL contexts (GPU resets) replaced by a new one since start.",
+                        [&context] { return static_cast<double>(context.renderer.gpu_resets()); });
   registry.gauge("toond_gpu_models_loaded", "Models whose GPU copy this replica holds (its GPU LRU).",
                  [&context] { return static_cast<double>(context.renderer.gpu_models_loaded()); });
   registry.gauge("toond_gpu_model_bytes",

@@ -84,62 +84,118 @@ void RenderService::run(std::promise<void> started) {
     started.set_exception(std::current_exception());
     return;
   }
-  {
-    gpu::ProgramCache programs(std::move(sources));
-    GpuModelCache models(options_.gpu_model_capacity, options_.gpu_model_bytes);
-    Renderer renderer(programs);
-    started.set_value();
-
+  std::promise<void>* not_yet_started = &started;
+  while (serve(std::move(sources), not_yet_started)) {
+    not_yet_started = nullptr;
+    ++gpu_resets_;
+    gpu_models_loaded_ = 0;
+    gpu_model_bytes_ = 0;
+    std::cerr << "toond: the GL context was lost; making a new one (models are uploaded again as they are used)\n";
+    // The lost context's objects went with it: the caches were dropped by
+    // serve(); now the context itself.
+    context.reset();
     for (;;) {
-      Task task;
-      {
-        std::unique_lock lock(mutex_);
-        wake_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
-        // Work already accepted is finished before the thread stops.
-        if (queue_.empty()) break;
-        task = std::move(queue_.front());
-        queue_.pop_front();
-      }
-      if (!task.job) {
-        models.forget(task.forget_key);
-        gpu_models_loaded_ = models.size();
-        gpu_model_bytes_ = models.bytes();
-        continue;
-      }
-      if (task.job->deadline && std::chrono::steady_clock::now() > *task.job->deadline) {
-        task.promise.set_exception(std::make_exception_ptr(DeadlineExceeded()));
-        continue;
-      }
       try {
-        // With --shader-dir: pick up edited shader files (a stat per file
-        // when nothing changed; nothing at all for the embedded shaders).
-        const gpu::ProgramCache::Reload reload = programs.refresh();
-        if (!reload.files.empty()) {
-          std::cerr << "toond: reloaded";
-          for (const auto& f : reload.files) std::cerr << " " << f;
-          std::cerr << " (" << reload.programs << " program" << (reload.programs == 1 ? "" : "s") << " rebuilt)\n";
-        }
-        // Load them all first: references stay valid while the cache holds
-        // them, and a scene larger than the cache must not evict its own
-        // objects mid-way (see GpuModelCache::get's `pinned`).
-        std::vector<RenderObject> objects;
-        std::vector<std::string> pinned;
-        for (const JobObject& o : task.job->objects) pinned.push_back(o.model_key);
-        for (const JobObject& o : task.job->objects) {
-          objects.push_back({models.get(o.model_key, *o.model, pinned), o.transform});
-        }
-        gpu_models_loaded_ = models.size();
-        gpu_model_bytes_ = models.bytes();
-        task.promise.set_value(renderer.render(objects, task.job->params));
-      } catch (...) {
-        // A failed render fails that request only; drain GL errors so the
-        // next one starts clean.
-        while (glGetError() != GL_NO_ERROR) {
-        }
-        task.promise.set_exception(std::current_exception());
+        sources = shader_sources(options_.shader_dir);
+        context.emplace(gpu::EglContext::Options{options_.gpu_index});
+        break;
+      } catch (const std::exception& e) {
+        std::cerr << "toond: cannot make a new GL context: " << e.what() << "; retrying in 1 s\n";
+        fail_queued(std::make_exception_ptr(gpu::GpuReset(std::string("the GL context was lost and a new one could not be made yet: ") + e.what())));
+        std::unique_lock lock(mutex_);
+        if (wake_.wait_for(lock, std::chrono::seconds(1), [&] { return stopping_; })) return;
       }
     }
-  }  // GL objects die here, while the context is still current
+  }
+}
+
+bool RenderService::context_lost() {
+  if (options_.simulate_reset_every > 0 && renders_ % options_.simulate_reset_every == 0) return true;
+  return glGetGraphicsResetStatus() != GL_NO_ERROR;
+}
+
+void RenderService::fail_queued(const std::exception_ptr& error) {
+  std::deque<Task> failed;
+  {
+    std::lock_guard lock(mutex_);
+    failed.swap(queue_);
+  }
+  for (Task& task : failed) {
+    if (task.job) task.promise.set_exception(error);
+  }
+}
+
+bool RenderService::serve(std::unique_ptr<gpu::ShaderSources> sources, std::promise<void>* started) {
+  gpu::ProgramCache programs(std::move(sources));
+  GpuModelCache models(options_.gpu_model_capacity, options_.gpu_model_bytes);
+  Renderer renderer(programs);
+  if (started) started->set_value();
+
+  for (;;) {
+    Task task;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+      // Work already accepted is finished before the thread stops.
+      if (queue_.empty()) return false;
+      task = std::move(queue_.front());
+      queue_.pop_front();
+    }
+    if (!task.job) {
+      models.forget(task.forget_key);
+      gpu_models_loaded_ = models.size();
+      gpu_model_bytes_ = models.bytes();
+      continue;
+    }
+    if (task.job->deadline && std::chrono::steady_clock::now() > *task.job->deadline) {
+      task.promise.set_exception(std::make_exception_ptr(DeadlineExceeded()));
+      continue;
+    }
+    ++renders_;
+    std::optional<RenderOutput> output;
+    std::exception_ptr failure;
+    try {
+      // With --shader-dir: pick up edited shader files (a stat per file
+      // when nothing changed; nothing at all for the embedded shaders).
+      const gpu::ProgramCache::Reload reload = programs.refresh();
+      if (!reload.files.empty()) {
+        std::cerr << "toond: reloaded";
+        for (const auto& f : reload.files) std::cerr << " " << f;
+        std::cerr << " (" << reload.programs << " program" << (reload.programs == 1 ? "" : "s") << " rebuilt)\n";
+      }
+      // Load them all first: references stay valid while the cache holds
+      // them, and a scene larger than the cache must not evict its own
+      // objects mid-way (see GpuModelCache::get's `pinned`).
+      std::vector<RenderObject> objects;
+      std::vector<std::string> pinned;
+      for (const JobObject& o : task.job->objects) pinned.push_back(o.model_key);
+      for (const JobObject& o : task.job->objects) {
+        objects.push_back({models.get(o.model_key, *o.model, pinned), o.transform});
+      }
+      gpu_models_loaded_ = models.size();
+      gpu_model_bytes_ = models.bytes();
+      output = renderer.render(objects, task.job->params);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    // Whatever a lost context drew is not trusted, success or not: the
+    // request fails with a retryable error and everything starts over on a
+    // new context.
+    if (context_lost()) {
+      task.promise.set_exception(std::make_exception_ptr(
+          gpu::GpuReset("the GL context was lost during this render; the daemon made a new one, retry")));
+      return true;
+    }
+    if (failure) {
+      // A failed render fails that request only; drain GL errors so the
+      // next one starts clean.
+      while (glGetError() != GL_NO_ERROR) {
+      }
+      task.promise.set_exception(failure);
+    } else {
+      task.promise.set_value(std::move(*output));
+    }
+  }
 }
 
 }  // namespace toond::render

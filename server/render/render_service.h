@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "gpu/egl_context.h"
+#include "gpu/shader_source.h"
 #include "render/render_params.h"
 #include "render/renderer.h"
 #include "scene/model.h"
@@ -60,6 +61,9 @@ class RenderService {
     // broken edit fails that one render with a ShaderCompileError and the
     // previous programs keep serving.
     std::string shader_dir;
+    // Testing aid for the lost-context path (--simulate-gpu-reset): every
+    // Nth render acts as if the GL context had been lost. 0: never.
+    std::size_t simulate_reset_every = 0;
   };
 
   // Starts the thread and waits until the context exists. Throws GpuError
@@ -78,6 +82,8 @@ class RenderService {
   // What the GPU model cache holds now (for GET /metrics).
   std::size_t gpu_models_loaded() const { return gpu_models_loaded_.load(); }
   std::size_t gpu_model_bytes() const { return gpu_model_bytes_.load(); }
+  // Lost GL contexts replaced by a new one since start.
+  std::size_t gpu_resets() const { return gpu_resets_.load(); }
 
  private:
   struct Task {
@@ -86,6 +92,12 @@ class RenderService {
     std::promise<RenderOutput> promise;
   };
   void run(std::promise<void> started);
+  // Serves tasks on the current context until the service stops (false) or
+  // the context is lost (true). Sets `started` once the caches exist.
+  bool serve(std::unique_ptr<gpu::ShaderSources> sources, std::promise<void>* started);
+  bool context_lost();
+  // Fails every queued render with `error` (the context could not be made).
+  void fail_queued(const std::exception_ptr& error);
   void push(Task task, bool bounded);
 
   Options options_;
@@ -97,6 +109,8 @@ class RenderService {
   // Written by the render thread after each task, read by any thread.
   std::atomic<std::size_t> gpu_models_loaded_{0};
   std::atomic<std::size_t> gpu_model_bytes_{0};
+  std::atomic<std::size_t> gpu_resets_{0};
+  std::size_t renders_ = 0;  // render thread only
   std::thread thread_;
 };
 

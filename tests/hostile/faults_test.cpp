@@ -1,6 +1,7 @@
 // Faults: SIGTERM drains the render in flight and exits 0; a render past
 // --render-timeout is a 503; a GL error fails one request with a 500 and
-// the daemon goes on; kill -9 during uploads loses no answered model and
+// the daemon goes on; a lost GL context is replaced and models uploaded
+// again; kill -9 during uploads loses no answered model and
 // leaves no partial one; DELETE survives kill -9.
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include <thread>
 
 #include "image/png_codec.h"
+#include "support/generated_models.h"
 #include "test_client.h"
 
 namespace toond::test {
@@ -115,6 +117,44 @@ TEST(GlError, FailsThatRenderWith500AndTheDaemonGoesOn) {
   EXPECT_EQ(img.width, 64);
   daemon.stop();
   fs::remove_all(dir);
+}
+
+// llvmpipe cannot lose its context, so the loss is simulated where a real
+// one is detected (after the render, before its answer): everything from
+// there on is the real recovery path.
+TEST(LostContext, TheRenderFailsRetryablyAndTheNextOneUploadsTheModelToANewContext) {
+  Daemon daemon({}, {"--simulate-gpu-reset", "3", "--result-cache-mb", "0"});
+  auto client = daemon.client();
+  const std::string id = upload_obj_text(client, sphere_obj(32, 16), "sphere.obj");
+  const json params = {{"model", id}, {"width", 64}, {"height", 64}};
+  auto render = [&] { return post_json(client, "/render", params); };
+  auto first = render();
+  ASSERT_TRUE(first && first->status == 200);
+  auto second = render();
+  ASSERT_TRUE(second && second->status == 200);
+  EXPECT_EQ(second->body, first->body);
+
+  auto lost = render();  // the third render: the context is lost
+  ASSERT_TRUE(lost);
+  EXPECT_EQ(lost->status, 503) << lost->body;
+  EXPECT_EQ(lost->get_header_value("Retry-After"), "1");
+  EXPECT_EQ(error_of(lost).value("code", ""), "gpu_reset") << lost->body;
+
+  // A new context, the model uploaded to it again: the same bytes.
+  auto again = render();
+  ASSERT_TRUE(again);
+  ASSERT_EQ(again->status, 200) << again->body;
+  EXPECT_EQ(again->body, first->body);
+  auto demo = post_json(client, "/render", {{"width", 64}, {"height", 64}});
+  ASSERT_TRUE(demo);
+  EXPECT_EQ(demo->status, 200);
+
+  auto metrics = client.Get("/metrics");
+  ASSERT_TRUE(metrics);
+  EXPECT_NE(metrics->body.find("toond_gpu_context_resets_total 1\n"), std::string::npos);
+  EXPECT_NE(metrics->body.find("toond_gpu_models_loaded 2\n"), std::string::npos)
+      << "the sphere and the demo, both uploaded to the new context";
+  EXPECT_EQ(daemon.stop(), 0);
 }
 
 std::string small_model(int n) {
