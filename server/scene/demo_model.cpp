@@ -77,38 +77,33 @@ std::string make_texture_png() {
   return image::encode_png(img);
 }
 
-// The reference reports' "sharp lighting map": 16 texels, 3 shades (the
-// shadow band over the first 6, a mid tone, the lit tone over the last 4),
-// for `shading.ramp_image`.
-std::string make_ramp_png() {
+// An opaque grey PNG whose level at (x, y) is `level(x, y)`.
+template <class Level>
+std::string grey_png(int width, int height, Level level) {
   image::Image img;
-  img.width = 16;
-  img.height = 1;
-  img.rgba.resize(16 * 4);
-  for (int x = 0; x < 16; ++x) {
-    const std::uint8_t level = x < 6 ? 110 : x < 12 ? 190 : 255;
-    std::uint8_t* p = img.pixel(x, 0);
-    p[0] = p[1] = p[2] = level;
-    p[3] = 255;
-  }
-  return image::encode_png(img);
-}
-
-// Grey tiles for `floor.texture`: 2×2 squares per repeat.
-std::string make_floor_png() {
-  image::Image img;
-  img.width = 64;
-  img.height = 64;
-  img.rgba.resize(64 * 64 * 4);
-  for (int y = 0; y < 64; ++y) {
-    for (int x = 0; x < 64; ++x) {
-      const std::uint8_t level = ((x / 32) + (y / 32)) % 2 == 1 ? 150 : 235;
+  img.width = width;
+  img.height = height;
+  img.rgba.resize(static_cast<std::size_t>(width) * height * 4);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
       std::uint8_t* p = img.pixel(x, y);
-      p[0] = p[1] = p[2] = level;
+      p[0] = p[1] = p[2] = level(x, y);
       p[3] = 255;
     }
   }
   return image::encode_png(img);
+}
+
+// The reference reports' "sharp lighting map": 16 texels, 3 shades (the
+// shadow band over the first 6, a mid tone, the lit tone over the last 4),
+// for `shading.ramp_image`.
+std::string make_ramp_png() {
+  return grey_png(16, 1, [](int x, int) -> std::uint8_t { return x < 6 ? 110 : x < 12 ? 190 : 255; });
+}
+
+// Grey tiles for `floor.texture`: 2×2 squares per repeat.
+std::string make_floor_png() {
+  return grey_png(64, 64, [](int x, int y) -> std::uint8_t { return ((x / 32) + (y / 32)) % 2 == 1 ? 150 : 235; });
 }
 
 void append_sphere(std::string& obj) {
