@@ -1,6 +1,7 @@
 #pragma once
 // Load: requests per second and latency percentiles with 1, 4 and 16
 // clients rendering at once, each over its own keep-alive connection.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,8 @@ struct LoadLevel {
   int clients = 0;
   std::size_t requests = 0;
   std::size_t failures = 0;  // non-200 answers (a full queue answers 503)
+  // Why they failed: "HTTP 503 busy", "no answer (Read)", ... → count.
+  std::map<std::string, std::size_t> failure_kinds;
   double seconds = 0;
   double requests_per_s = 0;
   double p50_ms = 0;
