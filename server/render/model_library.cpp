@@ -8,6 +8,24 @@
 #include "scene/texture_decode.h"
 
 namespace toond::render {
+namespace {
+
+// Adds `value` under `key` unless another thread got there first (both
+// imported outside the lock), newest first in `order`; the least recently
+// used beyond `capacity` leave.
+template <class Map>
+void insert_bounded(Map& map, std::list<std::string>& order, const std::string& key,
+                    const typename Map::mapped_type& value, std::size_t capacity) {
+  if (map.count(key)) return;
+  map.emplace(key, value);
+  order.push_front(key);
+  while (order.size() > capacity) {
+    map.erase(order.back());
+    order.pop_back();
+  }
+}
+
+}  // namespace
 
 ModelLibrary::ModelLibrary(scene::ModelStore& store, std::size_t capacity)
     : store_(store),
@@ -34,14 +52,7 @@ std::shared_ptr<const scene::Model> ModelLibrary::get(const std::string& id) {
   if (!bundle) return nullptr;
   auto model = std::make_shared<const scene::Model>(scene::import_bundle(*bundle));
   std::lock_guard lock(mutex_);
-  if (!models_.count(id)) {
-    models_.emplace(id, model);
-    order_.push_front(id);
-    while (order_.size() > capacity_) {
-      models_.erase(order_.back());
-      order_.pop_back();
-    }
-  }
+  insert_bounded(models_, order_, id, model, capacity_);
   return model;
 }
 
@@ -79,14 +90,7 @@ std::shared_ptr<const scene::Texture> ModelLibrary::bundle_image(const std::stri
   if (!resolved) return nullptr;
   auto image = std::make_shared<const scene::Texture>(scene::decode_texture(*bundle->find(*resolved), *resolved));
   std::lock_guard lock(mutex_);
-  if (!images_.count(key)) {
-    images_.emplace(key, image);
-    image_order_.push_front(key);
-    while (image_order_.size() > image_capacity) {
-      images_.erase(image_order_.back());
-      image_order_.pop_back();
-    }
-  }
+  insert_bounded(images_, image_order_, key, image, image_capacity);
   return image;
 }
 
