@@ -75,6 +75,10 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
     case ShadingMode::Phong: plan.main_defines.push_back("MODE_PHONG"); break;
     case ShadingMode::Flat: plan.main_defines.push_back("MODE_FLAT"); break;
   }
+  // Lit modes loop over the lights with a compile-time bound (see toon.frag).
+  if (params.mode != ShadingMode::Flat) {
+    plan.main_defines.push_back("LIGHT_COUNT " + std::to_string(params.lights.size()));
+  }
   // A white base ignores the material, so its textures are never read.
   plan.sample_textures = model.has_textures && params.base == BaseColor::Material;
   plan.floor_textured = plan.has(Pass::Floor) && !params.floor.texture.empty() && params.base == BaseColor::Material;

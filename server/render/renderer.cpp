@@ -244,7 +244,6 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
       program.set("u_eye", glm::vec3(camera.eye));
       program.set("u_view_dir", glm::vec3(forward));
       program.set("u_orthographic", params.camera.projection == Projection::Orthographic ? 1 : 0);
-      program.set("u_light_count", static_cast<int>(light_vec.size()));
       program.set_array("u_light_vec", light_vec);
       program.set_array("u_light_color", light_color);
       program.set_array("u_light_is_point", light_is_point);

@@ -52,6 +52,19 @@ TEST(PassPlan, ShadingModeAndRoundingBecomeDefines) {
   EXPECT_TRUE(has_define(plan_passes(params({{"shading", {{"mode", "flat"}}}}), {}), "MODE_FLAT"));
 }
 
+// The light loop's bound is compiled in (a uniform bound cost llvmpipe
+// ~40 % of the cel pass); unlit colour has no loop and no variant per count.
+TEST(PassPlan, TheLightCountIsPartOfTheVariant) {
+  EXPECT_TRUE(has_define(plan_passes(params(json::object()), {}), "LIGHT_COUNT 1"));
+  const json two = {{"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}},
+                                {{"type", "point"}, {"position", {1, 1, 1}}}}}};
+  EXPECT_TRUE(has_define(plan_passes(params(two), {}), "LIGHT_COUNT 2"));
+  EXPECT_TRUE(has_define(plan_passes(params({{"lights", json::array()}}), {}), "LIGHT_COUNT 0"));
+  const PassPlan flat = plan_passes(params({{"shading", {{"mode", "flat"}}}}), {});
+  EXPECT_TRUE(std::none_of(flat.main_defines.begin(), flat.main_defines.end(),
+                           [](const std::string& d) { return d.rfind("LIGHT_COUNT", 0) == 0; }));
+}
+
 TEST(PassPlan, ShadowPassOnlyWithADirectionalLightThatCanCast) {
   const json on = {{"shadows", {{"enabled", true}}}};
   const PassPlan with_sun = plan_passes(params(on), {});
