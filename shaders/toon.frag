@@ -119,7 +119,10 @@ float shadow_visibility(vec3 n) {
 uniform float u_two_tone_threshold;
 uniform float u_two_tone_shadow;
 #elif defined(RAMP)
-uniform int u_ramp_count;
+// Compiled in for the same reason as LIGHT_COUNT.
+#ifndef RAMP_COUNT
+#define RAMP_COUNT 0
+#endif
 uniform float u_ramp_at[16];
 uniform vec3 u_ramp_color[16];
 #endif
@@ -159,7 +162,7 @@ vec3 ramp(float n_dot_l, float footprint, out bool shadow) {
   // Stops are sorted by `at`; below the first one there is no light.
   vec3 level = vec3(0.0);
   int step = -1;
-  for (int i = 0; i < u_ramp_count; ++i) {
+  for (int i = 0; i < RAMP_COUNT; ++i) {
     if (n_dot_l >= u_ramp_at[i]) {
       level = u_ramp_color[i];
       step = i;

@@ -61,6 +61,7 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
       plan.main_defines.push_back("MODE_CEL");
       if (!params.ramp.empty()) {
         plan.main_defines.push_back("RAMP");
+        plan.main_defines.push_back("RAMP_COUNT " + std::to_string(params.ramp.size()));
       } else if (params.two_tone.enabled) {
         plan.main_defines.push_back("TWO_TONE");
         if (band_edges_to_smooth) plan.main_defines.push_back("BAND_AA");

@@ -265,7 +265,6 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
       program.set("u_halftone_ink_mix", params.halftone.ink_mix);
       program.set("u_two_tone_threshold", params.two_tone.threshold);
       program.set("u_two_tone_shadow", params.two_tone.shadow_factor);
-      program.set("u_ramp_count", static_cast<int>(ramp_at.size()));
       program.set_array("u_ramp_at", ramp_at);
       program.set_array("u_ramp_color", ramp_color);
     };

@@ -63,6 +63,8 @@ TEST(PassPlan, TheLightCountIsPartOfTheVariant) {
   const PassPlan flat = plan_passes(params({{"shading", {{"mode", "flat"}}}}), {});
   EXPECT_TRUE(std::none_of(flat.main_defines.begin(), flat.main_defines.end(),
                            [](const std::string& d) { return d.rfind("LIGHT_COUNT", 0) == 0; }));
+  const json ramp = {{"shading", {{"ramp", {{{"at", -1}, {"value", 0.2}}, {{"at", 0.5}, {"value", 1}}}}}}};
+  EXPECT_TRUE(has_define(plan_passes(params(ramp), {}), "RAMP_COUNT 2"));
 }
 
 TEST(PassPlan, ShadowPassOnlyWithADirectionalLightThatCanCast) {
