@@ -59,9 +59,9 @@ Usage: toond [options]
                          a real loss takes: that request gets 503 "gpu_reset"
                          with Retry-After, the render thread makes a new
                          context and uploads models again as they are used.
-                         Real losses are detected on robust contexts
-                         (EGL_EXT_create_context_robustness) where the driver
-                         has them.
+                         Real losses are detected on robust contexts (EGL 1.5
+                         or EGL_KHR_create_context / EGL_EXT_create_context_
+                         robustness), which toond asks for where it can.
   --version              print the version and exit
   -h, --help             this text
 )" + limit_usage() + R"(

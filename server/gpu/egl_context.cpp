@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <string_view>
+#include <vector>
 
 #include "gpu/gl.h"
 #include "gpu/gpu_error.h"
@@ -152,11 +153,22 @@ EglContext::EglContext(const Options& options) {
   // Where the display can, the context is made robust with "lose context
   // on reset", so a GPU reset is reported (glGetGraphicsResetStatus) and the
   // render thread can start over instead of drawing into a dead context.
+  // Desktop GL names the strategy through EGL 1.5 / EGL_KHR_create_context;
+  // EGL_EXT_create_context_robustness has its own token. 0: a plain context.
   static constexpr int versions[][2] = {{4, 6}, {4, 5}, {4, 4}, {4, 3}};
-  const bool robustness =
-      has_extension(eglQueryString(display_, EGL_EXTENSIONS), "EGL_EXT_create_context_robustness");
-  for (const bool robust : {true, false}) {
-    if (robust && !robustness) continue;
+  const std::string display_extensions = eglQueryString(display_, EGL_EXTENSIONS);
+  EGLint egl_major = 0, egl_minor = 0;
+  eglInitialize(display_, &egl_major, &egl_minor);  // already initialised: reports the version
+  std::vector<EGLint> strategy_names;
+  if (egl_major > 1 || (egl_major == 1 && egl_minor >= 5) ||
+      has_extension(display_extensions.c_str(), "EGL_KHR_create_context")) {
+    strategy_names.push_back(EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY);
+  }
+  if (has_extension(display_extensions.c_str(), "EGL_EXT_create_context_robustness")) {
+    strategy_names.push_back(EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY_EXT);
+  }
+  strategy_names.push_back(0);
+  for (const EGLint strategy : strategy_names) {
     for (const auto& v : versions) {
       const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
                                         v[0],
@@ -164,12 +176,12 @@ EglContext::EglContext(const Options& options) {
                                         v[1],
                                         EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                        robust ? EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY_EXT : EGL_NONE,
-                                        EGL_LOSE_CONTEXT_ON_RESET_EXT,
+                                        strategy != 0 ? strategy : EGL_NONE,
+                                        EGL_LOSE_CONTEXT_ON_RESET,
                                         EGL_NONE};
       context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
       if (context_ != EGL_NO_CONTEXT) {
-        info_.robust = robust;
+        info_.robust = strategy != 0;
         break;
       }
     }

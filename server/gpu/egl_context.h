@@ -47,8 +47,8 @@ class EglContext {
   const GlInfo& info() const { return info_; }
 
   // Whether the driver reports a lost context through
-  // glGetGraphicsResetStatus (EGL_EXT_create_context_robustness with
-  // "lose context on reset"); without it a reset is seen only as errors.
+  // glGetGraphicsResetStatus (a context made with "lose context on reset");
+  // without it a reset is seen only as errors.
   bool reports_resets() const { return info_.robust; }
 
   // Every EGL device the driver lists (empty without device enumeration).
