@@ -305,6 +305,38 @@ async function checkKeyboard(page) {
   check(!decodeURIComponent(page.url()).includes('"camera"'), 'r resets the view');
 }
 
+// Several files dropped on the page (what a file manager's multi-select
+// drop gives): the OBJ and its MTL go up as one bundle, a note beside them
+// stays behind, and the new model is the one shown.
+async function checkDropUpload(page) {
+  const before = await rendersShown(page);
+  await page.evaluate(() => {
+    const v = [[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1], [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]];
+    const faces = [[1, 4, 3, 2], [5, 6, 7, 8], [1, 2, 6, 5], [2, 3, 7, 6], [3, 4, 8, 7], [4, 1, 5, 8]];
+    const obj = 'mtllib box.mtl\nusemtl teal\n' + v.map((p) => `v ${p.join(' ')}`).join('\n') + '\n'
+      + faces.map((f) => `f ${f.join(' ')}`).join('\n') + '\n';
+    const dt = new DataTransfer();
+    dt.items.add(new File([obj], 'box.obj'));
+    dt.items.add(new File(['newmtl teal\nKd 0.1 0.6 0.6\n'], 'box.mtl'));
+    dt.items.add(new File(['not part of the model'], 'notes.txt'));
+    window.dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  });
+  await page.waitForFunction(() => /box\.obj/.test(document.getElementById('upload-status').textContent), null,
+    { timeout: STEP_TIMEOUT_MS });
+  await waitForFullRender(page, before);
+  const status = await page.textContent('#upload-status');
+  check(/box\.obj · 12 triangles/.test(status), 'a multi-file drop uploads the OBJ with its MTL', status);
+  const selected = await page.evaluate(() => document.getElementById('model-select').selectedOptions[0]?.textContent);
+  check(/^box\.obj/.test(selected ?? ''), 'the dropped model is the one shown', selected);
+  const info = await page.evaluate(async () => {
+    const id = document.getElementById('model-select').value;
+    return (await fetch(`/models/${id}`)).json();
+  });
+  check(JSON.stringify(info.files) === JSON.stringify(['box.mtl', 'box.obj']), 'the note was left out of the bundle',
+    JSON.stringify(info.files));
+  await shot(page, '09-dropped-box.png');
+}
+
 async function checkNarrow(context, url) {
   const phone = await context.newPage();
   await phone.setViewportSize({ width: 390, height: 844 });
@@ -388,6 +420,7 @@ try {
   await checkReloadFromUrl(context, page);
   await checkKeyboard(page);
   await checkNarrow(context, page.url());
+  await checkDropUpload(page);
   daemon = await checkLostServer(page, daemon, dataDir);
   check(pageErrors.length === 0, 'no uncaught errors in the page', pageErrors.join(' | '));
 } catch (e) {
