@@ -134,7 +134,8 @@ EglContext::EglContext(const Options& options) {
     }
   }
   if (display_ == EGL_NO_DISPLAY) fail("eglGetPlatformDisplayEXT");
-  if (!eglInitialize(display_, nullptr, nullptr)) fail("eglInitialize");
+  EGLint egl_major = 0, egl_minor = 0;
+  if (!eglInitialize(display_, &egl_major, &egl_minor)) fail("eglInitialize");
   if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)");
 
   // No surface is ever made (EGL_KHR_surfaceless_context); the config only
@@ -157,8 +158,6 @@ EglContext::EglContext(const Options& options) {
   // EGL_EXT_create_context_robustness has its own token. 0: a plain context.
   static constexpr int versions[][2] = {{4, 6}, {4, 5}, {4, 4}, {4, 3}};
   const std::string display_extensions = eglQueryString(display_, EGL_EXTENSIONS);
-  EGLint egl_major = 0, egl_minor = 0;
-  eglInitialize(display_, &egl_major, &egl_minor);  // already initialised: reports the version
   std::vector<EGLint> strategy_names;
   if (egl_major > 1 || (egl_major == 1 && egl_minor >= 5) ||
       has_extension(display_extensions.c_str(), "EGL_KHR_create_context")) {

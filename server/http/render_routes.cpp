@@ -21,6 +21,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The render thread's own time for the job, pass by pass.
+double render_thread_ms(const render::RenderOutput& out) {
+  double ms = 0;
+  for (const auto& t : out.timings) ms += t.cpu_ms;
+  return ms;
+}
+
 std::string server_timing(const render::RenderOutput& out, double queue_ms, double png_ms) {
   std::ostringstream s;
   s.precision(3);
@@ -35,9 +42,7 @@ std::string server_timing(const render::RenderOutput& out, double queue_ms, doub
   // The request's own work from the render thread's first pass to the last
   // PNG byte, without the queue: GPU-timed passes may overlap the thread's
   // time, so the entries above need not add up to it.
-  double render_ms = 0;
-  for (const auto& t : out.timings) render_ms += t.cpu_ms;
-  s << ", total;dur=" << render_ms + png_ms;
+  s << ", total;dur=" << render_thread_ms(out) + png_ms;
   return s.str();
 }
 
@@ -173,8 +178,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
                              std::to_string(context.render_deadline.count()) + " ms");
     }
     render::RenderOutput out = future.get();
-    double render_ms = 0;
-    for (const auto& t : out.timings) render_ms += t.cpu_ms;
+    const double render_ms = render_thread_ms(out);
     const double queue_ms =
         std::chrono::duration<double, std::milli>(Clock::now() - submitted).count() - render_ms;
 

@@ -101,7 +101,8 @@ void RenderService::run(std::promise<void> started) {
         break;
       } catch (const std::exception& e) {
         std::cerr << "toond: cannot make a new GL context: " << e.what() << "; retrying in 1 s\n";
-        fail_queued(std::make_exception_ptr(gpu::GpuReset(std::string("the GL context was lost and a new one could not be made yet: ") + e.what())));
+        fail_queued(std::make_exception_ptr(gpu::GpuReset(
+            std::string("the GL context was lost and a new one could not be made yet: ") + e.what())));
         std::unique_lock lock(mutex_);
         if (wake_.wait_for(lock, std::chrono::seconds(1), [&] { return stopping_; })) return;
       }
