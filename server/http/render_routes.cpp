@@ -77,15 +77,16 @@ void load_bundle_images(ServiceContext& context, render::RenderJob& job) {
   }
 }
 
-// Per object, the level of detail drawn: "level=2/7; triangles=17362;
-// error_px=0.412", objects separated by ", ".
+// Per object, the level of detail drawn and the faces it drew: "level=2/7;
+// triangles=17362; error_px=0.412; faces=front", objects separated by ", ".
 std::string lod_header(const std::vector<render::LodUse>& lods) {
   std::ostringstream s;
   s.precision(3);
   for (std::size_t i = 0; i < lods.size(); ++i) {
     const render::LodUse& l = lods[i];
     s << (i ? ", " : "") << "level=" << l.level << "/" << l.levels << "; triangles=" << l.triangles
-      << "; error_px=" << std::fixed << l.error_px << std::defaultfloat;
+      << "; error_px=" << std::fixed << l.error_px << std::defaultfloat
+      << "; faces=" << (l.culled == render::HiddenFaces::None ? "both" : "front");
   }
   return s.str();
 }

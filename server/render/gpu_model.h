@@ -34,6 +34,8 @@ class GpuModel {
   // Per level, in the mesh's units: how far its surface may stray (0 at level 0).
   const std::vector<double>& lod_errors() const { return lod_errors_; }
   std::size_t triangles(std::size_t lod = 0) const { return levels_[lod].index_count / 3; }
+  // Whether a level's triangles close around a volume (scene/enclosure.h).
+  scene::Enclosure enclosure(std::size_t lod = 0) const { return levels_[lod].enclosure; }
   const std::vector<GpuMaterial>& materials() const { return materials_; }
   GLuint texture(int index) const { return textures_[static_cast<std::size_t>(index)].id(); }
   bool has_textures() const { return !textures_.empty(); }
@@ -58,6 +60,7 @@ class GpuModel {
     std::vector<scene::Submesh> submeshes;  // ranges of the shared index buffer
     std::size_t first_index = 0;            // the level's whole range
     std::size_t index_count = 0;
+    scene::Enclosure enclosure = scene::Enclosure::Open;
   };
   std::vector<Level> levels_;
   std::vector<double> lod_errors_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 #include "gpu/gpu_error.h"
 #include "image/downsample.h"
@@ -71,6 +72,15 @@ std::vector<LodUse> choose_levels(const std::vector<RenderObject>& objects, cons
     uses.push_back(use);
   }
   return uses;
+}
+
+void cull(HiddenFaces faces) {
+  if (faces == HiddenFaces::None) {
+    glDisable(GL_CULL_FACE);
+    return;
+  }
+  glEnable(GL_CULL_FACE);
+  glCullFace(faces == HiddenFaces::Back ? GL_BACK : GL_FRONT);
 }
 
 }  // namespace
@@ -148,6 +158,12 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   // Every pass draws an object at the same level, so the hull, the shadow
   // and the edges all follow the surface that was shaded.
   auto lod_of = [&](std::size_t i) { return out.lods[i].level; };
+  // The faces of object i that cannot show through `view_projection`.
+  auto culling_for = [&](std::size_t i, const glm::dmat4& view_projection) {
+    if (!face_culling_) return HiddenFaces::None;
+    const GpuModel& model = objects[i].model;
+    return hidden_faces(model.enclosure(lod_of(i)), frame.matrices[i], view_projection, model.bounds());
+  };
   PassTimer timer(out.timings);
 
   std::optional<ShadowFit> shadow;
@@ -169,10 +185,14 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     program.use();
     program.set("u_light_view_projection", glm::mat4(shadow->view_projection));
     for (std::size_t i = 0; i < objects.size(); ++i) {
+      // The nearest surface seen from the light is the same with the far
+      // side skipped, so the map is too.
+      cull(culling_for(i, shadow->view_projection));
       program.set("u_model", model_matrix[i]);
       objects[i].model.bind();
       objects[i].model.draw_all(lod_of(i));
     }
+    glDisable(GL_CULL_FACE);
     glDisable(GL_POLYGON_OFFSET_FILL);
     check_gl("shadow pass");
     timer.mark(Pass::Shadow);
@@ -190,6 +210,9 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   const CameraSetup camera = fit_camera(params.camera, bounds,
                                         static_cast<double>(params.width) / params.height);
   const glm::mat4 view_projection = camera.view_projection();
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    out.lods[i].culled = culling_for(i, camera.projection * camera.view);
+  }
 
   glEnable(GL_FRAMEBUFFER_SRGB);
   glEnable(GL_DEPTH_TEST);
@@ -279,6 +302,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const GpuModel& model = objects[i].model;
       model.bind();
+      cull(out.lods[i].culled);
       for (const scene::Submesh& sub : model.submeshes(lod_of(i))) {
         const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
         std::vector<std::string> defines = plan.main_defines;
@@ -308,6 +332,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
         model.draw(sub);
       }
     }
+    glDisable(GL_CULL_FACE);
     check_gl("main pass");
     timer.mark(Pass::Main);
 
@@ -340,11 +365,13 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
 
   // Hull and wireframe lines take their colour the same way.
   // Object by object, each under its own matrices.
-  auto set_outline_colour_and_draw = [&](gpu::Program& program) {
+  // `faces` says which side of object i's faces the pass may skip.
+  auto set_outline_colour_and_draw = [&](gpu::Program& program, auto faces) {
     program.set("u_outline_color", params.outline.color);
     program.set("u_darken", params.outline.darken);
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const GpuModel& model = objects[i].model;
+      cull(faces(i));
       set_object(program, i);
       model.bind();
       if (plan.outline_defines.empty()) {
@@ -364,6 +391,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
         model.draw(sub);
       }
     }
+    glDisable(GL_CULL_FACE);
   };
 
   if (plan.has(Pass::HullOutline)) {
@@ -379,7 +407,34 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     const bool world = params.outline.units == OutlineUnits::World;
     program.set("u_world_units", world ? 1 : 0);
     program.set("u_width", world ? params.outline.width : params.outline.width * px);
-    set_outline_colour_and_draw(program);
+    // The stencil keeps the hull off the model, so its faces toward the
+    // camera may draw the ring: where a closed model's back faces may be
+    // skipped, the hull's may too. Its front faces lie nearer than its back
+    // ones, so they pass every depth test (a floor's) the back ones would.
+    // The hull stands out of the model's box by up to 3 widths (mitred
+    // corners), and must not be cut by the near or far plane either: where
+    // it is, its back faces show through the cut.
+    const bool ortho = params.camera.projection == Projection::Orthographic;
+    double reach = world ? 3.0 * params.outline.width : 0.0;
+    if (!world) {
+      // A pixel's size grows with the depth w, which the offset itself adds to.
+      const double k = 3.0 * params.outline.width * px * world_per_px;
+      double w_max = 1.0;
+      if (!ortho) {
+        for (int corner = 0; corner < 8; ++corner) {
+          const glm::dvec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
+                             (corner & 4) ? bounds.max.z : bounds.min.z);
+          w_max = std::max(w_max, (camera.projection * camera.view * glm::dvec4(p, 1.0)).w);
+        }
+      }
+      reach = ortho ? k : (k < 0.5 ? k * w_max / (1.0 - k) : std::numeric_limits<double>::infinity());
+    }
+    const glm::dmat4 clip = camera.projection * camera.view;
+    set_outline_colour_and_draw(program, [&](std::size_t i) {
+      if (!face_culling_ || out.lods[i].culled == HiddenFaces::None) return HiddenFaces::None;
+      const GpuModel& model = objects[i].model;
+      return hidden_faces(model.enclosure(lod_of(i)), frame.matrices[i], clip, model.bounds(), reach);
+    });
     check_gl("hull outline pass");
     timer.mark(Pass::HullOutline);
   }
@@ -397,7 +452,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     // Half of each line lies inside the silhouette, under the front faces:
     // lines twice as wide leave `width` pixels showing.
     program.set("u_line_px", 2.0f * params.outline.width * px);
-    set_outline_colour_and_draw(program);
+    set_outline_colour_and_draw(program, [](std::size_t) { return HiddenFaces::None; });
     check_gl("wireframe pass");
     timer.mark(Pass::Wireframe);
   }
@@ -415,10 +470,12 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     prepass.set("u_view_dir", glm::vec3(glm::normalize(camera.target - camera.eye)));
     prepass.set("u_orthographic", params.camera.projection == Projection::Orthographic ? 1 : 0);
     for (std::size_t i = 0; i < objects.size(); ++i) {
+      cull(out.lods[i].culled);
       set_object(prepass, i);
       objects[i].model.bind();
       objects[i].model.draw_all(lod_of(i));
     }
+    glDisable(GL_CULL_FACE);
     check_gl("edge prepass");
     timer.mark(Pass::EdgePrepass);
 

@@ -9,6 +9,7 @@
 #include "gpu/normal_depth_target.h"
 #include "gpu/shadow_map.h"
 #include "image/image.h"
+#include "render/face_culling.h"
 #include "render/gpu_model.h"
 #include "render/pass_plan.h"
 #include "render/render_params.h"
@@ -28,6 +29,9 @@ struct LodUse {
   std::size_t levels = 1;     // how many the model has
   std::size_t triangles = 0;  // drawn per pass
   double error_px = 0;        // the level's error projected to output pixels
+  // The side of the faces the main pass skipped (None: both drawn): a
+  // closed level seen from outside (face_culling.h).
+  HiddenFaces culled = HiddenFaces::None;
 };
 
 struct RenderOutput {
@@ -51,6 +55,10 @@ class Renderer {
  public:
   explicit Renderer(gpu::ProgramCache& programs) : programs_(programs) {}
 
+  // On by default. Off draws both sides of every face: for tests that show
+  // culling changes no pixel.
+  void set_face_culling(bool on) { face_culling_ = on; }
+
   // Every object shares the camera, the lights and the passes; camera fit,
   // shadow fit and floor use the union of their transformed bounds.
   RenderOutput render(const std::vector<RenderObject>& objects, const RenderParams& params);
@@ -65,6 +73,7 @@ class Renderer {
   const GpuModel& floor_for(const scene::Bounds& bounds, const FloorParams& floor, bool textured);
 
   gpu::ProgramCache& programs_;
+  bool face_culling_ = true;
   std::optional<gpu::RenderTarget> target_;  // reused while the size stays the same
   std::optional<gpu::ShadowMap> shadow_map_;
   std::optional<gpu::NormalDepthTarget> normal_depth_;

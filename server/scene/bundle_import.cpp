@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "scene/enclosure.h"
 #include "scene/import_error.h"
 #include "scene/m_import.h"
 #include "scene/mesh_lod.h"
@@ -53,6 +54,7 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& limits) {
   const std::string path = find_model_file(bundle, {".obj", ".m"}, ".obj or .m");
   Model model = has_extension(path, ".m") ? import_m_bundle(bundle, limits) : import_obj_bundle(bundle, limits);
   prepare_levels_of_detail(model.mesh);
+  classify_enclosures(model.mesh);
   return model;
 }
 

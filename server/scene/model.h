@@ -61,12 +61,23 @@ struct Bounds {
   float radius() const { return glm::length(max - min) * 0.5f; }
 };
 
+// Whether triangles close around a volume (scene/enclosure.h). Closed: every edge (between positions, split copies of a vertex counting
+// as one) is crossed as often in one direction as in the other, so the
+// triangles bound a volume. Outward: counter-clockwise faces look out of
+// it, as OBJ exporters write them; Inward: the whole mesh is wound inside
+// out. Open covers holes, inconsistent winding, flat or zero-volume parts
+// (a two-sided sheet), and meshes whose parts disagree in direction (a
+// hollow shell with an inward-facing cavity) — anything where a face turned
+// away from the camera might be the one that shows.
+enum class Enclosure : std::uint8_t { Open, Outward, Inward };
+
 // A coarser level of detail over the same vertices as its Mesh (see
 // scene/mesh_lod.h).
 struct MeshLod {
   std::vector<std::uint32_t> indices;  // triangles
   std::vector<Submesh> submeshes;      // ranges of `indices`, one per Mesh::submeshes entry, same materials
   double error = 0;                    // how far the surface may stray from the full mesh, mesh units
+  Enclosure enclosure = Enclosure::Open;
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
@@ -96,6 +107,7 @@ struct Mesh {
   std::vector<std::uint32_t> indices;      // triangles
   std::vector<Submesh> submeshes;
   std::vector<MeshLod> lods;  // coarser levels, finest first; empty: full detail only
+  Enclosure enclosure = Enclosure::Open;  // of `indices`, the full mesh
   glm::dvec3 origin{0.0};  // model-space point that positions are relative to
   Bounds bounds;           // of `positions` (i.e. relative to origin)
 

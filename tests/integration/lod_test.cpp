@@ -21,20 +21,22 @@ struct LodHeader {
   int levels = -1;
   long triangles = -1;
   double error_px = -1;
+  std::string faces;
 };
 
 LodHeader parse_lod_header(const std::string& value) {
-  static const std::regex form(R"(level=(\d+)/(\d+); triangles=(\d+); error_px=([0-9.]+))");
+  static const std::regex form(R"(level=(\d+)/(\d+); triangles=(\d+); error_px=([0-9.]+); faces=(front|both))");
   std::smatch m;
   LodHeader h;
   if (!std::regex_match(value, m, form)) {
-    ADD_FAILURE() << "X-Toond-Lod is not level=L/N; triangles=T; error_px=E: '" << value << "'";
+    ADD_FAILURE() << "X-Toond-Lod is not level=L/N; triangles=T; error_px=E; faces=F: '" << value << "'";
     return h;
   }
   h.level = std::stoi(m[1]);
   h.levels = std::stoi(m[2]);
   h.triangles = std::stol(m[3]);
   h.error_px = std::stod(m[4]);
+  h.faces = m[5];
   return h;
 }
 

@@ -1,0 +1,35 @@
+#include "render/face_culling.h"
+
+#include <limits>
+
+namespace toond::render {
+
+HiddenFaces hidden_faces(scene::Enclosure enclosure, const glm::dmat4& model, const glm::dmat4& view_projection,
+                         const scene::Bounds& bounds, double reach) {
+  if (enclosure == scene::Enclosure::Open) return HiddenFaces::None;
+  // The box in the scene, grown by `reach`.
+  glm::dvec3 low(std::numeric_limits<double>::max());
+  glm::dvec3 high(std::numeric_limits<double>::lowest());
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
+                       (corner & 4) ? bounds.max.z : bounds.min.z);
+    const glm::dvec3 q(model * glm::dvec4(p, 1.0));
+    low = glm::min(low, q - reach);
+    high = glm::max(high, q + reach);
+  }
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? high.x : low.x, (corner & 2) ? high.y : low.y, (corner & 4) ? high.z : low.z);
+    const glm::dvec4 c = view_projection * glm::dvec4(p, 1.0);
+    // Inside the depth range: -w <= z <= w with w > 0 (x and y may leave
+    // the view; cutting at the image's sides opens nothing that shows).
+    if (!(c.w > 0.0) || c.z < -c.w || c.z > c.w) return HiddenFaces::None;
+  }
+  // GL's projections flip handedness (eye space looks down -z, depth grows
+  // into the screen): a determinant of the opposite sign to the model's
+  // keeps counter-clockwise faces counter-clockwise on screen.
+  const bool mirrored = (glm::determinant(glm::dmat3(model)) < 0.0) == (glm::determinant(view_projection) < 0.0);
+  const bool outward = enclosure == scene::Enclosure::Outward;
+  return outward != mirrored ? HiddenFaces::Back : HiddenFaces::Front;
+}
+
+}  // namespace toond::render

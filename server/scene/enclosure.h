@@ -1,0 +1,23 @@
+#pragma once
+// Whether a mesh's triangles close around a volume, and which way they face.
+// A closed surface seen from outside shows only the faces turned toward the
+// camera: the others lie behind them, so a render may skip (cull) them and
+// halve the triangles it sets up and rasterises (render/face_culling.h).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "scene/model.h"
+
+namespace toond::scene {
+
+// See Enclosure in scene/model.h.
+// `position_group` labels vertices at the same position with one id (see
+// group_by_position in mesh_processing.h).
+Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<const std::uint32_t> position_group,
+                             std::span<const std::uint32_t> indices);
+
+// Sets Mesh::enclosure for the full mesh and for every level of detail.
+void classify_enclosures(Mesh& mesh);
+
+}  // namespace toond::scene

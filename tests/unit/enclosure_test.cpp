@@ -1,0 +1,104 @@
+// Which meshes close around a volume, and which way they face: the licence
+// for skipping the faces turned away from the camera.
+#include <gtest/gtest.h>
+
+#include <utility>
+
+#include "model_checks.h"
+#include "scene/bundle_import.h"
+#include "scene/enclosure.h"
+#include "scene/mesh_processing.h"
+#include "support/generated_models.h"
+
+namespace toond::scene {
+namespace {
+
+using test_checks::make_bundle;
+
+Mesh imported(const std::string& obj) { return import_bundle(make_bundle({{"m.obj", obj}})).mesh; }
+
+Enclosure classify(const Mesh& mesh) {
+  return classify_enclosure(mesh.positions, group_by_position(mesh.positions), mesh.indices);
+}
+
+Mesh reversed(Mesh mesh) {
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+  return mesh;
+}
+
+// Both meshes' triangles over both meshes' vertices.
+Mesh joined(const Mesh& a, const Mesh& b) {
+  Mesh out = a;
+  const auto base = static_cast<std::uint32_t>(a.positions.size());
+  out.positions.insert(out.positions.end(), b.positions.begin(), b.positions.end());
+  for (std::uint32_t i : b.indices) out.indices.push_back(i + base);
+  return out;
+}
+
+Mesh moved(Mesh mesh, const glm::vec3& by) {
+  for (glm::vec3& p : mesh.positions) p += by;
+  return mesh;
+}
+
+TEST(Enclosure, ASphereAndAHardEdgedCubeFaceOutward) {
+  // The cube's corners are split three ways (one copy per face normal):
+  // edges count between positions, not vertex indices.
+  EXPECT_EQ(classify(imported(test::sphere_obj(32, 16))), Enclosure::Outward);
+  const Mesh cube = imported(test::cube_obj());
+  ASSERT_GT(cube.positions.size(), 8u);
+  EXPECT_EQ(classify(cube), Enclosure::Outward);
+}
+
+TEST(Enclosure, AMeshWoundInsideOutFacesInward) {
+  EXPECT_EQ(classify(reversed(imported(test::cube_obj()))), Enclosure::Inward);
+}
+
+TEST(Enclosure, AHoleOrOneFlippedTriangleOpensIt) {
+  Mesh holed = imported(test::cube_obj());
+  holed.indices.resize(holed.indices.size() - 3);
+  EXPECT_EQ(classify(holed), Enclosure::Open);
+
+  Mesh flipped = imported(test::cube_obj());
+  std::swap(flipped.indices[1], flipped.indices[2]);
+  EXPECT_EQ(classify(flipped), Enclosure::Open);
+}
+
+TEST(Enclosure, FlatAndTwoSidedSheetsAreOpen) {
+  const Mesh disk = imported(test::disk_obj(24));
+  EXPECT_EQ(classify(disk), Enclosure::Open);
+  // Every edge balanced, but the "volume" is nothing: either side may face
+  // the camera.
+  EXPECT_EQ(classify(joined(disk, reversed(disk))), Enclosure::Open);
+}
+
+TEST(Enclosure, PartsMustAgreeOnTheirDirection) {
+  const Mesh cube = imported(test::cube_obj());
+  const Mesh apart = moved(cube, glm::vec3(5, 0, 0));
+  EXPECT_EQ(classify(joined(cube, apart)), Enclosure::Outward);
+  EXPECT_EQ(classify(joined(reversed(cube), reversed(apart))), Enclosure::Inward);
+  // One part inside out: from some side its inner faces are the ones that
+  // show, so nothing may be skipped.
+  EXPECT_EQ(classify(joined(cube, reversed(apart))), Enclosure::Open);
+  // A hollow shell (a cavity facing inward) is left alone for the same reason.
+  const Mesh cavity = reversed(imported(test::cube_obj(0.5)));
+  EXPECT_EQ(classify(joined(cube, cavity)), Enclosure::Open);
+}
+
+TEST(Enclosure, ImportMarksTheFullMeshAndEveryLevel) {
+  const Mesh sphere = imported(test::sphere_obj(96, 48));
+  EXPECT_EQ(sphere.enclosure, Enclosure::Outward);
+  ASSERT_FALSE(sphere.lods.empty());
+  for (const MeshLod& lod : sphere.lods) EXPECT_EQ(lod.enclosure, Enclosure::Outward) << lod.triangle_count();
+  EXPECT_EQ(imported(test::disk_obj(24)).enclosure, Enclosure::Open);
+}
+
+TEST(Enclosure, EmptyAndCollapsedMeshesAreOpen) {
+  EXPECT_EQ(classify(Mesh{}), Enclosure::Open);
+  Mesh dot;
+  dot.positions = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  dot.indices = {0, 1, 2};
+  EXPECT_EQ(classify(dot), Enclosure::Open);
+}
+
+}  // namespace
+}  // namespace toond::scene

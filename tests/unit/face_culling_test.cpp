@@ -1,0 +1,183 @@
+// Which faces of a closed object a draw may skip, for the cameras toond
+// really makes; and, with a GL context, that skipping them changes no pixel.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "model_checks.h"
+#include "param_schema.h"
+#include "render/camera.h"
+#include "render/face_culling.h"
+#include "render/gpu_model.h"
+#include "render/render_params.h"
+#include "render/renderer.h"
+#include "scene/bundle_import.h"
+#include "support/gl_context_test.h"
+#include "support/generated_models.h"
+#include "toond_shader_files.h"
+
+namespace toond::render {
+namespace {
+
+using scene::Enclosure;
+
+const scene::Bounds kUnitBox{glm::vec3(-1.0f), glm::vec3(1.0f)};
+
+glm::dmat4 fitted_view_projection(const CameraParams& params, const scene::Bounds& bounds = kUnitBox) {
+  const CameraSetup camera = fit_camera(params, bounds, 1.0);
+  return camera.projection * camera.view;
+}
+
+TEST(FaceCulling, AClosedObjectInViewSkipsItsBackFaces) {
+  for (const Projection projection : {Projection::Perspective, Projection::Orthographic}) {
+    CameraParams params;
+    params.projection = projection;
+    for (const double yaw : {0.0, 90.0, 200.0}) {
+      params.yaw_deg = yaw;
+      params.pitch_deg = yaw / 4;
+      const glm::dmat4 vp = fitted_view_projection(params);
+      EXPECT_EQ(hidden_faces(Enclosure::Outward, glm::dmat4(1.0), vp, kUnitBox), HiddenFaces::Back) << yaw;
+      EXPECT_EQ(hidden_faces(Enclosure::Inward, glm::dmat4(1.0), vp, kUnitBox), HiddenFaces::Front) << yaw;
+      EXPECT_EQ(hidden_faces(Enclosure::Open, glm::dmat4(1.0), vp, kUnitBox), HiddenFaces::None) << yaw;
+    }
+  }
+}
+
+TEST(FaceCulling, AMirroringTransformSwapsTheSide) {
+  const glm::dmat4 vp = fitted_view_projection({});
+  const glm::dmat4 mirror = glm::scale(glm::dmat4(1.0), glm::dvec3(-1.0, 1.0, 1.0));
+  EXPECT_EQ(hidden_faces(Enclosure::Outward, mirror, vp, kUnitBox), HiddenFaces::Front);
+  EXPECT_EQ(hidden_faces(Enclosure::Inward, mirror, vp, kUnitBox), HiddenFaces::Back);
+  // Two mirrors make a rotation.
+  const glm::dmat4 turned = glm::scale(glm::dmat4(1.0), glm::dvec3(-1.0, -1.0, 1.0));
+  EXPECT_EQ(hidden_faces(Enclosure::Outward, turned, vp, kUnitBox), HiddenFaces::Back);
+}
+
+TEST(FaceCulling, NothingIsSkippedWhenTheNearPlaneCutsTheObject) {
+  // The camera inside the bounds sees the inner faces.
+  CameraParams inside;
+  inside.distance = 0.5;
+  EXPECT_EQ(hidden_faces(Enclosure::Outward, glm::dmat4(1.0), fitted_view_projection(inside), kUnitBox),
+            HiddenFaces::None);
+  // A second object, the scene's framing fitted to the first only: this
+  // one reaches behind the camera.
+  const glm::dmat4 vp = fitted_view_projection({});
+  const glm::dmat4 behind = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, 20.0));
+  EXPECT_EQ(hidden_faces(Enclosure::Outward, behind, vp, kUnitBox), HiddenFaces::None);
+  // Beyond the far plane.
+  const glm::dmat4 far = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -50.0));
+  EXPECT_EQ(hidden_faces(Enclosure::Outward, far, vp, kUnitBox), HiddenFaces::None);
+}
+
+class FaceCullingRender : public test::GlContextTest {
+ protected:
+  static RenderParams params(const nlohmann::json& request) {
+    return RenderParams::from_json(proto::ParamSchema::render_params().validate_and_complete(request));
+  }
+  struct Pair {
+    image::Image culled;
+    image::Image both;
+    HiddenFaces culled_side = HiddenFaces::None;
+  };
+  // Each model drawn under its transform, side by side in one scene.
+  static Pair render_both_ways(const std::vector<std::pair<const scene::Model*, glm::dmat4>>& scene,
+                               const RenderParams& p) {
+    gpu::ProgramCache programs([](const std::string& name) { return std::string(shader_files::find(name)); });
+    Renderer renderer(programs);
+    std::vector<std::unique_ptr<GpuModel>> uploaded;
+    std::vector<RenderObject> objects;
+    for (const auto& [model, transform] : scene) {
+      uploaded.push_back(std::make_unique<GpuModel>(*model));
+      objects.push_back({*uploaded.back(), transform});
+    }
+    Pair out;
+    RenderOutput culled = renderer.render(objects, p);
+    out.culled = std::move(culled.image);
+    out.culled_side = culled.lods.at(0).culled;
+    renderer.set_face_culling(false);
+    out.both = renderer.render(objects, p).image;
+    return out;
+  }
+  static Pair render_both_ways(const scene::Model& model, const RenderParams& p) {
+    return render_both_ways({{&model, glm::dmat4(1.0)}}, p);
+  }
+};
+
+scene::Model import_obj(const std::string& obj) {
+  return scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", obj}}));
+}
+
+// Culling is only worth having if it is invisible: the same bytes, with
+// the hull outline (thin and wide, over a floor too), MSAA and shadows.
+TEST(FaceCulling, AnOutlineHullCutByTheNearPlaneIsNotCulled) {
+  // The model's box fits between the planes; grown by the hull's offset it
+  // reaches past the near plane, and the hull's inside would show there.
+  const glm::dmat4 vp = fitted_view_projection({});
+  EXPECT_EQ(hidden_faces(Enclosure::Outward, glm::dmat4(1.0), vp, kUnitBox, 0.0), HiddenFaces::Back);
+  EXPECT_EQ(hidden_faces(Enclosure::Outward, glm::dmat4(1.0), vp, kUnitBox, 5.0), HiddenFaces::None);
+}
+
+TEST_F(FaceCullingRender, SkippingHiddenFacesChangesNoPixel) {
+  const scene::Model sphere = import_obj(test::sphere_obj(48, 24));
+  const scene::Model cube = import_obj(test::cube_obj());
+  for (const nlohmann::json& request :
+       {nlohmann::json{{"width", 128}, {"height", 128}},
+        nlohmann::json{{"width", 128}, {"height", 128}, {"msaa", 1}, {"camera", {{"yaw", 30}, {"pitch", 20}}}},
+        nlohmann::json{{"width", 128},
+                       {"height", 128},
+                       {"shadows", {{"enabled", true}}},
+                       {"floor", {{"enabled", true}}},
+                       {"camera", {{"pitch", 25}}}},
+        nlohmann::json{{"width", 128},
+                       {"height", 128},
+                       {"outline", {{"width", 8}}},
+                       {"floor", {{"enabled", true}}},
+                       {"camera", {{"yaw", 40}, {"pitch", 10}}}}}) {
+    for (const scene::Model* model : {&sphere, &cube}) {
+      const Pair pair = render_both_ways(*model, params(request));
+      EXPECT_EQ(pair.culled_side, HiddenFaces::Back) << request;
+      ASSERT_EQ(pair.culled.rgba.size(), pair.both.rgba.size());
+      EXPECT_TRUE(pair.culled.rgba == pair.both.rgba) << request << (model == &cube ? " cube" : " sphere");
+    }
+  }
+}
+
+// One object sunk half into another, one mirrored (culled on its other
+// side), outlines thin and thick. (No
+// faces of two objects share a plane: where they do, which one wins the
+// depth tie is down to draw order, culled or not.)
+TEST_F(FaceCullingRender, ScenesOfSeveralObjectsKeepEveryPixel) {
+  const scene::Model sphere = import_obj(test::sphere_obj(48, 24));
+  const scene::Model cube = import_obj(test::cube_obj());
+  const glm::dmat4 in_front = glm::translate(glm::dmat4(1.0), glm::dvec3(1.0, 0.3, 1.2));
+  const glm::dmat4 mirrored = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(-1.5, 0.2, -0.4)), glm::dvec3(-1, 1, 1));
+  for (const nlohmann::json& request : {nlohmann::json{{"width", 128}, {"height", 128}},
+                                        nlohmann::json{{"width", 128}, {"height", 128}, {"outline", {{"width", 4}}}}}) {
+    const Pair pair = render_both_ways({{&cube, mirrored}, {&cube, glm::dmat4(1.0)}, {&sphere, in_front}},
+                                       params(request));
+    EXPECT_EQ(pair.culled_side, HiddenFaces::Front);
+    EXPECT_TRUE(pair.culled.rgba == pair.both.rgba) << request;
+  }
+}
+
+TEST_F(FaceCullingRender, ACameraInsideTheModelStillSeesItsInside) {
+  const scene::Model sphere = import_obj(test::sphere_obj(48, 24));
+  const Pair pair = render_both_ways(
+      sphere, params({{"width", 64}, {"height", 64}, {"background", {1, 0, 1}}, {"camera", {{"distance", 0.3}}}}));
+  EXPECT_EQ(pair.culled_side, HiddenFaces::None);
+  EXPECT_TRUE(pair.culled.rgba == pair.both.rgba);
+  // The sphere's inner wall fills the view: no pixel of the magenta
+  // background shows.
+  int background = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const std::uint8_t* p = pair.culled.pixel(x, y);
+      background += p[0] == 255 && p[1] == 0 && p[2] == 255;
+    }
+  EXPECT_EQ(background, 0);
+}
+
+}  // namespace
+}  // namespace toond::render
