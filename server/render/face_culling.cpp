@@ -1,5 +1,6 @@
 #include "render/face_culling.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace toond::render {
@@ -30,6 +31,31 @@ HiddenFaces hidden_faces(scene::Enclosure enclosure, const glm::dmat4& model, co
   const bool mirrored = (glm::determinant(glm::dmat3(model)) < 0.0) == (glm::determinant(view_projection) < 0.0);
   const bool outward = enclosure == scene::Enclosure::Outward;
   return outward != mirrored ? HiddenFaces::Back : HiddenFaces::Front;
+}
+
+bool caps_face_away(const std::vector<glm::vec3>& caps, scene::Enclosure enclosure, const glm::dmat4& model,
+                    const Viewer& viewer) {
+  // Any cap turned away proves the point; the margin only keeps rounding
+  // from deciding a cap seen exactly edge-on.
+  constexpr double kMargin = 1e-6;
+  // The caps are wound like the mesh; a mirror or an inside-out mesh turns
+  // their cross product inward.
+  const bool mirrored = glm::determinant(glm::dmat3(model)) < 0.0;
+  const double outward = (mirrored != (enclosure == scene::Enclosure::Inward)) ? -1.0 : 1.0;
+  for (std::size_t t = 0; t + 2 < caps.size(); t += 3) {
+    const glm::dvec3 a(model * glm::dvec4(glm::dvec3(caps[t]), 1.0));
+    const glm::dvec3 b(model * glm::dvec4(glm::dvec3(caps[t + 1]), 1.0));
+    const glm::dvec3 c(model * glm::dvec4(glm::dvec3(caps[t + 2]), 1.0));
+    const glm::dvec3 n = glm::cross(b - a, c - a) * outward;
+    const double area = glm::length(n);
+    const double size = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+    if (!(area > 1e-12 * size * size)) continue;
+    const glm::dvec3 ray = viewer.orthographic ? viewer.forward : (a + b + c) / 3.0 - viewer.eye;
+    const double ray_length = glm::length(ray);
+    if (!(ray_length > 0.0)) return false;
+    if (glm::dot(n, ray) / (area * ray_length) < kMargin) return false;
+  }
+  return true;
 }
 
 }  // namespace toond::render

@@ -8,6 +8,8 @@
 // and its inside faces would show through the cut (a camera inside the
 // bounds). The object's box must lie wholly between them, else nothing is
 // skipped.
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "scene/model.h"
@@ -28,5 +30,21 @@ enum class HiddenFaces {
 HiddenFaces hidden_faces(scene::Enclosure enclosure, const glm::dmat4& model, const glm::dmat4& view_projection,
                          const scene::Bounds& bounds, double reach = 0.0);
 
+
+// Where the camera is and which way it looks, in scene coordinates.
+struct Viewer {
+  glm::dvec3 eye{0.0};      // perspective views
+  glm::dvec3 forward{0.0, 0.0, -1.0};  // orthographic views: the direction of every ray
+  bool orthographic = false;
+};
+
+// Whether every cap over the object's holes (scene::Mesh::caps) turns its
+// outer side away from the viewer: then every ray meets the mesh's front
+// faces before it could pass a hole (it reaches a hole from inside the
+// volume), and what `hidden_faces` allows holds for the open mesh too.
+// Caps of no area cover no pixel and do not count. (An outline hull's holes
+// move with its offset, so the hull of an open mesh is drawn whole.)
+bool caps_face_away(const std::vector<glm::vec3>& caps, scene::Enclosure enclosure, const glm::dmat4& model,
+                    const Viewer& viewer);
 
 }  // namespace toond::render

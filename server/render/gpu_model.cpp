@@ -74,10 +74,10 @@ GpuModel::GpuModel(const scene::Model& model)
   // Every level's indices in one buffer, full detail first; each level's
   // submesh ranges are moved to where its indices land.
   std::vector<std::uint32_t> indices = mesh.indices;
-  levels_.push_back({mesh.submeshes, 0, mesh.indices.size(), mesh.enclosure});
+  levels_.push_back({mesh.submeshes, 0, mesh.indices.size(), mesh.enclosure, mesh.caps});
   lod_errors_.push_back(0.0);
   for (const scene::MeshLod& lod : mesh.lods) {
-    Level level{lod.submeshes, indices.size(), lod.indices.size(), lod.enclosure};
+    Level level{lod.submeshes, indices.size(), lod.indices.size(), lod.enclosure, lod.caps};
     for (scene::Submesh& sub : level.submeshes) sub.first_index += static_cast<std::uint32_t>(level.first_index);
     indices.insert(indices.end(), lod.indices.begin(), lod.indices.end());
     levels_.push_back(std::move(level));

@@ -36,6 +36,8 @@ class GpuModel {
   std::size_t triangles(std::size_t lod = 0) const { return levels_[lod].index_count / 3; }
   // Whether a level's triangles close around a volume (scene/enclosure.h).
   scene::Enclosure enclosure(std::size_t lod = 0) const { return levels_[lod].enclosure; }
+  // Triangles closing the level's holes (scene::Mesh::caps); empty when closed.
+  const std::vector<glm::vec3>& caps(std::size_t lod = 0) const { return levels_[lod].caps; }
   const std::vector<GpuMaterial>& materials() const { return materials_; }
   GLuint texture(int index) const { return textures_[static_cast<std::size_t>(index)].id(); }
   bool has_textures() const { return !textures_.empty(); }
@@ -61,6 +63,7 @@ class GpuModel {
     std::size_t first_index = 0;            // the level's whole range
     std::size_t index_count = 0;
     scene::Enclosure enclosure = scene::Enclosure::Open;
+    std::vector<glm::vec3> caps;
   };
   std::vector<Level> levels_;
   std::vector<double> lod_errors_;

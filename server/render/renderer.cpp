@@ -159,10 +159,12 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   // and the edges all follow the surface that was shaded.
   auto lod_of = [&](std::size_t i) { return out.lods[i].level; };
   // The faces of object i that cannot show through `view_projection`.
-  auto culling_for = [&](std::size_t i, const glm::dmat4& view_projection) {
+  auto culling_for = [&](std::size_t i, const glm::dmat4& view_projection, const Viewer& viewer) {
     if (!face_culling_) return HiddenFaces::None;
     const GpuModel& model = objects[i].model;
-    return hidden_faces(model.enclosure(lod_of(i)), frame.matrices[i], view_projection, model.bounds());
+    const scene::Enclosure enclosure = model.enclosure(lod_of(i));
+    if (!caps_face_away(model.caps(lod_of(i)), enclosure, frame.matrices[i], viewer)) return HiddenFaces::None;
+    return hidden_faces(enclosure, frame.matrices[i], view_projection, model.bounds());
   };
   PassTimer timer(out.timings);
 
@@ -187,7 +189,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     for (std::size_t i = 0; i < objects.size(); ++i) {
       // The nearest surface seen from the light is the same with the far
       // side skipped, so the map is too.
-      cull(culling_for(i, shadow->view_projection));
+      cull(culling_for(i, shadow->view_projection, Viewer{glm::dvec3(0.0), glm::normalize(caster.direction), true}));
       program.set("u_model", model_matrix[i]);
       objects[i].model.bind();
       objects[i].model.draw_all(lod_of(i));
@@ -211,7 +213,9 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
                                         static_cast<double>(params.width) / params.height);
   const glm::mat4 view_projection = camera.view_projection();
   for (std::size_t i = 0; i < objects.size(); ++i) {
-    out.lods[i].culled = culling_for(i, camera.projection * camera.view);
+    out.lods[i].culled = culling_for(i, camera.projection * camera.view,
+                                     Viewer{camera.eye, glm::normalize(camera.target - camera.eye),
+                                            params.camera.projection == Projection::Orthographic});
   }
 
   glEnable(GL_FRAMEBUFFER_SRGB);
@@ -431,8 +435,10 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     }
     const glm::dmat4 clip = camera.projection * camera.view;
     set_outline_colour_and_draw(program, [&](std::size_t i) {
-      if (!face_culling_ || out.lods[i].culled == HiddenFaces::None) return HiddenFaces::None;
       const GpuModel& model = objects[i].model;
+      // The hull's own holes move with the offset and may turn toward the
+      // camera where the model's do not: open meshes draw the whole hull.
+      if (out.lods[i].culled == HiddenFaces::None || !model.caps(lod_of(i)).empty()) return HiddenFaces::None;
       return hidden_faces(model.enclosure(lod_of(i)), frame.matrices[i], clip, model.bounds(), reach);
     });
     check_gl("hull outline pass");

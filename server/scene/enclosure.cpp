@@ -1,6 +1,7 @@
 #include "scene/enclosure.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <numeric>
 #include <unordered_map>
@@ -24,8 +25,10 @@ class Components {
   std::vector<std::uint32_t> parent_;
 };
 
-// Every edge crossed as often one way as the other.
-bool edges_balance(std::span<const std::uint32_t> group, std::span<const std::uint32_t> indices) {
+// Per edge between two groups (smaller id in the high half): how many more
+// times the triangles cross it from the smaller id to the larger than back.
+std::unordered_map<std::uint64_t, int> edge_balance(std::span<const std::uint32_t> group,
+                                                    std::span<const std::uint32_t> indices) {
   std::unordered_map<std::uint64_t, int> balance;
   balance.reserve(indices.size());
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
@@ -37,38 +40,135 @@ bool edges_balance(std::span<const std::uint32_t> group, std::span<const std::ui
       else --balance[b << 32 | a];
     }
   }
-  return std::all_of(balance.begin(), balance.end(), [](const auto& e) { return e.second == 0; });
+  return balance;
+}
+
+// The rims of the holes, as loops of groups in the direction the mesh's own
+// triangles run along them. False when a rim edge is crossed more than once
+// unmatched, or rims touch (two rim edges leave one point): no unique caps.
+bool trace_rims(const std::unordered_map<std::uint64_t, int>& balance, std::vector<std::vector<std::uint32_t>>& rims) {
+  std::unordered_map<std::uint32_t, std::uint32_t> next;
+  for (const auto& [key, b] : balance) {
+    if (b == 0) continue;
+    if (b != 1 && b != -1) return false;
+    const auto low = static_cast<std::uint32_t>(key >> 32);
+    const auto high = static_cast<std::uint32_t>(key & 0xffffffffu);
+    const auto [from, to] = b > 0 ? std::pair(low, high) : std::pair(high, low);
+    if (!next.emplace(from, to).second) return false;
+  }
+  while (!next.empty()) {
+    std::vector<std::uint32_t> rim;
+    std::uint32_t at = next.begin()->first;
+    while (true) {
+      const auto it = next.find(at);
+      if (it == next.end()) break;
+      rim.push_back(at);
+      at = it->second;
+      next.erase(it);
+    }
+    // A rim must come back to where it started.
+    if (rim.empty() || at != rim.front()) return false;
+    rims.push_back(std::move(rim));
+  }
+  return true;
+}
+
+// The triangulation of least total area spanning the loop (dynamic
+// programming over its vertices, O(n³)), its triangles wound like the loop.
+// A fan from the middle would do for round holes, but scanned models (the
+// bunny's base) have ragged, saddle-shaped rims whose fan or ear-clipped
+// triangles fold over each other and face every way; the least-area
+// surface is the soap film over the rim, and stays as flat as the rim
+// lets it. False for rims too long to be worth it.
+bool triangulate_hole(const std::vector<glm::dvec3>& loop, std::vector<std::array<glm::dvec3, 3>>& out) {
+  const std::size_t n = loop.size();
+  if (n < 3 || n > 1024) return false;
+  auto area = [&](std::size_t i, std::size_t k, std::size_t j) {
+    return glm::length(glm::cross(loop[k] - loop[i], loop[j] - loop[i]));
+  };
+  // best[i][j]: least area closing the sub-loop i..j; split[i][j]: its apex.
+  std::vector<double> best(n * n, 0.0);
+  std::vector<std::size_t> split(n * n, 0);
+  for (std::size_t span = 2; span < n; ++span) {
+    for (std::size_t i = 0; i + span < n; ++i) {
+      const std::size_t j = i + span;
+      double least = std::numeric_limits<double>::infinity();
+      for (std::size_t k = i + 1; k < j; ++k) {
+        const double a = best[i * n + k] + best[k * n + j] + area(i, k, j);
+        if (a < least) {
+          least = a;
+          split[i * n + j] = k;
+        }
+      }
+      best[i * n + j] = least;
+    }
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> todo = {{0, n - 1}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    if (j < i + 2) continue;
+    const std::size_t k = split[i * n + j];
+    out.push_back({loop[i], loop[k], loop[j]});
+    todo.emplace_back(i, k);
+    todo.emplace_back(k, j);
+  }
+  return true;
 }
 
 struct Part {
   double volume = 0;  // signed: positive when counter-clockwise faces look out
   glm::dvec3 min{std::numeric_limits<double>::max()};
   glm::dvec3 max{std::numeric_limits<double>::lowest()};
+  void add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    // The divergence theorem: the tetrahedra the triangles make with the origin.
+    volume += glm::dot(a, glm::cross(b, c)) / 6.0;
+    for (const glm::dvec3& p : {a, b, c}) {
+      min = glm::min(min, p);
+      max = glm::max(max, p);
+    }
+  }
 };
 
 }  // namespace
 
 Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<const std::uint32_t> position_group,
-                             std::span<const std::uint32_t> indices) {
-  if (indices.size() < 3 || !edges_balance(position_group, indices)) return Enclosure::Open;
+                             std::span<const std::uint32_t> indices, std::vector<glm::vec3>* caps) {
+  if (caps) caps->clear();
+  if (indices.size() < 3) return Enclosure::Open;
+  std::vector<std::vector<std::uint32_t>> rims;
+  if (!trace_rims(edge_balance(position_group, indices), rims)) return Enclosure::Open;
+  if (!rims.empty() && !caps) return Enclosure::Open;
 
   const std::size_t groups =
       position_group.empty() ? 0 : *std::max_element(position_group.begin(), position_group.end()) + 1u;
+  std::vector<glm::dvec3> point(groups);
+  for (std::size_t v = 0; v < positions.size(); ++v) point[position_group[v]] = glm::dvec3(positions[v]);
   Components components(groups);
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     components.join(position_group[indices[t]], position_group[indices[t + 1]]);
     components.join(position_group[indices[t]], position_group[indices[t + 2]]);
   }
-  // Each closed part's volume by the divergence theorem: the sum of the
-  // tetrahedra its triangles make with the origin.
   std::unordered_map<std::uint32_t, Part> parts;
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    const glm::dvec3 a(positions[indices[t]]), b(positions[indices[t + 1]]), c(positions[indices[t + 2]]);
-    Part& part = parts[components.root(position_group[indices[t]])];
-    part.volume += glm::dot(a, glm::cross(b, c)) / 6.0;
-    for (const glm::dvec3& p : {a, b, c}) {
-      part.min = glm::min(part.min, p);
-      part.max = glm::max(part.max, p);
+    parts[components.root(position_group[indices[t]])].add(point[position_group[indices[t]]],
+                                                          point[position_group[indices[t + 1]]],
+                                                          point[position_group[indices[t + 2]]]);
+  }
+  // Each hole closed by a triangulation of its rim, run against the rim so
+  // the cap continues the mesh's winding.
+  for (const std::vector<std::uint32_t>& rim : rims) {
+    std::vector<glm::dvec3> loop;
+    for (auto g = rim.rbegin(); g != rim.rend(); ++g) loop.push_back(point[*g]);
+    std::vector<std::array<glm::dvec3, 3>> triangles;
+    if (!triangulate_hole(loop, triangles)) {
+      caps->clear();
+      return Enclosure::Open;
+    }
+    Part& part = parts[components.root(rim.front())];
+    for (const auto& [a, b, c] : triangles) {
+      part.add(a, b, c);
+      caps->insert(caps->end(), {glm::vec3(a), glm::vec3(b), glm::vec3(c)});
     }
   }
   int outward = 0;
@@ -80,17 +180,18 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
     const double least = 1e-7 * size * size * size;
     if (part.volume > least) ++outward;
     else if (part.volume < -least) ++inward;
-    else return Enclosure::Open;
+    else outward = inward = 1;  // no side to skip
   }
-  if (inward == 0) return Enclosure::Outward;
-  if (outward == 0) return Enclosure::Inward;
+  if (inward == 0 && outward > 0) return Enclosure::Outward;
+  if (outward == 0 && inward > 0) return Enclosure::Inward;
+  if (caps) caps->clear();
   return Enclosure::Open;
 }
 
 void classify_enclosures(Mesh& mesh) {
   const std::vector<std::uint32_t> group = group_by_position(mesh.positions);
-  mesh.enclosure = classify_enclosure(mesh.positions, group, mesh.indices);
-  for (MeshLod& lod : mesh.lods) lod.enclosure = classify_enclosure(mesh.positions, group, lod.indices);
+  mesh.enclosure = classify_enclosure(mesh.positions, group, mesh.indices, &mesh.caps);
+  for (MeshLod& lod : mesh.lods) lod.enclosure = classify_enclosure(mesh.positions, group, lod.indices, &lod.caps);
 }
 
 }  // namespace toond::scene

@@ -61,14 +61,17 @@ struct Bounds {
   float radius() const { return glm::length(max - min) * 0.5f; }
 };
 
-// Whether triangles close around a volume (scene/enclosure.h). Closed: every edge (between positions, split copies of a vertex counting
-// as one) is crossed as often in one direction as in the other, so the
-// triangles bound a volume. Outward: counter-clockwise faces look out of
-// it, as OBJ exporters write them; Inward: the whole mesh is wound inside
-// out. Open covers holes, inconsistent winding, flat or zero-volume parts
-// (a two-sided sheet), and meshes whose parts disagree in direction (a
-// hollow shell with an inward-facing cavity) — anything where a face turned
-// away from the camera might be the one that shows.
+// Whether triangles close around a volume (scene/enclosure.h), once the
+// holes in them are capped. Closed: every edge (between positions, split
+// copies of a vertex counting as one) is crossed as often in one direction
+// as in the other, so the triangles bound a volume. Outward:
+// counter-clockwise faces look out of it, as OBJ exporters write them;
+// Inward: the whole mesh is wound inside out. Open covers inconsistent
+// winding, edges three or more faces share unevenly, holes whose rims touch
+// themselves, flat or zero-volume parts (a two-sided sheet), and meshes
+// whose parts disagree in direction (a hollow shell with an inward-facing
+// cavity): anything where a face turned away from the camera might be the
+// one that shows from any side.
 enum class Enclosure : std::uint8_t { Open, Outward, Inward };
 
 // A coarser level of detail over the same vertices as its Mesh (see
@@ -78,6 +81,7 @@ struct MeshLod {
   std::vector<Submesh> submeshes;      // ranges of `indices`, one per Mesh::submeshes entry, same materials
   double error = 0;                    // how far the surface may stray from the full mesh, mesh units
   Enclosure enclosure = Enclosure::Open;
+  std::vector<glm::vec3> caps;  // see Mesh::caps
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
@@ -108,6 +112,11 @@ struct Mesh {
   std::vector<Submesh> submeshes;
   std::vector<MeshLod> lods;  // coarser levels, finest first; empty: full detail only
   Enclosure enclosure = Enclosure::Open;  // of `indices`, the full mesh
+  // Triangles (three points each) that close the holes of an Outward or
+  // Inward mesh, wound like it; empty when it has none. Through a hole one
+  // sees the inner faces: they can only be skipped while every cap is
+  // turned away from the camera.
+  std::vector<glm::vec3> caps;
   glm::dvec3 origin{0.0};  // model-space point that positions are relative to
   Bounds bounds;           // of `positions` (i.e. relative to origin)
 

@@ -53,19 +53,41 @@ TEST(Enclosure, AMeshWoundInsideOutFacesInward) {
   EXPECT_EQ(classify(reversed(imported(test::cube_obj()))), Enclosure::Inward);
 }
 
-TEST(Enclosure, AHoleOrOneFlippedTriangleOpensIt) {
+TEST(Enclosure, AHoleIsCappedAndAFlippedTriangleOpensIt) {
   Mesh holed = imported(test::cube_obj());
   holed.indices.resize(holed.indices.size() - 3);
+  // Without caps a hole leaves it open.
   EXPECT_EQ(classify(holed), Enclosure::Open);
+  // With them: the one triangle over the three-edge rim, wound like the
+  // missing face.
+  std::vector<glm::vec3> caps;
+  EXPECT_EQ(classify_enclosure(holed.positions, group_by_position(holed.positions), holed.indices, &caps),
+            Enclosure::Outward);
+  ASSERT_EQ(caps.size(), 3u);
+  const Mesh full = imported(test::cube_obj());
+  const glm::vec3 missing_normal = glm::cross(full.positions[full.indices[full.indices.size() - 2]] -
+                                                  full.positions[full.indices[full.indices.size() - 3]],
+                                              full.positions[full.indices[full.indices.size() - 1]] -
+                                                  full.positions[full.indices[full.indices.size() - 3]]);
+  for (std::size_t t = 0; t < caps.size(); t += 3) {
+    const glm::vec3 n = glm::cross(caps[t + 1] - caps[t], caps[t + 2] - caps[t]);
+    EXPECT_GT(glm::dot(n, missing_normal), 0.0f) << "cap " << t / 3 << " faces out like the missing face";
+  }
 
   Mesh flipped = imported(test::cube_obj());
   std::swap(flipped.indices[1], flipped.indices[2]);
   EXPECT_EQ(classify(flipped), Enclosure::Open);
+  EXPECT_EQ(classify_enclosure(flipped.positions, group_by_position(flipped.positions), flipped.indices, &caps),
+            Enclosure::Open);
+  EXPECT_TRUE(caps.empty());
 }
 
 TEST(Enclosure, FlatAndTwoSidedSheetsAreOpen) {
   const Mesh disk = imported(test::disk_obj(24));
   EXPECT_EQ(classify(disk), Enclosure::Open);
+  // Capped, a disk is a two-sided sheet too.
+  EXPECT_EQ(disk.enclosure, Enclosure::Open);
+  EXPECT_TRUE(disk.caps.empty());
   // Every edge balanced, but the "volume" is nothing: either side may face
   // the camera.
   EXPECT_EQ(classify(joined(disk, reversed(disk))), Enclosure::Open);
@@ -88,7 +110,11 @@ TEST(Enclosure, ImportMarksTheFullMeshAndEveryLevel) {
   const Mesh sphere = imported(test::sphere_obj(96, 48));
   EXPECT_EQ(sphere.enclosure, Enclosure::Outward);
   ASSERT_FALSE(sphere.lods.empty());
-  for (const MeshLod& lod : sphere.lods) EXPECT_EQ(lod.enclosure, Enclosure::Outward) << lod.triangle_count();
+  EXPECT_TRUE(sphere.caps.empty());
+  for (const MeshLod& lod : sphere.lods) {
+    EXPECT_EQ(lod.enclosure, Enclosure::Outward) << lod.triangle_count();
+    EXPECT_TRUE(lod.caps.empty());
+  }
   EXPECT_EQ(imported(test::disk_obj(24)).enclosure, Enclosure::Open);
 }
 
