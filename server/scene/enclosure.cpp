@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <unordered_map>
@@ -73,6 +74,12 @@ bool trace_rims(const std::unordered_map<std::uint64_t, int>& balance, std::vect
   return true;
 }
 
+// Capping costs rim length cubed: a long rim (an open sheet's border) or
+// many of them (a hostile upload) leave the mesh Open instead, which only
+// means its back faces are drawn.
+constexpr std::size_t kLongestRim = 256;
+constexpr double kCappingBudget = 4e7;  // Σ n³ over the rims, about 0.1 s
+
 // The triangulation of least total area spanning the loop (dynamic
 // programming over its vertices, O(n³)), its triangles wound like the loop.
 // A fan from the middle would do for round holes, but scanned models (the
@@ -82,7 +89,7 @@ bool trace_rims(const std::unordered_map<std::uint64_t, int>& balance, std::vect
 // lets it. False for rims too long to be worth it.
 bool triangulate_hole(const std::vector<glm::dvec3>& loop, std::vector<std::array<glm::dvec3, 3>>& out) {
   const std::size_t n = loop.size();
-  if (n < 3 || n > 1024) return false;
+  if (n < 3 || n > kLongestRim) return false;
   auto area = [&](std::size_t i, std::size_t k, std::size_t j) {
     return glm::length(glm::cross(loop[k] - loop[i], loop[j] - loop[i]));
   };
@@ -139,6 +146,9 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
   std::vector<std::vector<std::uint32_t>> rims;
   if (!trace_rims(edge_balance(position_group, indices), rims)) return Enclosure::Open;
   if (!rims.empty() && !caps) return Enclosure::Open;
+  double capping = 0;
+  for (const std::vector<std::uint32_t>& rim : rims) capping += std::pow(static_cast<double>(rim.size()), 3.0);
+  if (capping > kCappingBudget) return Enclosure::Open;
 
   const std::size_t groups =
       position_group.empty() ? 0 : *std::max_element(position_group.begin(), position_group.end()) + 1u;

@@ -118,6 +118,23 @@ TEST(Enclosure, ImportMarksTheFullMeshAndEveryLevel) {
   EXPECT_EQ(imported(test::disk_obj(24)).enclosure, Enclosure::Open);
 }
 
+// A sphere with a band cut out of its middle has two rims of 512 points:
+// capping them would cost more than the import should spend, so it stays
+// open (and is drawn both sides) instead of taking seconds.
+TEST(Enclosure, RimsTooLongToCapLeaveItOpen) {
+  Mesh mesh = imported(test::sphere_obj(512, 8));
+  std::vector<std::uint32_t> kept;
+  for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+    const float y = (mesh.positions[mesh.indices[t]].y + mesh.positions[mesh.indices[t + 1]].y +
+                     mesh.positions[mesh.indices[t + 2]].y) / 3.0f;
+    if (std::abs(y) > 0.2f) kept.insert(kept.end(), &mesh.indices[t], &mesh.indices[t] + 3);
+  }
+  ASSERT_LT(kept.size(), mesh.indices.size());
+  std::vector<glm::vec3> caps;
+  EXPECT_EQ(classify_enclosure(mesh.positions, group_by_position(mesh.positions), kept, &caps), Enclosure::Open);
+  EXPECT_TRUE(caps.empty());
+}
+
 TEST(Enclosure, EmptyAndCollapsedMeshesAreOpen) {
   EXPECT_EQ(classify(Mesh{}), Enclosure::Open);
   Mesh dot;
