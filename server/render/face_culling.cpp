@@ -12,13 +12,12 @@ HiddenFaces hidden_faces(scene::Enclosure enclosure, const glm::dmat4& model, co
   glm::dvec3 low(std::numeric_limits<double>::max());
   glm::dvec3 high(std::numeric_limits<double>::lowest());
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::dvec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
-                       (corner & 4) ? bounds.max.z : bounds.min.z);
-    const glm::dvec3 q(model * glm::dvec4(p, 1.0));
+    const glm::dvec3 q(model * glm::dvec4(bounds.corner(corner), 1.0));
     low = glm::min(low, q - reach);
     high = glm::max(high, q + reach);
   }
   for (int corner = 0; corner < 8; ++corner) {
+    // The grown box stays in double: scene coordinates may be large.
     const glm::dvec3 p((corner & 1) ? high.x : low.x, (corner & 2) ? high.y : low.y, (corner & 4) ? high.z : low.z);
     const glm::dvec4 c = view_projection * glm::dvec4(p, 1.0);
     // Inside the depth range: -w <= z <= w with w > 0 (x and y may leave

@@ -426,9 +426,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
       double w_max = 1.0;
       if (!ortho) {
         for (int corner = 0; corner < 8; ++corner) {
-          const glm::dvec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
-                             (corner & 4) ? bounds.max.z : bounds.min.z);
-          w_max = std::max(w_max, (camera.projection * camera.view * glm::dvec4(p, 1.0)).w);
+          w_max = std::max(w_max, (camera.projection * camera.view * glm::dvec4(bounds.corner(corner), 1.0)).w);
         }
       }
       reach = ortho ? k : (k < 0.5 ? k * w_max / (1.0 - k) : std::numeric_limits<double>::infinity());

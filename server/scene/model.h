@@ -59,6 +59,10 @@ struct Bounds {
   glm::vec3 centre() const { return (min + max) * 0.5f; }
   // Radius of the sphere around centre() that holds the box.
   float radius() const { return glm::length(max - min) * 0.5f; }
+  // Corner i (0..7) of the box: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+  glm::dvec3 corner(int i) const {
+    return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
+  }
 };
 
 // Whether triangles close around a volume (scene/enclosure.h), once the
