@@ -15,8 +15,15 @@ bool PassTimer::gpu_timers_available() {
   return available;
 }
 
-PassTimer::PassTimer(std::vector<PassTiming>& out) : out_(out) {
-  if (gpu_timers_available()) begin_query();
+bool PassTimer::gpu_timers_worthwhile(std::string_view gl_renderer) {
+  for (std::string_view software : {"llvmpipe", "softpipe", "swrast"}) {
+    if (gl_renderer.find(software) != std::string_view::npos) return false;
+  }
+  return true;
+}
+
+PassTimer::PassTimer(std::vector<PassTiming>& out, bool gpu_timers) : out_(out) {
+  if (gpu_timers && gpu_timers_available()) begin_query();
 }
 
 PassTimer::~PassTimer() {

@@ -166,7 +166,18 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     if (!caps_face_away(model.caps(lod_of(i)), enclosure, frame.matrices[i], viewer)) return HiddenFaces::None;
     return hidden_faces(enclosure, frame.matrices[i], view_projection, model.bounds());
   };
-  PassTimer timer(out.timings);
+  if (!gpu_timers_) {
+    const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    gpu_timers_ = PassTimer::gpu_timers_worthwhile(name ? name : "");
+  }
+  PassTimer timer(out.timings, *gpu_timers_);
+  // Each pass goes to the driver as soon as it is recorded: llvmpipe then
+  // rasterizes it on its threads while this one records the next (bunny,
+  // 512², msaa 4: about 10 % less time per render).
+  auto end_pass = [&](Pass pass) {
+    glFlush();
+    timer.mark(pass);
+  };
 
   std::optional<ShadowFit> shadow;
   if (plan.has(Pass::Shadow)) {
@@ -197,7 +208,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     glDisable(GL_CULL_FACE);
     glDisable(GL_POLYGON_OFFSET_FILL);
     check_gl("shadow pass");
-    timer.mark(Pass::Shadow);
+    end_pass(Pass::Shadow);
   }
 
   // Supersampling draws everything `ss` times larger, pixel sizes included,
@@ -338,7 +349,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     }
     glDisable(GL_CULL_FACE);
     check_gl("main pass");
-    timer.mark(Pass::Main);
+    end_pass(Pass::Main);
 
     if (plan.has(Pass::Floor)) {
       // Same shading as the model, but no stencil mark: the floor is never
@@ -363,7 +374,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
       floor.bind();
       floor.draw_all();
       check_gl("floor pass");
-      timer.mark(Pass::Floor);
+      end_pass(Pass::Floor);
     }
   }
 
@@ -440,7 +451,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
       return hidden_faces(model.enclosure(lod_of(i)), frame.matrices[i], clip, model.bounds(), reach);
     });
     check_gl("hull outline pass");
-    timer.mark(Pass::HullOutline);
+    end_pass(Pass::HullOutline);
   }
 
   if (plan.has(Pass::Wireframe)) {
@@ -458,7 +469,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     program.set("u_line_px", 2.0f * params.outline.width * px);
     set_outline_colour_and_draw(program, [](std::size_t) { return HiddenFaces::None; });
     check_gl("wireframe pass");
-    timer.mark(Pass::Wireframe);
+    end_pass(Pass::Wireframe);
   }
 
   if (plan.has(Pass::Edges)) {
@@ -481,7 +492,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     }
     glDisable(GL_CULL_FACE);
     check_gl("edge prepass");
-    timer.mark(Pass::EdgePrepass);
+    end_pass(Pass::EdgePrepass);
 
     target.bind_for_drawing();
     glDisable(GL_DEPTH_TEST);
@@ -497,7 +508,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glEnable(GL_DEPTH_TEST);
     check_gl("edge pass");
-    timer.mark(Pass::Edges);
+    end_pass(Pass::Edges);
   }
 
   glBindVertexArray(0);

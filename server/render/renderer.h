@@ -74,6 +74,7 @@ class Renderer {
 
   gpu::ProgramCache& programs_;
   bool face_culling_ = true;
+  std::optional<bool> gpu_timers_;  // asked of the context at the first render
   std::optional<gpu::RenderTarget> target_;  // reused while the size stays the same
   std::optional<gpu::ShadowMap> shadow_map_;
   std::optional<gpu::NormalDepthTarget> normal_depth_;

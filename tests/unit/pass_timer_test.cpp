@@ -16,7 +16,7 @@ class PassTimerTest : public test::GlContextTest {
   // Clears a large target a few times: GPU work the queries can see.
   static std::vector<PassTiming> timed_frame(gpu::RenderTarget& target) {
     std::vector<PassTiming> timings;
-    PassTimer timer(timings);
+    PassTimer timer(timings, true);
     target.bind_for_drawing();
     for (int i = 0; i < 8; ++i) {
       glClearColor(0.1f * i, 0.2f, 0.3f, 1.0f);
@@ -56,7 +56,7 @@ TEST_F(PassTimerTest, AnAbandonedTimerEndsItsQuery) {
   gpu::RenderTarget target(64, 64, 1);
   try {
     std::vector<PassTiming> timings;
-    PassTimer timer(timings);
+    PassTimer timer(timings, true);
     timer.mark(Pass::Shadow);
     throw std::runtime_error("pass failed");
   } catch (const std::runtime_error&) {
@@ -65,6 +65,35 @@ TEST_F(PassTimerTest, AnAbandonedTimerEndsItsQuery) {
   const std::vector<PassTiming> t = timed_frame(target);
   EXPECT_EQ(t.size(), 3u);
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// Software rasterizers run the "GPU" work on this CPU's threads, where the
+// queries cannot see it and only cost time.
+TEST(PassTimerPolicy, GpuTimersOnlyWhereThereIsAGpu) {
+  EXPECT_FALSE(PassTimer::gpu_timers_worthwhile("llvmpipe (LLVM 15.0.6, 256 bits)"));
+  EXPECT_FALSE(PassTimer::gpu_timers_worthwhile("softpipe"));
+  EXPECT_TRUE(PassTimer::gpu_timers_worthwhile("NVIDIA H100 80GB HBM3/PCIe/SSE2"));
+  EXPECT_TRUE(PassTimer::gpu_timers_worthwhile("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.7, DRM 3.54)"));
+  EXPECT_TRUE(PassTimer::gpu_timers_worthwhile(""));
+}
+
+// A timer told not to count GPU time gives wall-clock figures only, even
+// where the driver could count.
+TEST_F(PassTimerTest, WithoutGpuTimersEveryFigureIsWallClock) {
+  gpu::RenderTarget target(64, 64, 1);
+  std::vector<PassTiming> timings;
+  {
+    PassTimer timer(timings, false);
+    glClear(GL_COLOR_BUFFER_BIT);
+    timer.mark(Pass::Main);
+    (void)target.read_back();
+    timer.mark(Pass::Readback);
+  }
+  ASSERT_EQ(timings.size(), 2u);
+  for (const PassTiming& p : timings) {
+    EXPECT_FALSE(p.gpu) << p.pass;
+    EXPECT_EQ(p.ms, p.cpu_ms) << p.pass;
+  }
 }
 
 }  // namespace
