@@ -83,6 +83,13 @@ GpuModel::GpuModel(const scene::Model& model)
     levels_.push_back(std::move(level));
     lod_errors_.push_back(lod.error);
   }
+  auto add_caps = [&](Level& level, const std::vector<std::uint32_t>& cap_indices) {
+    level.first_cap_index = indices.size();
+    level.cap_index_count = cap_indices.size();
+    indices.insert(indices.end(), cap_indices.begin(), cap_indices.end());
+  };
+  add_caps(levels_[0], mesh.cap_indices);
+  for (std::size_t i = 0; i < mesh.lods.size(); ++i) add_caps(levels_[i + 1], mesh.lods[i].cap_indices);
 
   vertices_ = gpu::Buffer::create();
   glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
@@ -123,6 +130,13 @@ void GpuModel::draw_all(std::size_t lod) const {
   const Level& level = levels_[lod];
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(level.index_count), GL_UNSIGNED_INT,
                  reinterpret_cast<const void*>(level.first_index * sizeof(std::uint32_t)));
+}
+
+void GpuModel::draw_caps(std::size_t lod) const {
+  const Level& level = levels_[lod];
+  if (level.cap_index_count == 0) return;
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(level.cap_index_count), GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(level.first_cap_index * sizeof(std::uint32_t)));
 }
 
 }  // namespace toond::render

@@ -1,6 +1,6 @@
 #pragma once
 // A model's GPU copy: one interleaved vertex buffer, one index buffer (the
-// full mesh, then each coarser level of detail), its textures (sRGB, mipmapped, repeating) and per-material draw ranges.
+// full mesh, then each coarser level of detail, then every level's caps), its textures (sRGB, mipmapped, repeating) and per-material draw ranges.
 // Created and destroyed on the render thread only.
 #include <vector>
 
@@ -26,6 +26,9 @@ class GpuModel {
   void draw(const scene::Submesh& submesh) const;
   // Every triangle of a level of detail (0 = full detail).
   void draw_all(std::size_t lod = 0) const;
+  // The triangles closing a level's holes (caps()), with the mesh's own
+  // vertices; nothing when it has none.
+  void draw_caps(std::size_t lod = 0) const;
 
   // The submeshes of a level of detail (0 = full detail).
   const std::vector<scene::Submesh>& submeshes(std::size_t lod = 0) const { return levels_[lod].submeshes; }
@@ -64,6 +67,8 @@ class GpuModel {
     std::size_t index_count = 0;
     scene::Enclosure enclosure = scene::Enclosure::Open;
     std::vector<glm::vec3> caps;
+    std::size_t first_cap_index = 0;  // the caps' range of the index buffer
+    std::size_t cap_index_count = 0;
   };
   std::vector<Level> levels_;
   std::vector<double> lod_errors_;

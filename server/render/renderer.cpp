@@ -83,6 +83,50 @@ void cull(HiddenFaces faces) {
   glCullFace(faces == HiddenFaces::Back ? GL_BACK : GL_FRONT);
 }
 
+HiddenFaces other_side(HiddenFaces faces) {
+  if (faces == HiddenFaces::None) return HiddenFaces::None;
+  return faces == HiddenFaces::Back ? HiddenFaces::Front : HiddenFaces::Back;
+}
+
+// Which faces of an object a pass skips.
+struct FaceSkip {
+  HiddenFaces hidden = HiddenFaces::None;
+  // The object has holes whose caps may face the camera: the skipped side
+  // is drawn after all wherever one of them shows (redraw_where_caps_show).
+  bool unless_caps_show = false;
+};
+
+// After an object was drawn with `hidden` skipped: draws its caps with the
+// pass's program and tests but writing nothing, counting the samples that
+// pass, and draws the skipped side (`draw`) only if any did. A skipped face
+// that would have shown is met by its ray after the ray came in through a
+// hole (a closed surface is entered through a face turned toward the
+// viewer), so past a cap turned toward the camera and nearer than that
+// face, which passes every test the face would. `query` keeps the answer.
+template <typename Draw>
+void redraw_where_caps_show(const GpuModel& model, std::size_t lod, HiddenFaces hidden, gpu::Query& query,
+                            Draw&& draw) {
+  GLboolean depth_writes = GL_TRUE;
+  GLint stencil_writes = 0;
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_writes);
+  glGetIntegerv(GL_STENCIL_WRITEMASK, &stencil_writes);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  glStencilMask(0);
+  query = gpu::Query::create(GL_ANY_SAMPLES_PASSED);
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, query.id());
+  model.draw_caps(lod);  // their hidden side skipped like the mesh's: they are wound like it
+  glEndQuery(GL_ANY_SAMPLES_PASSED);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(depth_writes);
+  glStencilMask(static_cast<GLuint>(stencil_writes));
+  glBeginConditionalRender(query.id(), GL_QUERY_WAIT);
+  cull(other_side(hidden));
+  draw();
+  glEndConditionalRender();
+  cull(hidden);
+}
+
 }  // namespace
 
 gpu::NormalDepthTarget& Renderer::normal_depth_for(int width, int height) {
@@ -158,13 +202,20 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   // Every pass draws an object at the same level, so the hull, the shadow
   // and the edges all follow the surface that was shaded.
   auto lod_of = [&](std::size_t i) { return out.lods[i].level; };
-  // The faces of object i that cannot show through `view_projection`.
-  auto culling_for = [&](std::size_t i, const glm::dmat4& view_projection, const Viewer& viewer) {
-    if (!face_culling_) return HiddenFaces::None;
+  // The faces of object i that cannot show through `view_projection`. An
+  // object with holes whose caps do not all turn away from `viewer` skips
+  // them too in a pass that can check its caps (`caps_checked`), else none.
+  auto culling_for = [&](std::size_t i, const glm::dmat4& view_projection, const Viewer& viewer,
+                         bool caps_checked) {
+    FaceSkip skip;
+    if (!face_culling_) return skip;
     const GpuModel& model = objects[i].model;
     const scene::Enclosure enclosure = model.enclosure(lod_of(i));
-    if (!caps_face_away(model.caps(lod_of(i)), enclosure, frame.matrices[i], viewer)) return HiddenFaces::None;
-    return hidden_faces(enclosure, frame.matrices[i], view_projection, model.bounds());
+    const bool caps_away = caps_face_away(model.caps(lod_of(i)), enclosure, frame.matrices[i], viewer);
+    if (!caps_away && !caps_checked) return skip;
+    skip.hidden = hidden_faces(enclosure, frame.matrices[i], view_projection, model.bounds());
+    skip.unless_caps_show = !caps_away && skip.hidden != HiddenFaces::None;
+    return skip;
   };
   if (!gpu_timers_) {
     const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -200,7 +251,9 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     for (std::size_t i = 0; i < objects.size(); ++i) {
       // The nearest surface seen from the light is the same with the far
       // side skipped, so the map is too.
-      cull(culling_for(i, shadow->view_projection, Viewer{glm::dvec3(0.0), glm::normalize(caster.direction), true}));
+      cull(culling_for(i, shadow->view_projection, Viewer{glm::dvec3(0.0), glm::normalize(caster.direction), true},
+                       false)
+               .hidden);
       program.set("u_model", model_matrix[i]);
       objects[i].model.bind();
       objects[i].model.draw_all(lod_of(i));
@@ -223,10 +276,16 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   const CameraSetup camera = fit_camera(params.camera, bounds,
                                         static_cast<double>(params.width) / params.height);
   const glm::mat4 view_projection = camera.view_projection();
+  std::vector<FaceSkip> skip(objects.size());  // of the main pass and the edge prepass
+  // The main pass's cap checks, read once the image is back (when their
+  // answers are ready anyway) to report which objects drew both sides.
+  std::vector<gpu::Query> main_cap_checks(objects.size());
   for (std::size_t i = 0; i < objects.size(); ++i) {
-    out.lods[i].culled = culling_for(i, camera.projection * camera.view,
-                                     Viewer{camera.eye, glm::normalize(camera.target - camera.eye),
-                                            params.camera.projection == Projection::Orthographic});
+    skip[i] = culling_for(i, camera.projection * camera.view,
+                          Viewer{camera.eye, glm::normalize(camera.target - camera.eye),
+                                 params.camera.projection == Projection::Orthographic},
+                          true);
+    out.lods[i].culled = skip[i].hidden;
   }
 
   glEnable(GL_FRAMEBUFFER_SRGB);
@@ -314,10 +373,8 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
       glBindTextureUnit(1, shadow_map_->texture());
       program.set("u_shadow_map", 1);
     };
-    for (std::size_t i = 0; i < objects.size(); ++i) {
+    auto draw_object = [&](std::size_t i) {
       const GpuModel& model = objects[i].model;
-      model.bind();
-      cull(out.lods[i].culled);
       for (const scene::Submesh& sub : model.submeshes(lod_of(i))) {
         const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
         std::vector<std::string> defines = plan.main_defines;
@@ -345,6 +402,15 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
         }
         if (shadow) set_shadow_uniforms(program);
         model.draw(sub);
+      }
+    };
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      objects[i].model.bind();
+      cull(skip[i].hidden);
+      draw_object(i);
+      if (skip[i].unless_caps_show) {
+        redraw_where_caps_show(objects[i].model, lod_of(i), skip[i].hidden, main_cap_checks[i],
+                               [&] { draw_object(i); });
       }
     }
     glDisable(GL_CULL_FACE);
@@ -384,14 +450,11 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   auto set_outline_colour_and_draw = [&](gpu::Program& program, auto faces) {
     program.set("u_outline_color", params.outline.color);
     program.set("u_darken", params.outline.darken);
-    for (std::size_t i = 0; i < objects.size(); ++i) {
+    auto draw_object = [&](std::size_t i) {
       const GpuModel& model = objects[i].model;
-      cull(faces(i));
-      set_object(program, i);
-      model.bind();
       if (plan.outline_defines.empty()) {
         model.draw_all(lod_of(i));
-        continue;
+        return;
       }
       // The colour comes from each material, so draw material by material.
       for (const scene::Submesh& sub : model.submeshes(lod_of(i))) {
@@ -404,6 +467,17 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
           program.set("u_diffuse_map", 0);
         }
         model.draw(sub);
+      }
+    };
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      const FaceSkip object_skip = faces(i);
+      cull(object_skip.hidden);
+      set_object(program, i);
+      objects[i].model.bind();
+      draw_object(i);
+      if (object_skip.unless_caps_show) {
+        gpu::Query check;
+        redraw_where_caps_show(objects[i].model, lod_of(i), object_skip.hidden, check, [&] { draw_object(i); });
       }
     }
     glDisable(GL_CULL_FACE);
@@ -445,10 +519,14 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     const glm::dmat4 clip = camera.projection * camera.view;
     set_outline_colour_and_draw(program, [&](std::size_t i) {
       const GpuModel& model = objects[i].model;
-      // The hull's own holes move with the offset and may turn toward the
-      // camera where the model's do not: open meshes draw the whole hull.
-      if (out.lods[i].culled == HiddenFaces::None || !model.caps(lod_of(i)).empty()) return HiddenFaces::None;
-      return hidden_faces(model.enclosure(lod_of(i)), frame.matrices[i], clip, model.bounds(), reach);
+      FaceSkip hull;
+      if (skip[i].hidden == HiddenFaces::None) return hull;
+      hull.hidden = hidden_faces(model.enclosure(lod_of(i)), frame.matrices[i], clip, model.bounds(), reach);
+      // The hull's holes move with its offset and may turn toward the
+      // camera where the model's do not: its own caps, offset like it
+      // (they share its vertices), are checked.
+      hull.unless_caps_show = hull.hidden != HiddenFaces::None && !model.caps(lod_of(i)).empty();
+      return hull;
     });
     check_gl("hull outline pass");
     end_pass(Pass::HullOutline);
@@ -467,7 +545,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     // Half of each line lies inside the silhouette, under the front faces:
     // lines twice as wide leave `width` pixels showing.
     program.set("u_line_px", 2.0f * params.outline.width * px);
-    set_outline_colour_and_draw(program, [](std::size_t) { return HiddenFaces::None; });
+    set_outline_colour_and_draw(program, [](std::size_t) { return FaceSkip{}; });
     check_gl("wireframe pass");
     end_pass(Pass::Wireframe);
   }
@@ -485,10 +563,15 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     prepass.set("u_view_dir", glm::vec3(glm::normalize(camera.target - camera.eye)));
     prepass.set("u_orthographic", params.camera.projection == Projection::Orthographic ? 1 : 0);
     for (std::size_t i = 0; i < objects.size(); ++i) {
-      cull(out.lods[i].culled);
+      cull(skip[i].hidden);
       set_object(prepass, i);
       objects[i].model.bind();
       objects[i].model.draw_all(lod_of(i));
+      if (skip[i].unless_caps_show) {
+        gpu::Query check;
+        redraw_where_caps_show(objects[i].model, lod_of(i), skip[i].hidden, check,
+                               [&] { objects[i].model.draw_all(lod_of(i)); });
+      }
     }
     glDisable(GL_CULL_FACE);
     check_gl("edge prepass");
@@ -516,6 +599,12 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   // The multisample resolve is a blit inside read_back(); its time is part
   // of the readback figure, since the readback waits for it anyway.
   out.image = target.read_back();
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (!main_cap_checks[i]) continue;
+    GLuint shown = 0;
+    glGetQueryObjectuiv(main_cap_checks[i].id(), GL_QUERY_RESULT, &shown);
+    if (shown) out.lods[i].culled = HiddenFaces::None;
+  }
   check_gl("readback");
   timer.mark(Pass::Readback);
   if (plan.has(Pass::Downsample)) {

@@ -30,7 +30,8 @@ struct LodUse {
   std::size_t triangles = 0;  // drawn per pass
   double error_px = 0;        // the level's error projected to output pixels
   // The side of the faces the main pass skipped (None: both drawn): a
-  // closed level seen from outside (face_culling.h).
+  // closed level seen from outside (face_culling.h), or an open one none
+  // of whose holes showed (their caps were checked and hidden).
   HiddenFaces culled = HiddenFaces::None;
 };
 

@@ -80,18 +80,20 @@ bool trace_rims(const std::unordered_map<std::uint64_t, int>& balance, std::vect
 constexpr std::size_t kLongestRim = 256;
 constexpr double kCappingBudget = 4e7;  // Σ n³ over the rims, about 0.1 s
 
-// The triangulation of least total area spanning the loop (dynamic
+// The triangulation of least total area spanning the loop of points (dynamic
 // programming over its vertices, O(n³)), its triangles wound like the loop.
 // A fan from the middle would do for round holes, but scanned models (the
 // bunny's base) have ragged, saddle-shaped rims whose fan or ear-clipped
 // triangles fold over each other and face every way; the least-area
 // surface is the soap film over the rim, and stays as flat as the rim
 // lets it. False for rims too long to be worth it.
-bool triangulate_hole(const std::vector<glm::dvec3>& loop, std::vector<std::array<glm::dvec3, 3>>& out) {
+bool triangulate_hole(const std::vector<std::uint32_t>& loop, const std::vector<glm::dvec3>& point,
+                      std::vector<std::array<std::uint32_t, 3>>& out) {
   const std::size_t n = loop.size();
   if (n < 3 || n > kLongestRim) return false;
   auto area = [&](std::size_t i, std::size_t k, std::size_t j) {
-    return glm::length(glm::cross(loop[k] - loop[i], loop[j] - loop[i]));
+    const glm::dvec3& a = point[loop[i]];
+    return glm::length(glm::cross(point[loop[k]] - a, point[loop[j]] - a));
   };
   // best[i][j]: least area closing the sub-loop i..j; split[i][j]: its apex.
   std::vector<double> best(n * n, 0.0);
@@ -140,8 +142,10 @@ struct Part {
 }  // namespace
 
 Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<const std::uint32_t> position_group,
-                             std::span<const std::uint32_t> indices, std::vector<glm::vec3>* caps) {
+                             std::span<const std::uint32_t> indices, std::vector<glm::vec3>* caps,
+                             std::vector<std::uint32_t>* cap_indices) {
   if (caps) caps->clear();
+  if (cap_indices) cap_indices->clear();
   if (indices.size() < 3) return Enclosure::Open;
   std::vector<std::vector<std::uint32_t>> rims;
   if (!trace_rims(edge_balance(position_group, indices), rims)) return Enclosure::Open;
@@ -153,7 +157,11 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
   const std::size_t groups =
       position_group.empty() ? 0 : *std::max_element(position_group.begin(), position_group.end()) + 1u;
   std::vector<glm::dvec3> point(groups);
-  for (std::size_t v = 0; v < positions.size(); ++v) point[position_group[v]] = glm::dvec3(positions[v]);
+  std::vector<std::uint32_t> vertex_of(groups);  // one vertex at each point: the caps draw with the mesh's
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    point[position_group[v]] = glm::dvec3(positions[v]);
+    vertex_of[position_group[v]] = static_cast<std::uint32_t>(v);
+  }
   Components components(groups);
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     components.join(position_group[indices[t]], position_group[indices[t + 1]]);
@@ -168,17 +176,18 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
   // Each hole closed by a triangulation of its rim, run against the rim so
   // the cap continues the mesh's winding.
   for (const std::vector<std::uint32_t>& rim : rims) {
-    std::vector<glm::dvec3> loop;
-    for (auto g = rim.rbegin(); g != rim.rend(); ++g) loop.push_back(point[*g]);
-    std::vector<std::array<glm::dvec3, 3>> triangles;
-    if (!triangulate_hole(loop, triangles)) {
+    std::vector<std::uint32_t> loop(rim.rbegin(), rim.rend());
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    if (!triangulate_hole(loop, point, triangles)) {
       caps->clear();
+      if (cap_indices) cap_indices->clear();
       return Enclosure::Open;
     }
     Part& part = parts[components.root(rim.front())];
     for (const auto& [a, b, c] : triangles) {
-      part.add(a, b, c);
-      caps->insert(caps->end(), {glm::vec3(a), glm::vec3(b), glm::vec3(c)});
+      part.add(point[a], point[b], point[c]);
+      caps->insert(caps->end(), {glm::vec3(point[a]), glm::vec3(point[b]), glm::vec3(point[c])});
+      if (cap_indices) cap_indices->insert(cap_indices->end(), {vertex_of[a], vertex_of[b], vertex_of[c]});
     }
   }
   int outward = 0;
@@ -195,13 +204,16 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
   if (inward == 0 && outward > 0) return Enclosure::Outward;
   if (outward == 0 && inward > 0) return Enclosure::Inward;
   if (caps) caps->clear();
+  if (cap_indices) cap_indices->clear();
   return Enclosure::Open;
 }
 
 void classify_enclosures(Mesh& mesh) {
   const std::vector<std::uint32_t> group = group_by_position(mesh.positions);
-  mesh.enclosure = classify_enclosure(mesh.positions, group, mesh.indices, &mesh.caps);
-  for (MeshLod& lod : mesh.lods) lod.enclosure = classify_enclosure(mesh.positions, group, lod.indices, &lod.caps);
+  mesh.enclosure = classify_enclosure(mesh.positions, group, mesh.indices, &mesh.caps, &mesh.cap_indices);
+  for (MeshLod& lod : mesh.lods) {
+    lod.enclosure = classify_enclosure(mesh.positions, group, lod.indices, &lod.caps, &lod.cap_indices);
+  }
 }
 
 }  // namespace toond::scene

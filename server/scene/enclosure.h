@@ -13,13 +13,16 @@ namespace toond::scene {
 
 // See Enclosure in scene/model.h. `position_group` labels vertices at the
 // same position with one id (see group_by_position in mesh_processing.h).
-// With `caps`, holes are closed by fans from the middle of each rim, whose
-// triangles land there (see Mesh::caps); without, any hole makes it Open.
+// With `caps`, holes are closed by the least-area triangulation of each
+// rim, whose triangles land there (see Mesh::caps) and, with `cap_indices`,
+// the same triangles as indices of `positions`; without `caps`, any hole
+// makes it Open.
 Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<const std::uint32_t> position_group,
-                             std::span<const std::uint32_t> indices, std::vector<glm::vec3>* caps = nullptr);
+                             std::span<const std::uint32_t> indices, std::vector<glm::vec3>* caps = nullptr,
+                             std::vector<std::uint32_t>* cap_indices = nullptr);
 
-// Sets Mesh::enclosure and Mesh::caps for the full mesh and every level of
-// detail.
+// Sets Mesh::enclosure, Mesh::caps and Mesh::cap_indices for the full mesh
+// and every level of detail.
 void classify_enclosures(Mesh& mesh);
 
 }  // namespace toond::scene

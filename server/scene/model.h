@@ -86,6 +86,7 @@ struct MeshLod {
   double error = 0;                    // how far the surface may stray from the full mesh, mesh units
   Enclosure enclosure = Enclosure::Open;
   std::vector<glm::vec3> caps;  // see Mesh::caps
+  std::vector<std::uint32_t> cap_indices;  // see Mesh::cap_indices
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
@@ -121,6 +122,10 @@ struct Mesh {
   // sees the inner faces: they can only be skipped while every cap is
   // turned away from the camera.
   std::vector<glm::vec3> caps;
+  // The same triangles as indices of `positions` (a vertex at each rim
+  // point), so a render can draw them with the mesh's own vertices: through
+  // the outline hull's offset too.
+  std::vector<std::uint32_t> cap_indices;
   glm::dvec3 origin{0.0};  // model-space point that positions are relative to
   Bounds bounds;           // of `positions` (i.e. relative to origin)
 
