@@ -113,6 +113,26 @@ scene::Model import_obj(const std::string& obj) {
   return scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", obj}}));
 }
 
+// The generated sphere less the triangles whose middle `cut` picks: an
+// open mesh with one hole, its enclosure and caps found again.
+template <typename Cut>
+scene::Model holed_sphere(Cut cut) {
+  scene::Model sphere = import_obj(test::sphere_obj(48, 24));
+  scene::Mesh& mesh = sphere.mesh;
+  std::vector<std::uint32_t> kept;
+  for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+    const glm::vec3 middle = (mesh.positions[mesh.indices[t]] + mesh.positions[mesh.indices[t + 1]] +
+                              mesh.positions[mesh.indices[t + 2]]) / 3.0f;
+    if (!cut(middle)) kept.insert(kept.end(), &mesh.indices[t], &mesh.indices[t] + 3);
+  }
+  EXPECT_LT(kept.size(), mesh.indices.size());
+  mesh.indices = kept;
+  mesh.submeshes = {{0, static_cast<std::uint32_t>(kept.size()), 0}};
+  mesh.lods.clear();
+  scene::classify_enclosures(mesh);
+  return sphere;
+}
+
 // Culling is only worth having if it is invisible: the same bytes, with
 // the hull outline (thin and wide, over a floor too), MSAA and shadows.
 TEST(FaceCulling, AnOutlineHullCutByTheNearPlaneIsNotCulled) {
@@ -201,21 +221,9 @@ TEST_F(FaceCullingRender, ScenesOfSeveralObjectsKeepEveryPixel) {
 // (five holes in its base). From above the holes face away and the back
 // faces are skipped; from below one sees inside, and nothing is.
 TEST_F(FaceCullingRender, OpenMeshesSkipOnlyWhileTheirHolesFaceAway) {
-  scene::Model sphere = import_obj(test::sphere_obj(48, 24));
-  scene::Mesh& mesh = sphere.mesh;
-  std::vector<std::uint32_t> kept;
-  for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
-    const bool bottom = mesh.positions[mesh.indices[t]].y < -0.8f && mesh.positions[mesh.indices[t + 1]].y < -0.8f &&
-                        mesh.positions[mesh.indices[t + 2]].y < -0.8f;
-    if (!bottom) kept.insert(kept.end(), &mesh.indices[t], &mesh.indices[t] + 3);
-  }
-  ASSERT_LT(kept.size(), mesh.indices.size());
-  mesh.indices = kept;
-  mesh.submeshes = {{0, static_cast<std::uint32_t>(kept.size()), 0}};
-  mesh.lods.clear();
-  scene::classify_enclosures(mesh);
-  ASSERT_EQ(mesh.enclosure, Enclosure::Outward);
-  ASSERT_FALSE(mesh.caps.empty());
+  const scene::Model sphere = holed_sphere([](const glm::vec3& c) { return c.y < -0.8f; });
+  ASSERT_EQ(sphere.mesh.enclosure, Enclosure::Outward);
+  ASSERT_FALSE(sphere.mesh.caps.empty());
   // Each model with a view from above that sees none of its holes' caps
   // from outside (the bunny's rims are ragged saddles: only from steeper
   // above does every triangle of their least-area caps turn away).
@@ -252,21 +260,9 @@ TEST_F(FaceCullingRender, OpenMeshesSkipOnlyWhileTheirHolesFaceAway) {
 // its holes, and every image is the one drawn with both sides, with the
 // hull and the edge outline too (whose prepass checks the caps again).
 TEST_F(FaceCullingRender, OpenMeshesDrawTheirInsideOnlyWhereAHoleShows) {
-  scene::Model sphere = import_obj(test::sphere_obj(48, 24));
-  scene::Mesh& mesh = sphere.mesh;
-  std::vector<std::uint32_t> kept;
-  for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
-    // A hole in the side, where level views see it from one side only.
-    const glm::vec3 c = (mesh.positions[mesh.indices[t]] + mesh.positions[mesh.indices[t + 1]] +
-                         mesh.positions[mesh.indices[t + 2]]) / 3.0f;
-    if (c.x < 0.8f) kept.insert(kept.end(), &mesh.indices[t], &mesh.indices[t] + 3);
-  }
-  ASSERT_LT(kept.size(), mesh.indices.size());
-  mesh.indices = kept;
-  mesh.submeshes = {{0, static_cast<std::uint32_t>(kept.size()), 0}};
-  mesh.lods.clear();
-  scene::classify_enclosures(mesh);
-  ASSERT_EQ(mesh.enclosure, Enclosure::Outward);
+  // A hole in the side, where level views see it from one side only.
+  const scene::Model sphere = holed_sphere([](const glm::vec3& c) { return c.x > 0.8f; });
+  ASSERT_EQ(sphere.mesh.enclosure, Enclosure::Outward);
   std::vector<const scene::Model*> models = {&sphere};
   scene::Model bunny;
   if (test::have_shared_models()) {
@@ -309,6 +305,26 @@ TEST_F(FaceCullingRender, OpenMeshesDrawTheirInsideOnlyWhereAHoleShows) {
   if (test::have_shared_models()) {
     EXPECT_GT(culled_level_bunny, 0);
   }
+}
+
+// Several open objects, one of them mirrored (it skips its other side and
+// its caps are checked on that side too), one looking into the other's hole.
+TEST_F(FaceCullingRender, OpenObjectsInOneSceneKeepEveryPixel) {
+  const scene::Model sphere = holed_sphere([](const glm::vec3& c) { return c.x > 0.8f; });
+  const glm::dmat4 mirrored = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(-2.5, 0.0, 0.0)), glm::dvec3(-1, 1, 1));
+  const glm::dmat4 beside = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -1.0));
+  int mirrored_culled = 0;
+  int mirrored_drawn_whole = 0;
+  for (int yaw : {0, 90, 180, 270}) {
+    const nlohmann::json request = {{"width", 128}, {"height", 128}, {"outline", {{"width", 4}}},
+                                    {"floor", {{"enabled", true}}}, {"camera", {{"yaw", yaw}, {"pitch", 10}}}};
+    const Pair pair = render_both_ways({{&sphere, mirrored}, {&sphere, beside}}, params(request));
+    EXPECT_TRUE(pair.culled.rgba == pair.both.rgba) << request;
+    mirrored_culled += pair.culled_side == HiddenFaces::Front;
+    mirrored_drawn_whole += pair.culled_side == HiddenFaces::None;
+  }
+  EXPECT_GT(mirrored_culled, 0);
+  EXPECT_GT(mirrored_drawn_whole, 0);
 }
 
 TEST_F(FaceCullingRender, ACameraInsideTheModelStillSeesItsInside) {
