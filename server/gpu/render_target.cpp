@@ -1,5 +1,6 @@
 #include "gpu/render_target.h"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -29,12 +30,19 @@ Renderbuffer make_storage(GLenum format, int width, int height, int samples) {
 }  // namespace
 
 RenderTarget::RenderTarget(int width, int height, int samples)
-    : width_(width), height_(height), samples_(samples) {
+    : width_(width), height_(height), requested_samples_(samples), samples_(samples) {
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   if (samples_ > max_samples) samples_ = max_samples;
 
   color_ = make_storage(GL_SRGB8_ALPHA8, width, height, samples_);
+  if (samples_ > 1) {
+    // A driver may give more samples than asked for (llvmpipe has no 2×
+    // mode and gives 4): report, and match, what it gave.
+    GLint given = samples_;
+    glGetNamedRenderbufferParameteriv(color_.id(), GL_RENDERBUFFER_SAMPLES, &given);
+    samples_ = std::max(samples_, static_cast<int>(given));
+  }
   depth_stencil_ = make_storage(GL_DEPTH24_STENCIL8, width, height, samples_);
   draw_fbo_ = Framebuffer::create();
   glNamedFramebufferRenderbuffer(draw_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());

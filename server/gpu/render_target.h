@@ -14,9 +14,12 @@ class RenderTarget {
 
   int width() const { return width_; }
   int height() const { return height_; }
+  // The samples per pixel the driver gave: the request clamped to its
+  // GL_MAX_SAMPLES, or rounded up to a count it has.
   int samples() const { return samples_; }
+  // Whether this target is what a request for these would get.
   bool matches(int width, int height, int samples) const {
-    return width == width_ && height == height_ && samples == samples_;
+    return width == width_ && height == height_ && samples == requested_samples_;
   }
 
   // Binds the drawing framebuffer and sets the viewport.
@@ -28,6 +31,7 @@ class RenderTarget {
  private:
   int width_;
   int height_;
+  int requested_samples_;
   int samples_;
   Renderbuffer color_;
   Renderbuffer depth_stencil_;
