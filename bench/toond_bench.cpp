@@ -41,6 +41,7 @@ Options:
   --repeats N      timed repeats per point (default 5; quick 2)
   --out DIR        where results go (default bench/results)
   --models DIR     the shared models (default: ../shared/models beside the checkout)
+  --render-threads N  the daemon's --render-threads (default: its own default)
   --toond PATH     ignored; the toond built with this driver is used
 )";
 
@@ -50,6 +51,7 @@ struct Args {
   int repeats = 0;
   fs::path out = "bench/results";
   fs::path models = TOOND_SHARED_MODELS;
+  std::string render_threads;  // empty: the daemon's default
   std::set<std::string> parts;
 };
 
@@ -66,6 +68,7 @@ Args parse(int argc, char** argv) {
     else if (arg == "--repeats") a.repeats = std::stoi(value());
     else if (arg == "--out") a.out = value();
     else if (arg == "--models") a.models = value();
+    else if (arg == "--render-threads") a.render_threads = value();
     else if (arg == "--toond") value();
     else if (arg == "-h" || arg == "--help") {
       std::cout << kUsage;
@@ -92,11 +95,13 @@ int main(int argc, char** argv) {
     fs::create_directories(args.out);
     // Every point is rendered several times with identical parameters: the
     // result cache would answer all but the first from memory.
-    toond::test::Daemon daemon({}, {"--result-cache-mb", "0"});
+    std::vector<std::string> daemon_args = {"--result-cache-mb", "0"};
+    if (!args.render_threads.empty()) daemon_args.insert(daemon_args.end(), {"--render-threads", args.render_threads});
+    toond::test::Daemon daemon({}, daemon_args);
     httplib::Client client(daemon.url());
     client.set_read_timeout(300);
     client.set_write_timeout(300);
-    json summary = {{"quick", args.quick}, {"repeats", args.repeats}};
+    json summary = {{"quick", args.quick}, {"repeats", args.repeats}, {"render_threads", args.render_threads}};
     if (auto health = client.Get("/healthz"); health && health->status == 200) {
       summary["gl"] = json::parse(health->body)["gl"];
     }

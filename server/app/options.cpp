@@ -35,6 +35,8 @@ Usage: toond [options]
                          hardware device, else Mesa's surfaceless platform
   --list-gpus            print the EGL devices and exit
   --queue N              render jobs allowed to wait (default 32); beyond: 503
+  --render-threads N     render threads, each with its own GL context and its
+                         own GPU copies of the models (default 1)
   --max-upload-bytes N   largest request body accepted (default 268435456)
   --threads N            HTTP worker threads (default 8)
   --result-cache-mb N    memory for finished PNGs answering identical requests
@@ -98,6 +100,8 @@ Options parse_options(const std::vector<std::string>& args) {
       o.gpu = static_cast<int>(parse_int(a, value(), 0, 1024));
     } else if (a == "--queue") {
       o.queue = static_cast<std::size_t>(parse_int(a, value(), 1, 100000));
+    } else if (a == "--render-threads") {
+      o.render_threads = static_cast<std::size_t>(parse_int(a, value(), 1, 64));
     } else if (a == "--max-upload-bytes") {
       o.max_upload_bytes = static_cast<std::size_t>(parse_int(a, value(), 1024, 1LL << 40));
     } else if (a == "--gpu-cache-mb") {

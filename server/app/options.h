@@ -15,6 +15,7 @@ struct Options {
   std::string data_dir = "toond-data";
   std::optional<int> gpu;
   std::size_t queue = 32;
+  std::size_t render_threads = 1;  // each with its own GL context
   std::size_t max_upload_bytes = 256u << 20;
   int threads = 8;
   // Finished PNGs kept for identical requests; 0 turns the cache off.

@@ -1,5 +1,6 @@
 #include "render/render_service.h"
 
+#include <algorithm>
 #include <iostream>
 
 #include "gpu/gpu_error.h"
@@ -25,47 +26,56 @@ std::unique_ptr<gpu::ShaderSources> shader_sources(const std::string& shader_dir
 }  // namespace
 
 RenderService::RenderService(const Options& options) : options_(options) {
-  std::promise<void> started;
-  std::future<void> ready = started.get_future();
-  thread_ = std::thread(&RenderService::run, this, std::move(started));
-  try {
-    ready.get();
-  } catch (...) {
-    thread_.join();
-    throw;
+  const std::size_t workers = std::max<std::size_t>(1, options_.render_threads);
+  forgets_.resize(workers);
+  cache_use_.resize(workers);
+  // One at a time: the first context's description is the service's, and a
+  // failure stops the ones already running.
+  for (std::size_t worker = 0; worker < workers; ++worker) {
+    std::promise<void> started;
+    std::future<void> ready = started.get_future();
+    threads_.emplace_back(&RenderService::run, this, worker, std::move(started));
+    try {
+      ready.get();
+    } catch (...) {
+      stop();
+      throw;
+    }
   }
 }
 
-RenderService::~RenderService() {
+RenderService::~RenderService() { stop(); }
+
+void RenderService::stop() {
   {
     std::lock_guard lock(mutex_);
     stopping_ = true;
   }
   wake_.notify_all();
-  if (thread_.joinable()) thread_.join();
-}
-
-void RenderService::push(Task task, bool bounded) {
-  {
-    std::lock_guard lock(mutex_);
-    if (bounded && queue_.size() >= options_.queue_capacity) throw QueueFull();
-    queue_.push_back(std::move(task));
+  for (std::thread& thread : threads_) {
+    if (thread.joinable()) thread.join();
   }
-  wake_.notify_one();
 }
 
 std::future<RenderOutput> RenderService::submit(RenderJob job) {
   Task task;
   task.job = std::move(job);
   auto future = task.promise.get_future();
-  push(std::move(task), true);
+  {
+    std::lock_guard lock(mutex_);
+    if (queue_.size() >= options_.queue_capacity) throw QueueFull();
+    queue_.push_back(std::move(task));
+  }
+  wake_.notify_one();
   return future;
 }
 
 void RenderService::forget(const std::string& model_key) {
-  Task task;
-  task.forget_key = model_key;
-  push(std::move(task), false);
+  {
+    std::lock_guard lock(mutex_);
+    for (std::vector<std::string>& keys : forgets_) keys.push_back(model_key);
+  }
+  wake_.notify_all();
 }
 
 std::size_t RenderService::queue_depth() const {
@@ -73,23 +83,39 @@ std::size_t RenderService::queue_depth() const {
   return queue_.size();
 }
 
-void RenderService::run(std::promise<void> started) {
+std::size_t RenderService::gpu_models_loaded() const {
+  std::lock_guard lock(mutex_);
+  std::size_t n = 0;
+  for (const CacheUse& use : cache_use_) n += use.models;
+  return n;
+}
+
+std::size_t RenderService::gpu_model_bytes() const {
+  std::lock_guard lock(mutex_);
+  std::size_t n = 0;
+  for (const CacheUse& use : cache_use_) n += use.bytes;
+  return n;
+}
+
+void RenderService::run(std::size_t worker, std::promise<void> started) {
   std::optional<gpu::EglContext> context;
   std::unique_ptr<gpu::ShaderSources> sources;
   try {
     sources = shader_sources(options_.shader_dir);
     context.emplace(gpu::EglContext::Options{options_.gpu_index});
-    gl_info_ = context->info();
+    if (worker == 0) gl_info_ = context->info();
   } catch (...) {
     started.set_exception(std::current_exception());
     return;
   }
   std::promise<void>* not_yet_started = &started;
-  while (serve(std::move(sources), not_yet_started)) {
+  while (serve(worker, std::move(sources), not_yet_started)) {
     not_yet_started = nullptr;
     ++gpu_resets_;
-    gpu_models_loaded_ = 0;
-    gpu_model_bytes_ = 0;
+    {
+      std::lock_guard lock(mutex_);
+      cache_use_[worker] = {};
+    }
     std::cerr << "toond: the GL context was lost; making a new one (models are uploaded again as they are used)\n";
     // The lost context's objects went with it: the caches were dropped by
     // serve(); now the context itself.
@@ -110,8 +136,8 @@ void RenderService::run(std::promise<void> started) {
   }
 }
 
-bool RenderService::context_lost() {
-  if (options_.simulate_reset_every > 0 && renders_ % options_.simulate_reset_every == 0) return true;
+bool RenderService::context_lost(std::size_t renders) const {
+  if (options_.simulate_reset_every > 0 && renders % options_.simulate_reset_every == 0) return true;
   return glGetGraphicsResetStatus() != GL_NO_ERROR;
 }
 
@@ -121,38 +147,46 @@ void RenderService::fail_queued(const std::exception_ptr& error) {
     std::lock_guard lock(mutex_);
     failed.swap(queue_);
   }
-  for (Task& task : failed) {
-    if (task.job) task.promise.set_exception(error);
-  }
+  for (Task& task : failed) task.promise.set_exception(error);
 }
 
-bool RenderService::serve(std::unique_ptr<gpu::ShaderSources> sources, std::promise<void>* started) {
+bool RenderService::serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources> sources,
+                          std::promise<void>* started) {
   gpu::ProgramCache programs(std::move(sources));
   GpuModelCache models(options_.gpu_model_capacity, options_.gpu_model_bytes);
   Renderer renderer(programs);
+  std::size_t renders = 0;
+  auto record_cache_use = [&] {
+    std::lock_guard lock(mutex_);
+    cache_use_[worker] = {models.size(), models.bytes()};
+  };
   if (started) started->set_value();
 
   for (;;) {
     Task task;
+    std::vector<std::string> forgotten;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
-      // Work already accepted is finished before the thread stops.
-      if (queue_.empty()) return false;
-      task = std::move(queue_.front());
-      queue_.pop_front();
+      wake_.wait(lock, [&] { return stopping_ || !queue_.empty() || !forgets_[worker].empty(); });
+      // A model deleted before this task was taken is gone for it too.
+      forgotten.swap(forgets_[worker]);
+      if (forgotten.empty()) {
+        // Work already accepted is finished before the thread stops.
+        if (queue_.empty()) return false;
+        task = std::move(queue_.front());
+        queue_.pop_front();
+      }
     }
-    if (!task.job) {
-      models.forget(task.forget_key);
-      gpu_models_loaded_ = models.size();
-      gpu_model_bytes_ = models.bytes();
+    if (!forgotten.empty()) {
+      for (const std::string& key : forgotten) models.forget(key);
+      record_cache_use();
       continue;
     }
-    if (task.job->deadline && std::chrono::steady_clock::now() > *task.job->deadline) {
+    if (task.job.deadline && std::chrono::steady_clock::now() > *task.job.deadline) {
       task.promise.set_exception(std::make_exception_ptr(DeadlineExceeded()));
       continue;
     }
-    ++renders_;
+    ++renders;
     std::optional<RenderOutput> output;
     std::exception_ptr failure;
     try {
@@ -169,20 +203,19 @@ bool RenderService::serve(std::unique_ptr<gpu::ShaderSources> sources, std::prom
       // objects mid-way (see GpuModelCache::get's `pinned`).
       std::vector<RenderObject> objects;
       std::vector<std::string> pinned;
-      for (const JobObject& o : task.job->objects) pinned.push_back(o.model_key);
-      for (const JobObject& o : task.job->objects) {
+      for (const JobObject& o : task.job.objects) pinned.push_back(o.model_key);
+      for (const JobObject& o : task.job.objects) {
         objects.push_back({models.get(o.model_key, *o.model, pinned), o.transform});
       }
-      gpu_models_loaded_ = models.size();
-      gpu_model_bytes_ = models.bytes();
-      output = renderer.render(objects, task.job->params);
+      record_cache_use();
+      output = renderer.render(objects, task.job.params);
     } catch (...) {
       failure = std::current_exception();
     }
     // Whatever a lost context drew is not trusted, success or not: the
     // request fails with a retryable error and everything starts over on a
     // new context.
-    if (context_lost()) {
+    if (context_lost(renders)) {
       task.promise.set_exception(std::make_exception_ptr(
           gpu::GpuReset("the GL context was lost during this render; the daemon made a new one, retry")));
       return true;

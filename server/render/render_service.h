@@ -1,8 +1,9 @@
 #pragma once
-// The render thread. It alone owns the EGL context and every GL object; HTTP
-// handlers hand it jobs through a bounded queue and wait on a future. A full
-// queue refuses at once (the caller answers 503 + Retry-After) instead of
-// letting requests pile up behind a slow render.
+// The render threads. Each owns an EGL context and every GL object made on
+// it (its own programs and GPU copies of the models); HTTP handlers hand
+// jobs to whichever is free through one bounded queue and wait on a future.
+// A full queue refuses at once (the caller answers 503 + Retry-After)
+// instead of letting requests pile up behind a slow render.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -13,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "gpu/egl_context.h"
 #include "gpu/shader_source.h"
@@ -40,7 +42,8 @@ struct RenderJob {
 // Set on a job's future when its deadline passed before it was started.
 class DeadlineExceeded : public std::runtime_error {
  public:
-  DeadlineExceeded() : std::runtime_error("the render's deadline passed while it waited in the queue") {}
+  DeadlineExceeded()
+      : std::runtime_error("the render's deadline (--render-timeout) passed while it waited in the queue") {}
 };
 
 // Thrown by submit() when the queue is full.
@@ -54,6 +57,9 @@ class RenderService {
   struct Options {
     std::optional<int> gpu_index;
     std::size_t queue_capacity = 32;
+    // Render threads, each with its own context. On llvmpipe a second one
+    // records a frame's vertices while the first's frame is rasterized.
+    std::size_t render_threads = 1;
     std::size_t gpu_model_capacity = 8;  // models kept on the GPU
     std::size_t gpu_model_bytes = std::size_t{1} << 30;  // and their GPU memory at most
     // Empty: the shaders embedded at build time. Otherwise GLSL is read from
@@ -66,8 +72,8 @@ class RenderService {
     std::size_t simulate_reset_every = 0;
   };
 
-  // Starts the thread and waits until the context exists. Throws GpuError
-  // when no context can be made.
+  // Starts the threads and waits until their contexts exist. Throws
+  // GpuError when one cannot be made.
   explicit RenderService(const Options& options);
   ~RenderService();
   RenderService(const RenderService&) = delete;
@@ -76,42 +82,46 @@ class RenderService {
   const gpu::GlInfo& gl_info() const { return gl_info_; }
 
   std::future<RenderOutput> submit(RenderJob job);
-  // Drops the model's GPU copy (after DELETE /models/{id}).
+  // Drops the model's GPU copies (after DELETE /models/{id}).
   void forget(const std::string& model_key);
   std::size_t queue_depth() const;
-  // What the GPU model cache holds now (for GET /metrics).
-  std::size_t gpu_models_loaded() const { return gpu_models_loaded_.load(); }
-  std::size_t gpu_model_bytes() const { return gpu_model_bytes_.load(); }
+  // What the GPU model caches hold now, all threads together (for GET /metrics).
+  std::size_t gpu_models_loaded() const;
+  std::size_t gpu_model_bytes() const;
   // Lost GL contexts replaced by a new one since start.
   std::size_t gpu_resets() const { return gpu_resets_.load(); }
 
  private:
   struct Task {
-    std::optional<RenderJob> job;  // empty: a forget request
-    std::string forget_key;
+    RenderJob job;
     std::promise<RenderOutput> promise;
   };
-  void run(std::promise<void> started);
+  // What one render thread's GPU model cache holds.
+  struct CacheUse {
+    std::size_t models = 0;
+    std::size_t bytes = 0;
+  };
+  void run(std::size_t worker, std::promise<void> started);
   // Serves tasks on the current context until the service stops (false) or
   // the context is lost (true). Sets `started` once the caches exist.
-  bool serve(std::unique_ptr<gpu::ShaderSources> sources, std::promise<void>* started);
-  bool context_lost();
+  bool serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources> sources, std::promise<void>* started);
+  bool context_lost(std::size_t renders) const;
   // Fails every queued render with `error` (the context could not be made).
   void fail_queued(const std::exception_ptr& error);
-  void push(Task task, bool bounded);
+  void stop();  // lets every thread finish what was accepted, and joins them
 
   Options options_;
   gpu::GlInfo gl_info_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<Task> queue_;
+  // Per render thread, under mutex_: models to drop before its next task,
+  // and what its cache held after its last one.
+  std::vector<std::vector<std::string>> forgets_;
+  std::vector<CacheUse> cache_use_;
   bool stopping_ = false;
-  // Written by the render thread after each task, read by any thread.
-  std::atomic<std::size_t> gpu_models_loaded_{0};
-  std::atomic<std::size_t> gpu_model_bytes_{0};
   std::atomic<std::size_t> gpu_resets_{0};
-  std::size_t renders_ = 0;  // render thread only
-  std::thread thread_;
+  std::vector<std::thread> threads_;
 };
 
 }  // namespace toond::render

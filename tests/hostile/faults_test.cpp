@@ -58,6 +58,8 @@ TEST(Shutdown, SigtermWhenIdleExitsZero) {
   EXPECT_EQ(daemon.stop(), 0);
 }
 
+// Either the request stops waiting first or the render thread drops the
+// job whose deadline passed in the queue: both answers name the limit.
 TEST(RenderTimeout, PastItTheAnswerIs503WithRetryAfter) {
   Daemon daemon({}, {"--render-timeout", "0.001"});
   auto client = daemon.client();
