@@ -49,9 +49,16 @@ TEST(DaemonOptions, GpuCacheSizeInMegabytes) {
   EXPECT_NE(usage().find("--gpu-cache-mb"), std::string::npos);
 }
 
+TEST(DaemonOptions, RenderThreadsDefaultToOne) {
+  EXPECT_EQ(parse_options({}).render_threads, 1u);
+  EXPECT_EQ(parse_options({"--render-threads", "3"}).render_threads, 3u);
+  EXPECT_THROW(parse_options({"--render-threads", "0"}), std::invalid_argument);
+  EXPECT_THROW(parse_options({"--render-threads", "two"}), std::invalid_argument);
+}
+
 TEST(DaemonOptions, UsageMentionsEveryFlag) {
-  for (const char* flag : {"--listen", "--data-dir", "--gpu", "--list-gpus", "--queue", "--max-upload-bytes",
-                           "--threads", "--render-timeout"}) {
+  for (const char* flag : {"--listen", "--data-dir", "--gpu", "--list-gpus", "--queue", "--render-threads",
+                           "--max-upload-bytes", "--threads", "--render-timeout"}) {
     EXPECT_NE(usage().find(flag), std::string::npos) << flag;
   }
 }
