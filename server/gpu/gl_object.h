@@ -86,4 +86,21 @@ using Shader = GlObject<traits::Shader>;
 using ProgramObject = GlObject<traits::Program>;
 using Query = GlObject<traits::Query>;
 
+// A fence after every command issued so far (glFenceSync); GLsync is a
+// pointer, not a name, so it has its own owner.
+class Fence {
+ public:
+  Fence() : sync_(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0)) {}
+  ~Fence() {
+    if (sync_ != nullptr) glDeleteSync(sync_);
+  }
+  Fence(const Fence&) = delete;
+  Fence& operator=(const Fence&) = delete;
+
+  GLsync get() const { return sync_; }  // null when glFenceSync failed
+
+ private:
+  GLsync sync_;
+};
+
 }  // namespace toond::gpu

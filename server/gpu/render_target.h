@@ -4,6 +4,7 @@
 // framebuffer for readback. Blending and the MSAA resolve happen on linear
 // values because the colour format is sRGB and GL_FRAMEBUFFER_SRGB is on.
 #include "gpu/gl_object.h"
+#include "gpu/readback_buffer.h"
 #include "image/image.h"
 
 namespace toond::gpu {
@@ -25,7 +26,8 @@ class RenderTarget {
   // Binds the drawing framebuffer and sets the viewport.
   void bind_for_drawing() const;
 
-  // Resolves (when multisampled) and reads the pixels back, top row first.
+  // Resolves (when multisampled) and reads the pixels back, top row first,
+  // through a pixel buffer object (readback_buffer.h).
   image::Image read_back() const;
 
  private:
@@ -38,6 +40,7 @@ class RenderTarget {
   Framebuffer draw_fbo_;
   Renderbuffer resolved_color_;   // only with samples > 1
   Framebuffer resolve_fbo_;       // only with samples > 1
+  ReadbackBuffer readback_;
 };
 
 }  // namespace toond::gpu

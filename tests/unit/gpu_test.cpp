@@ -72,6 +72,37 @@ TEST_F(Gpu, ReadBackReturnsTopRowFirst) {
   EXPECT_EQ(img.pixel(0, 3)[0], 0);
 }
 
+// The readback goes through a persistently mapped pixel buffer: every frame
+// read must be that frame's (not the previous one's, still in the mapping),
+// rows must not be padded to four bytes at odd widths, and the resolve must
+// reach it for multisampled targets.
+TEST_F(Gpu, ReadBackSeesEachFrameAtOddSizes) {
+  for (int samples : {1, 4}) {
+    RenderTarget target(7, 5, samples);
+    for (int frame = 0; frame < 3; ++frame) {
+      target.bind_for_drawing();
+      glDisable(GL_FRAMEBUFFER_SRGB);
+      glEnable(GL_SCISSOR_TEST);
+      auto value = [&](int gl_row) { return frame * 60 + gl_row * 11 + 3; };
+      for (int y = 0; y < 5; ++y) {
+        glScissor(0, y, 7, 1);
+        glClearColor(static_cast<float>(value(y)) / 255.0f, 0.0f, static_cast<float>(6 - y) / 255.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+      }
+      glDisable(GL_SCISSOR_TEST);
+      const image::Image img = target.read_back();
+      ASSERT_EQ(img.rgba.size(), 7u * 5u * 4u);
+      for (int row = 0; row < 5; ++row) {
+        for (int x = 0; x < 7; ++x) {
+          ASSERT_EQ(img.pixel(x, row)[0], value(4 - row)) << samples << " samples, frame " << frame << " (" << x << "," << row << ")";
+          ASSERT_EQ(img.pixel(x, row)[2], 6 - (4 - row));
+          ASSERT_EQ(img.pixel(x, row)[3], 255);
+        }
+      }
+    }
+  }
+}
+
 TEST_F(Gpu, ShaderErrorNamesTheFileAndKeepsTheLog) {
   const ShaderSource vs{"ok.vert", "#version 430 core\nvoid main() { gl_Position = vec4(0); }\n"};
   const ShaderSource fs{"broken.frag", "#version 430 core\nout vec4 c;\nvoid main() { c = oops; }\n"};

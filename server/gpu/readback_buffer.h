@@ -1,0 +1,36 @@
+#pragma once
+// Reads a framebuffer's pixels back through a pixel buffer object that stays
+// mapped for its whole life (GL_MAP_PERSISTENT_BIT). glReadPixels packs into
+// the buffer, a fence says when the pack is done, and the rows are copied
+// out of the mapping bottom row last, so the image comes out top row first
+// in one pass over the pixels (reading into client memory took a second pass
+// to flip it). A GPU driver packs into a PBO by DMA without stalling the
+// command stream at glReadPixels; Mesa's llvmpipe packs on the CPU inside
+// glReadPixels either way.
+#include <cstddef>
+
+#include "gpu/gl_object.h"
+#include "image/image.h"
+
+namespace toond::gpu {
+
+class ReadbackBuffer {
+ public:
+  // Room for an RGBA8 image of width × height.
+  ReadbackBuffer(int width, int height);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // The colour attachment of `framebuffer` (single-sampled), top row first.
+  image::Image read(GLuint framebuffer) const;
+
+ private:
+  int width_;
+  int height_;
+  std::size_t bytes_;
+  Buffer buffer_;
+  const std::uint8_t* mapped_ = nullptr;  // valid while buffer_ lives
+};
+
+}  // namespace toond::gpu
