@@ -4,9 +4,10 @@
 // the buffer, a fence says when the pack is done, and the rows are copied
 // out of the mapping bottom row last, so the image comes out top row first
 // in one pass over the pixels (reading into client memory took a second pass
-// to flip it). A GPU driver packs into a PBO by DMA without stalling the
-// command stream at glReadPixels; Mesa's llvmpipe packs on the CPU inside
-// glReadPixels either way.
+// to flip it). The wait follows the pack at once: frames are not pipelined
+// on one context (a GPU driver would let the next frame be recorded while
+// the pack runs; Mesa's llvmpipe packs on the CPU inside glReadPixels, so
+// here there is nothing to overlap, and --render-threads covers that case).
 #include <cstddef>
 
 #include "gpu/gl_object.h"
