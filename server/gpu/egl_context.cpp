@@ -10,6 +10,13 @@
 #include "gpu/gpu_error.h"
 
 namespace toond::gpu {
+
+bool software_rasterizer(std::string_view gl_renderer) {
+  for (std::string_view software : {"llvmpipe", "softpipe", "swrast"}) {
+    if (gl_renderer.find(software) != std::string_view::npos) return true;
+  }
+  return false;
+}
 namespace {
 
 const char* egl_error_name(EGLint error) {

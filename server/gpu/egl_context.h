@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace toond::gpu {
@@ -30,6 +31,11 @@ struct GlInfo {
   int major = 0;
   int minor = 0;
 };
+
+// Whether `gl_renderer` (GL_RENDERER) names one of Mesa's CPU rasterizers
+// (llvmpipe, softpipe, swrast): their "GPU" is threads of this CPU, which
+// changes what is worth doing (timer queries, pixel buffer readback).
+bool software_rasterizer(std::string_view gl_renderer);
 
 class EglContext {
  public:

@@ -3,11 +3,9 @@
 // mapped for its whole life (GL_MAP_PERSISTENT_BIT). glReadPixels packs into
 // the buffer, a fence says when the pack is done, and the rows are copied
 // out of the mapping bottom row last, so the image comes out top row first
-// in one pass over the pixels (reading into client memory took a second pass
-// to flip it). The wait follows the pack at once: frames are not pipelined
-// on one context (a GPU driver would let the next frame be recorded while
-// the pack runs; Mesa's llvmpipe packs on the CPU inside glReadPixels, so
-// here there is nothing to overlap, and --render-threads covers that case).
+// in one pass over the pixels. The wait follows the pack at once: frames
+// are not pipelined on one context. Used where a GPU packs (render_target.h
+// says when).
 #include <cstddef>
 
 #include "gpu/gl_object.h"

@@ -1,6 +1,7 @@
 #include "gpu/render_target.h"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 #include "gpu/gpu_error.h"
@@ -28,12 +29,12 @@ Renderbuffer make_storage(GLenum format, int width, int height, int samples) {
 
 }  // namespace
 
-RenderTarget::RenderTarget(int width, int height, int samples)
+RenderTarget::RenderTarget(int width, int height, int samples, ReadbackPath readback)
     : width_(width),
       height_(height),
       requested_samples_(samples),
-      samples_(samples),
-      readback_(width, height) {
+      samples_(samples) {
+  if (readback == ReadbackPath::PixelBuffer) pixel_buffer_.emplace(width, height);
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   if (samples_ > max_samples) samples_ = max_samples;
@@ -76,7 +77,27 @@ image::Image RenderTarget::read_back() const {
                            height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     source = resolve_fbo_.id();
   }
-  return readback_.read(source);
+  if (pixel_buffer_) return pixel_buffer_->read(source);
+
+  image::Image img;
+  img.width = width_;
+  img.height = height_;
+  img.rgba.resize(static_cast<std::size_t>(width_) * height_ * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  // GL's rows run bottom to top; images run top to bottom.
+  const std::size_t row = static_cast<std::size_t>(width_) * 4;
+  std::vector<std::uint8_t> tmp(row);
+  for (int y = 0; y < height_ / 2; ++y) {
+    auto* a = img.rgba.data() + static_cast<std::size_t>(y) * row;
+    auto* b = img.rgba.data() + static_cast<std::size_t>(height_ - 1 - y) * row;
+    std::memcpy(tmp.data(), a, row);
+    std::memcpy(a, b, row);
+    std::memcpy(b, tmp.data(), row);
+  }
+  return img;
 }
 
 }  // namespace toond::gpu

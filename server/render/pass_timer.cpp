@@ -1,5 +1,6 @@
 #include "render/pass_timer.h"
 
+#include "gpu/egl_context.h"
 #include "render/renderer.h"
 
 namespace toond::render {
@@ -16,10 +17,7 @@ bool PassTimer::gpu_timers_available() {
 }
 
 bool PassTimer::gpu_timers_worthwhile(std::string_view gl_renderer) {
-  for (std::string_view software : {"llvmpipe", "softpipe", "swrast"}) {
-    if (gl_renderer.find(software) != std::string_view::npos) return false;
-  }
-  return true;
+  return !gpu::software_rasterizer(gl_renderer);
 }
 
 PassTimer::PassTimer(std::vector<PassTiming>& out, bool gpu_timers) : out_(out) {

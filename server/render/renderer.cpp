@@ -4,6 +4,7 @@
 #include <chrono>
 #include <limits>
 
+#include "gpu/egl_context.h"
 #include "gpu/gpu_error.h"
 #include "image/downsample.h"
 #include "render/camera.h"
@@ -162,7 +163,7 @@ const GpuModel& Renderer::floor_for(const scene::Bounds& b, const FloorParams& p
 gpu::RenderTarget& Renderer::target_for(int width, int height, int samples) {
   if (!target_ || !target_->matches(width, height, samples)) {
     target_.reset();  // free the old storage before allocating the new
-    target_.emplace(width, height, samples);
+    target_.emplace(width, height, samples, readback_);
   }
   return *target_;
 }
@@ -220,6 +221,8 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   if (!gpu_timers_) {
     const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     gpu_timers_ = PassTimer::gpu_timers_worthwhile(name ? name : "");
+    readback_ = gpu::software_rasterizer(name ? name : "") ? gpu::ReadbackPath::ClientMemory
+                                                          : gpu::ReadbackPath::PixelBuffer;
   }
   PassTimer timer(out.timings, *gpu_timers_);
   // Each pass goes to the driver as soon as it is recorded: llvmpipe then

@@ -75,7 +75,10 @@ class Renderer {
 
   gpu::ProgramCache& programs_;
   bool face_culling_ = true;
-  std::optional<bool> gpu_timers_;  // asked of the context at the first render
+  // Asked of the context at the first render: whether to count GPU time,
+  // and how to read pixels back (both depend on there being a real GPU).
+  std::optional<bool> gpu_timers_;
+  gpu::ReadbackPath readback_ = gpu::ReadbackPath::PixelBuffer;
   std::optional<gpu::RenderTarget> target_;  // reused while the size stays the same
   std::optional<gpu::ShadowMap> shadow_map_;
   std::optional<gpu::NormalDepthTarget> normal_depth_;

@@ -21,6 +21,14 @@ TEST(WithDefines, SourceWithoutVersion) {
 
 class Gpu : public test::GlContextTest {};
 
+TEST(SoftwareRasterizer, KnowsMesasCpuRasterizersByName) {
+  EXPECT_TRUE(software_rasterizer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+  EXPECT_TRUE(software_rasterizer("softpipe"));
+  EXPECT_FALSE(software_rasterizer("NVIDIA H100 80GB HBM3/PCIe/SSE2"));
+  EXPECT_FALSE(software_rasterizer("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.7, DRM 3.54)"));
+  EXPECT_FALSE(software_rasterizer(""));
+}
+
 TEST_F(Gpu, ContextIsCoreFourThreeOrNewer) {
   const GlInfo& info = context().info();
   EXPECT_FALSE(info.renderer.empty());
@@ -72,13 +80,15 @@ TEST_F(Gpu, ReadBackReturnsTopRowFirst) {
   EXPECT_EQ(img.pixel(0, 3)[0], 0);
 }
 
-// The readback goes through a persistently mapped pixel buffer: every frame
-// read must be that frame's (not the previous one's, still in the mapping),
-// rows must not be padded to four bytes at odd widths, and the resolve must
-// reach it for multisampled targets.
+// Both readback paths: every frame read must be that frame's (a persistently
+// mapped pixel buffer still holds the previous one), rows must not be padded
+// to four bytes at odd widths, and the resolve must reach them for
+// multisampled targets.
 TEST_F(Gpu, ReadBackSeesEachFrameAtOddSizes) {
-  for (int samples : {1, 4}) {
-    RenderTarget target(7, 5, samples);
+  for (const auto& [path, samples] : {std::pair{ReadbackPath::PixelBuffer, 1}, std::pair{ReadbackPath::PixelBuffer, 4},
+                                      std::pair{ReadbackPath::ClientMemory, 1}, std::pair{ReadbackPath::ClientMemory, 4}}) {
+    SCOPED_TRACE(path == ReadbackPath::PixelBuffer ? "pixel buffer" : "client memory");
+    RenderTarget target(7, 5, samples, path);
     for (int frame = 0; frame < 3; ++frame) {
       target.bind_for_drawing();
       glDisable(GL_FRAMEBUFFER_SRGB);
