@@ -45,9 +45,10 @@ double nice_step(double span, int count) {
 }  // namespace
 
 void mark_pareto_front(std::vector<PlotPoint>& points) {
+  auto faster = [](const PlotPoint& a, const PlotPoint& b) { return a.time_high_ms < b.time_low_ms; };
   for (PlotPoint& p : points) {
     p.on_front = std::none_of(points.begin(), points.end(), [&](const PlotPoint& q) {
-      return q.time_ms <= p.time_ms && q.error <= p.error && (q.time_ms < p.time_ms || q.error < p.error);
+      return q.error <= p.error && !faster(p, q) && (q.error < p.error || faster(q, p));
     });
   }
 }

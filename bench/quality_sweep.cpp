@@ -184,6 +184,8 @@ SweepResult run_quality_sweep(httplib::Client& client, const SweepOptions& o) {
       p.lod_header = m.last.lod;
       p.wall_ms = median(m.wall);
       p.server_ms = median(m.server);
+      p.server_p25_ms = percentile(m.server, 0.25);
+      p.server_p75_ms = percentile(m.server, 0.75);
       p.png_ms = median(m.png);
       p.png_bytes = m.last.png_bytes;
       const PixelError e = compare_images(reference, img);
@@ -207,7 +209,7 @@ SweepResult run_quality_sweep(httplib::Client& client, const SweepOptions& o) {
                    scene.analytic ? " px" : " %", p.lod_header.c_str());
       seen[key] = result.points.size();
       result.points.push_back(p);
-      panel.points.push_back({p.label, p.family, p.server_ms, scene.analytic ? p.band_edge_px : p.pct_off,
+      panel.points.push_back({p.label, p.family, p.server_ms, p.server_p25_ms, p.server_p75_ms, scene.analytic ? p.band_edge_px : p.pct_off,
                               p.is_default, false});
     }
     mark_pareto_front(panel.points);
@@ -222,17 +224,17 @@ SweepResult run_quality_sweep(httplib::Client& client, const SweepOptions& o) {
 void write_sweep_csv(const SweepResult& result, const std::filesystem::path& path) {
   std::ofstream out(path);
   out << "scene,family,label,msaa,supersample,lod,lod_error_px,map_size,png_compression,lod_drawn,"
-         "server_ms,wall_ms,png_ms,png_bytes,mean_abs_error,pct_pixels_off,band_edge_px,band_edge_max_px,"
+         "server_ms,server_p25_ms,server_p75_ms,wall_ms,png_ms,png_bytes,mean_abs_error,pct_pixels_off,band_edge_px,band_edge_max_px,"
          "lod_vs_full_pct_off,default,on_front\n";
   for (const SweepPoint& p : result.points) {
     const json& s = p.settings;
     char line[512];
     std::snprintf(line, sizeof line,
-                  "\"%s\",%s,\"%s\",%d,%d,%s,%g,%d,%d,\"%s\",%.3f,%.3f,%.3f,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%d\n",
+                  "\"%s\",%s,\"%s\",%d,%d,%s,%g,%d,%d,\"%s\",%.3f,%.3f,%.3f,%.3f,%.3f,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%d\n",
                   p.scene.c_str(), p.family.c_str(), p.label.c_str(), s["msaa"].get<int>(),
                   s["supersample"].get<int>(), s["lod"].get<std::string>().c_str(), s["lod_error_px"].get<double>(),
                   s["map_size"].get<int>(), s["png_compression"].get<int>(), p.lod_header.c_str(), p.server_ms,
-                  p.wall_ms, p.png_ms, p.png_bytes, p.mean_abs, p.pct_off, p.band_edge_px, p.band_edge_max_px,
+                  p.server_p25_ms, p.server_p75_ms, p.wall_ms, p.png_ms, p.png_bytes, p.mean_abs, p.pct_off, p.band_edge_px, p.band_edge_max_px,
                   p.lod_vs_full_pct_off, p.is_default ? 1 : 0, p.on_front ? 1 : 0);
     out << line;
   }
@@ -247,6 +249,8 @@ nlohmann::json sweep_json(const SweepResult& result) {
                       {"settings", p.settings},
                       {"lod_drawn", p.lod_header},
                       {"server_ms", p.server_ms},
+                      {"server_p25_ms", p.server_p25_ms},
+                      {"server_p75_ms", p.server_p75_ms},
                       {"wall_ms", p.wall_ms},
                       {"png_ms", p.png_ms},
                       {"png_bytes", p.png_bytes},

@@ -28,6 +28,8 @@ struct SweepPoint {
   std::string lod_header;
   double wall_ms = 0;
   double server_ms = 0;
+  double server_p25_ms = 0;  // the repeats' interquartile range
+  double server_p75_ms = 0;
   double png_ms = 0;
   std::size_t png_bytes = 0;
   double mean_abs = 0;
