@@ -48,7 +48,8 @@ void mark_pareto_front(std::vector<PlotPoint>& points) {
   auto faster = [](const PlotPoint& a, const PlotPoint& b) { return a.time_high_ms < b.time_low_ms; };
   for (PlotPoint& p : points) {
     p.on_front = std::none_of(points.begin(), points.end(), [&](const PlotPoint& q) {
-      return q.error <= p.error && !faster(p, q) && (q.error < p.error || faster(q, p));
+      return q.error <= p.error && q.bytes <= p.bytes && !faster(p, q) &&
+             (q.error < p.error || q.bytes < p.bytes || faster(q, p));
     });
   }
 }

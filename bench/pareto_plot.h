@@ -1,6 +1,7 @@
 #pragma once
 // Time against error: which sweep points nobody beats on both, and an SVG
 // with one panel per scene that marks them.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -15,17 +16,21 @@ struct PlotPoint {
   double time_low_ms = 0;
   double time_high_ms = 0;
   double error = 0;
+  std::size_t bytes = 0;  // the PNG's size: what the answer costs on the wire
   bool is_default = false;
   bool on_front = false;  // filled by mark_pareto_front
 };
 
 // A point is on the front when no other point beats it: at least as
-// accurate and not measurably slower, and more accurate or measurably
-// faster. Errors are exact (the same image, the same error); times are
-// noisy, so "measurably" means the interquartile ranges do not overlap.
-// Settings that draw the very same image (msaa 2 and 4 on llvmpipe) then
-// share the front unless one is really faster, instead of the luckier
-// timing pushing the other off.
+// accurate, not measurably slower and no larger, and more accurate,
+// measurably faster or smaller. Errors and sizes are exact (the same image,
+// the same error); times are noisy, so "measurably" means the
+// interquartile ranges of the repeats do not overlap. Settings that draw
+// the very same image (msaa 2 and 4 on llvmpipe) then share the front
+// unless one is really faster, instead of the luckier timing pushing the
+// other off; and PNG level 0, faster to encode but 25 times larger, beats
+// nothing by speed alone. The plot's axes are time and error; size is the
+// third axis, shown only in the CSV.
 void mark_pareto_front(std::vector<PlotPoint>& points);
 
 struct PlotPanel {

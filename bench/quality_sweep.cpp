@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <algorithm>
 #include <map>
+#include <set>
 
 #include "bench_http.h"
 #include "image/png_codec.h"
@@ -103,16 +105,29 @@ struct Measured {
   TimedRender last;
 };
 
-Measured measure(httplib::Client& client, const json& params, int repeats) {
-  Measured m;
-  render_timed(client, params);  // warm: programs, targets, the model on the GPU
-  for (int i = 0; i < repeats; ++i) {
-    m.last = render_timed(client, params);
-    m.wall.push_back(m.last.wall_ms);
-    m.server.push_back(m.last.server_ms);
-    m.png.push_back(m.last.png_ms);
+// Times every point of a scene in rounds: each round renders each point
+// once untimed (its target, shadow map and programs ready again) and then
+// its share of the repeats. Slow drift of the machine (turbo, a neighbour)
+// then falls on every point alike, instead of on whichever points came
+// last; settings that draw the very same image were measured 2 ms apart
+// when timed one after the other.
+std::vector<Measured> measure_in_rounds(httplib::Client& client, const std::vector<json>& params, int repeats) {
+  std::vector<Measured> measured(params.size());
+  const int rounds = std::min(repeats, 3);
+  for (int round = 0; round < rounds; ++round) {
+    const int share = repeats / rounds + (round < repeats % rounds ? 1 : 0);
+    for (std::size_t i = 0; i < params.size(); ++i) {
+      Measured& m = measured[i];
+      render_timed(client, params[i]);  // warm
+      for (int k = 0; k < share; ++k) {
+        m.last = render_timed(client, params[i]);
+        m.wall.push_back(m.last.wall_ms);
+        m.server.push_back(m.last.server_ms);
+        m.png.push_back(m.last.png_ms);
+      }
+    }
   }
-  return m;
+  return measured;
 }
 
 std::vector<Scene> make_scenes(httplib::Client& client, const SweepOptions& o) {
@@ -163,18 +178,26 @@ SweepResult run_quality_sweep(httplib::Client& client, const SweepOptions& o) {
     PlotPanel panel;
     panel.title = scene.name;
     panel.error_label = scene.analytic ? "band-edge error, mean px" : "% pixels off the reference";
-    std::map<std::string, std::size_t> seen;  // effective settings → index into result.points
     std::map<std::string, image::Image> full_detail;  // non-LOD settings → the lod full image
     std::vector<Knob> knobs = knobs_for(scene, o);
     knobs.push_back({"reference", "reference", {{"msaa", 8}, {"supersample", o.smoke ? 2 : 4}, {"lod", "full"}}});
     if (scene.shadow_knob) knobs.back().patch["shadows"] = {{"map_size", 4096}};
+    // Each distinct setting once: e.g. "msaa 4 ss 1" is also "lod 0.5 px"
+    // at the defaults.
+    std::vector<const Knob*> points;
+    std::vector<json> point_params;
+    std::set<std::string> distinct;
     for (const Knob& knob : knobs) {
+      if (!distinct.insert(effective(result.defaults, knob.patch).dump()).second) continue;
+      points.push_back(&knob);
+      point_params.push_back(scene.base);
+      point_params.back().merge_patch(knob.patch);
+    }
+    const std::vector<Measured> measured = measure_in_rounds(client, point_params, repeats);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Knob& knob = *points[i];
       const json settings = effective(result.defaults, knob.patch);
-      const std::string key = settings.dump();
-      if (seen.count(key)) continue;  // e.g. "msaa 4 ss 1" is also "lod 0.5 px" at the defaults
-      json params = scene.base;
-      params.merge_patch(knob.patch);
-      const Measured m = measure(client, params, repeats);
+      const Measured& m = measured[i];
       const image::Image img = image::decode_png(m.last.png);
       SweepPoint p;
       p.scene = scene.name;
@@ -207,10 +230,9 @@ SweepResult run_quality_sweep(httplib::Client& client, const SweepOptions& o) {
       std::fprintf(stderr, "  %-14s %-12s server %8.2f ms  wall %8.2f ms  error %.4f%s  [%s]\n", p.family.c_str(),
                    p.label.c_str(), p.server_ms, p.wall_ms, scene.analytic ? p.band_edge_px : p.pct_off,
                    scene.analytic ? " px" : " %", p.lod_header.c_str());
-      seen[key] = result.points.size();
       result.points.push_back(p);
       panel.points.push_back({p.label, p.family, p.server_ms, p.server_p25_ms, p.server_p75_ms, scene.analytic ? p.band_edge_px : p.pct_off,
-                              p.is_default, false});
+                              p.png_bytes, p.is_default, false});
     }
     mark_pareto_front(panel.points);
     // Copy the front back to the points of this scene (same order).

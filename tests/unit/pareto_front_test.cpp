@@ -7,8 +7,10 @@
 namespace toond::bench {
 namespace {
 
-PlotPoint point(const char* label, double low, double median, double high, double error) {
+PlotPoint point(const char* label, double low, double median, double high, double error,
+                std::size_t bytes = 1000) {
   PlotPoint p;
+  p.bytes = bytes;
   p.label = label;
   p.time_low_ms = low;
   p.time_ms = median;
@@ -59,6 +61,20 @@ TEST(ParetoFront, LowerErrorWithOverlappingTimeBeatsAPoint) {
   mark_pareto_front(points);
   EXPECT_TRUE(on_front(points, "fine"));
   EXPECT_FALSE(on_front(points, "coarse"));
+}
+
+// PNG level 0 encodes faster but answers with a 25 times larger file: it
+// does not beat the compressed default; a smaller file at the same time
+// and error does.
+TEST(ParetoFront, SizeIsTheThirdAxis) {
+  std::vector<PlotPoint> points = {point("png 3", 30, 31, 32, 1.0, 40000), point("png 0", 27, 28, 29, 1.0, 1000000)};
+  mark_pareto_front(points);
+  EXPECT_TRUE(on_front(points, "png 3"));
+  EXPECT_TRUE(on_front(points, "png 0"));
+  points.push_back(point("png 9", 30, 31, 32, 1.0, 35000));
+  mark_pareto_front(points);
+  EXPECT_FALSE(on_front(points, "png 3"));
+  EXPECT_TRUE(on_front(points, "png 9"));
 }
 
 }  // namespace
