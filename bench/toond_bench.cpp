@@ -30,6 +30,8 @@ Parts (default: sweep scaling load):
             bunny, the windmill and a shadowed floor: median server time
             (Server-Timing) and request-to-PNG time, error against each
             scene's reference (supersample 4 x msaa 8, map 4096, lod full);
+            a scene's points are timed in up to three interleaved rounds;
+            the Pareto front allows for the repeats' spread and PNG size;
             sweep.csv, sweep.json, time_vs_error.svg
   scaling   server time against triangles (generated spheres 1k-1M) and
             pixels (256^2-2048^2), fitted exponents; scaling.csv/.json
