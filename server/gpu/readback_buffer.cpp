@@ -30,10 +30,12 @@ ReadbackBuffer::ReadbackBuffer(int width, int height)
       bytes_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4),
       buffer_(Buffer::create()) {
   const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT;
-  glNamedBufferStorage(buffer_.id(), static_cast<GLsizeiptr>(bytes_), nullptr, access | GL_CLIENT_STORAGE_BIT);
-  mapped_ = static_cast<const std::uint8_t*>(
-      glMapNamedBufferRange(buffer_.id(), 0, static_cast<GLsizeiptr>(bytes_), access));
-  if (mapped_ == nullptr) throw GpuError("ReadbackBuffer: could not map a pixel buffer of " + std::to_string(bytes_) + " bytes");
+  const auto size = static_cast<GLsizeiptr>(bytes_);
+  glNamedBufferStorage(buffer_.id(), size, nullptr, access | GL_CLIENT_STORAGE_BIT);
+  mapped_ = static_cast<const std::uint8_t*>(glMapNamedBufferRange(buffer_.id(), 0, size, access));
+  if (mapped_ == nullptr) {
+    throw GpuError("ReadbackBuffer: could not map a pixel buffer of " + std::to_string(bytes_) + " bytes");
+  }
 }
 
 image::Image ReadbackBuffer::read(GLuint framebuffer) const {

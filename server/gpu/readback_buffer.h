@@ -18,9 +18,6 @@ class ReadbackBuffer {
   // Room for an RGBA8 image of width × height.
   ReadbackBuffer(int width, int height);
 
-  int width() const { return width_; }
-  int height() const { return height_; }
-
   // The colour attachment of `framebuffer` (single-sampled), top row first.
   image::Image read(GLuint framebuffer) const;
 

@@ -85,8 +85,9 @@ TEST_F(Gpu, ReadBackReturnsTopRowFirst) {
 // to four bytes at odd widths, and the resolve must reach them for
 // multisampled targets.
 TEST_F(Gpu, ReadBackSeesEachFrameAtOddSizes) {
-  for (const auto& [path, samples] : {std::pair{ReadbackPath::PixelBuffer, 1}, std::pair{ReadbackPath::PixelBuffer, 4},
-                                      std::pair{ReadbackPath::ClientMemory, 1}, std::pair{ReadbackPath::ClientMemory, 4}}) {
+  using Case = std::pair<ReadbackPath, int>;  // the path, samples
+  for (const auto& [path, samples] : {Case{ReadbackPath::PixelBuffer, 1}, Case{ReadbackPath::PixelBuffer, 4},
+                                      Case{ReadbackPath::ClientMemory, 1}, Case{ReadbackPath::ClientMemory, 4}}) {
     SCOPED_TRACE(path == ReadbackPath::PixelBuffer ? "pixel buffer" : "client memory");
     RenderTarget target(7, 5, samples, path);
     for (int frame = 0; frame < 3; ++frame) {
@@ -104,7 +105,8 @@ TEST_F(Gpu, ReadBackSeesEachFrameAtOddSizes) {
       ASSERT_EQ(img.rgba.size(), 7u * 5u * 4u);
       for (int row = 0; row < 5; ++row) {
         for (int x = 0; x < 7; ++x) {
-          ASSERT_EQ(img.pixel(x, row)[0], value(4 - row)) << samples << " samples, frame " << frame << " (" << x << "," << row << ")";
+          ASSERT_EQ(img.pixel(x, row)[0], value(4 - row))
+              << samples << " samples, frame " << frame << " (" << x << "," << row << ")";
           ASSERT_EQ(img.pixel(x, row)[2], 6 - (4 - row));
           ASSERT_EQ(img.pixel(x, row)[3], 255);
         }
