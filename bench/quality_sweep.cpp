@@ -1,9 +1,9 @@
 #include "quality_sweep.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <algorithm>
 #include <map>
 #include <set>
 
@@ -231,8 +231,8 @@ SweepResult run_quality_sweep(httplib::Client& client, const SweepOptions& o) {
                    p.label.c_str(), p.server_ms, p.wall_ms, scene.analytic ? p.band_edge_px : p.pct_off,
                    scene.analytic ? " px" : " %", p.lod_header.c_str());
       result.points.push_back(p);
-      panel.points.push_back({p.label, p.family, p.server_ms, p.server_p25_ms, p.server_p75_ms, scene.analytic ? p.band_edge_px : p.pct_off,
-                              p.png_bytes, p.is_default, false});
+      panel.points.push_back({p.label, p.family, p.server_ms, p.server_p25_ms, p.server_p75_ms,
+                              scene.analytic ? p.band_edge_px : p.pct_off, p.png_bytes, p.is_default, false});
     }
     mark_pareto_front(panel.points);
     // Copy the front back to the points of this scene (same order).
@@ -246,7 +246,8 @@ SweepResult run_quality_sweep(httplib::Client& client, const SweepOptions& o) {
 void write_sweep_csv(const SweepResult& result, const std::filesystem::path& path) {
   std::ofstream out(path);
   out << "scene,family,label,msaa,supersample,lod,lod_error_px,map_size,png_compression,lod_drawn,"
-         "server_ms,server_p25_ms,server_p75_ms,wall_ms,png_ms,png_bytes,mean_abs_error,pct_pixels_off,band_edge_px,band_edge_max_px,"
+         "server_ms,server_p25_ms,server_p75_ms,wall_ms,png_ms,png_bytes,mean_abs_error,pct_pixels_off,"
+         "band_edge_px,band_edge_max_px,"
          "lod_vs_full_pct_off,default,on_front\n";
   for (const SweepPoint& p : result.points) {
     const json& s = p.settings;
@@ -256,7 +257,8 @@ void write_sweep_csv(const SweepResult& result, const std::filesystem::path& pat
                   p.scene.c_str(), p.family.c_str(), p.label.c_str(), s["msaa"].get<int>(),
                   s["supersample"].get<int>(), s["lod"].get<std::string>().c_str(), s["lod_error_px"].get<double>(),
                   s["map_size"].get<int>(), s["png_compression"].get<int>(), p.lod_header.c_str(), p.server_ms,
-                  p.server_p25_ms, p.server_p75_ms, p.wall_ms, p.png_ms, p.png_bytes, p.mean_abs, p.pct_off, p.band_edge_px, p.band_edge_max_px,
+                  p.server_p25_ms, p.server_p75_ms, p.wall_ms, p.png_ms, p.png_bytes, p.mean_abs, p.pct_off,
+                  p.band_edge_px, p.band_edge_max_px,
                   p.lod_vs_full_pct_off, p.is_default ? 1 : 0, p.on_front ? 1 : 0);
     out << line;
   }

@@ -1,6 +1,5 @@
 #include "render/pass_timer.h"
 
-#include "gpu/egl_context.h"
 #include "render/renderer.h"
 
 namespace toond::render {
@@ -14,10 +13,6 @@ bool PassTimer::gpu_timers_available() {
     return bits > 0;
   }();
   return available;
-}
-
-bool PassTimer::gpu_timers_worthwhile(std::string_view gl_renderer) {
-  return !gpu::software_rasterizer(gl_renderer);
 }
 
 PassTimer::PassTimer(std::vector<PassTiming>& out, bool gpu_timers) : out_(out) {

@@ -6,7 +6,6 @@
 // readback waits for every earlier command, so they are ready then); passes
 // after it are CPU work and keep their wall-clock time. Render thread only.
 #include <chrono>
-#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -29,12 +28,6 @@ class PassTimer {
 
   // Whether this driver counts GPU time (checked once per thread).
   static bool gpu_timers_available();
-  // Whether GPU time is worth counting on `gl_renderer` (GL_RENDERER). Not
-  // on Mesa's software rasterizers: their "GPU" is threads of this CPU that
-  // the queries do not see (they stamp the commands as they are recorded),
-  // and llvmpipe records a query into every screen tile, which made the
-  // bunny at full detail 5x slower (512², msaa 1: 150 ms against 30 ms).
-  static bool gpu_timers_worthwhile(std::string_view gl_renderer);
 
  private:
   using Clock = std::chrono::steady_clock;

@@ -75,10 +75,10 @@ class Renderer {
 
   gpu::ProgramCache& programs_;
   bool face_culling_ = true;
-  // Asked of the context at the first render: whether to count GPU time,
-  // and how to read pixels back (both depend on there being a real GPU).
-  std::optional<bool> gpu_timers_;
-  gpu::ReadbackPath readback_ = gpu::ReadbackPath::PixelBuffer;
+  // Asked of the context at the first render: whether it rasterizes on a
+  // GPU or on this CPU's threads (gpu::software_rasterizer). That decides
+  // whether GPU time is counted and how pixels come back.
+  std::optional<bool> real_gpu_;
   std::optional<gpu::RenderTarget> target_;  // reused while the size stays the same
   std::optional<gpu::ShadowMap> shadow_map_;
   std::optional<gpu::NormalDepthTarget> normal_depth_;
