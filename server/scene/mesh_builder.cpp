@@ -7,7 +7,9 @@
 #include <unordered_map>
 
 #include "scene/import_error.h"
+#include "scene/extreme_points.h"
 #include "scene/mesh_processing.h"
+#include "scene/position_weld.h"
 
 namespace toond::scene {
 
@@ -332,6 +334,10 @@ class Builder {
                     " texture coordinates were not finite numbers and were set to 0");
     }
 
+    const WeldReport weld = weld_positions(mesh.positions);
+    mesh.weld_tolerance = weld.tolerance;
+    mesh.welded_positions = weld.moved;
+
     if (std::find(needs_normal.begin(), needs_normal.end(), true) != needs_normal.end()) {
       const auto position_class = group_by_position(mesh.positions);
       std::unordered_map<GroupKey, std::uint32_t, GroupKeyHash> group_ids;
@@ -353,6 +359,8 @@ class Builder {
     mesh.outline_normals = compute_outline_normals(mesh.positions, mesh.indices, mesh.normals);
     mesh.tangents = compute_tangents(mesh.positions, mesh.normals, mesh.texcoords, mesh.indices);
     mesh.bounds = compute_bounds(mesh.positions);
+    mesh.extremes = extreme_points(mesh.positions);
+    mesh.creases = measure_creases(mesh.positions, mesh.normals, mesh.indices);
 
     for (std::size_t t = 0; t < triangles.size();) {
       Submesh sub;

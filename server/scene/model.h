@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/crease_profile.h"
+
 namespace toond::scene {
 
 // How a texture's RGB bytes are to be read (alpha is always linear).
@@ -126,6 +128,15 @@ struct Mesh {
   // point), so a render can draw them with the mesh's own vertices: through
   // the outline hull's offset too.
   std::vector<std::uint32_t> cap_indices;
+  // Positions this close were welded into one (scene/position_weld.h), and
+  // how many were moved to do so: the import report shows both.
+  double weld_tolerance = 0;
+  std::size_t welded_positions = 0;
+  // How much of the edge length is creased at each angle (scene/crease_profile.h).
+  CreaseProfile creases;
+  // Vertices extreme along many directions (scene/extreme_points.h): what
+  // the camera projects to frame the model tightly.
+  std::vector<glm::vec3> extremes;
   glm::dvec3 origin{0.0};  // model-space point that positions are relative to
   Bounds bounds;           // of `positions` (i.e. relative to origin)
 

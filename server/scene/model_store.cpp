@@ -101,7 +101,8 @@ void remove_quietly(const fs::path& path) {
 
 nlohmann::json ModelInfo::to_json() const {
   return {{"id", id},       {"triangles", triangles}, {"materials", materials}, {"textures", textures},
-          {"bytes", bytes}, {"files", files},         {"warnings", warnings}};
+          {"bytes", bytes}, {"files", files},         {"warnings", warnings},
+          {"weld", {{"tolerance", weld.tolerance}, {"positions", weld.positions}}}};
 }
 
 ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
@@ -113,6 +114,11 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
   info.bytes = j.at("bytes").get<std::size_t>();
   info.files = j.at("files").get<std::vector<std::string>>();
   info.warnings = j.value("warnings", std::vector<std::string>{});
+  // Models stored before welding was reported have no record of it.
+  if (const auto weld = j.find("weld"); weld != j.end() && weld->is_object()) {
+    info.weld.tolerance = weld->value("tolerance", 0.0);
+    info.weld.positions = weld->value("positions", std::size_t{0});
+  }
   return info;
 }
 
@@ -172,6 +178,7 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& 
   info.bytes = bundle.total_bytes();
   for (const auto& [path, content] : bundle.files()) info.files.push_back(path);
   info.warnings = model.warnings;
+  info.weld = {model.mesh.weld_tolerance, model.mesh.welded_positions};
 
   const fs::path temp = root_ / (std::string(kTempPrefix) + id + "-" + random_suffix());
   try {

@@ -26,6 +26,12 @@ struct ModelInfo {
   std::size_t bytes = 0;
   std::vector<std::string> files;
   std::vector<std::string> warnings;
+  // Positions closer than `tolerance` (model units) were welded into one
+  // for everything derived from topology; `positions` were moved.
+  struct Weld {
+    double tolerance = 0;
+    std::size_t positions = 0;
+  } weld;
 
   nlohmann::json to_json() const;
   static ModelInfo from_json(const nlohmann::json& j);
