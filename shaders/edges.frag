@@ -18,10 +18,16 @@ bool is_background(vec4 s) { return s.w <= 0.0; }
 // One axis: the neighbours `r` pixels before and after. A depth jump shows
 // as a second difference (a plane seen at a grazing angle changes depth
 // fast, but evenly, and must not count).
+// With CREASES_ONLY another pass draws the silhouette: only turns of the
+// normal between two surface pixels count.
 bool edge_along(vec4 c, vec4 before, vec4 after) {
+#ifdef CREASES_ONLY
+  if (is_background(c) || is_background(before) || is_background(after)) return false;
+#else
   if (is_background(before) != is_background(c) || is_background(after) != is_background(c)) return true;
   if (is_background(c)) return false;
   if (abs(before.w + after.w - 2.0 * c.w) > u_depth_threshold) return true;
+#endif
   return dot(c.xyz, before.xyz) < u_cos_crease || dot(c.xyz, after.xyz) < u_cos_crease;
 }
 

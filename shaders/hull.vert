@@ -6,9 +6,8 @@
 // problem, e.g. three.js issue 19096). The offset is mitred at corners, so
 // every face plane moves out by the full width.
 //
-// The distance is `u_width` pixels at the vertex's own depth (or, with
-// u_world_units, `u_width` scene units, thinning with distance like a real
-// rim):
+// The distance is `u_width` pixels at the vertex's own depth (a width in
+// world units arrives converted to pixels, render/outline_width.h):
 // `u_world_per_px_at_w1` is the size of one pixel at clip w = 1, and a pixel
 // at depth w is w times that (w is 1 everywhere for orthographic views). A
 // silhouette point's normal lies in the image plane, so there the ring is
@@ -23,8 +22,29 @@ uniform mat4 u_view_projection;
 uniform mat4 u_model;          // mesh → scene (frame) coordinates
 uniform mat3 u_normal_matrix;  // inverse-transpose of u_model's 3×3
 uniform float u_world_per_px_at_w1;
-uniform float u_width;        // pixels, or scene units with u_world_units
-uniform int u_world_units;
+uniform float u_width;        // pixels
+uniform vec2 u_viewport_px;   // the drawn image's size
+uniform vec3 u_eye;           // frame coordinates
+uniform vec3 u_view_dir;      // the view's axis, unit
+uniform int u_orthographic;
+
+// A pixel's size at depth w holds for a move parallel to the image. Off
+// the view's axis a silhouette point's normal is perpendicular to its own
+// ray, not to the axis, and a move along it shows 1/cos of the ray's angle
+// longer (5.2 px for 5 on a sphere filling the default view). The factor
+// that makes the part of the offset the image can show, the part across
+// the ray, exactly as long on screen as asked; 1 in orthographic views.
+float obliquity_correction(vec3 position, vec4 clip, vec3 offset, float distance) {
+  vec3 ray = u_orthographic != 0 ? u_view_dir : normalize(position - u_eye);
+  vec3 across = offset - dot(offset, ray) * ray;
+  float across_len = length(across);
+  if (clip.w <= 0.0 || across_len < 1e-3 * length(offset)) return 1.0;
+  vec4 moved = u_view_projection * vec4(position + across * distance, 1.0);
+  if (moved.w <= 0.0) return 1.0;
+  float shown_px = length((moved.xy / moved.w - clip.xy / clip.w) * 0.5 * u_viewport_px);
+  float wanted_px = u_width * across_len;
+  return shown_px > 0.0 ? clamp(wanted_px / shown_px, 0.5, 1.0) : 1.0;
+}
 
 void main() {
   v_texcoord = a_texcoord;
@@ -41,8 +61,9 @@ void main() {
   vec3 turned = u_normal_matrix * a_outline_offset;
   float turned_len = length(turned);
   vec3 offset = turned_len > 0.0 ? turned * (len / turned_len) : vec3(0.0);
-  float w = (u_view_projection * vec4(position, 1.0)).w;
-  float distance = u_world_units != 0 ? u_width : u_width * u_world_per_px_at_w1 * abs(w);
+  vec4 clip = u_view_projection * vec4(position, 1.0);
+  float distance = u_width * u_world_per_px_at_w1 * abs(clip.w);
+  distance *= obliquity_correction(position, clip, offset, distance);
   vec3 moved = position + offset * distance;
   gl_Position = u_view_projection * vec4(moved, 1.0);
 }

@@ -9,41 +9,85 @@
 
 namespace toond::render {
 namespace {
-// Leaves a little air between the model and the image border.
-constexpr double kFrameMargin = 1.08;
+
+// The view's axes: right and up across the image, toward_eye out of it.
+struct ViewAxes {
+  glm::dvec3 right, up, toward_eye;
+};
+
+ViewAxes view_axes(const CameraParams& params) {
+  const double yaw = glm::radians(params.yaw_deg);
+  const double pitch = glm::radians(params.pitch_deg);
+  ViewAxes axes;
+  axes.toward_eye = {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
+  // Looking straight up or down makes +Y a bad up vector; pitch is limited
+  // to ±89° by the schema, so +Y is always usable.
+  axes.right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), axes.toward_eye));
+  axes.up = glm::cross(axes.toward_eye, axes.right);
+  return axes;
+}
+
+std::vector<glm::dvec3> box_corners(const scene::Bounds& bounds) {
+  std::vector<glm::dvec3> corners;
+  for (int c = 0; c < 8; ++c) corners.push_back(bounds.corner(c));
+  return corners;
+}
+
+// The eye distance at which every point projects within `fill` of the
+// image's half extents: a point x across and z toward the eye, seen from
+// distance d, lands at x / ((d − z)·tan(fov/2)) of the half width.
+double fitted_distance(std::span<const glm::dvec3> points, const glm::dvec3& target, const ViewAxes& axes,
+                       double tan_half_x, double tan_half_y, double fill) {
+  double distance = 0.0;
+  for (const glm::dvec3& p : points) {
+    const glm::dvec3 q = p - target;
+    const double z = glm::dot(q, axes.toward_eye);
+    distance = std::max({distance, z + std::abs(glm::dot(q, axes.right)) / (fill * tan_half_x),
+                         z + std::abs(glm::dot(q, axes.up)) / (fill * tan_half_y)});
+  }
+  return distance;
+}
+
+// The orthographic half height that holds every point within `fill`.
+double fitted_half_height(std::span<const glm::dvec3> points, const glm::dvec3& target, const ViewAxes& axes,
+                          double aspect, double fill) {
+  double half = 0.0;
+  for (const glm::dvec3& p : points) {
+    const glm::dvec3 q = p - target;
+    half = std::max({half, std::abs(glm::dot(q, axes.up)) / fill, std::abs(glm::dot(q, axes.right)) / (fill * aspect)});
+  }
+  return half;
+}
+
 }  // namespace
 
-CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, double aspect) {
+CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, double aspect,
+                       std::span<const glm::dvec3> outline) {
   const glm::dvec3 centre = glm::dvec3(bounds.min + bounds.max) * 0.5;
   double radius = glm::length(glm::dvec3(bounds.max) - glm::dvec3(bounds.min)) * 0.5;
   if (!(radius > 0.0) || !std::isfinite(radius)) radius = 1.0;  // a point or empty model
+  const std::vector<glm::dvec3> corners = outline.empty() ? box_corners(bounds) : std::vector<glm::dvec3>{};
+  const std::span<const glm::dvec3> points = outline.empty() ? std::span<const glm::dvec3>(corners) : outline;
 
-  const double yaw = glm::radians(params.yaw_deg);
-  const double pitch = glm::radians(params.pitch_deg);
-  const glm::dvec3 toward_eye(std::sin(yaw) * std::cos(pitch), std::sin(pitch),
-                              std::cos(yaw) * std::cos(pitch));
-
-  const double fov_y = glm::radians(params.fov_deg);
-  // The narrower field decides how far back the eye must be.
-  const double fov_x = 2.0 * std::atan(std::tan(fov_y * 0.5) * aspect);
-  const double fov_min = std::min(fov_y, fov_x);
+  const ViewAxes axes = view_axes(params);
+  const double tan_half_y = std::tan(glm::radians(params.fov_deg) * 0.5);
+  const double tan_half_x = tan_half_y * aspect;
 
   CameraSetup cam;
-  double distance = params.distance;
   const bool ortho = params.projection == Projection::Orthographic;
   // Zoom only scales what fitting chose; an explicit distance is taken as meant.
   const double zoom = params.distance > 0.0 || !(params.zoom > 0.0) ? 1.0 : params.zoom;
+  double distance = params.distance;
   if (distance <= 0.0) {
-    distance = ortho ? radius * 3.0 : radius * kFrameMargin / std::sin(fov_min * 0.5) / zoom;
+    // A flat model seen edge-on projects to a line: the eye still keeps a
+    // tenth of a radius clear of it.
+    const double fitted = ortho ? 0.0 : fitted_distance(points, centre, axes, tan_half_x, tan_half_y, kFrameFill);
+    distance = ortho ? radius * 3.0 : std::max(fitted, radius * 0.1) / zoom;
   }
-  // Looking straight up or down makes +Y a bad up vector; pitch is limited to
-  // ±89° by the schema, so +Y is always usable.
-  const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), toward_eye));
-  const glm::dvec3 up = glm::cross(toward_eye, right);
   // Strafing moves eye and target together, so the view direction (and with
   // it the lighting seen) stays; in radii so it means the same at any scale.
-  const glm::dvec3 target = centre + (right * params.shift.x + up * params.shift.y) * radius;
-  cam.eye = target + toward_eye * distance;
+  const glm::dvec3 target = centre + (axes.right * params.shift.x + axes.up * params.shift.y) * radius;
+  cam.eye = target + axes.toward_eye * distance;
   cam.target = target;
   cam.view = glm::lookAt(cam.eye, target, glm::dvec3(0, 1, 0));
 
@@ -51,15 +95,15 @@ CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, 
   cam.far_plane = distance + reach;
   if (ortho) {
     cam.near_plane = distance - reach;
-    double half_h = radius * kFrameMargin / zoom;
-    if (aspect < 1.0) half_h /= aspect;
+    double half_h = fitted_half_height(points, centre, axes, aspect, kFrameFill) / zoom;
+    if (!(half_h > 0.0)) half_h = radius / zoom;
     const double half_w = half_h * aspect;
     cam.projection = glm::ortho(-half_w, half_w, -half_h, half_h, cam.near_plane, cam.far_plane);
   } else {
     // A camera inside the bounds still needs a positive near plane; 1e-4 of
     // the far plane keeps 24-bit depth usable.
     cam.near_plane = std::max(distance - reach, cam.far_plane * 1e-4);
-    cam.projection = glm::perspective(fov_y, aspect, cam.near_plane, cam.far_plane);
+    cam.projection = glm::perspective(glm::radians(params.fov_deg), aspect, cam.near_plane, cam.far_plane);
   }
   return cam;
 }
@@ -100,6 +144,13 @@ SceneFrame frame_scene(const std::vector<ScenePart>& parts) {
   for (const glm::dmat4& m : to_scene) frame.matrices.push_back(recentre * m);
   const auto [lo, hi] = union_bounds([&](std::size_t i) { return frame.matrices[i]; });
   frame.bounds = {glm::vec3(lo), glm::vec3(hi)};
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const glm::dmat4& m = frame.matrices[i];
+    if (parts[i].extremes.empty()) {
+      for (int c = 0; c < 8; ++c) frame.outline.emplace_back(m * glm::dvec4(parts[i].bounds.corner(c), 1.0));
+    }
+    for (const glm::vec3& p : parts[i].extremes) frame.outline.emplace_back(m * glm::dvec4(glm::dvec3(p), 1.0));
+  }
   return frame;
 }
 

@@ -2,6 +2,7 @@
 // Orbit camera fitted to the model's bounds. Pure maths, in double precision:
 // the matrices are only rounded to float once, after the model's origin has
 // been taken out, so large offsets and extreme scales lose nothing.
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -22,10 +23,15 @@ struct CameraSetup {
 };
 
 // yaw 0, pitch 0 puts the eye on +Z of the bounds' centre, looking toward -Z.
-// With distance 0 the eye backs off until the bounding sphere fills the
-// narrower of the two fields of view; near/far hug the bounds so depth
-// precision does not depend on the model's scale.
-CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, double aspect);
+// With distance 0 the eye backs off (orthographic: the view widens) until
+// every point of `outline` lies within kFrameFill of the image's half
+// width and half height: the model fills that much of the limiting
+// dimension whatever its shape. Without points the box's corners stand in.
+// near/far hug the bounds so depth precision does not depend on the
+// model's scale.
+inline constexpr double kFrameFill = 0.88;
+CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, double aspect,
+                       std::span<const glm::dvec3> outline = {});
 
 // One object of a scene as the framing sees it: its mesh's bounds (relative
 // to the mesh's origin), that origin, and its transform (model → scene).
@@ -33,6 +39,7 @@ struct ScenePart {
   scene::Bounds bounds;
   glm::dvec3 origin{0.0};
   glm::dmat4 transform{1.0};
+  std::span<const glm::vec3> extremes{};  // the mesh's (scene::Mesh::extremes); empty: box corners
 };
 
 // The coordinates a render works in: scene coordinates less `origin`, a
@@ -42,6 +49,7 @@ struct SceneFrame {
   glm::dvec3 origin{0.0};           // in scene coordinates
   std::vector<glm::dmat4> matrices;  // per part: mesh coordinates → frame
   scene::Bounds bounds;              // union of the parts' bounds, frame coordinates
+  std::vector<glm::dvec3> outline;   // every part's extreme points, frame coordinates
 };
 
 // Matrices are T(-origin) × transform × T(part origin), in double. One part

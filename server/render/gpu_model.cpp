@@ -55,7 +55,7 @@ gpu::Texture upload_texture(const scene::Texture& tex, std::size_t& bytes) {
 }  // namespace
 
 GpuModel::GpuModel(const scene::Model& model)
-    : bounds_(model.mesh.bounds), origin_(model.mesh.origin) {
+    : bounds_(model.mesh.bounds), extremes_(model.mesh.extremes), creases_(model.mesh.creases), origin_(model.mesh.origin) {
   const scene::Mesh& mesh = model.mesh;
   std::vector<Vertex> vertices(mesh.positions.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {

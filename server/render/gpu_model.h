@@ -51,6 +51,9 @@ class GpuModel {
     return false;
   }
   const scene::Bounds& bounds() const { return bounds_; }
+  // Vertices extreme along many directions, for framing (relative to origin).
+  const std::vector<glm::vec3>& extremes() const { return extremes_; }
+  const scene::CreaseProfile& creases() const { return creases_; }
   // The model-space point the vertex positions are relative to.
   const glm::dvec3& origin() const { return origin_; }
   std::size_t gpu_bytes() const { return gpu_bytes_; }
@@ -73,6 +76,8 @@ class GpuModel {
   std::vector<Level> levels_;
   std::vector<double> lod_errors_;
   scene::Bounds bounds_;
+  std::vector<glm::vec3> extremes_;
+  scene::CreaseProfile creases_;
   glm::dvec3 origin_{0.0};
   bool has_vertex_colors_ = false;
   std::size_t gpu_bytes_ = 0;

@@ -29,6 +29,7 @@ std::string PassPlan::describe() const {
   for (Pass p : passes) {
     if (!out.empty()) out += ",";
     out += pass_name(p);
+    if (p == Pass::Edges && creases_only) out += "(creases)";
   }
   return out;
 }
@@ -114,7 +115,11 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   if (params.outline.any()) {
     if (params.outline.hull) plan.passes.push_back(Pass::HullOutline);
     if (params.outline.wireframe) plan.passes.push_back(Pass::Wireframe);
-    if (params.outline.edges) {
+    const bool silhouette_drawn = params.outline.hull || params.outline.wireframe;
+    const bool creases_wanted = params.outline.creases == OutlineCreases::Always ||
+                                (params.outline.creases == OutlineCreases::Auto && model.hard_edged);
+    plan.creases_only = !params.outline.edges && silhouette_drawn && creases_wanted;
+    if (params.outline.edges || plan.creases_only) {
       plan.passes.push_back(Pass::EdgePrepass);
       plan.passes.push_back(Pass::Edges);
     }

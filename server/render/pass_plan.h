@@ -17,7 +17,7 @@ enum class Pass {
   HullOutline,  // inverted hull outside the stencil mark
   Wireframe,    // back-face edges widened into lines
   EdgePrepass,  // normals and eye distances for the edge pass
-  Edges,        // screen-space depth/normal discontinuities
+  Edges,        // screen-space depth/normal discontinuities (or creases only)
   Resolve,      // multisample resolve
   Readback,     // pixels back to the CPU
   Downsample,   // supersampled image averaged to the output size
@@ -29,6 +29,7 @@ struct ModelTraits {
   bool has_textures = false;
   bool has_normal_maps = false;
   bool has_vertex_colors = false;
+  bool hard_edged = false;  // creased at the requested crease angle (scene::CreaseProfile)
 };
 
 struct PassPlan {
@@ -43,6 +44,9 @@ struct PassPlan {
   int samples = 1;
   int supersample = 1;
   int shadow_light = -1;  // index into RenderParams::lights, -1: no shadows
+  // The edge pass draws crease lines only: it joins a hull or wireframe
+  // outline (which draws the silhouette) on a hard-edged model.
+  bool creases_only = false;
 
   bool has(Pass pass) const;
   // The passes as a comma-separated list, e.g. for the Server-Timing header.

@@ -178,6 +178,10 @@ RenderParams RenderParams::from_json(const json& j) {
     p.outline.wireframe |= m == "wireframe";
     p.outline.edges |= m == "edges";
   }
+  const std::string creases = outline.at("creases");
+  p.outline.creases = creases == "always" ? OutlineCreases::Always
+                      : creases == "never" ? OutlineCreases::Never
+                                           : OutlineCreases::Auto;
   p.outline.crease_angle_deg = outline.at("crease_angle").get<float>();
   p.outline.depth_threshold = outline.at("depth_threshold").get<float>();
   p.outline.color = srgb_to_linear(vec3_of(outline.at("color")));

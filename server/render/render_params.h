@@ -55,10 +55,10 @@ struct SpecularParams {
 struct RimParams {
   bool enabled = false;
   glm::vec3 color{1.0f};  // linear
-  float power = 4;
+  float power = 3;
   float strength = 0.6f;
-  float threshold = 0.3f;
-  RimMask mask = RimMask::Lit;
+  float threshold = 0.18f;
+  RimMask mask = RimMask::Shadow;
 };
 
 struct HalftoneParams {
@@ -100,6 +100,9 @@ enum class OutlineColorMode { Fixed, Texture, Material };
 
 enum class OutlineUnits { Pixels, World };
 
+// When crease lines join a hull or wireframe outline.
+enum class OutlineCreases { Auto, Always, Never };
+
 struct OutlineParams {
   bool enabled = true;
   bool hull = true;
@@ -110,6 +113,7 @@ struct OutlineParams {
   glm::vec3 color{0.0f};  // linear
   OutlineColorMode color_mode = OutlineColorMode::Fixed;
   float darken = 0.6f;
+  OutlineCreases creases = OutlineCreases::Auto;
   float crease_angle_deg = 40;
   float depth_threshold = 0.02f;  // fraction of the model's size
   bool any() const { return enabled && width > 0.0f && (hull || wireframe || edges); }

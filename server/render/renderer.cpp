@@ -10,6 +10,7 @@
 #include "render/camera.h"
 #include "render/pass_timer.h"
 #include "render/lod_choice.h"
+#include "render/outline_width.h"
 #include "render/shadow_fit.h"
 
 namespace toond::render {
@@ -54,7 +55,7 @@ scene::Model make_floor(const scene::Bounds& bounds, float size, float repeat,
 std::vector<LodUse> choose_levels(const std::vector<RenderObject>& objects, const SceneFrame& frame,
                                   const RenderParams& params) {
   const CameraSetup camera =
-      fit_camera(params.camera, frame.bounds, static_cast<double>(params.width) / params.height);
+      fit_camera(params.camera, frame.bounds, static_cast<double>(params.width) / params.height, frame.outline);
   const bool ortho = params.camera.projection == Projection::Orthographic;
   std::vector<LodUse> uses;
   for (std::size_t i = 0; i < objects.size(); ++i) {
@@ -179,7 +180,8 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     traits.has_textures |= o.model.has_textures();
     traits.has_normal_maps |= o.model.has_normal_maps();
     traits.has_vertex_colors |= o.model.has_vertex_colors();
-    parts.push_back({o.model.bounds(), o.model.origin(), o.transform});
+    traits.hard_edged |= o.model.creases().hard_edged(params.outline.crease_angle_deg);
+    parts.push_back({o.model.bounds(), o.model.origin(), o.transform, o.model.extremes()});
   }
   const PassPlan plan = plan_passes(params, traits);
   // Everything below works in the frame's coordinates: scene coordinates
@@ -282,8 +284,11 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   out.samples = target.samples();
   target.bind_for_drawing();
   const CameraSetup camera = fit_camera(params.camera, bounds,
-                                        static_cast<double>(params.width) / params.height);
+                                        static_cast<double>(params.width) / params.height, frame.outline);
   const glm::mat4 view_projection = camera.view_projection();
+  const bool ortho = params.camera.projection == Projection::Orthographic;
+  // Every outline method draws this one width, in drawn pixels.
+  const float outline_px = static_cast<float>(outline_width_px(params.outline, camera, ortho, params.height)) * px;
   std::vector<FaceSkip> skip(objects.size());  // of the main pass and the edge prepass
   // The main pass's cap checks, read once the image is back (when their
   // answers are ready anyway) to report which objects drew both sides.
@@ -501,9 +506,11 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     // spans `height` pixels over 2 units.
     const double world_per_px = 2.0 / (camera.projection[1][1] * draw_height);
     program.set("u_world_per_px_at_w1", static_cast<float>(world_per_px));
-    const bool world = params.outline.units == OutlineUnits::World;
-    program.set("u_world_units", world ? 1 : 0);
-    program.set("u_width", world ? params.outline.width : params.outline.width * px);
+    program.set("u_width", outline_px);
+    program.set("u_viewport_px", glm::vec2(static_cast<float>(draw_width), static_cast<float>(draw_height)));
+    program.set("u_eye", glm::vec3(camera.eye));
+    program.set("u_view_dir", glm::vec3(glm::normalize(camera.target - camera.eye)));
+    program.set("u_orthographic", ortho ? 1 : 0);
     // The stencil keeps the hull off the model, so its faces toward the
     // camera may draw the ring: where a closed model's back faces may be
     // skipped, the hull's may too. Its front faces lie nearer than its back
@@ -511,19 +518,15 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     // The hull stands out of the model's box by up to 3 widths (mitred
     // corners), and must not be cut by the near or far plane either: where
     // it is, its back faces show through the cut.
-    const bool ortho = params.camera.projection == Projection::Orthographic;
-    double reach = world ? 3.0 * params.outline.width : 0.0;
-    if (!world) {
-      // A pixel's size grows with the depth w, which the offset itself adds to.
-      const double k = 3.0 * params.outline.width * px * world_per_px;
-      double w_max = 1.0;
-      if (!ortho) {
-        for (int corner = 0; corner < 8; ++corner) {
-          w_max = std::max(w_max, (camera.projection * camera.view * glm::dvec4(bounds.corner(corner), 1.0)).w);
-        }
+    // A pixel's size grows with the depth w, which the offset itself adds to.
+    const double k = 3.0 * outline_px * world_per_px;
+    double w_max = 1.0;
+    if (!ortho) {
+      for (int corner = 0; corner < 8; ++corner) {
+        w_max = std::max(w_max, (camera.projection * camera.view * glm::dvec4(bounds.corner(corner), 1.0)).w);
       }
-      reach = ortho ? k : (k < 0.5 ? k * w_max / (1.0 - k) : std::numeric_limits<double>::infinity());
     }
+    const double reach = ortho ? k : (k < 0.5 ? k * w_max / (1.0 - k) : std::numeric_limits<double>::infinity());
     const glm::dmat4 clip = camera.projection * camera.view;
     set_outline_colour_and_draw(program, [&](std::size_t i) {
       const GpuModel& model = objects[i].model;
@@ -552,7 +555,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     program.set("u_viewport", glm::vec2(static_cast<float>(draw_width), static_cast<float>(draw_height)));
     // Half of each line lies inside the silhouette, under the front faces:
     // lines twice as wide leave `width` pixels showing.
-    program.set("u_line_px", 2.0f * params.outline.width * px);
+    program.set("u_line_px", 2.0f * outline_px);
     set_outline_colour_and_draw(program, [](std::size_t) { return FaceSkip{}; });
     check_gl("wireframe pass");
     end_pass(Pass::Wireframe);
@@ -587,11 +590,13 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
 
     target.bind_for_drawing();
     glDisable(GL_DEPTH_TEST);
-    gpu::Program& edges = programs_.get("fullscreen.vert", "edges.frag", {});
+    gpu::Program& edges = programs_.get("fullscreen.vert", "edges.frag",
+                                        plan.creases_only ? std::vector<std::string>{"CREASES_ONLY"}
+                                                          : std::vector<std::string>{});
     edges.use();
     glBindTextureUnit(0, normals.texture());
     edges.set("u_normal_depth", 0);
-    edges.set("u_reach", std::max(0.5f * params.outline.width * px, 1.0f));
+    edges.set("u_reach", std::max(0.5f * outline_px, 1.0f));
     edges.set("u_depth_threshold", params.outline.depth_threshold * 2.0f * bounds.radius());
     edges.set("u_cos_crease", static_cast<float>(std::cos(glm::radians(params.outline.crease_angle_deg))));
     edges.set("u_edge_color", params.outline.color);

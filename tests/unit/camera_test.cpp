@@ -203,9 +203,11 @@ TEST(Camera, ShiftStrafesInRadiiAndKeepsTheViewDirection) {
     params.shift = {0.5, -0.25};
     const auto moved = fit_camera(params, bounds, 1.0);
     const glm::dvec3 centre = project(moved, {0, 0, 0});
-    // Half-height of the orthographic frame is radius * 1.08.
-    EXPECT_NEAR(centre.x, -0.5 / 1.08, 1e-5);
-    EXPECT_NEAR(centre.y, 0.25 / 1.08, 1e-5);
+    // The shift is in bounding radii (the box's half diagonal), the frame's
+    // half height is 1 / projection[1][1].
+    const double radii_per_half_height = scale * std::sqrt(3.0) * moved.projection[1][1];
+    EXPECT_NEAR(centre.x, -0.5 * radii_per_half_height, 1e-5);
+    EXPECT_NEAR(centre.y, 0.25 * radii_per_half_height, 1e-5);
     const glm::dvec3 dir_base = glm::normalize(base.target - base.eye);
     const glm::dvec3 dir_moved = glm::normalize(moved.target - moved.eye);
     EXPECT_NEAR(glm::length(dir_base - dir_moved), 0.0, 1e-12);

@@ -31,6 +31,24 @@ TEST(PassPlan, NoOutlinePassAtWidthZeroOrWhenDisabled) {
   EXPECT_TRUE(plan_passes(params({{"outline", {{"width", 0.5}}}}), {}).has(Pass::HullOutline));
 }
 
+// Crease lines join the default outline on a hard-edged model only, and
+// the request can ask for them always or never.
+TEST(PassPlan, CreaseLinesJoinTheOutlineOfHardEdgedModels) {
+  ModelTraits smooth, hard;
+  hard.hard_edged = true;
+  EXPECT_EQ(plan_passes(params(json::object()), smooth).describe(), "main,hull_outline,resolve,readback");
+  const PassPlan creased = plan_passes(params(json::object()), hard);
+  EXPECT_TRUE(creased.creases_only);
+  EXPECT_EQ(creased.describe(), "main,hull_outline,edge_prepass,edges(creases),resolve,readback");
+  EXPECT_FALSE(plan_passes(params({{"outline", {{"creases", "never"}}}}), hard).has(Pass::Edges));
+  EXPECT_TRUE(plan_passes(params({{"outline", {{"creases", "always"}}}}), smooth).creases_only);
+  // The edges method draws creases with its silhouettes already.
+  const PassPlan edges = plan_passes(params({{"outline", {{"method", "edges"}}}}), hard);
+  EXPECT_TRUE(edges.has(Pass::Edges));
+  EXPECT_FALSE(edges.creases_only);
+  EXPECT_FALSE(plan_passes(params({{"outline", {{"width", 0}}}}), hard).has(Pass::Edges));
+}
+
 TEST(PassPlan, NoResolveWithoutMsaa) {
   const PassPlan plan = plan_passes(params({{"msaa", 1}}), {});
   EXPECT_FALSE(plan.has(Pass::Resolve));

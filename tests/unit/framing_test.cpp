@@ -1,0 +1,100 @@
+// Default framing fits what the model covers in the image, and the outline
+// width is one number for every method.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "render/camera.h"
+#include "render/outline_width.h"
+#include "scene/extreme_points.h"
+
+namespace toond::render {
+namespace {
+
+// Points of a unit sphere, denser than any tessellation the tests use.
+std::vector<glm::vec3> sphere_points(int n) {
+  std::vector<glm::vec3> points;
+  const double golden = std::acos(-1.0) * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i) {
+    const double y = 1.0 - (i + 0.5) * 2.0 / n;
+    const double r = std::sqrt(1.0 - y * y);
+    points.emplace_back(r * std::cos(golden * i), y, r * std::sin(golden * i));
+  }
+  return points;
+}
+
+// How far out, in NDC, the farthest of `points` projects (0..1 fills the
+// limiting dimension).
+double projected_extent(const CameraSetup& cam, const std::vector<glm::vec3>& points, double aspect) {
+  double extent = 0;
+  for (const glm::vec3& p : points) {
+    const glm::dvec4 clip = cam.projection * cam.view * glm::dvec4(glm::dvec3(p), 1.0);
+    const double x = clip.x / clip.w, y = clip.y / clip.w;
+    extent = std::max(extent, aspect >= 1.0 ? std::abs(y) : std::abs(x));
+  }
+  return extent;
+}
+
+TEST(ExtremePoints, AreFewAndLieOnTheOutline) {
+  const std::vector<glm::vec3> sphere = sphere_points(20000);
+  const std::vector<glm::vec3> extremes = scene::extreme_points(sphere);
+  EXPECT_LE(extremes.size(), static_cast<std::size_t>(scene::kExtremeDirections));
+  EXPECT_GT(extremes.size(), 100u);
+  for (const glm::vec3& p : extremes) EXPECT_NEAR(glm::length(p), 1.0f, 1e-5f);
+}
+
+// A sphere fills 85–92 % of the limiting dimension from any view, at any
+// aspect, in either projection; the bounding sphere of its box left it at
+// about half.
+TEST(Framing, ASphereFillsMostOfTheLimitingDimension) {
+  const std::vector<glm::vec3> sphere = sphere_points(20000);
+  std::vector<glm::dvec3> outline;
+  for (const glm::vec3& p : scene::extreme_points(sphere)) outline.emplace_back(p);
+  const scene::Bounds bounds{glm::vec3(-1), glm::vec3(1)};
+  for (const Projection projection : {Projection::Perspective, Projection::Orthographic}) {
+    for (const double aspect : {0.5, 1.0, 2.0}) {
+      for (const double yaw : {0.0, 30.0, 123.0}) {
+        CameraParams params;
+        params.projection = projection;
+        params.yaw_deg = yaw;
+        params.pitch_deg = 15;
+        const CameraSetup cam = fit_camera(params, bounds, aspect, outline);
+        const double fill = projected_extent(cam, sphere, aspect);
+        EXPECT_GE(fill, 0.85) << "aspect " << aspect << " yaw " << yaw;
+        EXPECT_LE(fill, 0.92) << "aspect " << aspect << " yaw " << yaw;
+      }
+    }
+  }
+}
+
+TEST(OutlineWidth, PixelsStayPixelsAndWorldUnitsConvertAtTheCentre) {
+  const scene::Bounds bounds{glm::vec3(-1), glm::vec3(1)};
+  CameraParams params;
+  params.projection = Projection::Orthographic;
+  const CameraSetup ortho = fit_camera(params, bounds, 1.0);
+  OutlineParams outline;
+  outline.width = 3;
+  EXPECT_DOUBLE_EQ(outline_width_px(outline, ortho, true, 512), 3.0);
+  outline.width = 200;
+  EXPECT_DOUBLE_EQ(outline_width_px(outline, ortho, true, 512), kMaxOutlinePx);
+
+  // One world unit is the image height over the view's height in units.
+  outline.units = OutlineUnits::World;
+  outline.width = 0.01f;
+  const double half_height = 1.0 / ortho.projection[1][1];
+  EXPECT_NEAR(outline_width_px(outline, ortho, true, 512), 0.01 * 256.0 / half_height, 1e-3);
+
+  // In perspective, at the target's distance: farther is thinner.
+  params.projection = Projection::Perspective;
+  const CameraSetup near_cam = fit_camera(params, bounds, 1.0);
+  params.distance = 2.0 * glm::length(near_cam.eye - near_cam.target);
+  const CameraSetup far_cam = fit_camera(params, bounds, 1.0);
+  EXPECT_NEAR(outline_width_px(outline, far_cam, false, 512), 0.5 * outline_width_px(outline, near_cam, false, 512),
+              1e-6);
+  outline.width = 1e6f;
+  EXPECT_DOUBLE_EQ(outline_width_px(outline, near_cam, false, 512), kMaxOutlinePx);
+}
+
+}  // namespace
+}  // namespace toond::render
