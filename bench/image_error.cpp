@@ -1,20 +1,55 @@
 #include "image_error.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 #include <cstdlib>
 #include <stdexcept>
 
 #include "support/edge_measure.h"
+#include "support/sphere_oracle.h"
 
 namespace toond::bench {
+
+namespace {
+
+// Pixels in the largest 4-connected group of `off` ones.
+std::size_t largest_blob(std::vector<std::uint8_t> off, int width, int height) {
+  std::size_t largest = 0;
+  std::vector<int> stack;
+  for (int start = 0; start < width * height; ++start) {
+    if (!off[static_cast<std::size_t>(start)]) continue;
+    std::size_t size = 0;
+    off[static_cast<std::size_t>(start)] = 0;
+    stack.push_back(start);
+    while (!stack.empty()) {
+      const int p = stack.back();
+      stack.pop_back();
+      ++size;
+      const int x = p % width, y = p / width;
+      for (const int q : {x > 0 ? p - 1 : -1, x + 1 < width ? p + 1 : -1, y > 0 ? p - width : -1,
+                          y + 1 < height ? p + width : -1}) {
+        if (q < 0 || !off[static_cast<std::size_t>(q)]) continue;
+        off[static_cast<std::size_t>(q)] = 0;
+        stack.push_back(q);
+      }
+    }
+    largest = std::max(largest, size);
+  }
+  return largest;
+}
+
+}  // namespace
 
 PixelError compare_images(const image::Image& reference, const image::Image& image) {
   if (reference.width != image.width || reference.height != image.height) {
     throw std::runtime_error("compare_images: sizes differ");
   }
   double sum = 0;
-  std::size_t off = 0;
   const std::size_t pixels = reference.rgba.size() / 4;
+  std::vector<std::uint8_t> off(pixels, 0);
+  std::size_t off_count = 0;
   for (std::size_t i = 0; i < reference.rgba.size(); i += 4) {
     int worst = 0;
     for (std::size_t c = 0; c < 3; ++c) {
@@ -22,28 +57,16 @@ PixelError compare_images(const image::Image& reference, const image::Image& ima
       sum += d;
       worst = std::max(worst, d);
     }
-    off += worst > kOffTolerance ? 1 : 0;
+    off[i / 4] = worst > kOffTolerance ? 1 : 0;
+    off_count += off[i / 4];
   }
-  return {sum / static_cast<double>(pixels * 3), 100.0 * static_cast<double>(off) / static_cast<double>(pixels)};
+  return {sum / static_cast<double>(pixels * 3), 100.0 * static_cast<double>(off_count) / static_cast<double>(pixels),
+          largest_blob(std::move(off), reference.width, reference.height)};
 }
 
 BandEdgeError sphere_band_edge_error(const image::Image& silhouette, const image::Image& banded, int steps) {
-  constexpr double kPi = 3.14159265358979323846;
-  constexpr int kRays = 720;
   const test::DiskEstimate disk = test::estimate_disk(test::LinearChannel(silhouette, 1));
-  const test::LinearChannel grey(banded, 1);
-  test::ErrorStats stats;
-  for (int k = 1; k < steps; ++k) {
-    const double expected = disk.radius * std::sqrt(1.0 - double(k * k) / double(steps * steps));
-    const double midpoint = (k + 0.5) / steps;  // between the linear levels k/N and (k+1)/N
-    for (int i = 0; i < kRays; ++i) {
-      const double angle = 2.0 * kPi * (i + 0.5) / kRays;
-      const auto found =
-          test::ray_crossing(grey, disk.centre_x, disk.centre_y, angle, expected - 3.0, expected + 3.0, midpoint);
-      if (found) stats.add(*found - expected);
-      else ++stats.missing;
-    }
-  }
+  const test::ErrorStats stats = test::band_edge_errors(banded, disk, steps, 3.0);
   return {stats.mean_abs, stats.max_abs, stats.missing};
 }
 

@@ -14,6 +14,9 @@ inline constexpr int kOffTolerance = 8;
 struct PixelError {
   double mean_abs = 0;  // over every RGB channel of every pixel, in levels of 255
   double pct_off = 0;   // percent of pixels "off" (see kOffTolerance)
+  // Pixels in the largest 4-connected group of off pixels: scattered
+  // slivers along edges stay small, a crack or a missing part does not.
+  std::size_t largest_blob = 0;
 };
 
 // Both images must have the same size.

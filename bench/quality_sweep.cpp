@@ -225,7 +225,11 @@ SweepResult run_quality_sweep(httplib::Client& client, const SweepOptions& o) {
       non_lod.erase("lod_error_px");
       if (settings["lod"] == "full") full_detail[non_lod.dump()] = img;
       const auto full = full_detail.find(non_lod.dump());
-      if (full != full_detail.end()) p.lod_vs_full_pct_off = compare_images(full->second, img).pct_off;
+      if (full != full_detail.end()) {
+        const PixelError vs_full = compare_images(full->second, img);
+        p.lod_vs_full_pct_off = vs_full.pct_off;
+        p.lod_vs_full_blob = vs_full.largest_blob;
+      }
       p.is_default = settings == result.defaults;
       std::fprintf(stderr, "  %-14s %-12s server %8.2f ms  wall %8.2f ms  error %.4f%s  [%s]\n", p.family.c_str(),
                    p.label.c_str(), p.server_ms, p.wall_ms, scene.analytic ? p.band_edge_px : p.pct_off,
@@ -248,18 +252,18 @@ void write_sweep_csv(const SweepResult& result, const std::filesystem::path& pat
   out << "scene,family,label,msaa,supersample,lod,lod_error_px,map_size,png_compression,lod_drawn,"
          "server_ms,server_p25_ms,server_p75_ms,wall_ms,png_ms,png_bytes,mean_abs_error,pct_pixels_off,"
          "band_edge_px,band_edge_max_px,"
-         "lod_vs_full_pct_off,default,on_front\n";
+         "lod_vs_full_pct_off,lod_vs_full_blob_px,default,on_front\n";
   for (const SweepPoint& p : result.points) {
     const json& s = p.settings;
     char line[512];
     std::snprintf(line, sizeof line,
-                  "\"%s\",%s,\"%s\",%d,%d,%s,%g,%d,%d,\"%s\",%.3f,%.3f,%.3f,%.3f,%.3f,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%d\n",
+                  "\"%s\",%s,\"%s\",%d,%d,%s,%g,%d,%d,\"%s\",%.3f,%.3f,%.3f,%.3f,%.3f,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%zu,%d,%d\n",
                   p.scene.c_str(), p.family.c_str(), p.label.c_str(), s["msaa"].get<int>(),
                   s["supersample"].get<int>(), s["lod"].get<std::string>().c_str(), s["lod_error_px"].get<double>(),
                   s["map_size"].get<int>(), s["png_compression"].get<int>(), p.lod_header.c_str(), p.server_ms,
                   p.server_p25_ms, p.server_p75_ms, p.wall_ms, p.png_ms, p.png_bytes, p.mean_abs, p.pct_off,
                   p.band_edge_px, p.band_edge_max_px,
-                  p.lod_vs_full_pct_off, p.is_default ? 1 : 0, p.on_front ? 1 : 0);
+                  p.lod_vs_full_pct_off, p.lod_vs_full_blob, p.is_default ? 1 : 0, p.on_front ? 1 : 0);
     out << line;
   }
 }
@@ -283,6 +287,7 @@ nlohmann::json sweep_json(const SweepResult& result) {
                       {"band_edge_px", p.band_edge_px},
                       {"band_edge_max_px", p.band_edge_max_px},
                       {"lod_vs_full_pct_off", p.lod_vs_full_pct_off},
+                      {"lod_vs_full_blob_px", p.lod_vs_full_blob},
                       {"default", p.is_default},
                       {"on_front", p.on_front}});
   }

@@ -99,8 +99,8 @@ TEST_F(Lod, AutoDrawsACoarserLevelThatLooksLikeFullDetail) {
   EXPECT_EQ(full.lod.triangles, bunny_triangles_);
   EXPECT_GT(full.lod.levels, 3);
   EXPECT_GT(automatic.lod.level, 0);
-  // The chain steps by 60 %: the finest coarser level already sheds 40 %.
-  EXPECT_LE(automatic.lod.triangles, bunny_triangles_ * 6 / 10 + 1);
+  // The chain steps by 75 %: the finest coarser level already sheds 25 %.
+  EXPECT_LE(automatic.lod.triangles, bunny_triangles_ * 3 / 4 + 1);
   EXPECT_LE(automatic.lod.error_px, 0.5);
   // "Looks the same": at most 0.5 % of pixels visibly different (more
   // than 8 of 255 in a channel: an antialiased edge that moved by a
