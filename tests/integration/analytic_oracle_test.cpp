@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "support/edge_measure.h"
+#include "support/sphere_oracle.h"
 #include "support/generated_models.h"
 #include "test_client.h"
 
@@ -18,9 +19,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kSize = 512;
-constexpr int kRays = 720;
 
 class AnalyticOracle : public SharedDaemonTest {
  protected:
@@ -57,25 +56,9 @@ class AnalyticOracle : public SharedDaemonTest {
     return estimate_disk(LinearChannel(render_ok(client, params), 1));
   }
 
-  // Band-edge errors (measured minus analytic radius, in pixels) over every
-  // ray and every inner edge of an N-band render.
   static ErrorStats band_edge_errors(int steps, int msaa, const DiskEstimate& disk, bool band_aa = true) {
     auto client = daemon().client();
-    const auto img = render_ok(client, sphere_params(steps, msaa, band_aa));
-    const LinearChannel grey(img, 1);
-    ErrorStats stats;
-    for (int k = 1; k < steps; ++k) {
-      const double expected = disk.radius * std::sqrt(1.0 - double(k * k) / double(steps * steps));
-      // Levels are k/N in linear light (white light, white base, no ambient).
-      const double midpoint = (k + 0.5) / steps;
-      for (int i = 0; i < kRays; ++i) {
-        const double angle = 2.0 * kPi * (i + 0.5) / kRays;
-        const auto found =
-            ray_crossing(grey, disk.centre_x, disk.centre_y, angle, expected - 1.5, expected + 1.5, midpoint);
-        if (found) stats.add(*found - expected);
-        else ++stats.missing;
-      }
-    }
+    const ErrorStats stats = test::band_edge_errors(render_ok(client, sphere_params(steps, msaa, band_aa)), disk, steps);
     std::printf("[oracle] steps %d msaa %d band_aa %d: band-edge error mean %.3f px, max %.3f px over %zu edges (%zu missing)\n",
                 steps, msaa, band_aa ? 1 : 0, stats.mean_abs, stats.max_abs, stats.count, stats.missing);
     return stats;
@@ -139,17 +122,7 @@ TEST_F(AnalyticOracle, DiskOutlineRingIsTheWidthAllRound) {
   ASSERT_GT(disk.radius, 100.0);
   for (double width : {1.0, 2.0, 4.5}) {
     params["outline"] = {{"enabled", true}, {"method", "hull"}, {"width", width}, {"color", {1, 0, 0}}};
-    const auto img = render_ok(client, params);
-    const LinearChannel red(img, 0), green(img, 1);
-    ErrorStats stats;
-    for (int i = 0; i < kRays; ++i) {
-      const double angle = 2.0 * kPi * (i + 0.5) / kRays;
-      const auto inner = ray_crossing(green, disk.centre_x, disk.centre_y, angle, disk.radius - 2, disk.radius + 2, 0.5);
-      const auto outer = ray_crossing(red, disk.centre_x, disk.centre_y, angle, disk.radius - 2,
-                                      disk.radius + width + 2, 0.5);
-      if (inner && outer) stats.add(*outer - *inner - width);
-      else ++stats.missing;
-    }
+    const ErrorStats stats = outline_ring(render_ok(client, params), disk, width).width_error;
     std::printf("[oracle] disk outline %.1f px: width error mean %.3f px, max %.3f px over %zu rays\n", width,
                 stats.mean_abs, stats.max_abs, stats.count);
     EXPECT_EQ(stats.missing, 0u) << "width " << width;

@@ -128,9 +128,10 @@ TEST_F(BundleImages, RampImageErrorsNameTheParameter) {
 class FloorTexture : public SharedDaemonTest {
  protected:
   static json scene() {
+    // Zoomed out so the bottom rows show floor only.
     return {{"width", 160},
             {"height", 160},
-            {"camera", {{"pitch", 75}}},
+            {"camera", {{"pitch", 75}, {"zoom", 0.6}}},
             {"outline", {{"enabled", false}}},
             {"floor", {{"enabled", true}, {"color", {1, 1, 1}}, {"size", 6}}}};
   }

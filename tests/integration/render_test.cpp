@@ -190,13 +190,15 @@ TEST_F(Render, VertexColoursAreTheBaseColour) {
   EXPECT_EQ(rgb_at(img, img.width / 2, img.height / 2), (Rgb{255, 0, 0})) << "the front quad is red";
 }
 
-// The outline is the difference between a render with and without it: it
-// must lie outside the model, be dark, and close around the silhouette.
+// The hull outline is the difference between a render with and without
+// it: it must lie outside the model, be dark, and close around the
+// silhouette. (Crease lines, which hard-edged models get inside, are left
+// out here: Effects tests them.)
 void expect_closed_dark_ring(httplib::Client& client, json params, double width) {
   params["msaa"] = 1;
   params["outline"] = {{"enabled", false}};
   const auto bare = render_ok(client, params);
-  params["outline"] = {{"enabled", true}, {"width", width}, {"color", {0, 0, 0}}};
+  params["outline"] = {{"enabled", true}, {"width", width}, {"color", {0, 0, 0}}, {"creases", "never"}};
   const auto outlined = render_ok(client, params);
   ASSERT_EQ(bare.width, outlined.width);
   const int w = bare.width, h = bare.height;
@@ -394,7 +396,9 @@ TEST_F(Render, ServerTimingNamesThePassesThatRan) {
   EXPECT_NE(res->get_header_value("Server-Timing").find("main;dur="), std::string::npos);
   auto with_outline = post_json(client, "/render", {{"width", 64}, {"height", 64}, {"msaa", 4}});
   ASSERT_TRUE(with_outline);
-  EXPECT_EQ(with_outline->get_header_value("X-Toond-Passes"), "main,hull_outline,resolve,readback");
+  // The demo model's box is hard-edged: its creases join the outline.
+  EXPECT_EQ(with_outline->get_header_value("X-Toond-Passes"),
+            "main,hull_outline,edge_prepass,edges(creases),resolve,readback");
 }
 
 // `total` is the request's own work; the passes' thread times and the

@@ -1,6 +1,7 @@
 #include "support/generated_models.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 namespace toond::test {
@@ -72,6 +73,64 @@ std::string disk_obj(int segments, double radius) {
   for (int s = 0; s < segments; ++s) {
     const int a = 2 + s, b = 2 + (s + 1) % segments;
     obj += "f 1//1 " + std::to_string(a) + "//1 " + std::to_string(b) + "//1\n";
+  }
+  return obj;
+}
+
+std::string exporter_sphere_obj(const ExporterSphere& sphere) {
+  const double pi = std::acos(-1.0);
+  const int segments = sphere.segments;
+  const int rings = sphere.rings;
+  std::string obj = "# UV sphere, exporter style\n";
+  // A fixed sequence in [-1, 1): the same file on every run.
+  std::uint32_t state = 12345u;
+  auto scatter = [&] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / static_cast<double>(1u << 23) - 1.0;
+  };
+  auto index = [&](int r, int s) { return r * (segments + 1) + s + 1; };
+  for (int r = 0; r <= rings; ++r) {
+    const double theta = pi * r / rings;
+    for (int s = 0; s <= segments; ++s) {
+      const double phi = 2.0 * pi * s / segments;
+      const glm::dvec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+      glm::dvec3 p = n;
+      const bool copy = r == 0 || r == rings || s == 0 || s == segments;
+      if (copy && sphere.jitter > 0.0) p += glm::dvec3(scatter(), scatter(), scatter()) * sphere.jitter;
+      obj += vec_line("v", p);
+      if (sphere.normals == ExporterSphere::Normals::Smooth) obj += vec_line("vn", n);
+      char vt[96];
+      std::snprintf(vt, sizeof vt, "vt %.17g %.17g\n", static_cast<double>(s) / segments,
+                    1.0 - static_cast<double>(r) / rings);
+      obj += vt;
+    }
+  }
+  int face_normal = 0;
+  auto face = [&](int a, int b, int c) {
+    std::string line = "f";
+    if (sphere.normals == ExporterSphere::Normals::PerFace) {
+      // The flat normal of this triangle, from its own corners.
+      ++face_normal;
+      const auto corner = [&](int i) {
+        const int r = (i - 1) / (segments + 1), s = (i - 1) % (segments + 1);
+        const double theta = pi * r / rings, phi = 2.0 * pi * s / segments;
+        return glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+      };
+      obj += vec_line("vn", glm::normalize(glm::cross(corner(b) - corner(a), corner(c) - corner(a))));
+    }
+    for (const int i : {a, b, c}) {
+      line += " " + std::to_string(i) + "/" + std::to_string(i);
+      if (sphere.normals == ExporterSphere::Normals::Smooth) line += "/" + std::to_string(i);
+      if (sphere.normals == ExporterSphere::Normals::PerFace) line += "/" + std::to_string(face_normal);
+    }
+    obj += line + "\n";
+  };
+  for (int r = 0; r < rings; ++r) {
+    for (int s = 0; s < segments; ++s) {
+      const int a = index(r, s), b = index(r + 1, s), c = index(r + 1, s + 1), d = index(r, s + 1);
+      if (r != 0) face(a, b, d);
+      if (r != rings - 1) face(b, c, d);
+    }
   }
   return obj;
 }
