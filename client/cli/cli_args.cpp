@@ -448,7 +448,8 @@ the exit status is then 1.
 Options:
   --models DIR        the folder of model folders (default: ../shared/models)
   --all               every model folder in DIR (default: spot,
-                      kenney-cube-pet-dog, windmill, stanford-bunny, utah-teapot)
+                      kenney-cube-pet-dog, kenney-space-craft, windmill,
+                      stanford-bunny, utah-teapot)
   --only NAME[,NAME]  just these model folders, in this order; may be repeated
   --size N            width and height of each render in pixels (default 256)
   -o, --output DIR    the folder to write (created if missing; required)

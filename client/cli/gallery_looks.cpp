@@ -96,7 +96,8 @@ constexpr ViewEntry kViewTable[] = {
     {"windmill", 65, 8},
 };
 
-const std::vector<std::string> kDefaultModels = {"spot", "kenney-cube-pet-dog", "windmill",
+// The space craft is the hard-edged one: its default look shows crease lines.
+const std::vector<std::string> kDefaultModels = {"spot", "kenney-cube-pet-dog", "kenney-space-craft", "windmill",
                                                  "stanford-bunny", "utah-teapot"};
 
 double schema_default(const proto::ParamSchema& schema, const char* field, double fallback) {
