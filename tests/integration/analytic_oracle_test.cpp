@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
 
 #include "support/edge_measure.h"
 #include "support/sphere_oracle.h"
@@ -127,6 +129,40 @@ TEST_F(AnalyticOracle, DiskOutlineRingIsTheWidthAllRound) {
                 stats.mean_abs, stats.max_abs, stats.count);
     EXPECT_EQ(stats.missing, 0u) << "width " << width;
     EXPECT_LE(stats.max_abs, 0.5) << "width " << width;
+  }
+}
+
+// The hull's ring is W ± 0.5 px along every ray, for a width in pixels and
+// for one in world units (converted once per render, for every method).
+// The wireframe's and edge pass's lines are printed beside it but not held
+// to the bound: the wireframe's back-face lines stand out past the ring
+// where an edge runs across the silhouette, and the edge pass works on
+// whole pixels of a single-sample prepass (README, Accuracy).
+TEST_F(AnalyticOracle, OutlineWidthPerMethod) {
+  auto client = daemon().client();
+  json params = sphere_params(1, 4);
+  params["background"] = {0, 0, 1};
+  params["shading"] = {{"mode", "flat"}, {"base", "white"}};
+  const DiskEstimate disk = estimate_disk(LinearChannel(render_ok(client, params), 1));
+  ASSERT_GT(disk.radius, 150.0);
+  // The sphere's radius is 1: in pixels, disk.radius per unit.
+  const double world_width = 3.0 / disk.radius;
+  for (const char* method : {"hull", "wireframe", "edges"}) {
+    for (const auto& [width, units] : {std::pair{2.0, "px"}, {5.0, "px"}, {3.0, "world"}}) {
+      params["outline"] = {{"enabled", true},
+                           {"method", method},
+                           {"units", units},
+                           {"width", std::string(units) == "world" ? world_width : width},
+                           {"color", {1, 0, 0}}};
+      const RingStats ring = outline_ring(render_ok(client, params), disk, width);
+      std::printf("[oracle] %-9s %.1f px (%s): %.2f..%.2f px, mean error %.3f, max %.3f, %zu stray\n", method, width,
+                  units, ring.min_width, ring.max_width, ring.width_error.mean_abs, ring.width_error.max_abs,
+                  ring.stray_pixels);
+      if (std::string(method) != "hull") continue;
+      EXPECT_EQ(ring.width_error.missing, 0u) << method << " " << width << " " << units;
+      EXPECT_LE(ring.width_error.max_abs, 0.5) << method << " " << width << " " << units;
+      EXPECT_EQ(ring.stray_pixels, 0u) << method << " " << width << " " << units;
+    }
   }
 }
 

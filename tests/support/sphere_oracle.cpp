@@ -54,9 +54,11 @@ RingStats outline_ring(const image::Image& img, const DiskEstimate& disk, double
   ring.min_width = std::numeric_limits<double>::infinity();
   for (int i = 0; i < kOracleRays; ++i) {
     const double angle = ray_angle(i);
-    const auto inner = ray_crossing(green, disk.centre_x, disk.centre_y, angle, disk.radius - 2, disk.radius + 2, 0.5);
-    const auto outer =
-        ray_crossing(red, disk.centre_x, disk.centre_y, angle, disk.radius - 2, disk.radius + width + 2, 0.5);
+    // A line may lie outside the silhouette (hull, wireframe) or straddle
+    // it (edges): both crossings are searched from a width inside it.
+    const double from = disk.radius - width - 2;
+    const auto inner = ray_crossing(green, disk.centre_x, disk.centre_y, angle, from, disk.radius + 2, 0.5);
+    const auto outer = ray_crossing(red, disk.centre_x, disk.centre_y, angle, from, disk.radius + width + 2, 0.5);
     if (!inner || !outer) {
       ++ring.width_error.missing;
       continue;

@@ -24,8 +24,9 @@ ErrorStats band_edge_errors(const image::Image& img, const DiskEstimate& disk, i
 // colour no band has: not grey, or darker than half the lowest band.
 std::size_t speck_pixels(const image::Image& img, const DiskEstimate& disk, int steps, double margin = 3.0);
 
-// A white shape on blue with a red outline: along every ray the ring runs
-// from where green falls (white → red) to where red falls (red → blue).
+// A white shape on blue with a red outline: along every ray the line runs
+// from where green falls (white → red) to where red falls (red → blue),
+// outside the silhouette or across it.
 struct RingStats {
   ErrorStats width_error;  // measured width minus the asked width, px
   double min_width = 0;
