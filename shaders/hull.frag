@@ -15,9 +15,28 @@ uniform int u_has_texture;
 uniform sampler2D u_diffuse_map;
 #endif
 
+#ifdef LINE_SEGMENT
+// Wireframe lines: the edge's ends in window coordinates, and half the
+// line's width. The quads that carry a line reach past its ends so lines
+// join; only the points within the half width of the segment itself are
+// drawn (round ends), so no corner of a quad pokes out past the ring.
+flat in vec2 v_segment_a;
+flat in vec2 v_segment_b;
+uniform float u_half_line_px;
+
+float distance_to_segment(vec2 p, vec2 a, vec2 b) {
+  vec2 ab = b - a;
+  float t = clamp(dot(p - a, ab) / max(dot(ab, ab), 1e-12), 0.0, 1.0);
+  return length(p - (a + t * ab));
+}
+#endif
+
 layout(location = 0) out vec4 o_color;
 
 void main() {
+#ifdef LINE_SEGMENT
+  if (distance_to_segment(gl_FragCoord.xy, v_segment_a, v_segment_b) > u_half_line_px) discard;
+#endif
 #if defined(OUTLINE_TEXTURE)
   vec3 source = u_has_texture != 0 ? vec3(1.0) - texture(u_diffuse_map, v_texcoord).rgb * u_base_color
                                    : u_base_color;

@@ -10,6 +10,8 @@ layout(triangle_strip, max_vertices = 12) out;
 
 in vec2 g_texcoord[];
 out vec2 v_texcoord;
+flat out vec2 v_segment_a;  // the edge's ends in window coordinates
+flat out vec2 v_segment_b;
 
 uniform vec2 u_viewport;  // pixels
 uniform float u_line_px;
@@ -30,17 +32,26 @@ void emit_edge(int a, int b) {
   vec2 side = vec2(-along.y, along.x) * (0.5 * u_line_px);
   vec2 ext = along * (0.5 * u_line_px);
   vec2 to_ndc = 2.0 / u_viewport;
+  // Set before every vertex: flat outputs are undefined after EmitVertex.
   gl_Position = vec4(ca.xy + (-side - ext) * to_ndc * ca.w, ca.zw);
   v_texcoord = g_texcoord[a];
+  v_segment_a = sa;
+  v_segment_b = sb;
   EmitVertex();
   gl_Position = vec4(ca.xy + (side - ext) * to_ndc * ca.w, ca.zw);
   v_texcoord = g_texcoord[a];
+  v_segment_a = sa;
+  v_segment_b = sb;
   EmitVertex();
   gl_Position = vec4(cb.xy + (-side + ext) * to_ndc * cb.w, cb.zw);
   v_texcoord = g_texcoord[b];
+  v_segment_a = sa;
+  v_segment_b = sb;
   EmitVertex();
   gl_Position = vec4(cb.xy + (side + ext) * to_ndc * cb.w, cb.zw);
   v_texcoord = g_texcoord[b];
+  v_segment_a = sa;
+  v_segment_b = sb;
   EmitVertex();
   EndPrimitive();
 }

@@ -548,14 +548,16 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     // they show past the silhouette or over folds. Line pixels of back faces
     // lie behind the front faces they border, so no stencil is needed.
     glDisable(GL_STENCIL_TEST);
-    gpu::Program& program = programs_.get(std::vector<std::string>{"wire.vert", "wire.geom", "hull.frag"},
-                                          plan.outline_defines);
+    std::vector<std::string> defines = plan.outline_defines;
+    defines.push_back("LINE_SEGMENT");
+    gpu::Program& program = programs_.get(std::vector<std::string>{"wire.vert", "wire.geom", "hull.frag"}, defines);
     program.use();
     program.set("u_view_projection", view_projection);
     program.set("u_viewport", glm::vec2(static_cast<float>(draw_width), static_cast<float>(draw_height)));
     // Half of each line lies inside the silhouette, under the front faces:
     // lines twice as wide leave `width` pixels showing.
     program.set("u_line_px", 2.0f * outline_px);
+    program.set("u_half_line_px", outline_px);
     set_outline_colour_and_draw(program, [](std::size_t) { return FaceSkip{}; });
     check_gl("wireframe pass");
     end_pass(Pass::Wireframe);
