@@ -406,7 +406,9 @@ MTL files its mtllib lines name and the textures those MTL files reference
 (map_Kd, map_Ks, map_Ns, map_d, map_Bump, bump, norm, disp). Files are sent
 with their path relative to the OBJ's folder; references that leave that
 folder are refused, missing files are reported and skipped. A .m mesh
-(`Vertex i x y z {normal=(...)}` / `Face i a b c` lines) is sent alone.
+(`Vertex i x y z {normal=(...)}` / `Face i a b c` lines) and a .glb are
+sent alone; a .gltf brings the .bin and image files its URIs name (inside its
+folder). A folder stands for its one model file (.obj, .m, .gltf or .glb).
 Prints the daemon's answer (id, triangles, materials, textures, warnings).
 
 Options:
@@ -416,8 +418,8 @@ Options:
       return R"(Usage: toon [--server URL] render [PATH.obj|PATH.m | --model ID] [--params FILE.json]
                            [--set key.sub=value ...] -o OUT.png
 
-Renders a PNG (POST /render). With PATH.obj (or a .m mesh) the model and its MTL files and
-textures are uploaded with the request; with --model a stored model is used;
+Renders a PNG (POST /render). With PATH.obj (or a .m, .gltf or .glb model) the model and
+its MTL files and textures are uploaded with the request; with --model a stored model is used;
 with neither the daemon's built-in demo model renders.
 
 Options:
