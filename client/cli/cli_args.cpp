@@ -399,7 +399,7 @@ OpenGL vendor, renderer and version it renders with.
 Exit status 0 when the status is "ok", 1 otherwise or when it cannot be reached.
 )";
     case Verb::upload:
-      return R"(Usage: toon [--server URL] upload PATH.obj|PATH.m [-q]
+      return R"(Usage: toon [--server URL] upload PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q]
 
 Sends an OBJ model to the daemon's store (POST /models) together with the
 MTL files its mtllib lines name and the textures those MTL files reference
@@ -461,7 +461,7 @@ Options:
 
 Usage:
   toon [--server URL] health
-  toon [--server URL] upload PATH.obj|PATH.m [-q]
+  toon [--server URL] upload PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q]
   toon [--server URL] render [PATH.obj|PATH.m | --model ID] [--params FILE.json]
                              [--set key.sub=value ...] -o OUT.png
   toon [--server URL] gallery [--models DIR] [--all | --only NAME,...] [--size N]
