@@ -10,13 +10,15 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-20}
 build_dir=${2:-build-fuzz}
-targets=(bundle_import render_params multipart)
+targets=(bundle_import render_params multipart gltf_import)
 
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DTOOND_TESTS=OFF -DTOOND_BENCH=OFF -DTOOND_FUZZ=ON "${launcher[@]}" >/dev/null
-cmake --build "$build_dir" -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
+cmake --build "$build_dir" -j "$(nproc)" --target "${targets[@]/#/fuzz_}" make_gltf_seeds
+# The glTF seeds are generated, not stored (tests/fuzz/make_gltf_seeds.cpp).
+"$build_dir/tests/fuzz/make_gltf_seeds" "$build_dir/corpus/gltf_import.seeds" >/dev/null
 
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
@@ -26,7 +28,9 @@ for t in "${targets[@]}"; do
   findings="$build_dir/findings/$t"
   mkdir -p "$work" "$findings"
   echo "== fuzz $t for ${seconds}s"
-  if ! "$build_dir/tests/fuzz/fuzz_$t" "$work" "tests/fuzz/corpus/$t" \
+  seeds="tests/fuzz/corpus/$t"
+  if [ "$t" = gltf_import ]; then seeds="$build_dir/corpus/gltf_import.seeds"; fi
+  if ! "$build_dir/tests/fuzz/fuzz_$t" "$work" "$seeds" \
       -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
       -artifact_prefix="$findings/" -print_final_stats=1 2>"$build_dir/fuzz_$t.log"; then
     tail -40 "$build_dir/fuzz_$t.log"

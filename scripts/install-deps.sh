@@ -11,8 +11,10 @@ packages=(
   libegl-dev libgl-dev libglvnd-dev libegl-mesa0 libgl1-mesa-dri libgbm1
   # scene import, maths, images
   libglm-dev libtinyobjloader-dev libstb-dev libpng-dev zlib1g-dev
-  # vertex-cache order and levels of detail at import
+  # vertex-cache order and levels of detail at import; glTF's meshopt buffers
   libmeshoptimizer-dev
+  # glTF 2.0 / GLB import (JSON and container; images go through our decoders)
+  libtinygltf-dev libwebp-dev
   # HTTP + JSON + schema validation
   libcpp-httplib-dev libssl-dev nlohmann-json3-dev libvalijson-dev
   # tests, shader checks, benchmarks

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <system_error>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_args.h"
 
 namespace toond::cli {
@@ -24,6 +26,11 @@ char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned 
 bool iequals(std::string_view a, std::string_view b) {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
                                             [](char x, char y) { return lower(x) == lower(y); });
+}
+
+// Whether `name` ends in `suffix`, ASCII case-insensitive.
+bool has_suffix(std::string_view name, std::string_view suffix) {
+  return name.size() >= suffix.size() && iequals(name.substr(name.size() - suffix.size()), suffix);
 }
 
 struct Token {
@@ -160,6 +167,10 @@ class Scanner {
                        ": its name holds a quote or control character");
     }
     add(obj_name, obj_path_, *obj_text);
+    if (is_gltf_name(obj_name)) {
+      include_gltf_files(obj_name, *obj_text);
+      return std::move(result_);
+    }
 
     std::vector<std::size_t> mtl_indices;
     for (const std::string& line : split_lines(*obj_text)) {
@@ -196,6 +207,37 @@ class Scanner {
   }
 
  private:
+  // A .gltf names its .bin and image files by URI (percent-encoded; data:
+  // URIs carry their bytes inline); a .glb holds everything itself.
+  void include_gltf_files(const std::string& name, const std::string& text) {
+    const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+    if (!doc.is_object()) return;  // a .glb, or JSON the daemon will explain
+    for (const char* list : {"buffers", "images"}) {
+      const auto it = doc.find(list);
+      if (it == doc.end() || !it->is_array()) continue;
+      for (const nlohmann::json& item : *it) {
+        if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) continue;
+        const std::string uri = item["uri"].get<std::string>();
+        if (uri.rfind("data:", 0) == 0) continue;
+        include(name, "uri", "", percent_decoded(uri));
+      }
+    }
+  }
+
+  static std::string percent_decoded(const std::string& uri) {
+    std::string out;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+      if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+          std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+        out.push_back(static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16)));
+        i += 2;
+      } else {
+        out.push_back(uri[i]);
+      }
+    }
+    return out;
+  }
+
   // `mtllib a.mtl b.mtl` names two files, but `mtllib my model.mtl` with an
   // unescaped space names one; the disk decides which reading is meant.
   std::vector<std::string> mtllib_references(std::string_view rest) {
@@ -328,7 +370,26 @@ class Scanner {
   std::set<std::string> warned_;
 };
 
+// The one model file of a folder, for `toon upload FOLDER`.
+fs::path model_file_in(const fs::path& folder) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file(ec) && (is_gltf_name(name) || has_suffix(name, ".obj") || has_suffix(name, ".m"))) {
+      found.push_back(entry.path());
+    }
+  }
+  if (found.size() != 1) {
+    throw UsageError(folder.string() + " holds " + std::to_string(found.size()) +
+                     " model files (.obj, .m, .gltf, .glb); name the one to upload");
+  }
+  return found.front();
+}
+
 }  // namespace
+
+bool is_gltf_name(std::string_view name) { return has_suffix(name, ".gltf") || has_suffix(name, ".glb"); }
 
 bool is_texture_keyword(std::string_view keyword) {
   static constexpr std::string_view kKeywords[] = {"map_Kd",   "map_Ks", "map_Ns", "map_d",
@@ -368,6 +429,9 @@ std::vector<std::string> texture_name_candidates(std::string_view rest_of_line) 
   return out;
 }
 
-BundleScan scan_obj_bundle(const fs::path& obj_path) { return Scanner(obj_path).run(); }
+BundleScan scan_obj_bundle(const fs::path& obj_path) {
+  std::error_code ec;
+  return Scanner(fs::is_directory(obj_path, ec) ? model_file_in(obj_path) : obj_path).run();
+}
 
 }  // namespace toond::cli

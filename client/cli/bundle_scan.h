@@ -24,7 +24,13 @@ struct BundleScan {
 
 // Throws UsageError when the OBJ itself cannot be read. Everything else
 // (missing MTL or texture, a reference leaving the folder) becomes a warning.
+// A .gltf brings the .bin and image files its URIs name; a .glb travels
+// alone. A folder stands for its one model file (.obj, .m, .gltf or .glb;
+// none or several is a UsageError).
 BundleScan scan_obj_bundle(const std::filesystem::path& obj_path);
+
+// Whether a file name ends in .gltf or .glb (any case).
+bool is_gltf_name(std::string_view name);
 
 // The parts of an MTL line that name files, exposed for tests.
 // Whether `keyword` (any case) is a texture statement whose file is sent.

@@ -399,14 +399,16 @@ OpenGL vendor, renderer and version it renders with.
 Exit status 0 when the status is "ok", 1 otherwise or when it cannot be reached.
 )";
     case Verb::upload:
-      return R"(Usage: toon [--server URL] upload PATH.obj|PATH.m [-q]
+      return R"(Usage: toon [--server URL] upload PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q]
 
 Sends an OBJ model to the daemon's store (POST /models) together with the
 MTL files its mtllib lines name and the textures those MTL files reference
 (map_Kd, map_Ks, map_Ns, map_d, map_Bump, bump, norm, disp). Files are sent
 with their path relative to the OBJ's folder; references that leave that
 folder are refused, missing files are reported and skipped. A .m mesh
-(`Vertex i x y z {normal=(...)}` / `Face i a b c` lines) is sent alone.
+(`Vertex i x y z {normal=(...)}` / `Face i a b c` lines) and a .glb are
+sent alone; a .gltf brings the .bin and image files its URIs name (inside its
+folder). A folder stands for its one model file (.obj, .m, .gltf or .glb).
 Prints the daemon's answer (id, triangles, materials, textures, warnings).
 
 Options:
@@ -416,8 +418,8 @@ Options:
       return R"(Usage: toon [--server URL] render [PATH.obj|PATH.m | --model ID] [--params FILE.json]
                            [--set key.sub=value ...] -o OUT.png
 
-Renders a PNG (POST /render). With PATH.obj (or a .m mesh) the model and its MTL files and
-textures are uploaded with the request; with --model a stored model is used;
+Renders a PNG (POST /render). With PATH.obj (or a .m, .gltf or .glb model) the model and
+its MTL files and textures are uploaded with the request; with --model a stored model is used;
 with neither the daemon's built-in demo model renders.
 
 Options:
@@ -460,7 +462,7 @@ Options:
 
 Usage:
   toon [--server URL] health
-  toon [--server URL] upload PATH.obj|PATH.m [-q]
+  toon [--server URL] upload PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q]
   toon [--server URL] render [PATH.obj|PATH.m | --model ID] [--params FILE.json]
                              [--set key.sub=value ...] -o OUT.png
   toon [--server URL] gallery [--models DIR] [--all | --only NAME,...] [--size N]

@@ -1,8 +1,11 @@
 #include "scene/bundle_import.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "scene/enclosure.h"
+#include "scene/gltf_container.h"
+#include "scene/gltf_import.h"
 #include "scene/import_error.h"
 #include "scene/m_import.h"
 #include "scene/mesh_lod.h"
@@ -50,9 +53,38 @@ std::string find_model_file(const Bundle& bundle, std::initializer_list<std::str
                                   std::string(noun) + " file");
 }
 
+namespace {
+
+// The bundle's glTF files, known by content whatever their names (a .bin
+// or image never starts like one).
+std::vector<std::string> gltf_files(const Bundle& bundle) {
+  std::vector<std::string> found;
+  for (const auto& [path, content] : bundle.files()) {
+    if (!has_extension(path, ".obj") && !has_extension(path, ".mtl") && !has_extension(path, ".m") &&
+        looks_like_gltf(content)) {
+      found.push_back(path);
+    }
+  }
+  return found;
+}
+
+}  // namespace
+
 Model import_bundle(const Bundle& bundle, const ImportLimits& limits) {
-  const std::string path = find_model_file(bundle, {".obj", ".m"}, ".obj or .m");
-  Model model = has_extension(path, ".m") ? import_m_bundle(bundle, limits) : import_obj_bundle(bundle, limits);
+  const std::vector<std::string> gltf = gltf_files(bundle);
+  Model model;
+  if (gltf.size() == 1 && !std::any_of(bundle.files().begin(), bundle.files().end(), [](const auto& file) {
+        return has_extension(file.first, ".obj") || has_extension(file.first, ".m");
+      })) {
+    model = import_gltf_bundle(bundle, gltf.front(), limits);
+  } else {
+    const std::string path = find_model_file(bundle, {".obj", ".m", ".gltf", ".glb"}, ".obj, .m, .gltf or .glb");
+    if (has_extension(path, ".gltf") || has_extension(path, ".glb")) {
+      model = import_gltf_bundle(bundle, path, limits);
+    } else {
+      model = has_extension(path, ".m") ? import_m_bundle(bundle, limits) : import_obj_bundle(bundle, limits);
+    }
+  }
   prepare_levels_of_detail(model.mesh);
   classify_enclosures(model.mesh);
   return model;

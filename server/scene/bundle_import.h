@@ -12,10 +12,12 @@
 namespace toond::scene {
 
 // Imports the bundle's one model file with the importer its extension
-// (ASCII case-insensitive) names: .obj (import_obj_bundle, obj_import.h) or
-// .m (import_m_bundle, m_import.h). Throws ImportError naming the files when
-// the bundle holds no model file or more than one, and whatever the importer
-// throws. The mesh comes back with its levels of detail and in vertex-cache
+// (ASCII case-insensitive) names: .obj (import_obj_bundle, obj_import.h),
+// .m (import_m_bundle, m_import.h) or .gltf / .glb (import_gltf_bundle,
+// gltf_import.h). A glTF file is also known by its content (gltf_container.h)
+// whatever its name, when it is the bundle's only model file. Throws
+// ImportError naming the files when the bundle holds no model file or more
+// than one, and whatever the importer throws. The mesh comes back with its levels of detail and in vertex-cache
 // order (prepare_levels_of_detail, mesh_lod.h).
 // `limits` bound what an upload may make (ImportLimitError beyond).
 Model import_bundle(const Bundle& bundle, const ImportLimits& limits = {});

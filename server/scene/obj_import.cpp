@@ -328,32 +328,14 @@ class Importer {
     if (const auto it = texture_slots_.find(key); it != texture_slots_.end()) return it->second;
     int slot = -1;
     try {
-      TextureLimits limits;
-      limits.max_pixels = std::min(limits_.max_texture_pixels, texture_pixels_left_);
-      Texture texture;
-      try {
-        texture = decode_texture(*bundle_.find(*path), *path, limits);
-      } catch (const TextureTooLarge& e) {
-        // Over the daemon's limit for one image: the upload is refused, so
-        // the client learns which file to shrink. Over what is left of the
-        // model's total, the texture is left out below with a warning.
-        if (e.pixels() > limits_.max_texture_pixels) {
-          throw ImportLimitError(*path, "--max-texture-pixels",
-                                 *path + ": the image is " + std::to_string(e.width()) + "x" +
-                                     std::to_string(e.height()) + " = " + std::to_string(e.pixels()) +
-                                     " pixels, more than the limit --max-texture-pixels = " +
-                                     std::to_string(limits_.max_texture_pixels));
-        }
-        throw;
-      }
+      Texture texture = decode_model_texture(*bundle_.find(*path), *path, limits_.max_texture_pixels,
+                                             texture_pixels_left_);
       texture.color_space = space;
       if (!colour_map && is_greyscale(texture)) {
         warnings_.add(*path + ": the bump map of material " + quoted(material_name) +
                       " is grey, a height map rather than a tangent-space normal map; the material is shaded "
                       "without it");
       } else {
-        texture_pixels_left_ -=
-            static_cast<std::uint64_t>(texture.width) * static_cast<std::uint64_t>(texture.height);
         model_.textures.push_back(std::move(texture));
         slot = static_cast<int>(model_.textures.size()) - 1;
       }
@@ -435,9 +417,7 @@ class Importer {
   // Per (bundle path, colour space): a file used both as a colour map and
   // as a normal map is decoded twice.
   std::map<std::pair<std::string, ColorSpace>, int> texture_slots_;
-  // All textures of one model together: many materials each naming a large
-  // image must not add up to more memory than one upload deserves (1 GiB).
-  std::uint64_t texture_pixels_left_ = 256ull * 1024 * 1024;
+  std::uint64_t texture_pixels_left_ = kModelTexturePixels;
   Model model_;
 };
 

@@ -9,6 +9,9 @@
 #include <stdexcept>
 
 #include <stb_image.h>
+#include <webp/decode.h>
+
+#include "scene/import_limits.h"
 
 namespace toond::scene {
 namespace {
@@ -37,11 +40,37 @@ std::optional<std::pair<std::uint64_t, std::uint64_t>> png_header_size(std::stri
   return std::make_pair(be32(16), be32(20));
 }
 
+bool is_webp(std::string_view bytes) {
+  return bytes.size() >= 12 && bytes.substr(0, 4) == "RIFF" && bytes.substr(8, 4) == "WEBP";
+}
+
+// stb_image reads no WebP; glTF's EXT_texture_webp carries it.
+Texture decode_webp(std::string_view bytes, const std::string& path, const TextureLimits& limits) {
+  const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
+  int width = 0;
+  int height = 0;
+  if (!WebPGetInfo(data, bytes.size(), &width, &height) || width <= 0 || height <= 0) {
+    throw std::runtime_error("not a readable WebP image");
+  }
+  check_limits(static_cast<std::uint64_t>(width), static_cast<std::uint64_t>(height), limits);
+  Texture texture;
+  texture.path = path;
+  texture.width = width;
+  texture.height = height;
+  texture.rgba.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  const int stride = width * 4;
+  if (!WebPDecodeRGBAInto(data, bytes.size(), texture.rgba.data(), texture.rgba.size(), stride)) {
+    throw std::runtime_error("cannot decode the WebP image");
+  }
+  return texture;
+}
+
 }  // namespace
 
 Texture decode_texture(std::string_view bytes, const std::string& path, const TextureLimits& limits) {
   if (bytes.empty()) throw std::runtime_error("the file is empty");
   if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw std::runtime_error("the file is too large");
+  if (is_webp(bytes)) return decode_webp(bytes, path, limits);
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int length = static_cast<int>(bytes.size());
 
@@ -75,6 +104,29 @@ Texture decode_texture(std::string_view bytes, const std::string& path, const Te
   texture.rgba.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
   std::memcpy(texture.rgba.data(), pixels.get(), texture.rgba.size());
   return texture;
+}
+
+Texture decode_model_texture(std::string_view bytes, const std::string& path, std::uint64_t max_texture_pixels,
+                             std::uint64_t& pixels_left) {
+  TextureLimits limits;
+  limits.max_pixels = std::min(max_texture_pixels, pixels_left);
+  try {
+    Texture texture = decode_texture(bytes, path, limits);
+    pixels_left -= static_cast<std::uint64_t>(texture.width) * static_cast<std::uint64_t>(texture.height);
+    return texture;
+  } catch (const TextureTooLarge& e) {
+    // Over the daemon's limit for one image: the upload is refused, so the
+    // client learns which file to shrink. Over what is left of the model's
+    // total, the caller leaves the texture out.
+    if (e.pixels() > max_texture_pixels) {
+      throw ImportLimitError(path, "--max-texture-pixels",
+                             path + ": the image is " + std::to_string(e.width()) + "x" + std::to_string(e.height()) +
+                                 " = " + std::to_string(e.pixels()) +
+                                 " pixels, more than the limit --max-texture-pixels = " +
+                                 std::to_string(max_texture_pixels));
+    }
+    throw;
+  }
 }
 
 }  // namespace toond::scene

@@ -1,5 +1,5 @@
 #pragma once
-// Decoding of the image files a material names (PNG, JPEG, TGA, BMP, ...)
+// Decoding of the image files a material names (PNG, JPEG, TGA, BMP, WebP, ...)
 // into the importer's RGBA8 textures.
 #include <cstdint>
 #include <stdexcept>
@@ -38,5 +38,18 @@ class TextureTooLarge : public std::runtime_error {
 // data is corrupt; TextureTooLarge (from the header alone) when the image
 // exceeds `limits`.
 Texture decode_texture(std::string_view bytes, const std::string& path, const TextureLimits& limits = {});
+
+// All textures of one model together may hold this many pixels: many
+// materials each naming a large image must not add up to more memory than
+// one upload deserves (1 GiB of RGBA8).
+inline constexpr std::uint64_t kModelTexturePixels = 256ull * 1024 * 1024;
+
+// decode_texture for one of a model's textures: an image over
+// `max_texture_pixels` (ImportLimits) is an ImportLimitError naming the
+// flag; one over `pixels_left` (what the model's earlier textures left of
+// kModelTexturePixels) throws TextureTooLarge, so the importer can leave it
+// out with a warning. On success its pixels are taken from `pixels_left`.
+Texture decode_model_texture(std::string_view bytes, const std::string& path, std::uint64_t max_texture_pixels,
+                             std::uint64_t& pixels_left);
 
 }  // namespace toond::scene

@@ -409,6 +409,27 @@ TEST(BundleScan, TexturesResolveRelativeToTheirMtlInsideTheFolder) {
   EXPECT_TRUE(has_warning(scan, "'../../out.png' refused"));
 }
 
+TEST(BundleScan, GltfBringsTheFilesItsUrisNameAndAFolderItsModelFile) {
+  TempDir dir;
+  dir.write("model/scene.gltf",
+            R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "scene.bin", "byteLength": 4}],
+                "images": [{"uri": "tex/my%20skin.png"}, {"uri": "data:image/png;base64,AAAA"},
+                           {"uri": "../secret.png"}]})");
+  dir.write("model/scene.bin", "bin!");
+  dir.write("model/tex/my skin.png", "png");
+  dir.write("model/unrelated.png", "not named");
+  dir.write("secret.png", "must never be sent");
+  const BundleScan scan = scan_obj_bundle(dir.path() / "model");
+  EXPECT_EQ(names(scan), (std::vector<std::string>{"scene.gltf", "scene.bin", "tex/my skin.png"}));
+  EXPECT_TRUE(has_warning(scan, "'../secret.png' refused"));
+
+  dir.write("glb/only.glb", std::string("glTF\x02\0\0\0", 8));
+  EXPECT_EQ(names(scan_obj_bundle(dir.path() / "glb" / "only.glb")), (std::vector<std::string>{"only.glb"}));
+  dir.write("two/a.obj", "");
+  dir.write("two/b.glb", "");
+  EXPECT_THROW(scan_obj_bundle(dir.path() / "two"), UsageError);
+}
+
 TEST(BundleScan, MtllibWithSeveralNamesAndEscapedSpaces) {
   TempDir dir;
   dir.write("m.obj", "mtllib gone.mtl my\\ file.mtl\nmtllib two words.mtl\n");

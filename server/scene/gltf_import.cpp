@@ -1,0 +1,819 @@
+#include "scene/gltf_import.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <set>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
+
+#include "scene/data_uri.h"
+#include "scene/gltf_accessor.h"
+#include "scene/gltf_container.h"
+#include "scene/import_error.h"
+#include "scene/mesh_builder.h"
+#include "scene/texture_decode.h"
+
+namespace toond::scene {
+namespace {
+
+using nlohmann::json;
+
+// Extensions whose meaning the importer reads; a file that requires any
+// other is refused by name.
+constexpr std::array<std::string_view, 3> kReadExtensions = {
+    "KHR_mesh_quantization",
+    "KHR_texture_transform",
+    "EXT_texture_webp",
+};
+
+std::string in_quotes(std::string_view s) { return "'" + std::string(s) + "'"; }
+
+bool reads_extension(std::string_view name) {
+  return std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end();
+}
+
+// A member of a JSON object, or null when `object` is not one or lacks it.
+const json& member(const json& object, std::string_view key) {
+  static const json kNull;
+  if (!object.is_object()) return kNull;
+  const auto it = object.find(key);
+  return it == object.end() ? kNull : *it;
+}
+
+const json& element(const json& array, std::size_t index) {
+  static const json kNull;
+  return array.is_array() && index < array.size() ? array[index] : kNull;
+}
+
+double number_or(const json& value, double fallback) {
+  return value.is_number() && std::isfinite(value.get<double>()) ? value.get<double>() : fallback;
+}
+
+// A non-negative integer that fits an int, or `fallback`.
+int index_or(const json& value, int fallback) {
+  if (!value.is_number_integer() && !value.is_number_unsigned()) return fallback;
+  const auto v = value.get<std::int64_t>();
+  return v >= 0 && v <= INT32_MAX ? static_cast<int>(v) : fallback;
+}
+
+std::string percent_decoded(std::string_view uri) {
+  std::string out;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    const auto hex = [](char c) {
+      return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+    };
+    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
+      out.push_back(static_cast<char>(hex(uri[i + 1]) * 16 + hex(uri[i + 2])));
+      i += 2;
+    } else {
+      out.push_back(uri[i]);
+    }
+  }
+  return out;
+}
+
+// Whether `uri` starts with a scheme ("http:", "file:"); a single letter
+// before the colon is a drive letter, which is refused as absolute anyway.
+bool has_scheme(std::string_view uri) {
+  const auto colon = uri.find(':');
+  if (colon == std::string_view::npos || colon < 2) return false;
+  for (std::size_t i = 0; i < colon; ++i) {
+    const char c = uri[i];
+    const bool alpha = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+    if (!alpha && (i == 0 || !((c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.'))) return false;
+  }
+  return true;
+}
+
+double srgb_encoded(double linear) {
+  linear = std::clamp(linear, 0.0, 1.0);
+  return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+// The node's own transform: its matrix, or translation * rotation * scale.
+glm::dmat4 local_transform(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());
+  glm::dmat4 m(1.0);
+  if (node.translation.size() == 3) m = glm::translate(m, glm::make_vec3(node.translation.data()));
+  if (node.rotation.size() == 4) {
+    const auto& r = node.rotation;
+    m *= glm::mat4_cast(glm::normalize(glm::dquat(r[3], r[0], r[1], r[2])));
+  }
+  if (node.scale.size() == 3) m = glm::scale(m, glm::make_vec3(node.scale.data()));
+  return m;
+}
+
+// A UV transform of KHR_texture_transform (offset * rotation * scale), in
+// glTF's texture space (v down).
+struct UvTransform {
+  glm::dvec2 offset{0.0};
+  double rotation = 0.0;
+  glm::dvec2 scale{1.0};
+
+  glm::dvec2 apply(glm::dvec2 uv) const {
+    uv *= scale;
+    const double c = std::cos(rotation);
+    const double s = std::sin(rotation);
+    return offset + glm::dvec2(c * uv.x + s * uv.y, -s * uv.x + c * uv.y);
+  }
+};
+
+// The base colour texture's texcoord set and UV transform of a material.
+struct TexcoordChoice {
+  int set = 0;
+  std::optional<UvTransform> transform;
+};
+
+struct MeshInstance {
+  int mesh = 0;
+  glm::dmat4 transform{1.0};
+};
+
+// Exact-bits hash of a position and its colour, so coinciding vertices of
+// different primitives become one position as in an OBJ.
+struct WeldKey {
+  std::array<std::uint64_t, 6> bits;
+  bool operator==(const WeldKey&) const = default;
+};
+struct WeldKeyHash {
+  std::size_t operator()(const WeldKey& k) const noexcept {
+    std::uint64_t h = 1469598103934665603ull;
+    for (const std::uint64_t b : k.bits) h = (h ^ b) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+// The bytes tinygltf may read, by the names the importer gave them: the
+// file-system callbacks serve these and nothing else, so no URI in a file
+// can reach the disk or the network.
+struct BufferSources {
+  std::map<std::string, std::string_view> views;
+  std::map<std::string, std::vector<std::uint8_t>> owned;
+};
+
+bool source_exists(const std::string& name, void* user) {
+  const auto* sources = static_cast<const BufferSources*>(user);
+  return sources->views.contains(name) || sources->owned.contains(name);
+}
+
+std::string source_name_as_is(const std::string& name, void*) { return name; }
+
+bool read_source(std::vector<unsigned char>* out, std::string* err, const std::string& name, void* user) {
+  auto* sources = static_cast<BufferSources*>(user);
+  if (const auto it = sources->owned.find(name); it != sources->owned.end()) {
+    *out = std::move(it->second);
+    sources->owned.erase(it);
+    return true;
+  }
+  if (const auto it = sources->views.find(name); it != sources->views.end()) {
+    out->assign(it->second.begin(), it->second.end());
+    return true;
+  }
+  if (err) *err += "not part of the upload";
+  return false;
+}
+
+bool refuse_write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "writing is not allowed";
+  return false;
+}
+
+// Images are read by the importer itself (tinygltf is given none), so this
+// is never consulted; it keeps tinygltf's own decoder out in any case.
+bool keep_image_undecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+                          void*) {
+  return true;
+}
+
+class GltfImporter {
+ public:
+  GltfImporter(const Bundle& bundle, std::string path, const ImportLimits& limits, std::optional<int> scene)
+      : bundle_(bundle), path_(std::move(path)), limits_(limits), scene_(scene) {}
+
+  Model run() {
+    const GltfContainer container = open_gltf_container(*bundle_.find(path_), path_);
+    parse_json(container.json);
+    check_required_extensions();
+    warn_unread_extensions();
+    BufferSources sources = prepare_buffers(container.bin);
+    // Images are decoded only for the materials that use them, by the
+    // importer's own decoders with their limits.
+    images_ = doc_.contains("images") ? std::move(doc_["images"]) : json::array();
+    doc_.erase("images");
+    load(sources);
+    reader_ = std::make_unique<GltfAccessorReader>(gltf_, path_);
+
+    const std::vector<MeshInstance> instances = collect_instances();
+    check_counts(instances);
+    MeshSource source = make_source(instances);
+    source.limits = limits_;
+    model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
+      build_materials(triangles);
+    });
+    report_ignored();
+    model_.has_vertex_colors = !model_.mesh.colors.empty();
+    model_.warnings = warnings_.take();
+    return std::move(model_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& message) const { throw ImportError(path_, path_ + ": " + message); }
+
+  void parse_json(std::string_view text) {
+    try {
+      doc_ = json::parse(text.begin(), text.end());
+    } catch (const json::exception& e) {
+      fail(std::string("not valid glTF JSON (") + e.what() + ")");
+    }
+    const json& version = member(member(doc_, "asset"), "version");
+    if (!version.is_string()) fail("not a glTF document (it has no asset.version)");
+    const auto v = version.get<std::string>();
+    if (!v.starts_with("2.")) fail("glTF version " + in_quotes(v) + " is not read (only 2.x)");
+  }
+
+  void check_required_extensions() const {
+    const json& required = member(doc_, "extensionsRequired");
+    if (!required.is_array()) return;
+    for (const json& name : required) {
+      if (!name.is_string()) continue;
+      const auto text = name.get<std::string>();
+      if (!reads_extension(text)) {
+        fail("the file requires the glTF extension " + in_quotes(text) + ", which toond does not read (it reads " +
+             "KHR_mesh_quantization, KHR_texture_transform and EXT_texture_webp)");
+      }
+    }
+  }
+
+  void warn_unread_extensions() {
+    const json& used = member(doc_, "extensionsUsed");
+    if (!used.is_array()) return;
+    std::string names;
+    for (const json& name : used) {
+      if (name.is_string() && !reads_extension(name.get<std::string>())) {
+        names += (names.empty() ? "" : ", ") + name.get<std::string>();
+      }
+    }
+    if (!names.empty()) warnings_.add(path_ + ": glTF extensions not read, drawn without them: " + names);
+  }
+
+  // The bundle path a URI of the file names. A URI that would leave the
+  // bundle is refused outright; one that names no file of the bundle gives
+  // nullopt.
+  std::optional<std::string> resolve_uri(const std::string& uri, const std::string& role) const {
+    const auto refuse = [&](const std::string& why) {
+      fail(role + " has the URI " + in_quotes(uri.substr(0, 200)) + ", " + why +
+           "; a glTF upload may only name files of the upload or carry data: URIs");
+    };
+    if (has_scheme(uri)) refuse("which points outside the upload");
+    const std::string decoded = percent_decoded(uri);
+    if (decoded.empty()) refuse("which is empty");
+    if (decoded.front() == '/' || decoded.front() == '\\' || (decoded.size() > 1 && decoded[1] == ':')) {
+      refuse("an absolute path");
+    }
+    const auto slash = path_.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "" : path_.substr(0, slash + 1);
+    if (!normalize_path(folder + decoded)) refuse("which leaves the upload's folder");
+    return bundle_.resolve(path_, decoded);
+  }
+
+  // Gives every buffer a name the file-system callbacks serve: the GLB's
+  // BIN chunk, a decoded data: URI, or a bundle file, cut to the buffer's
+  // declared length.
+  BufferSources prepare_buffers(const std::optional<std::string_view>& bin) {
+    BufferSources sources;
+    json& buffers = doc_["buffers"];
+    if (buffers.is_null()) buffers = json::array();
+    if (!buffers.is_array()) fail("'buffers' is not a list");
+    for (std::size_t i = 0; i < buffers.size(); ++i) {
+      json& buffer = buffers[i];
+      const std::string role = "buffer " + std::to_string(i);
+      const json& length_value = member(buffer, "byteLength");
+      if (!length_value.is_number_unsigned() && !length_value.is_number_integer()) fail(role + " has no byteLength");
+      const auto length = length_value.get<std::uint64_t>();
+      const std::string name = "toond-buffer-" + std::to_string(i);
+      const json& uri_value = member(buffer, "uri");
+      std::string_view bytes;
+      if (uri_value.is_string() && is_data_uri(uri_value.get<std::string>())) {
+        auto decoded = decode_data_uri(uri_value.get<std::string>());
+        if (!decoded) fail(role + " has a data: URI that is not base64");
+        if (decoded->bytes.size() < length) {
+          fail(role + " declares " + std::to_string(length) + " bytes but its data: URI holds " +
+               std::to_string(decoded->bytes.size()));
+        }
+        decoded->bytes.resize(static_cast<std::size_t>(length));
+        sources.owned[name] = std::move(decoded->bytes);
+      } else {
+        std::string from;
+        if (uri_value.is_string()) {
+          const auto path = resolve_uri(uri_value.get<std::string>(), role);
+          if (!path) fail(role + " names " + in_quotes(uri_value.get<std::string>()) + ", which is not in the upload");
+          bytes = *bundle_.find(*path);
+          from = in_quotes(*path);
+        } else if (i == 0 && bin) {
+          bytes = *bin;
+          from = "the GLB's binary chunk";
+        } else {
+          fail(role + " has no URI (only the first buffer of a .glb may use the binary chunk)");
+        }
+        if (bytes.size() < length) {
+          fail(role + " declares " + std::to_string(length) + " bytes but " + from + " holds " +
+               std::to_string(bytes.size()));
+        }
+        sources.views[name] = bytes.substr(0, static_cast<std::size_t>(length));
+      }
+      buffer["uri"] = name;
+    }
+    return sources;
+  }
+
+  void load(BufferSources& sources) {
+    tinygltf::TinyGLTF loader;
+    tinygltf::FsCallbacks callbacks{};
+    callbacks.FileExists = &source_exists;
+    callbacks.ExpandFilePath = &source_name_as_is;
+    callbacks.ReadWholeFile = &read_source;
+    callbacks.WriteWholeFile = &refuse_write;
+    callbacks.user_data = &sources;
+    loader.SetFsCallbacks(callbacks);
+    loader.SetImageLoader(&keep_image_undecoded, nullptr);
+    const std::string text = doc_.dump();
+    std::string err;
+    std::string warn;
+    bool ok = false;
+    try {
+      ok = loader.LoadASCIIFromString(&gltf_, &err, &warn, text.data(), static_cast<unsigned int>(text.size()), "");
+    } catch (const std::exception& e) {
+      err = e.what();
+    }
+    if (!ok) {
+      std::string reason = err.substr(0, err.find('\n'));
+      if (reason.empty()) reason = "the parser gave no reason";
+      fail("cannot read the glTF document: " + reason);
+    }
+  }
+
+  std::vector<MeshInstance> collect_instances() {
+    std::vector<MeshInstance> instances;
+    std::vector<int> roots;
+    const auto& scenes = gltf_.scenes;
+    if (!scenes.empty()) {
+      int chosen = scene_.value_or(gltf_.defaultScene >= 0 ? gltf_.defaultScene : 0);
+      if (chosen < 0 || static_cast<std::size_t>(chosen) >= scenes.size()) {
+        if (scene_) {
+          fail("scene " + std::to_string(chosen) + " was asked for, but the file has " +
+               std::to_string(scenes.size()) + " scenes");
+        }
+        warnings_.add(path_ + ": the default scene " + std::to_string(chosen) + " does not exist; scene 0 is drawn");
+        chosen = 0;
+      }
+      roots = scenes[static_cast<std::size_t>(chosen)].nodes;
+      if (scenes.size() > 1) {
+        warnings_.add(path_ + ": the file has " + std::to_string(scenes.size()) + " scenes; scene " +
+                      std::to_string(chosen) + " is drawn");
+      }
+    } else if (scene_) {
+      fail("scene " + std::to_string(*scene_) + " was asked for, but the file has no scenes");
+    } else if (!gltf_.nodes.empty()) {
+      // No scene: every node that is nobody's child is a root.
+      std::vector<bool> is_child(gltf_.nodes.size(), false);
+      for (const auto& node : gltf_.nodes) {
+        for (const int child : node.children) {
+          if (child >= 0 && static_cast<std::size_t>(child) < is_child.size()) is_child[static_cast<std::size_t>(child)] = true;
+        }
+      }
+      for (std::size_t i = 0; i < is_child.size(); ++i) {
+        if (!is_child[i]) roots.push_back(static_cast<int>(i));
+      }
+    } else {
+      for (std::size_t m = 0; m < gltf_.meshes.size(); ++m) instances.push_back({static_cast<int>(m), glm::dmat4(1.0)});
+      return instances;
+    }
+
+    // A node hierarchy is a tree; a node reached twice (a cycle, or two
+    // parents) is drawn once, so a hostile file cannot loop or multiply.
+    std::vector<bool> visited(gltf_.nodes.size(), false);
+    std::vector<std::pair<int, glm::dmat4>> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, glm::dmat4(1.0));
+    bool reached_twice = false;
+    while (!stack.empty()) {
+      const auto [index, parent] = stack.back();
+      stack.pop_back();
+      if (index < 0 || static_cast<std::size_t>(index) >= gltf_.nodes.size()) fail("a scene refers to node " + std::to_string(index) + ", which does not exist");
+      if (visited[static_cast<std::size_t>(index)]) {
+        reached_twice = true;
+        continue;
+      }
+      visited[static_cast<std::size_t>(index)] = true;
+      const tinygltf::Node& node = gltf_.nodes[static_cast<std::size_t>(index)];
+      const glm::dmat4 world = parent * local_transform(node);
+      if (node.mesh >= 0) {
+        if (static_cast<std::size_t>(node.mesh) >= gltf_.meshes.size()) {
+          fail("node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) + ", which does not exist");
+        }
+        instances.push_back({node.mesh, world});
+      }
+      if (node.skin >= 0) ++ignored_["skinned nodes (drawn in their rest pose)"];
+      if (node.camera >= 0) ++ignored_["cameras"];
+      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.emplace_back(*it, world);
+    }
+    if (reached_twice) warnings_.add(path_ + ": a node is reached twice in the node hierarchy; it is drawn once");
+    return instances;
+  }
+
+  static std::uint64_t triangles_of(int mode, std::uint64_t corners) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) return corners / 3;
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) return corners < 3 ? 0 : corners - 2;
+    return 0;
+  }
+
+  static bool is_triangles(int mode) {
+    return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN;
+  }
+
+  std::string primitive_name(int mesh, std::size_t primitive) const {
+    return "mesh " + std::to_string(mesh) + " primitive " + std::to_string(primitive);
+  }
+
+  // What the drawn primitives would make, from the accessors' counts alone,
+  // before anything is read or allocated.
+  void check_counts(const std::vector<MeshInstance>& instances) const {
+    std::uint64_t vertices = 0;
+    std::uint64_t triangles = 0;
+    for (const MeshInstance& instance : instances) {
+      const auto& primitives = gltf_.meshes[static_cast<std::size_t>(instance.mesh)].primitives;
+      for (std::size_t p = 0; p < primitives.size(); ++p) {
+        const tinygltf::Primitive& primitive = primitives[p];
+        if (!is_triangles(primitive.mode)) continue;
+        const std::string name = primitive_name(instance.mesh, p);
+        const auto position = primitive.attributes.find("POSITION");
+        if (position == primitive.attributes.end()) fail(name + " has no POSITION attribute and cannot be drawn");
+        const std::uint64_t count = reader_->accessor(position->second, name + " POSITION").count;
+        const std::uint64_t corners =
+            primitive.indices >= 0 ? reader_->accessor(primitive.indices, name + " indices").count : count;
+        vertices += count;
+        triangles += triangles_of(primitive.mode, corners);
+      }
+    }
+    if (vertices > limits_.max_vertices) {
+      throw ImportLimitError(path_, "--max-vertices",
+                             path_ + " has " + std::to_string(vertices) +
+                                 " vertices in its drawn primitives, more than the limit --max-vertices = " +
+                                 std::to_string(limits_.max_vertices));
+    }
+    if (triangles > limits_.max_triangles) {
+      throw ImportLimitError(path_, "--max-triangles",
+                             path_ + " has " + std::to_string(triangles) +
+                                 " triangles in its drawn primitives, more than the limit --max-triangles = " +
+                                 std::to_string(limits_.max_triangles));
+    }
+  }
+
+  const json& material_json(int material) const {
+    return element(member(doc_, "materials"), static_cast<std::size_t>(std::max(material, 0)));
+  }
+
+  // Which TEXCOORD set, with which transform, the base colour texture of
+  // `material` samples.
+  TexcoordChoice texcoord_choice(int material) {
+    TexcoordChoice choice;
+    if (material < 0) return choice;
+    const json& info = member(member(material_json(material), "pbrMetallicRoughness"), "baseColorTexture");
+    choice.set = index_or(member(info, "texCoord"), 0);
+    const json& transform = member(member(info, "extensions"), "KHR_texture_transform");
+    if (transform.is_object()) {
+      UvTransform t;
+      const json& offset = member(transform, "offset");
+      const json& scale = member(transform, "scale");
+      t.offset = {number_or(element(offset, 0), 0.0), number_or(element(offset, 1), 0.0)};
+      t.scale = {number_or(element(scale, 0), 1.0), number_or(element(scale, 1), 1.0)};
+      t.rotation = number_or(member(transform, "rotation"), 0.0);
+      choice.set = index_or(member(transform, "texCoord"), choice.set);
+      choice.transform = t;
+    }
+    const json& normal = member(material_json(material), "normalTexture");
+    if (normal.is_object() && index_or(member(normal, "texCoord"), 0) != choice.set) {
+      warnings_.add(path_ + ": material " + std::to_string(material) +
+                    " samples its normal map with other texture coordinates than its colour; both use TEXCOORD_" +
+                    std::to_string(choice.set));
+    }
+    return choice;
+  }
+
+  MeshSource make_source(const std::vector<MeshInstance>& instances) {
+    MeshSource source;
+    source.file = path_;
+    std::unordered_map<WeldKey, std::uint32_t, WeldKeyHash> welded;
+    std::vector<glm::dvec3> colours;  // per welded position, sRGB-encoded
+    bool any_colour = false;
+    bool colour_alpha = false;
+    std::size_t skipped_modes = 0;
+    for (const MeshInstance& instance : instances) {
+      const glm::dmat3 linear(instance.transform);
+      const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+      const bool mirrored = glm::determinant(linear) < 0.0;
+      const tinygltf::Mesh& mesh = gltf_.meshes[static_cast<std::size_t>(instance.mesh)];
+      for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const tinygltf::Primitive& primitive = mesh.primitives[p];
+        if (!primitive.targets.empty()) ++ignored_["morph targets"];
+        if (!is_triangles(primitive.mode)) {
+          ++skipped_modes;
+          continue;
+        }
+        const std::string name = primitive_name(instance.mesh, p);
+        const auto attribute = [&](const std::string& key) {
+          const auto it = primitive.attributes.find(key);
+          return it == primitive.attributes.end() ? -1 : it->second;
+        };
+        const std::vector<double> positions = reader_->read(attribute("POSITION"), name + " POSITION", 3);
+        const std::size_t count = positions.size() / 3;
+        const auto check_count = [&](const std::vector<double>& values, int width, const std::string& what) {
+          if (values.size() != count * static_cast<std::size_t>(width)) {
+            fail(name + " has " + std::to_string(values.size() / static_cast<std::size_t>(width)) + " " + what +
+                 " for " + std::to_string(count) + " positions");
+          }
+        };
+        std::vector<double> colours_in;
+        if (attribute("COLOR_0") >= 0) {
+          colours_in = reader_->read(attribute("COLOR_0"), name + " COLOR_0", 4, {3});
+          check_count(colours_in, 4, "colours");
+          any_colour = true;
+        }
+        // Positions, merged with equal ones (same colour) seen before.
+        std::vector<std::uint32_t> position_of(count);
+        for (std::size_t i = 0; i < count; ++i) {
+          const glm::dvec3 p3 = glm::dvec3(instance.transform * glm::dvec4(positions[3 * i], positions[3 * i + 1],
+                                                                             positions[3 * i + 2], 1.0));
+          glm::dvec3 colour(1.0);
+          if (!colours_in.empty()) {
+            colour = {srgb_encoded(colours_in[4 * i]), srgb_encoded(colours_in[4 * i + 1]),
+                      srgb_encoded(colours_in[4 * i + 2])};
+            colour_alpha = colour_alpha || colours_in[4 * i + 3] < 1.0;
+          }
+          const WeldKey key{{std::bit_cast<std::uint64_t>(p3.x), std::bit_cast<std::uint64_t>(p3.y),
+                             std::bit_cast<std::uint64_t>(p3.z), std::bit_cast<std::uint64_t>(colour.r),
+                             std::bit_cast<std::uint64_t>(colour.g), std::bit_cast<std::uint64_t>(colour.b)}};
+          const auto [it, added] = welded.try_emplace(key, static_cast<std::uint32_t>(source.positions.size()));
+          if (added) {
+            source.positions.push_back(p3);
+            colours.push_back(colour);
+          }
+          position_of[i] = it->second;
+        }
+        const std::int64_t normal_base = static_cast<std::int64_t>(source.normals.size());
+        if (attribute("NORMAL") >= 0) {
+          const std::vector<double> normals = reader_->read(attribute("NORMAL"), name + " NORMAL", 3);
+          check_count(normals, 3, "normals");
+          for (std::size_t i = 0; i < count; ++i) {
+            source.normals.push_back(normal_matrix * glm::dvec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]));
+          }
+        }
+        const bool has_normals = attribute("NORMAL") >= 0;
+        const TexcoordChoice uv = texcoord_choice(primitive.material);
+        const int texcoord_accessor = attribute("TEXCOORD_" + std::to_string(uv.set));
+        const std::int64_t texcoord_base = static_cast<std::int64_t>(source.texcoords.size());
+        if (texcoord_accessor >= 0) {
+          const std::vector<double> texcoords =
+              reader_->read(texcoord_accessor, name + " TEXCOORD_" + std::to_string(uv.set), 2);
+          check_count(texcoords, 2, "texture coordinates");
+          for (std::size_t i = 0; i < count; ++i) {
+            glm::dvec2 t(texcoords[2 * i], texcoords[2 * i + 1]);
+            if (uv.transform) t = uv.transform->apply(t);
+            // glTF's v runs down the image, the mesh's up (as in OBJ).
+            source.texcoords.emplace_back(t.x, 1.0 - t.y);
+          }
+        }
+        const bool has_texcoords = texcoord_accessor >= 0;
+
+        std::vector<std::uint32_t> corners;
+        if (primitive.indices >= 0) {
+          corners = reader_->read_indices(primitive.indices, name + " indices");
+          for (const std::uint32_t c : corners) {
+            if (c >= count) {
+              fail(name + " has the index " + std::to_string(c) + ", past its " + std::to_string(count) +
+                   " vertices");
+            }
+          }
+        } else {
+          corners.resize(count);
+          for (std::size_t i = 0; i < count; ++i) corners[i] = static_cast<std::uint32_t>(i);
+        }
+        const auto add_triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+          SourceTriangle tri;
+          const std::uint32_t picks[3] = {a, mirrored ? c : b, mirrored ? b : c};
+          for (int k = 0; k < 3; ++k) {
+            SourceCorner& corner = tri.corner[k];
+            corner.position = position_of[picks[k]];
+            corner.normal = has_normals ? normal_base + picks[k] : -1;
+            corner.texcoord = has_texcoords ? texcoord_base + picks[k] : -1;
+          }
+          tri.material = primitive.material;
+          source.triangles.push_back(tri);
+        };
+        const std::size_t n = corners.size();
+        if (primitive.mode == TINYGLTF_MODE_TRIANGLES) {
+          for (std::size_t i = 0; i + 2 < n; i += 3) add_triangle(corners[i], corners[i + 1], corners[i + 2]);
+        } else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+          for (std::size_t i = 0; i + 2 < n; ++i) {
+            if (i % 2 == 0) {
+              add_triangle(corners[i], corners[i + 1], corners[i + 2]);
+            } else {
+              add_triangle(corners[i + 1], corners[i], corners[i + 2]);
+            }
+          }
+        } else {
+          for (std::size_t i = 1; i + 1 < n; ++i) add_triangle(corners[0], corners[i], corners[i + 1]);
+        }
+      }
+    }
+    if (skipped_modes > 0) {
+      warnings_.add(path_ + ": " + std::to_string(skipped_modes) +
+                    " point or line primitives are not drawn (only triangles are)");
+    }
+    if (colour_alpha) warnings_.add(path_ + ": vertex colour alpha is not drawn; the colours are opaque");
+    if (any_colour) source.colors = std::move(colours);
+    return source;
+  }
+
+  // The bytes of image `index` and a name for messages, or nullopt with a
+  // warning.
+  std::optional<std::pair<std::string, std::string>> image_bytes(int index, const std::string& role) {
+    const json& image = element(images_, static_cast<std::size_t>(std::max(index, 0)));
+    if (index < 0 || !image.is_object()) {
+      warnings_.add(path_ + ": " + role + " refers to image " + std::to_string(index) + ", which does not exist");
+      return std::nullopt;
+    }
+    const std::string name = path_ + " image " + std::to_string(index);
+    const json& uri = member(image, "uri");
+    if (uri.is_string()) {
+      const auto text = uri.get<std::string>();
+      if (is_data_uri(text)) {
+        auto decoded = decode_data_uri(text);
+        if (!decoded) {
+          warnings_.add(name + ": its data: URI is not base64; " + role + " is left out");
+          return std::nullopt;
+        }
+        return std::make_pair(name, std::string(decoded->bytes.begin(), decoded->bytes.end()));
+      }
+      const auto path = resolve_uri(text, "image " + std::to_string(index));
+      if (!path) {
+        warnings_.add(name + ": " + in_quotes(text) + " is not in the upload; " + role + " is left out");
+        return std::nullopt;
+      }
+      return std::make_pair(*path, *bundle_.find(*path));
+    }
+    const int view = index_or(member(image, "bufferView"), -1);
+    if (view < 0) {
+      warnings_.add(name + " has neither a URI nor a buffer view; " + role + " is left out");
+      return std::nullopt;
+    }
+    const auto bytes = reader_->view(view, name);
+    return std::make_pair(name, std::string(bytes.begin(), bytes.end()));
+  }
+
+  // The model texture of glTF texture `index` in `space`, or -1 with a
+  // warning when it cannot be used.
+  int texture_for(int index, ColorSpace space, const std::string& role) {
+    const json& texture = element(member(doc_, "textures"), static_cast<std::size_t>(std::max(index, 0)));
+    if (index < 0 || !texture.is_object()) {
+      warnings_.add(path_ + ": " + role + " refers to texture " + std::to_string(index) + ", which does not exist");
+      return -1;
+    }
+    const json& extensions = member(texture, "extensions");
+    std::vector<int> candidates;
+    if (const int webp = index_or(member(member(extensions, "EXT_texture_webp"), "source"), -1); webp >= 0) {
+      candidates.push_back(webp);
+    }
+    if (const int plain = index_or(member(texture, "source"), -1); plain >= 0) candidates.push_back(plain);
+    if (candidates.empty()) {
+      const bool ktx = member(extensions, "KHR_texture_basisu").is_object();
+      warnings_.add(path_ + ": " + role + (ktx ? " exists only as a KTX2/Basis image, which toond cannot decode"
+                                                 : " has no image") +
+                    "; the material is drawn without it");
+      return -1;
+    }
+    for (const int image : candidates) {
+      const auto key = std::make_pair(image, space);
+      if (const auto it = texture_slots_.find(key); it != texture_slots_.end()) return it->second;
+      const auto bytes = image_bytes(image, role);
+      if (!bytes) continue;
+      try {
+        Texture decoded = decode_model_texture(bytes->second, bytes->first, limits_.max_texture_pixels,
+                                               texture_pixels_left_);
+        decoded.color_space = space;
+        model_.textures.push_back(std::move(decoded));
+        const int slot = static_cast<int>(model_.textures.size()) - 1;
+        texture_slots_.emplace(key, slot);
+        return slot;
+      } catch (const ImportLimitError&) {
+        throw;
+      } catch (const std::exception& e) {
+        warnings_.add(bytes->first + ": " + role + " cannot be used: " + e.what());
+      }
+    }
+    warnings_.add(path_ + ": " + role + " is left out; the material is drawn without it");
+    return -1;
+  }
+
+  Material make_material(int id) {
+    const json& m = material_json(id);
+    const std::string label = "material " + std::to_string(id);
+    Material material;
+    material.name = member(m, "name").is_string() ? member(m, "name").get<std::string>() : label;
+    const json& pbr = member(m, "pbrMetallicRoughness");
+    const json& factor = member(pbr, "baseColorFactor");
+    glm::dvec3 base(1.0);
+    for (int c = 0; c < 3; ++c) base[c] = std::clamp(number_or(element(factor, static_cast<std::size_t>(c)), 1.0), 0.0, 1.0);
+    const json& emissive = member(m, "emissiveFactor");
+    for (int c = 0; c < 3; ++c) base[c] = std::min(1.0, base[c] + std::max(0.0, number_or(element(emissive, static_cast<std::size_t>(c)), 0.0)));
+    material.diffuse = glm::vec3(base);
+    if (const json& info = member(pbr, "baseColorTexture"); info.is_object()) {
+      material.diffuse_texture = texture_for(index_or(member(info, "index"), -1), ColorSpace::Srgb,
+                                             label + "'s base colour texture");
+    }
+    if (const json& info = member(m, "normalTexture"); info.is_object()) {
+      material.normal_texture = texture_for(index_or(member(info, "index"), -1), ColorSpace::Linear,
+                                            label + "'s normal map");
+      if (number_or(member(info, "scale"), 1.0) != 1.0) ++ignored_["normal map scales"];
+    }
+    if (member(pbr, "metallicRoughnessTexture").is_object() || member(pbr, "metallicFactor").is_number() ||
+        member(pbr, "roughnessFactor").is_number()) {
+      ++ignored_["metallic-roughness (materials)"];
+    }
+    if (member(m, "occlusionTexture").is_object()) ++ignored_["occlusion textures"];
+    if (member(m, "emissiveTexture").is_object()) ++ignored_["emissive textures (the emissive factor is added)"];
+    const json& mode = member(m, "alphaMode");
+    if (mode.is_string() && mode.get<std::string>() != "OPAQUE") {
+      ++ignored_["alpha modes MASK/BLEND (drawn opaque)"];
+    }
+    if (member(member(m, "extensions"), "KHR_materials_unlit").is_object()) {
+      ++ignored_["unlit materials (drawn toon-shaded)"];
+    }
+    return material;
+  }
+
+  void build_materials(std::vector<SourceTriangle>& triangles) {
+    const std::size_t material_count = gltf_.materials.size();
+    std::set<int> used;
+    for (auto& tri : triangles) {
+      if (tri.material < 0 || static_cast<std::size_t>(tri.material) >= material_count) tri.material = -1;
+      used.insert(tri.material);
+    }
+    std::map<int, int> slot;
+    for (const int id : used) {
+      slot[id] = static_cast<int>(model_.materials.size());
+      if (id < 0) {
+        Material fallback;
+        fallback.name = "default";
+        fallback.diffuse = glm::vec3(1.0f);
+        model_.materials.push_back(std::move(fallback));
+      } else {
+        model_.materials.push_back(make_material(id));
+      }
+    }
+    for (auto& tri : triangles) tri.material = slot.at(tri.material);
+  }
+
+  void report_ignored() {
+    if (!gltf_.animations.empty()) ignored_["animations"] += gltf_.animations.size();
+    if (!gltf_.skins.empty()) ignored_["skins"] += gltf_.skins.size();
+    if (!gltf_.lights.empty()) ignored_["lights"] += gltf_.lights.size();
+    std::string list;
+    for (const auto& [what, count] : ignored_) list += (list.empty() ? "" : ", ") + std::to_string(count) + " " + what;
+    if (!list.empty()) warnings_.add(path_ + ": not imported: " + list);
+  }
+
+  const Bundle& bundle_;
+  std::string path_;
+  ImportLimits limits_;
+  std::optional<int> scene_;
+  json doc_;
+  json images_;
+  tinygltf::Model gltf_;
+  std::unique_ptr<GltfAccessorReader> reader_;
+  ImportWarnings warnings_;
+  std::map<std::string, std::size_t> ignored_;
+  std::map<std::pair<int, ColorSpace>, int> texture_slots_;
+  std::uint64_t texture_pixels_left_ = kModelTexturePixels;
+  Model model_;
+};
+
+}  // namespace
+
+Model import_gltf_bundle(const Bundle& bundle, const std::string& path, const ImportLimits& limits,
+                         std::optional<int> scene) {
+  return GltfImporter(bundle, path, limits, scene).run();
+}
+
+}  // namespace toond::scene

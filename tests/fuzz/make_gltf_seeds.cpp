@@ -1,0 +1,90 @@
+// Writes the glTF fuzz target's seed corpus into the folder given: small
+// valid files of every feature the importer reads (made by the tests' glTF
+// writer, so they follow the importer's tests) plus a few broken ones.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "support/gltf_writer.h"
+
+namespace {
+
+using namespace toond::test;
+
+GltfPrimitive quad(int material) {
+  GltfPrimitive p;
+  p.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  p.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  p.texcoords = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  p.colours = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}, {1, 1, 1, 0.5f}};
+  p.indices = {0, 1, 2, 0, 2, 3};
+  p.material = material;
+  return p;
+}
+
+// A 1x1 PNG, enough for the image path.
+const std::string kPng(
+    "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52"
+    "\x00\x00\x00\x01\x00\x00\x00\x01\x08\x02\x00\x00\x00\x90\x77\x53"
+    "\xde\x00\x00\x00\x0c\x49\x44\x41\x54\x78\x9c\x63\xf8\xdf\xc0\x00"
+    "\x00\x04\x01\x01\x80\xc5\x2a\x18\x5d\x00\x00\x00\x00\x49\x45\x4e"
+    "\x44\xae\x42\x60\x82",
+    69);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: make_gltf_seeds FOLDER\n");
+    return 2;
+  }
+  const std::filesystem::path dir = argv[1];
+  std::filesystem::create_directories(dir);
+  const auto save = [&](const std::string& name, const std::string& bytes) {
+    std::ofstream(dir / name, std::ios::binary) << bytes;
+  };
+
+  GltfDocument doc;
+  GltfPrimitive strip = quad(1);
+  strip.indices.clear();
+  strip.mode = 5;
+  doc.meshes = {{quad(0), strip}};
+  GltfNode root;
+  root.children = {1};
+  root.translation = glm::dvec3(3, 0, 0);
+  GltfNode child;
+  child.mesh = 0;
+  child.rotation = glm::dvec4(0, 0, 0.7071, 0.7071);
+  child.scale = glm::dvec3(2, 2, 2);
+  doc.nodes = {root, child};
+  doc.scene_roots = {0};
+  doc.images = {{kPng, "image/png", "t.png"}};
+  GltfMaterial textured;
+  textured.base_colour_image = 0;
+  textured.normal_image = 0;
+  textured.json = {{"alphaMode", "MASK"}, {"emissiveFactor", {0.1, 0, 0}}};
+  GltfMaterial plain;
+  plain.base_colour = {0.2f, 0.4f, 0.6f, 1};
+  plain.json = {{"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}};
+  doc.materials = {textured, plain};
+
+  save("features.glb", write_gltf(doc, GltfForm::Glb)[0].second);
+  save("features.gltf", write_gltf(doc, GltfForm::DataUris)[0].second);
+
+  GltfParts parts = build_gltf(doc);
+  parts.json["accessors"][0]["sparse"] = {{"count", 1},
+                                          {"indices", {{"bufferView", 3}, {"componentType", 5125}}},
+                                          {"values", {{"bufferView", 0}}}};
+  parts.json["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {
+      {"KHR_texture_transform", {{"offset", {0.5, 0}}, {"rotation", 0.3}, {"scale", {2, 2}}}}};
+  parts.json["extensionsRequired"] = {"KHR_texture_transform"};
+  save("sparse-transform.glb", pack_gltf(parts, GltfForm::Glb)[0].second);
+
+  parts = build_gltf(doc);
+  parts.json["accessors"][0]["count"] = 2000000000;
+  save("huge-count.glb", pack_gltf(parts, GltfForm::Glb)[0].second);
+  const std::string glb = write_gltf(doc, GltfForm::Glb)[0].second;
+  save("truncated.glb", glb.substr(0, glb.size() / 2));
+  std::printf("wrote the glTF seed corpus to %s\n", dir.c_str());
+  return 0;
+}
