@@ -1,7 +1,6 @@
 #include "scene/mesh_processing.h"
 
 #include <algorithm>
-#include <map>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -151,18 +150,39 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
     double weight;
   };
   std::vector<std::vector<Push>> pushes(group_count);
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_use;
+  std::unordered_map<std::uint64_t, int> edge_use;
+  edge_use.reserve(indices.size());
   auto edge_key = [&](std::uint32_t a, std::uint32_t b) {
-    return std::minmax(groups[a], groups[b]);
+    const auto [lo, hi] = std::minmax(groups[a], groups[b]);
+    return static_cast<std::uint64_t>(lo) << 32 | hi;
   };
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     for (int k = 0; k < 3; ++k) {
       ++edge_use[edge_key(indices[t + static_cast<std::size_t>(k)], indices[t + static_cast<std::size_t>((k + 1) % 3)])];
     }
   }
-  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&p)[3],
+  // A few distinct face directions per position, to tell a real rim from
+  // an edge that only looks open: at a T-junction (one face splits an edge
+  // its neighbour does not) the edge is used once, but the neighbour's face
+  // already pushes the way the rim would. Counting both tilted a corner's
+  // offset off its faces and its mitre out to three widths.
+  constexpr std::size_t kDirectionsKept = 8;
+  std::vector<std::vector<glm::dvec3>> face_directions(group_count);
+  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&)[3],
                                                    const glm::dvec3& n, const glm::dvec3& angles) {
-    for (int k = 0; k < 3; ++k) pushes[groups[i[k]]].push_back({n, angles[k]});
+    for (int k = 0; k < 3; ++k) {
+      pushes[groups[i[k]]].push_back({n, angles[k]});
+      std::vector<glm::dvec3>& dirs = face_directions[groups[i[k]]];
+      const bool known = std::any_of(dirs.begin(), dirs.end(), [&](const glm::dvec3& d) { return glm::dot(d, n) > 0.999; });
+      if (!known && dirs.size() < kDirectionsKept) dirs.push_back(n);
+    }
+  });
+  auto faces_push_that_way = [&](std::uint32_t group, const glm::dvec3& direction) {
+    const std::vector<glm::dvec3>& dirs = face_directions[group];
+    return std::any_of(dirs.begin(), dirs.end(), [&](const glm::dvec3& d) { return glm::dot(d, direction) > 0.7; });
+  };
+  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&p)[3],
+                                                   const glm::dvec3& n, const glm::dvec3&) {
     for (int k = 0; k < 3; ++k) {
       const int a = k, b = (k + 1) % 3;
       if (edge_use[edge_key(i[a], i[b])] != 1) continue;
@@ -170,8 +190,9 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
       // triangle (counter-clockwise winding puts the interior on the left).
       const glm::dvec3 outward = glm::normalize(glm::cross(p[b] - p[a], n));
       const double quarter_turn = std::acos(0.0);
-      pushes[groups[i[a]]].push_back({outward, quarter_turn});
-      pushes[groups[i[b]]].push_back({outward, quarter_turn});
+      for (const std::uint32_t g : {groups[i[a]], groups[i[b]]}) {
+        if (!faces_push_that_way(g, outward)) pushes[g].push_back({outward, quarter_turn});
+      }
     }
   });
 

@@ -11,11 +11,13 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "support/edge_measure.h"
 #include "support/generated_models.h"
+#include "support/image_checks.h"
 #include "support/sphere_oracle.h"
 #include "test_client.h"
 
@@ -179,6 +181,49 @@ TEST_F(MessyMeshOracle, DefaultRimIsAVisibleContrastingRing) {
   EXPECT_GE(share, 0.03);
   EXPECT_LE(share, 0.08);
   EXPECT_GE(std::abs(mean_change), 0.15);
+}
+
+// A cube as a careless exporter might leave it: a T-junction where the
+// front face splits an edge the top face does not, a near-duplicate corner,
+// a sliver triangle a micrometre wide, and a fan of zero-area triangles. It
+// imports with warnings and its outline reaches no further than a clean
+// cube's: no spike from the bad triangles' normals.
+TEST_F(MessyMeshOracle, HostileCubeOutlineHasNoSpike) {
+  std::string hostile =
+      "v -1 -1 -1\nv 1 -1 -1\nv -1 1 -1\nv 1 1 -1\nv -1 -1 1\nv 1 -1 1\nv -1 1 1\nv 1 1 1\n"
+      "v 0 1 1\n"              // 9: splits the top front edge, for the front face only
+      "v 1 1 1.000000001\n";   // 10: corner 8 again, a rounding error off
+  for (int k = 0; k <= 20; ++k) hostile += "v " + std::to_string(-1.0 + 0.1 * k) + " -1 -1\n";  // 11..31
+  hostile += "v -1 0 0.999999\n";  // 32: a micrometre inside the left face's edge
+  hostile +=
+      "f 1 3 4\nf 1 4 2\n"              // back
+      "f 5 6 9\nf 6 8 9\nf 5 9 7\n"     // front, with the T-junction at 9
+      "f 1 2 6\nf 1 6 5\n"              // bottom
+      "f 3 7 10\nf 3 10 4\n"            // top, through the near-duplicate corner
+      "f 1 5 32\nf 1 32 7\nf 1 7 3\nf 5 7 32\n"  // left, with the sliver
+      "f 2 4 8\nf 2 8 6\n";             // right
+  for (int k = 0; k < 20; ++k) hostile += "f 1 " + std::to_string(11 + k) + " " + std::to_string(12 + k) + "\n";
+
+  auto client = daemon().client();
+  const std::string clean_id = upload_obj_text(client, cube_obj(), "clean.obj");
+  const std::string hostile_id = upload_obj_text(client, hostile, "hostile.obj");
+  auto reach = [&](const std::string& id, double yaw) {
+    json params = {{"model", id},
+                   {"width", 256},
+                   {"height", 256},
+                   {"msaa", 1},
+                   {"camera", {{"yaw", yaw}, {"pitch", 20}}},
+                   {"outline", {{"enabled", false}}}};
+    const image::Image bare = render_ok(client, params);
+    params["outline"] = {{"width", 3}, {"color", {0, 0, 0}}, {"creases", "never"}};
+    return outline_reach_px(bare, render_ok(client, params));
+  };
+  for (const double yaw : {-30.0, 30.0, 150.0}) {
+    const double clean = reach(clean_id, yaw), messy = reach(hostile_id, yaw);
+    std::printf("[messy] hostile cube yaw %.0f: outline reaches %.2f px (clean cube %.2f px)\n", yaw, messy, clean);
+    EXPECT_GT(clean, 2.0);
+    EXPECT_LE(messy, clean + 1.0) << "yaw " << yaw;
+  }
 }
 
 }  // namespace

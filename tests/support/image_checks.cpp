@@ -68,7 +68,11 @@ std::vector<bool> boundary(const std::vector<bool>& mask, int width, int height)
   return out;
 }
 
-double outline_width_px(const Image& bare, const Image& outlined) {
+namespace {
+
+// Distances from every pixel on the ring's outer edge to the nearest model
+// pixel, ascending.
+std::vector<double> outline_distances(const Image& bare, const Image& outlined) {
   const int w = bare.width, h = bare.height;
   const auto model = foreground_mask(bare);
   std::vector<bool> ring(model.size());
@@ -96,10 +100,20 @@ double outline_width_px(const Image& bare, const Image& outlined) {
       if (best < 1e9) distances.push_back(best);
     }
   }
-  if (distances.empty()) return 0.0;
-  std::nth_element(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2),
-                   distances.end());
-  return distances[distances.size() / 2];
+  std::sort(distances.begin(), distances.end());
+  return distances;
+}
+
+}  // namespace
+
+double outline_width_px(const Image& bare, const Image& outlined) {
+  const std::vector<double> distances = outline_distances(bare, outlined);
+  return distances.empty() ? 0.0 : distances[distances.size() / 2];
+}
+
+double outline_reach_px(const Image& bare, const Image& outlined) {
+  const std::vector<double> distances = outline_distances(bare, outlined);
+  return distances.empty() ? 0.0 : distances.back();
 }
 
 }  // namespace toond::test

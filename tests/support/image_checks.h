@@ -38,5 +38,8 @@ std::vector<bool> boundary(const std::vector<bool>& mask, int width, int height)
 // it: the median distance from the ring's outer edge to the nearest model
 // pixel, in pixels. Corners (where mitres reach further) barely move a median.
 double outline_width_px(const Image& bare, const Image& outlined);
+// The same distances' largest: how far the outline reaches anywhere (a
+// spike shows here, not in the median).
+double outline_reach_px(const Image& bare, const Image& outlined);
 
 }  // namespace toond::test
