@@ -1,0 +1,194 @@
+// Golden images: every preset, and each feature the presets leave out,
+// rendered in process on the test's GL context from the request a user
+// would send (preset expanded, schema defaults filled in), compared with a
+// stored reference. They guard refactors of the renderer: a change that
+// moves pixels shows up here with a diff image.
+//
+// References live in tests/golden/<case>.png. TOOND_BLESS=1 rewrites them
+// from the current renderer; a commit that changes a reference says why.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "image/png_codec.h"
+#include "param_schema.h"
+#include "presets.h"
+#include "render/gpu_model.h"
+#include "render/render_params.h"
+#include "render/renderer.h"
+#include "scene/bundle_import.h"
+#include "scene/demo_model.h"
+#include "support/gl_context_test.h"
+#include "support/generated_models.h"
+#include "support/golden_compare.h"
+#include "model_checks.h"
+#include "toond_shader_files.h"
+
+namespace toond::render {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr int kSize = 96;
+
+enum class Subject { Demo, Sphere, Cube, SphereAndCube };
+
+struct GoldenCase {
+  std::string name;
+  Subject subject;
+  json request;
+};
+
+// Every preset on the demo model (textured sphere on a hard-edged box).
+std::vector<GoldenCase> preset_cases() {
+  std::vector<GoldenCase> cases;
+  for (const auto& [name, preset] : proto::Presets::builtin().document().items()) {
+    cases.push_back({"preset_" + name, Subject::Demo, {{"preset", name}}});
+  }
+  return cases;
+}
+
+// What the presets leave out, one feature a case.
+std::vector<GoldenCase> feature_cases() {
+  const json point = {{"type", "point"}, {"position", {0.8, 1.2, 1.5}}, {"radius", 4}};
+  return {
+      {"default_demo", Subject::Demo, json::object()},
+      {"default_sphere", Subject::Sphere, json::object()},
+      {"msaa_1", Subject::Demo, {{"msaa", 1}}},
+      {"supersample_2", Subject::Demo, {{"supersample", 2}}},
+      {"orthographic", Subject::Demo, {{"camera", {{"projection", "orthographic"}, {"yaw", -20}, {"pitch", 30}}}}},
+      {"phong", Subject::Sphere, {{"shading", {{"mode", "phong"}}}}},
+      {"flat", Subject::Sphere, {{"shading", {{"mode", "flat"}}}}},
+      {"steps_6_floor", Subject::Sphere, {{"shading", {{"steps", 6}, {"rounding", "floor"}}}}},
+      {"steps_4_round", Subject::Sphere, {{"shading", {{"steps", 4}, {"rounding", "round"}}}}},
+      {"band_aa_off", Subject::Sphere, {{"shading", {{"band_aa", false}}}}},
+      {"two_tone", Subject::Sphere, {{"shading", {{"two_tone", {{"enabled", true}}}}}}},
+      {"ramp_colors", Subject::Sphere,
+       {{"shading", {{"ramp", {{{"at", 0}, {"color", {0.2, 0.1, 0.4}}}, {{"at", 0.5}, {"color", {0.9, 0.6, 0.3}}}}}}}}},
+      {"base_white", Subject::Demo, {{"shading", {{"base", "white"}}}}},
+      {"specular_off", Subject::Sphere, {{"specular", {{"enabled", false}}}}},
+      {"specular_broad", Subject::Sphere, {{"specular", {{"shininess", 8}, {"threshold", 0.3}}}}},
+      {"rim_default", Subject::Sphere, {{"rim", {{"enabled", true}}}}},
+      {"rim_lit", Subject::Sphere, {{"rim", {{"enabled", true}, {"mask", "lit"}, {"color", {1, 0.3, 0.2}}}}}},
+      {"rim_both_smooth", Subject::Sphere, {{"rim", {{"enabled", true}, {"mask", "both"}, {"threshold", 0}}}}},
+      {"halftone_dots", Subject::Sphere, {{"halftone", {{"enabled", true}, {"style", "dots"}}}}},
+      {"halftone_checker", Subject::Sphere, {{"halftone", {{"enabled", true}, {"style", "checker"}}}}},
+      {"contour_even", Subject::Sphere, {{"contour", {{"enabled", true}, {"style", "even"}}}}},
+      {"contour_fresnel", Subject::Sphere, {{"contour", {{"enabled", true}, {"style", "fresnel"}}}}},
+      {"outline_off", Subject::Demo, {{"outline", {{"enabled", false}}}}},
+      {"outline_wide", Subject::Cube, {{"outline", {{"width", 6}}}}},
+      {"outline_world", Subject::Sphere, {{"outline", {{"units", "world"}, {"width", 0.05}}}}},
+      {"outline_wireframe", Subject::Cube, {{"outline", {{"method", "wireframe"}, {"width", 3}}}}},
+      {"outline_edges", Subject::Cube, {{"outline", {{"method", "edges"}, {"width", 3}}}}},
+      {"outline_all_methods", Subject::Cube, {{"outline", {{"method", {"hull", "wireframe", "edges"}}}}}},
+      {"outline_creases_never", Subject::Cube, {{"outline", {{"creases", "never"}}}}},
+      {"outline_creases_always", Subject::Sphere, {{"outline", {{"creases", "always"}}}}},
+      {"outline_material", Subject::Demo, {{"outline", {{"color_mode", "material"}, {"width", 4}}}}},
+      {"outline_texture", Subject::Demo, {{"outline", {{"color_mode", "texture"}, {"width", 4}}}}},
+      {"shadows_floor", Subject::Demo, {{"shadows", {{"enabled", true}}}, {"floor", {{"enabled", true}}}}},
+      {"floor_only", Subject::Sphere, {{"floor", {{"enabled", true}, {"color", {0.5, 0.7, 0.5}}}}}},
+      {"point_light", Subject::Sphere, {{"lights", {point}}}},
+      {"lights_sum", Subject::Sphere,
+       {{"light_combine", "sum"},
+        {"lights",
+         {{{"type", "directional"}, {"direction", {-1, -0.2, -0.5}}, {"color", {1, 0.6, 0.4}}},
+          {{"type", "directional"}, {"direction", {1, -0.3, -0.6}}, {"color", {0.3, 0.5, 1}}}}}}},
+      {"no_lights", Subject::Sphere, {{"lights", json::array()}}},
+      {"background_alpha", Subject::Sphere, {{"background", {0.2, 0.3, 0.4, 0.0}}}},
+      {"scene_two_objects", Subject::SphereAndCube, json::object()},
+  };
+}
+
+class GoldenImage : public test::GlContextTest {
+ protected:
+  static RenderParams params(json request) {
+    request["width"] = kSize;
+    request["height"] = kSize;
+    const json completed =
+        proto::ParamSchema::render_params().validate_and_complete(proto::Presets::builtin().expand(request));
+    return RenderParams::from_json(completed);
+  }
+
+  static const scene::Model& model(Subject subject) {
+    static const scene::Model demo = scene::import_bundle(scene::make_demo_bundle());
+    static const scene::Model sphere =
+        scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", test::sphere_obj(64, 32)}}));
+    static const scene::Model cube = scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", test::cube_obj()}}));
+    switch (subject) {
+      case Subject::Demo: return demo;
+      case Subject::Cube: return cube;
+      case Subject::Sphere:
+      case Subject::SphereAndCube: break;
+    }
+    return sphere;
+  }
+
+  static image::Image render(const GoldenCase& c) {
+    gpu::ProgramCache programs([](const std::string& name) { return std::string(shader_files::find(name)); });
+    Renderer renderer(programs);
+    std::vector<std::unique_ptr<GpuModel>> uploaded;
+    std::vector<RenderObject> objects;
+    auto add = [&](const scene::Model& m, const glm::dmat4& transform) {
+      uploaded.push_back(std::make_unique<GpuModel>(m));
+      objects.push_back({*uploaded.back(), transform});
+    };
+    if (c.subject == Subject::SphereAndCube) {
+      add(model(Subject::Sphere), glm::translate(glm::dmat4(1.0), glm::dvec3(-1.2, 0.0, 0.0)));
+      add(model(Subject::Cube), glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(1.2, 0.0, 0.0)), glm::dvec3(0.7)));
+    } else {
+      add(model(c.subject), glm::dmat4(1.0));
+    }
+    return renderer.render(objects, params(c.request)).image;
+  }
+};
+
+void check_against_reference(const GoldenCase& c, const image::Image& actual) {
+  const fs::path reference = fs::path(TOOND_GOLDEN_DIR) / (c.name + ".png");
+  if (std::getenv("TOOND_BLESS")) {
+    std::ofstream(reference, std::ios::binary) << image::encode_png(actual);
+    return;
+  }
+  ASSERT_TRUE(fs::exists(reference)) << reference << " is missing: TOOND_BLESS=1 writes it";
+  std::ifstream in(reference, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const test::GoldenDiff diff = test::compare_golden(image::decode_png(bytes), actual);
+  if (diff.passes()) return;
+  const fs::path out = fs::path(TOOND_GOLDEN_DIFF_DIR) / (c.name + ".diff.png");
+  fs::create_directories(out.parent_path());
+  std::ofstream(out, std::ios::binary) << image::encode_png(test::side_by_side_diff(image::decode_png(bytes), actual));
+  ADD_FAILURE() << c.name << ": " << diff.pixels_over << " pixels differ by more than " << test::kGoldenLevels
+                << " levels (at most " << test::kGoldenPixels << " may); largest difference " << diff.largest
+                << ". Reference | render | difference ×8: " << out;
+}
+
+TEST_F(GoldenImage, EveryPresetMatchesItsReference) {
+  for (const GoldenCase& c : preset_cases()) {
+    SCOPED_TRACE(c.name);
+    check_against_reference(c, render(c));
+  }
+}
+
+TEST_F(GoldenImage, EveryFeatureMatchesItsReference) {
+  for (const GoldenCase& c : feature_cases()) {
+    SCOPED_TRACE(c.name);
+    check_against_reference(c, render(c));
+  }
+}
+
+// The same request twice gives the same bytes: a reference can be trusted.
+TEST_F(GoldenImage, RendersAreRepeatable) {
+  const GoldenCase c{"repeat", Subject::Demo, {{"shadows", {{"enabled", true}}}, {"floor", {{"enabled", true}}}}};
+  EXPECT_EQ(render(c).rgba, render(c).rgba);
+}
+
+}  // namespace
+}  // namespace toond::render
