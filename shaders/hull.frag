@@ -20,6 +20,7 @@ uniform sampler2D u_diffuse_map;
 // line's width. The quads that carry a line reach past its ends so lines
 // join; only the points within the half width of the segment itself are
 // drawn (round ends), so no corner of a quad pokes out past the ring.
+// Without it the alpha written is 1.
 flat in vec2 v_segment_a;
 flat in vec2 v_segment_b;
 uniform float u_half_line_px;
@@ -35,15 +36,21 @@ layout(location = 0) out vec4 o_color;
 
 void main() {
 #ifdef LINE_SEGMENT
-  if (distance_to_segment(gl_FragCoord.xy, v_segment_a, v_segment_b) > u_half_line_px) discard;
+  // How much of the pixel the line covers across its edge; with
+  // multisampling it becomes the samples written (alpha to coverage), so
+  // the line's edge is antialiased like a triangle's.
+  float coverage = clamp(u_half_line_px - distance_to_segment(gl_FragCoord.xy, v_segment_a, v_segment_b) + 0.5, 0.0, 1.0);
+  if (coverage <= 0.0) discard;
+#else
+  const float coverage = 1.0;
 #endif
 #if defined(OUTLINE_TEXTURE)
   vec3 source = u_has_texture != 0 ? vec3(1.0) - texture(u_diffuse_map, v_texcoord).rgb * u_base_color
                                    : u_base_color;
-  o_color = vec4(source * (1.0 - u_darken), 1.0);
+  o_color = vec4(source * (1.0 - u_darken), coverage);
 #elif defined(OUTLINE_MATERIAL)
-  o_color = vec4(u_base_color * (1.0 - u_darken), 1.0);
+  o_color = vec4(u_base_color * (1.0 - u_darken), coverage);
 #else
-  o_color = vec4(u_outline_color, 1.0);
+  o_color = vec4(u_outline_color, coverage);
 #endif
 }

@@ -9,6 +9,7 @@ layout(triangles) in;
 layout(triangle_strip, max_vertices = 12) out;
 
 in vec2 g_texcoord[];
+in float g_facing[];
 out vec2 v_texcoord;
 flat out vec2 v_segment_a;  // the edge's ends in window coordinates
 flat out vec2 v_segment_b;
@@ -64,6 +65,10 @@ void main() {
   vec2 p2 = to_screen(gl_in[2].gl_Position);
   float area = (p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y);
   if (area > 0.0) return;  // counter-clockwise on screen: a front face
+  // Wound as a back face but its corners' normals face the viewer: a
+  // triangle folded over in the middle of the front (a simplified level
+  // of detail can fold one near a pole), not a face turned away.
+  if (g_facing[0] + g_facing[1] + g_facing[2] > 0.0) return;
   emit_edge(0, 1);
   emit_edge(1, 2);
   emit_edge(2, 0);

@@ -558,7 +558,15 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     // lines twice as wide leave `width` pixels showing.
     program.set("u_line_px", 2.0f * outline_px);
     program.set("u_half_line_px", outline_px);
+    program.set("u_eye", glm::vec3(camera.eye));
+    program.set("u_view_dir", glm::vec3(glm::normalize(camera.target - camera.eye)));
+    program.set("u_orthographic", ortho ? 1 : 0);
+    // The line's coverage picks the samples it writes, each written opaque.
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glEnable(GL_SAMPLE_ALPHA_TO_ONE);
     set_outline_colour_and_draw(program, [](std::size_t) { return FaceSkip{}; });
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glDisable(GL_SAMPLE_ALPHA_TO_ONE);
     check_gl("wireframe pass");
     end_pass(Pass::Wireframe);
   }
