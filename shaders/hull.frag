@@ -2,7 +2,7 @@
 // Outline colour: the stencil test leaves only the ring outside the model.
 // Variants: fixed colour (default), OUTLINE_MATERIAL (the material colour
 // darkened), OUTLINE_TEXTURE (the texture under the line, inverted and
-// darkened, as the reference viewer drew textured outlines).
+// darkened).
 in vec2 v_texcoord;
 
 uniform vec3 u_outline_color;  // linear

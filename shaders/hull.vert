@@ -2,8 +2,7 @@
 // Inverted-hull outline. Each vertex moves outward along its outline offset:
 // the normal averaged over every vertex at the same position. With the
 // shading normals, hard edges (a cube's corners) split into separate
-// vertices that move apart and tear gaps in the hull (the well-known
-// problem, e.g. three.js issue 19096). The offset is mitred at corners, so
+// vertices that move apart and tear gaps in the hull. The offset is mitred at corners, so
 // every face plane moves out by the full width.
 //
 // The distance is `u_width` pixels at the vertex's own depth (a width in
@@ -31,7 +30,8 @@ uniform int u_orthographic;
 // A pixel's size at depth w holds for a move parallel to the image. Off
 // the view's axis a silhouette point's normal is perpendicular to its own
 // ray, not to the axis, and a move along it shows 1/cos of the ray's angle
-// longer (5.2 px for 5 on a sphere filling the default view). The factor
+// longer (MessyMeshOracle.OutlineRingIsTheWidthAllRound measures it). The
+// factor
 // that makes the part of the offset the image can show, the part across
 // the ray, exactly as long on screen as asked; 1 in orthographic views.
 float obliquity_correction(vec3 position, vec4 clip, vec3 offset, float distance) {

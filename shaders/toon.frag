@@ -1,8 +1,8 @@
 #version 430 core
 // Main pass: toon shading of one material.
 //
-// Diffuse: N·L of each light, quantized into bands (the "toon ramp" of the
-// reference reports), combined by maximum or sum; the result scales the
+// Diffuse: N·L of each light, quantized into bands (a toon ramp), combined
+// by maximum or sum; the result scales the
 // material colour between the ambient floor and full brightness. Then, each
 // only where its #define is set: a hard-edged Blinn-Phong highlight kept out
 // of the shadow band, a rim light blended toward its colour (never added past
@@ -34,8 +34,8 @@ uniform int u_orthographic;
 
 // The number of lights is part of the program variant, not a uniform: a
 // loop with a constant bound unrolls, where llvmpipe ran a uniform-bounded
-// one as a masked loop with indexed array reads (the bunny's cel pass at
-// 512²: 76 ms with the uniform, 44 ms with the constant).
+// one as a masked loop with indexed array reads, much slower (toond_bench
+// sweep measures the main pass).
 #ifndef LIGHT_COUNT
 #define LIGHT_COUNT 0
 #endif
@@ -240,8 +240,7 @@ void main() {
   vec3 n = normalize(v_normal);
 #ifdef NORMAL_MAP
   // Tangent-space normal map in the (tangent, bitangent, normal) frame: with
-  // thresholded lighting its bumps turn into the drawn, hatched look of the
-  // reference reports.
+  // thresholded lighting its bumps turn into a drawn, hatched look.
   vec3 t = normalize(v_tangent.xyz - n * dot(n, v_tangent.xyz));
   vec3 b = cross(n, t) * v_tangent.w;
   vec3 mapped = texture(u_normal_map, v_texcoord).xyz * 2.0 - 1.0;
@@ -311,7 +310,7 @@ void main() {
   rim *= any_lit ? 0.0 : 1.0;
 #endif
   // A blend, not an addition: the rim can reach its colour but never
-  // overshoot it, which is how the reference report's rim washed models out.
+  // overshoot it, so a rim cannot wash the model out.
   color = mix(color, u_rim_color, rim * u_rim_strength);
 #endif
 #endif  // MODE_FLAT

@@ -96,7 +96,8 @@ int run(const toond::app::Options& options) {
   server.set_payload_max_length(options.max_upload_bytes);
   // An answer leaves in several writes (headers, then the PNG); with Nagle's
   // algorithm the last one waits for the client's delayed ACK of the first,
-  // about 40 ms on every request of a kept-alive connection (a browser's).
+  // on every request of a kept-alive connection (a browser's); the test
+  // ResultCache.KeptAliveConnectionsGetAnswersWithoutWaitingForAcks times it.
   server.set_tcp_nodelay(true);
   toond::http::ServiceContext context{store, library, renderer,
                                       std::chrono::milliseconds(static_cast<long long>(options.render_timeout_s * 1000))};

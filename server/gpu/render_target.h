@@ -14,9 +14,8 @@ namespace toond::gpu {
 // How pixels come back to the CPU. A GPU packs into a pixel buffer object by
 // DMA (readback_buffer.h); a CPU rasterizer packs on the CPU inside
 // glReadPixels whatever the destination, and there reading straight into
-// the image and flipping it in place measured faster (1024², llvmpipe:
-// 0.66 against 0.86 ms; bunny 512² msaa 1 through the daemon: 0.23 against
-// 0.32 ms).
+// the image and flipping it in place measured faster (Server-Timing's
+// `readback`, README "Performance").
 enum class ReadbackPath { PixelBuffer, ClientMemory };
 
 class RenderTarget {

@@ -1,6 +1,6 @@
 #pragma once
-// A lighting ramp drawn as an image (the reference reports' "sharp lighting
-// map": e.g. 16 texels holding 3 shades) turned into ramp stops, so an image
+// A lighting ramp drawn as an image (a "sharp lighting map": e.g. 16
+// texels holding 3 shades) turned into ramp stops, so an image
 // ramp and a JSON ramp share one shader path and one meaning.
 #include <stdexcept>
 #include <vector>

@@ -229,12 +229,11 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   }
   // GPU time only on a GPU: a CPU rasterizer's queries do not see its
   // raster threads (they stamp commands as they are recorded), and llvmpipe
-  // records a query into every screen tile, which made the bunny at full
-  // detail 5x slower (512², msaa 1: 150 ms against 30 ms).
+  // records a query into every screen tile, which costs a pass over the
+  // image per query (toond_bench sweep shows it).
   PassTimer timer(out.timings, *real_gpu_);
   // Each pass goes to the driver as soon as it is recorded: llvmpipe then
-  // rasterizes it on its threads while this one records the next (bunny,
-  // 512², msaa 4: about 10 % less time per render).
+  // rasterizes it on its threads while this one records the next.
   auto end_pass = [&](Pass pass) {
     glFlush();
     timer.mark(pass);

@@ -94,7 +94,7 @@ std::string grey_png(int width, int height, Level level) {
   return image::encode_png(img);
 }
 
-// The reference reports' "sharp lighting map": 16 texels, 3 shades (the
+// A "sharp lighting map": 16 texels, 3 shades (the
 // shadow band over the first 6, a mid tone, the lit tone over the last 4),
 // for `shading.ramp_image`.
 std::string make_ramp_png() {

@@ -20,10 +20,10 @@ namespace toond::scene {
 
 struct LodOptions {
   // Each level aims at this fraction of the previous level's triangles.
-  // Steps of 60 % left the bunny at 512² (filling the default frame) with
-  // a choice between full detail and a level whose band edges moved on
-  // 0.7 % of the pixels; at 75 % the level chosen moves 0.4 %
-  // (tests/integration/lod_test.cpp measures it).
+  // Coarser steps left a model filling the default frame with a choice
+  // between full detail and a level whose band edges moved visibly; at 75 %
+  // there is a level in between (Lod.AutoDrawsACoarserLevelThatLooksLike-
+  // FullDetail holds the bunny's default to 0.5 % of pixels).
   double ratio = 0.75;
   // No level below this many triangles; the chain stops there.
   std::size_t min_triangles = 64;

@@ -51,8 +51,8 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
                                                std::span<const glm::vec3> shading_normals);
 
 // Some unit vector perpendicular to `n` (normalised first; +Y when it has no
-// direction), continuous in n everywhere but near -Z (Duff et al. 2017,
-// "Building an Orthonormal Basis, Revisited").
+// direction), continuous in n everywhere but near -Z (the branch-free
+// construction from the sign of n.z).
 glm::vec3 any_perpendicular(const glm::vec3& n);
 
 // Per-vertex tangents for normal mapping (see Mesh::tangents). Every
