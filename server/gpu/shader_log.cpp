@@ -1,17 +1,11 @@
 #include "gpu/shader_log.h"
+#include "text/trim.h"
 
 #include <regex>
 #include <vector>
 
 namespace toond::gpu {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r\n");
-  return s.substr(first, last - first + 1);
-}
 
 struct Located {
   bool is_error = false;
@@ -60,7 +54,7 @@ ShaderLogError first_shader_error(std::string_view log) {
   while (pos <= log.size()) {
     auto end = log.find('\n', pos);
     if (end == std::string_view::npos) end = log.size();
-    const std::string line(trim(log.substr(pos, end - pos)));
+    const std::string line(text::trim(log.substr(pos, end - pos)));
     pos = end + 1;
     if (line.empty()) continue;
     if (first_text.empty()) first_text = line;

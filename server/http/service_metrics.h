@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "http/metrics.h"
-#include "render/renderer.h"
+#include "render/pass_timing.h"
 
 namespace toond::http {
 

@@ -1,7 +1,5 @@
 #include "render/pass_timer.h"
 
-#include "render/renderer.h"
-
 namespace toond::render {
 
 bool PassTimer::gpu_timers_available() {

@@ -11,10 +11,9 @@
 
 #include "gpu/gl_object.h"
 #include "render/pass_plan.h"
+#include "render/pass_timing.h"
 
 namespace toond::render {
-
-struct PassTiming;
 
 class PassTimer {
  public:

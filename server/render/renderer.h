@@ -12,16 +12,10 @@
 #include "render/face_culling.h"
 #include "render/gpu_model.h"
 #include "render/pass_plan.h"
+#include "render/pass_timing.h"
 #include "render/render_params.h"
 
 namespace toond::render {
-
-struct PassTiming {
-  std::string pass;
-  double ms = 0;  // GPU time where `gpu`, else CPU wall time for issuing + (for readback) waiting
-  bool gpu = false;  // from a GL_TIME_ELAPSED query
-  double cpu_ms = 0;  // wall time on the render thread, always
-};
 
 // The level of detail one object was drawn at (see lod_choice.h).
 struct LodUse {

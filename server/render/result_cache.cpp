@@ -2,6 +2,9 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <string_view>
+
+#include "text/trim.h"
 
 namespace toond::render {
 
@@ -17,20 +20,18 @@ std::string etag_of(const std::string& body) {
 }
 
 bool etag_matches(const std::string& if_none_match, const std::string& etag) {
-  auto trim = [](std::string s) {
-    const auto first = s.find_first_not_of(" \t");
-    const auto last = s.find_last_not_of(" \t");
-    s = first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
+  auto strong_tag = [](std::string_view s) {
+    s = text::trim(s);
     // If-None-Match compares weakly: W/"x" matches "x".
-    if (s.rfind("W/", 0) == 0) s = s.substr(2);
-    return s;
+    if (s.rfind("W/", 0) == 0) s.remove_prefix(2);
+    return std::string(s);
   };
   std::size_t pos = 0;
   while (pos <= if_none_match.size()) {
     const std::size_t comma = if_none_match.find(',', pos);
-    const std::string tag =
-        trim(if_none_match.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos));
-    if (tag == "*" || (!tag.empty() && tag == trim(etag))) return true;
+    const std::string tag = strong_tag(
+        std::string_view(if_none_match).substr(pos, comma == std::string::npos ? std::string::npos : comma - pos));
+    if (tag == "*" || (!tag.empty() && tag == strong_tag(etag))) return true;
     if (comma == std::string::npos) break;
     pos = comma + 1;
   }

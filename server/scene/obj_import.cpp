@@ -18,16 +18,10 @@
 #include "scene/mesh_builder.h"
 #include "scene/obj_text.h"
 #include "scene/texture_decode.h"
+#include "text/trim.h"
 
 namespace toond::scene {
 namespace {
-
-std::string trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r\n");
-  return std::string(s.substr(first, last - first + 1));
-}
 
 std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 
@@ -79,7 +73,7 @@ class BundleMaterialReader : public tinyobj::MaterialReader {
 
   bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* material_map, std::string*, std::string*) override {
-    const std::string reference = trim(name);
+    const std::string reference(text::trim(name));
     const auto path = bundle_.resolve(obj_path_, reference);
     if (!path) {
       warnings_.add(obj_path_ + ": material library " + quoted(reference) +
@@ -93,7 +87,7 @@ class BundleMaterialReader : public tinyobj::MaterialReader {
     for (const std::string* text : {&warn, &err}) {
       std::istringstream lines(*text);
       for (std::string line; std::getline(lines, line);) {
-        line = trim(line);
+        line = std::string(text::trim(line));
         if (!line.empty() && line != ".") warnings_.add(*path + ": " + line);
       }
     }
@@ -169,7 +163,7 @@ bool is_greyscale(const Texture& texture) {
 // leaves in the name; try the plausible readings in turn.
 std::vector<std::string> texture_name_candidates(const std::string& raw) {
   std::vector<std::string> names;
-  std::string name = trim(raw);
+  std::string name(text::trim(raw));
   if (name.size() >= 2 && (name.front() == '"' || name.front() == '\'') && name.back() == name.front()) {
     name = name.substr(1, name.size() - 2);
   }
@@ -207,14 +201,14 @@ class Importer {
     const bool ok = tinyobj::LoadObj(&attrib_, &shapes_, &tinyobj_materials_, &warn, &err, &in, reader_.get(),
                                      /*triangulate=*/true, /*default_vcols_fallback=*/false);
     if (!ok) {
-      std::string reason = trim(err.substr(0, err.find('\n')));
+      std::string reason(text::trim(std::string_view(err).substr(0, err.find('\n'))));
       if (reason.empty()) reason = "the parser gave no reason";
       throw ImportError(obj_path_, "cannot read " + obj_path_ + ": " + reason);
     }
     for (const std::string* messages : {&warn, &err}) {
       std::istringstream lines(*messages);
       for (std::string line; std::getline(lines, line);) {
-        line = trim(line);
+        line = std::string(text::trim(line));
         if (line.empty() || line == ".") continue;
         std::replace(line.begin(), line.end(), '\x1f', ' ');  // undo material_alias for display
         // tinyobj silently skips such quads; a model with holes is worse

@@ -1,4 +1,5 @@
 #include "scene/obj_text.h"
+#include "text/trim.h"
 
 #include <vector>
 
@@ -6,12 +7,6 @@ namespace toond::scene {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (is_blank(s.front()) || s.front() == '\n')) s.remove_prefix(1);
-  while (!s.empty() && (is_blank(s.back()) || s.back() == '\n')) s.remove_suffix(1);
-  return s;
-}
 
 // Statement keyword of a line and what follows it, leading blanks skipped.
 bool split_statement(std::string_view line, std::string_view& keyword, std::string_view& rest) {
@@ -110,7 +105,7 @@ std::string fix_mtllib_separators(std::string_view rest) {
 }  // namespace
 
 std::string material_alias(std::string_view name) {
-  name = trim(name);
+  name = text::trim(name);
   std::string alias;
   bool in_blank = false;
   for (const char c : name) {
@@ -163,7 +158,7 @@ std::string prepare_obj_text(std::string_view text) {
       } else if (keyword == "mtllib" && rest.find('\\') != std::string_view::npos) {
         out += "mtllib";
         out += fix_mtllib_separators(rest);
-      } else if (keyword == "usemtl" && material_alias(rest) != trim(rest)) {
+      } else if (keyword == "usemtl" && material_alias(rest) != text::trim(rest)) {
         out += "usemtl ";
         out += material_alias(rest);
       } else {
