@@ -17,7 +17,7 @@
 #include "gpu/egl_context.h"
 #include "http/access_control.h"
 #include "http/routes.h"
-#include "render/model_library.h"
+#include "scene/model_library.h"
 #include "render/render_service.h"
 #include "scene/model_store.h"
 
@@ -89,7 +89,7 @@ int run(const toond::app::Options& options) {
   render_options.gpu_model_bytes = options.gpu_cache_bytes;
   render_options.simulate_reset_every = options.simulate_gpu_reset;
   toond::render::RenderService renderer(render_options);
-  toond::render::ModelLibrary library(store, 16);
+  toond::scene::ModelLibrary library(store, 16);
 
   httplib::Server server;
   server.new_task_queue = [n = options.threads] { return new httplib::ThreadPool(static_cast<std::size_t>(n)); };
@@ -105,7 +105,7 @@ int run(const toond::app::Options& options) {
   context.limits.max_upload_bytes = options.max_upload_bytes;
   // Edited shaders change the image of the same parameters: no cache then.
   if (options.result_cache_bytes > 0 && options.shader_dir.empty()) {
-    context.results = std::make_unique<toond::render::ResultCache>(options.result_cache_bytes);
+    context.results = std::make_unique<toond::http::ResultCache>(options.result_cache_bytes);
   }
   toond::http::register_routes(server, context);
   toond::http::install_access_control(server, options.access);

@@ -5,7 +5,7 @@
 
 namespace toond::http {
 
-void answer_render(const httplib::Request& req, httplib::Response& res, const render::CachedRender& render) {
+void answer_render(const httplib::Request& req, httplib::Response& res, const CachedRender& render) {
   res.set_header("ETag", render.etag);
   res.set_header("X-Toond-Passes", render.passes);
   if (!render.lod.empty()) res.set_header("X-Toond-Lod", render.lod);
@@ -13,14 +13,14 @@ void answer_render(const httplib::Request& req, httplib::Response& res, const re
   // The same parameters always give the same bytes, so a client may reuse
   // its copy, but should ask again (the model may have been replaced).
   res.set_header("Cache-Control", "no-cache");
-  if (req.has_header("If-None-Match") && render::etag_matches(req.get_header_value("If-None-Match"), render.etag)) {
+  if (req.has_header("If-None-Match") && etag_matches(req.get_header_value("If-None-Match"), render.etag)) {
     res.status = 304;
     return;
   }
   res.set_content(render.png, "image/png");
 }
 
-bool answer_from_cache(render::ResultCache* cache, const std::string& key, const httplib::Request& req,
+bool answer_from_cache(ResultCache* cache, const std::string& key, const httplib::Request& req,
                        httplib::Response& res) {
   if (!cache) return false;
   const auto start = std::chrono::steady_clock::now();

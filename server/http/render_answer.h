@@ -7,17 +7,17 @@
 
 #include <httplib.h>
 
-#include "render/result_cache.h"
+#include "http/result_cache.h"
 
 namespace toond::http {
 
 // Sets ETag, X-Toond-Passes and X-Toond-Lod, then the body, or status 304
 // with no body when If-None-Match matches.
-void answer_render(const httplib::Request& req, httplib::Response& res, const render::CachedRender& render);
+void answer_render(const httplib::Request& req, httplib::Response& res, const CachedRender& render);
 
 // A cached render for `key`, answered (with `Server-Timing: cache`), or
 // false when the cache is off or does not hold it.
-bool answer_from_cache(render::ResultCache* cache, const std::string& key, const httplib::Request& req,
+bool answer_from_cache(ResultCache* cache, const std::string& key, const httplib::Request& req,
                        httplib::Response& res);
 
 }  // namespace toond::http

@@ -188,8 +188,8 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     const double png_ms = std::chrono::duration<double, std::milli>(Clock::now() - png_start).count();
 
     res.set_header("Server-Timing", server_timing(out, queue_ms < 0 ? 0 : queue_ms, png_ms));
-    auto answer = std::make_shared<render::CachedRender>();
-    answer->etag = render::etag_of(png);
+    auto answer = std::make_shared<CachedRender>();
+    answer->etag = etag_of(png);
     answer->png = std::move(png);
     answer->passes = out.plan;
     answer->lod = lod_header(out.lods);

@@ -6,23 +6,23 @@
 
 #include "http/service_metrics.h"
 #include "http/request_limits.h"
-#include "render/model_library.h"
+#include "scene/model_library.h"
 #include "render/render_service.h"
-#include "render/result_cache.h"
+#include "http/result_cache.h"
 #include "scene/model_store.h"
 
 namespace toond::http {
 
 struct ServiceContext {
   scene::ModelStore& store;
-  render::ModelLibrary& library;
+  scene::ModelLibrary& library;
   render::RenderService& renderer;
   std::chrono::milliseconds render_deadline{60000};
   RequestLimits limits{};
   // Default-constructed with the context: GET /metrics and the hooks that feed it.
   ServiceMetrics metrics{};
   // Finished renders by canonical parameters; null: every request renders.
-  std::unique_ptr<render::ResultCache> results{};
+  std::unique_ptr<ResultCache> results{};
 };
 
 }  // namespace toond::http

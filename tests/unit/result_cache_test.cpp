@@ -1,9 +1,9 @@
 // The result cache's bookkeeping and ETag matching, without a daemon.
 #include <gtest/gtest.h>
 
-#include "render/result_cache.h"
+#include "http/result_cache.h"
 
-namespace toond::render {
+namespace toond::http {
 namespace {
 
 std::shared_ptr<const CachedRender> png_of(std::size_t bytes, char fill = 'x') {
@@ -67,4 +67,4 @@ TEST(ETag, IfNoneMatchListsWeakTagsAndStar) {
 }
 
 }  // namespace
-}  // namespace toond::render
+}  // namespace toond::http

@@ -11,7 +11,7 @@
 #include <string>
 #include <unordered_map>
 
-namespace toond::render {
+namespace toond::http {
 
 struct CachedRender {
   std::string png;
@@ -61,4 +61,4 @@ class ResultCache {
   std::size_t misses_ = 0;
 };
 
-}  // namespace toond::render
+}  // namespace toond::http

@@ -11,7 +11,7 @@
 #include "scene/model.h"
 #include "scene/model_store.h"
 
-namespace toond::render {
+namespace toond::scene {
 
 class ModelLibrary {
  public:
@@ -42,4 +42,4 @@ class ModelLibrary {
   std::unordered_map<std::string, std::shared_ptr<const scene::Texture>> images_;
 };
 
-}  // namespace toond::render
+}  // namespace toond::scene

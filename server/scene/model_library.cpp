@@ -1,4 +1,4 @@
-#include "render/model_library.h"
+#include "scene/model_library.h"
 
 #include <algorithm>
 
@@ -7,7 +7,7 @@
 #include "scene/obj_import.h"
 #include "scene/texture_decode.h"
 
-namespace toond::render {
+namespace toond::scene {
 namespace {
 
 // Adds `value` under `key` unless another thread got there first (both
@@ -94,4 +94,4 @@ std::shared_ptr<const scene::Texture> ModelLibrary::bundle_image(const std::stri
   return image;
 }
 
-}  // namespace toond::render
+}  // namespace toond::scene

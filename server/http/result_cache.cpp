@@ -1,4 +1,4 @@
-#include "render/result_cache.h"
+#include "http/result_cache.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -6,7 +6,7 @@
 
 #include "text/trim.h"
 
-namespace toond::render {
+namespace toond::http {
 
 std::string etag_of(const std::string& body) {
   std::uint64_t h = 14695981039346656037ull;
@@ -92,4 +92,4 @@ std::size_t ResultCache::misses() const {
   return misses_;
 }
 
-}  // namespace toond::render
+}  // namespace toond::http
