@@ -76,7 +76,12 @@ HistogramFamily::HistogramFamily(std::string name, std::string help, std::vector
     : name_(std::move(name)),
       help_(std::move(help)),
       label_names_(std::move(label_names)),
-      bounds_(std::move(bounds)) {}
+      bounds_(std::move(bounds)) {
+  // A family without labels has its one series, all zero, from the start:
+  // a scraper sees it before the first event, as it sees an unlabelled
+  // counter, and rates and alerts on it need no special case for "absent".
+  if (label_names_.empty()) series_[{}].buckets.assign(bounds_.size(), 0);
+}
 
 void HistogramFamily::observe(const LabelValues& labels, double value) {
   check_arity(name_, label_names_, labels);

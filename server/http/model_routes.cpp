@@ -4,6 +4,7 @@
 #include "http/bundle_upload.h"
 #include "http/error_response.h"
 #include "http/routes.h"
+#include "http/store_upload.h"
 
 namespace toond::http {
 namespace {
@@ -13,7 +14,7 @@ constexpr const char* kIdPattern = "/models/([0-9a-f]{16,64})";
 void register_model_routes(httplib::Server& server, ServiceContext& context) {
   server.Post("/models", [&context](const httplib::Request& req, httplib::Response& res) {
     const scene::Bundle bundle = bundle_from_multipart(req, {}, context.limits);
-    const auto result = context.store.put(bundle, context.limits.import);
+    const auto result = store_upload(context, bundle);
     res.status = result.created ? 201 : 200;
     res.set_content(dump_for_client(result.info.to_json()), "application/json");
   });

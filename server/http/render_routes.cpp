@@ -9,6 +9,7 @@
 #include "http/render_answer.h"
 #include "http/request_limits.h"
 #include "http/routes.h"
+#include "http/store_upload.h"
 #include "image/png_codec.h"
 #include "render/ramp_image.h"
 #include "render/render_budget.h"
@@ -113,7 +114,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
       request = parse_limited_json(params_part == req.files.end() ? "" : params_part->second.content,
                                    context.limits, "the params part");
       const scene::Bundle bundle = bundle_from_multipart(req, "params", context.limits);
-      request["model"] = context.store.put(bundle, context.limits.import).info.id;
+      request["model"] = store_upload(context, bundle).info.id;
     } else {
       request = parse_limited_json(req.body, context.limits, "the request body");
     }

@@ -9,6 +9,10 @@ namespace {
 // sizes; passes are a fraction of that.
 const std::vector<double> kRenderBounds = {0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1, 2.5, 5, 10, 30};
 const std::vector<double> kPassBounds = {0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1, 5};
+// Imports run from a cube's milliseconds to tens of seconds for the largest
+// uploads; bundles from a few kilobytes to the upload limit.
+const std::vector<double> kImportBounds = {0.01, 0.05, 0.1, 0.25, 0.5, 1, 2.5, 5, 10, 30, 60};
+const std::vector<double> kImportByteBounds = {1e4, 1e5, 1e6, 1e7, 3e7, 1e8, 3e8};
 
 }  // namespace
 
@@ -21,7 +25,12 @@ ServiceMetrics::ServiceMetrics()
       pass_seconds_(registry_.histogram("toond_render_pass_seconds",
                                         "Time of each render stage as in Server-Timing (queue wait, each GPU pass, png), "
                                         "in seconds.", {"pass"},
-                                        kPassBounds)) {}
+                                        kPassBounds)),
+      import_seconds_(registry_.histogram("toond_import_seconds",
+                                          "Uploads imported as new models, from the bundle to the stored model, in "
+                                          "seconds.", {}, kImportBounds)),
+      import_bytes_(registry_.histogram("toond_import_bytes", "Sizes of the bundles imported as new models, in bytes.",
+                                        {}, kImportByteBounds)) {}
 
 void ServiceMetrics::count_request(const std::string& method, const std::string& route, int status) {
   requests_.add({method, route, std::to_string(status)});
@@ -35,6 +44,10 @@ void ServiceMetrics::observe_render(double seconds, const std::vector<render::Pa
   pass_seconds_.observe({"png"}, png_ms / 1000.0);
 }
 
+void ServiceMetrics::observe_import(double seconds, std::size_t bytes) {
+  import_seconds_.observe({}, seconds);
+  import_bytes_.observe({}, static_cast<double>(bytes));
+}
 
 std::string route_label(const std::string& path) {
   static const std::regex model_path("/models/[0-9a-f]{16,64}");

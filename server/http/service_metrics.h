@@ -4,6 +4,7 @@
 // hook, renders by the render route); what other parts count already
 // (result-cache hits) and levels (queue depth, models stored and on the GPU,
 // GPU bytes) are read at scrape time (metrics_routes.cpp).
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@ class ServiceMetrics {
   // its Server-Timing header: queue wait, each pass, PNG encoding.
   void observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms,
                       double png_ms);
+  // One upload imported as a new model: how long the import took (parse,
+  // mesh processing, levels of detail, storing) and the bundle's bytes.
+  void observe_import(double seconds, std::size_t bytes);
 
   MetricsRegistry& registry() { return registry_; }
   const CounterFamily& requests() const { return requests_; }
@@ -32,6 +36,8 @@ class ServiceMetrics {
   CounterFamily& requests_;
   HistogramFamily& render_seconds_;
   HistogramFamily& pass_seconds_;
+  HistogramFamily& import_seconds_;
+  HistogramFamily& import_bytes_;
 };
 
 // The route template a request path belongs to ("/models/{id}/render",

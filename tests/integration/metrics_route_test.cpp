@@ -32,6 +32,11 @@ TEST(MetricsRoute, CountsRequestsByRouteAndStatusAndTimesRendersAndPasses) {
   EXPECT_EQ(sample_value(before, "toond_gpu_models_loaded"), 0);
   EXPECT_EQ(sample_value(before, "toond_gpu_model_bytes"), 0);
   EXPECT_EQ(sample_value(before, "toond_result_cache_hits_total"), 0);
+  // Unlabelled histograms are there, all zero, before their first event.
+  for (const char* histogram : {"toond_render_seconds", "toond_import_seconds", "toond_import_bytes"}) {
+    EXPECT_EQ(sample_value(before, std::string(histogram) + "_count"), 0) << histogram;
+    EXPECT_EQ(sample_value(before, std::string(histogram) + "_bucket{le=\"+Inf\"}"), 0) << histogram;
+  }
 
   const std::string id = upload_obj_text(client, sphere_obj(24, 12), "ball.obj");
   ASSERT_FALSE(id.empty());
@@ -71,6 +76,11 @@ TEST(MetricsRoute, CountsRequestsByRouteAndStatusAndTimesRendersAndPasses) {
   EXPECT_GT(sample_value(after, "toond_render_pass_seconds_sum{pass=\"readback\"}").value_or(0), 0);
 
   EXPECT_EQ(sample_value(after, "toond_models_stored"), 1);
+  // The one upload was imported once: its time and its bytes.
+  EXPECT_EQ(sample_value(after, "toond_import_seconds_count"), 1);
+  EXPECT_GT(sample_value(after, "toond_import_seconds_sum").value_or(0), 0);
+  EXPECT_EQ(sample_value(after, "toond_import_bytes_count"), 1);
+  EXPECT_EQ(sample_value(after, "toond_import_bytes_sum"), static_cast<double>(sphere_obj(24, 12).size()));
   // The demo and the uploaded sphere are on the GPU now.
   EXPECT_EQ(sample_value(after, "toond_gpu_models_loaded"), 2);
   // 24×12 sphere: at least its 288 triangles' indices and a position per vertex.

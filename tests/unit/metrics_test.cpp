@@ -28,6 +28,21 @@ TEST(Metrics, AnUnlabelledCounterReportsZeroBeforeItsFirstEvent) {
   EXPECT_NE(registry.exposition().find("\nx_hits_total 0\n"), std::string::npos) << registry.exposition();
 }
 
+// Prometheus' convention: every series a family will have is there from the
+// first scrape. An unlabelled histogram has one, all zero.
+TEST(Metrics, AnUnlabelledHistogramReportsZerosBeforeItsFirstEvent) {
+  MetricsRegistry registry;
+  registry.histogram("x_seconds", "Time.", {}, {0.1, 1});
+  EXPECT_EQ(registry.exposition(),
+            "# HELP x_seconds Time.\n"
+            "# TYPE x_seconds histogram\n"
+            "x_seconds_bucket{le=\"0.1\"} 0\n"
+            "x_seconds_bucket{le=\"1\"} 0\n"
+            "x_seconds_bucket{le=\"+Inf\"} 0\n"
+            "x_seconds_sum 0\n"
+            "x_seconds_count 0\n");
+}
+
 TEST(Metrics, LabelValuesAreEscaped) {
   EXPECT_EQ(format_labels({"a"}, {"q\"b\\s\nn"}), "{a=\"q\\\"b\\\\s\\nn\"}");
   EXPECT_EQ(format_labels({}, {}), "");

@@ -1,0 +1,13 @@
+#pragma once
+// An uploaded bundle into the model store, the one way both upload routes
+// (POST /models and a multipart POST /render) take: a new model's import is
+// timed and sized for /metrics.
+#include "http/service_context.h"
+#include "scene/bundle.h"
+#include "scene/model_store.h"
+
+namespace toond::http {
+
+scene::ModelStore::PutResult store_upload(ServiceContext& context, const scene::Bundle& bundle);
+
+}  // namespace toond::http
