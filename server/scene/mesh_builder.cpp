@@ -30,19 +30,39 @@ void ImportWarnings::add(std::string message) {
     }
     i += extra + 1;
   }
-  if (!seen_.insert(message).second) return;
+  if (message.size() > kMaxMessageBytes) {
+    // Cut at a character boundary (the text is valid UTF-8 by now).
+    std::size_t cut = kMaxMessageBytes;
+    while (cut > 0 && (static_cast<unsigned char>(message[cut]) & 0xc0) == 0x80) --cut;
+    message.resize(cut);
+    message += "…";
+  }
+  const auto [it, inserted] = seen_.try_emplace(message, kDropped);
+  if (!inserted) {
+    if (it->second != kDropped) ++counts_[it->second];
+    else ++dropped_;
+    return;
+  }
   if (list_.size() < kMaxWarnings) {
+    it->second = list_.size();
     list_.push_back(std::move(message));
+    counts_.push_back(1);
   } else {
     ++dropped_;
   }
 }
 
 std::vector<std::string> ImportWarnings::take() {
-  if (dropped_ > 0) list_.push_back(std::to_string(dropped_) + " further warnings left out");
-  dropped_ = 0;
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < list_.size(); ++i) {
+    out.push_back(counts_[i] > 1 ? std::to_string(counts_[i]) + " × " + list_[i] : std::move(list_[i]));
+  }
+  if (dropped_ > 0) out.push_back(std::to_string(dropped_) + " further warnings left out");
+  list_.clear();
+  counts_.clear();
   seen_.clear();
-  return std::move(list_);
+  dropped_ = 0;
+  return out;
 }
 
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -20,17 +20,25 @@ namespace toond::scene {
 // The warnings of one import. A broken export can repeat one complaint per
 // face; the answer must stay readable, so each message is kept once and at
 // most kMaxWarnings are kept at all.
+// The warnings of one import, grouped and capped, so no answer carries more
+// than a few kilobytes of them whatever the input: a message repeated is
+// kept once with its count ("100000 × …"), at most kMaxWarnings distinct
+// ones are kept, each at most kMaxMessageBytes long.
 class ImportWarnings {
  public:
   static constexpr std::size_t kMaxWarnings = 40;
+  static constexpr std::size_t kMaxMessageBytes = 240;
 
   void add(std::string message);
-  // The list, with a closing note when some were left out.
+  // The list, repeats counted, with a closing note when some were left out.
   std::vector<std::string> take();
 
  private:
   std::vector<std::string> list_;
-  std::unordered_set<std::string> seen_;
+  std::vector<std::size_t> counts_;  // per entry of list_
+  // Every distinct message seen: its index in list_, or kDropped.
+  std::unordered_map<std::string, std::size_t> seen_;
+  static constexpr std::size_t kDropped = ~std::size_t{0};
   std::size_t dropped_ = 0;
 };
 

@@ -2,6 +2,7 @@
 // stays linear in the number of positions.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -49,7 +50,9 @@ TEST(PositionWeld, TimeGrowsLinearly) {
     }
     return p;
   };
-  auto median_ms = [&](int n) {
+  // The fastest of nine: preemption by the other tests running beside this
+  // one only ever adds time, so the least disturbed run measures the weld.
+  auto fastest_ms = [&](int n) {
     std::vector<double> ms;
     for (int r = 0; r < 9; ++r) {
       std::vector<glm::vec3> p = cloud(n);
@@ -57,12 +60,11 @@ TEST(PositionWeld, TimeGrowsLinearly) {
       weld_positions(p);
       ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     }
-    std::sort(ms.begin(), ms.end());
-    return ms[4];
+    return *std::min_element(ms.begin(), ms.end());
   };
   // Sizes whose tables stay in the caches both: beyond them each access
   // costs more, which says nothing about the algorithm.
-  const double small = median_ms(10000), large = median_ms(20000);
+  const double small = fastest_ms(10000), large = fastest_ms(20000);
   std::printf("[weld] %.2f ms, twice the positions %.2f ms\n", small, large);
   EXPECT_LT(large / small, 2.5) << small << " ms against " << large << " ms";
 }
