@@ -40,7 +40,7 @@ using nlohmann::json;
 
 constexpr int kSize = 96;
 
-enum class Subject { Demo, Sphere, Cube, SphereAndCube };
+enum class Subject { Demo, Sphere, Cube, SphereAndCube, ColouredCube };
 
 struct GoldenCase {
   std::string name;
@@ -105,6 +105,14 @@ std::vector<GoldenCase> feature_cases() {
       {"no_lights", Subject::Sphere, {{"lights", json::array()}}},
       {"background_alpha", Subject::Sphere, {{"background", {0.2, 0.3, 0.4, 0.0}}}},
       {"scene_two_objects", Subject::SphereAndCube, json::object()},
+      {"vertex_colors", Subject::ColouredCube, json::object()},
+      // A low light from the side throws the sphere's shadow across the
+      // floor in view, so a broken shadow pass changes many pixels.
+      {"shadows_side_light", Subject::Sphere,
+       {{"shadows", {{"enabled", true}}},
+        {"floor", {{"enabled", true}}},
+        {"camera", {{"pitch", 35}, {"zoom", 0.55}}},
+        {"lights", {{{"type", "directional"}, {"direction", {1, -0.6, -0.2}}}}}}},
   };
 }
 
@@ -123,8 +131,15 @@ class GoldenImage : public test::GlContextTest {
     static const scene::Model sphere =
         scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", test::sphere_obj(64, 32)}}));
     static const scene::Model cube = scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", test::cube_obj()}}));
+    // Every corner its own colour (OBJ "v x y z r g b"), faces blending them.
+    static const scene::Model coloured = scene::import_bundle(scene::test_checks::make_bundle(
+        {{"m.obj",
+          "v -1 -1 -1 1 0 0\nv 1 -1 -1 0 1 0\nv -1 1 -1 0 0 1\nv 1 1 -1 1 1 0\n"
+          "v -1 -1 1 1 0 1\nv 1 -1 1 0 1 1\nv -1 1 1 1 1 1\nv 1 1 1 0.2 0.2 0.2\n"
+          "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n"}}));
     switch (subject) {
       case Subject::Demo: return demo;
+      case Subject::ColouredCube: return coloured;
       case Subject::Cube: return cube;
       case Subject::Sphere:
       case Subject::SphereAndCube: break;
