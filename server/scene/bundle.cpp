@@ -15,9 +15,10 @@ constexpr std::size_t kMaxPath = 1024;
 
 char ascii_lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
 
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return ascii_lower(x) == ascii_lower(y); });
+std::string ascii_folded(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), ascii_lower);
+  return out;
 }
 
 // After '\\' has become '/': a root or a drive letter ("C:x" is
@@ -145,6 +146,9 @@ void Bundle::add(std::string_view path, std::string content) {
     throw ImportError(name, "file '" + name + "' is also a folder holding '" + next->first + "'");
   }
   files_.emplace(name, std::move(content));
+  // Of names that differ only in case, the first in path order answers.
+  const auto [folded, added] = folded_names_.emplace(ascii_folded(name), name);
+  if (!added && name < folded->second) folded->second = name;
 }
 
 std::optional<std::string> Bundle::resolve(std::string_view from, std::string_view reference) const {
@@ -157,9 +161,8 @@ std::optional<std::string> Bundle::resolve(std::string_view from, std::string_vi
   const auto normal = normalize_path(folder.empty() ? ref : std::string(folder) + '/' + ref);
   if (!normal) return std::nullopt;
   if (files_.count(*normal) != 0) return *normal;
-  for (const auto& [name, content] : files_) {
-    if (iequals(name, *normal)) return name;
-  }
+  const auto folded = folded_names_.find(ascii_folded(*normal));
+  if (folded != folded_names_.end()) return folded->second;
   return std::nullopt;
 }
 

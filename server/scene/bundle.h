@@ -29,6 +29,10 @@ class Bundle {
 
  private:
   std::map<std::string, std::string> files_;
+  // ASCII-lowercased path → the path, for resolve's case-insensitive match
+  // in one look-up (a scan per reference made many missing textures cost
+  // references × files).
+  std::map<std::string, std::string> folded_names_;
 };
 
 // Normalises a relative path: `\` → `/`, drops `.` segments and empty

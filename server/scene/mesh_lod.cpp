@@ -3,8 +3,10 @@
 #include <meshoptimizer.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "scene/mesh_processing.h"
 
@@ -13,16 +15,133 @@ namespace {
 
 constexpr double kQuadricToWorstStray = 2.5;
 
-void reorder_ranges(std::vector<std::uint32_t>& indices, std::vector<Submesh>& submeshes,
-                    std::size_t vertex_count) {
-  // Anything outside a submesh range (there should be nothing) stays put.
-  std::vector<std::uint32_t> reordered = indices;
-  for (const Submesh& sub : submeshes) {
-    if (sub.index_count == 0) continue;
-    meshopt_optimizeVertexCache(reordered.data() + sub.first_index, indices.data() + sub.first_index,
-                                sub.index_count, vertex_count);
+// The simplifier's cost grows with the square of a vertex's valence: a fan
+// of 40,000 triangles on one edge, or one triangle written 40,000 times,
+// took it seconds. Triangles at a position more than this many triangles
+// meet are kept at full detail in every level instead; real meshes have
+// few such hubs (a UV sphere's poles, a cylinder cap's centre), and their
+// fans are thin.
+constexpr std::uint32_t kMaxSimplifiedValence = 128;
+
+std::array<std::uint32_t, 3> corner_groups(const std::vector<std::uint32_t>& position_group,
+                                           const std::uint32_t* triangle) {
+  return {position_group[triangle[0]], position_group[triangle[1]], position_group[triangle[2]]};
+}
+
+struct CornerGroupsHash {
+  std::size_t operator()(const std::array<std::uint32_t, 3>& g) const noexcept {
+    std::uint64_t h = 1469598103934665603ull;
+    for (const auto v : g) h = (h ^ v) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
   }
-  indices = std::move(reordered);
+};
+
+// Which triangles of `indices` a coarser level may do without: those with
+// two corners at one position (no area to show) and repeats of an earlier
+// triangle over the same positions in the same turn (a second copy draws
+// nothing new; the opposite turn is a back side and stays).
+std::vector<bool> droppable_triangles(const std::vector<std::uint32_t>& position_group,
+                                      const std::vector<std::uint32_t>& indices) {
+  std::vector<bool> drop(indices.size() / 3, false);
+  std::unordered_set<std::array<std::uint32_t, 3>, CornerGroupsHash> seen;
+  seen.reserve(drop.size());
+  for (std::size_t t = 0; t < drop.size(); ++t) {
+    auto g = corner_groups(position_group, &indices[3 * t]);
+    if (g[0] == g[1] || g[1] == g[2] || g[2] == g[0]) {
+      drop[t] = true;
+      continue;
+    }
+    std::rotate(g.begin(), std::min_element(g.begin(), g.end()), g.end());
+    drop[t] = !seen.insert(g).second;
+  }
+  return drop;
+}
+
+// How many kept triangles meet at each position.
+std::vector<std::uint32_t> valence_of_positions(const std::vector<std::uint32_t>& position_group,
+                                                const std::vector<std::uint32_t>& indices,
+                                                const std::vector<bool>& dropped) {
+  std::vector<std::uint32_t> valence(position_group.size(), 0);
+  for (std::size_t t = 0; t < dropped.size(); ++t) {
+    if (dropped[t]) continue;
+    for (const auto g : corner_groups(position_group, &indices[3 * t])) ++valence[g];
+  }
+  return valence;
+}
+
+// One submesh's triangles sorted for simplification: those at a hub pass
+// through unchanged, the rest go to the simplifier on their own compact
+// vertex list, so its cost follows the submesh, not the whole model.
+struct SubmeshSplit {
+  std::vector<std::uint32_t> pinned;       // model vertex ids, kept as they are
+  std::vector<std::uint32_t> free;         // local ids into `local_to_model`
+  std::vector<std::uint32_t> local_to_model;
+  std::vector<glm::vec3> local_positions;
+};
+
+SubmeshSplit split_submesh(const Mesh& mesh, const std::vector<std::uint32_t>& position_group,
+                           const std::vector<std::uint32_t>& source, const Submesh& sub,
+                           const std::vector<bool>& dropped, const std::vector<std::uint32_t>& valence) {
+  SubmeshSplit split;
+  std::unordered_map<std::uint32_t, std::uint32_t> local_of;
+  for (std::size_t i = sub.first_index; i + 2 < std::size_t{sub.first_index} + sub.index_count; i += 3) {
+    if (dropped[i / 3]) continue;
+    const std::uint32_t* tri = &source[i];
+    const auto g = corner_groups(position_group, tri);
+    const bool at_hub = std::any_of(g.begin(), g.end(), [&](std::uint32_t p) { return valence[p] > kMaxSimplifiedValence; });
+    if (at_hub) {
+      split.pinned.insert(split.pinned.end(), tri, tri + 3);
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const auto [it, added] = local_of.emplace(tri[k], static_cast<std::uint32_t>(split.local_to_model.size()));
+      if (added) {
+        split.local_to_model.push_back(tri[k]);
+        split.local_positions.push_back(mesh.positions[tri[k]]);
+      }
+      split.free.push_back(it->second);
+    }
+  }
+  return split;
+}
+
+// Reorders one submesh's triangles for the vertex cache, on a compact copy
+// of its vertex ids: the optimiser's tables are as long as the vertex
+// count it is given, and a model of many small submeshes would otherwise
+// pay the whole model's vertex count for each one. The optimiser also
+// scores every triangle of each vertex in its cache at each step, so a hub
+// would cost the square of its valence; triangles at hubs follow the rest
+// in their own order (a hub stays in the cache anyway).
+void reorder_range(std::uint32_t* indices, std::size_t count) {
+  std::unordered_map<std::uint32_t, std::uint32_t> local_of;
+  std::vector<std::uint32_t> local_to_model;
+  std::vector<std::uint32_t> local(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto [it, added] = local_of.emplace(indices[i], static_cast<std::uint32_t>(local_to_model.size()));
+    if (added) local_to_model.push_back(indices[i]);
+    local[i] = it->second;
+  }
+  std::vector<std::uint32_t> valence(local_to_model.size(), 0);
+  for (const auto v : local) ++valence[v];
+  std::vector<std::uint32_t> ordinary;
+  std::vector<std::uint32_t> at_hubs;
+  ordinary.reserve(count);
+  for (std::size_t t = 0; t + 2 < count; t += 3) {
+    const bool at_hub = valence[local[t]] > kMaxSimplifiedValence || valence[local[t + 1]] > kMaxSimplifiedValence ||
+                        valence[local[t + 2]] > kMaxSimplifiedValence;
+    auto& to = at_hub ? at_hubs : ordinary;
+    to.insert(to.end(), &local[t], &local[t] + 3);
+  }
+  std::vector<std::uint32_t> reordered(ordinary.size());
+  meshopt_optimizeVertexCache(reordered.data(), ordinary.data(), ordinary.size(), local_to_model.size());
+  reordered.insert(reordered.end(), at_hubs.begin(), at_hubs.end());
+  for (std::size_t i = 0; i < reordered.size(); ++i) indices[i] = local_to_model[reordered[i]];
+}
+
+void reorder_ranges(std::vector<std::uint32_t>& indices, const std::vector<Submesh>& submeshes) {
+  for (const Submesh& sub : submeshes) {
+    if (sub.index_count > 0) reorder_range(indices.data() + sub.first_index, sub.index_count);
+  }
 }
 
 // Edges (between positions, split copies of a vertex counting as one) that
@@ -48,19 +167,14 @@ std::size_t open_edge_count(const std::vector<std::uint32_t>& position_group,
 }  // namespace
 
 void optimize_for_vertex_cache(Mesh& mesh) {
-  const std::size_t vertex_count = mesh.positions.size();
-  reorder_ranges(mesh.indices, mesh.submeshes, vertex_count);
-  for (MeshLod& lod : mesh.lods) reorder_ranges(lod.indices, lod.submeshes, vertex_count);
+  reorder_ranges(mesh.indices, mesh.submeshes);
+  for (MeshLod& lod : mesh.lods) reorder_ranges(lod.indices, lod.submeshes);
 }
 
 std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options) {
   std::vector<MeshLod> chain;
   if (mesh.positions.empty() || mesh.indices.empty()) return chain;
-  const float* positions = &mesh.positions[0].x;
-  const std::size_t vertex_count = mesh.positions.size();
   const std::size_t stride = sizeof(glm::vec3);
-  // meshopt reports errors relative to the mesh's extent.
-  const double scale = meshopt_simplifyScale(positions, vertex_count, stride);
 
   // Each level is simplified from the one before (cheap: every step works on
   // half the triangles of the last); its error is the sum of the steps'.
@@ -80,26 +194,38 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options
     if (target_triangles < options.min_triangles) break;
     MeshLod lod;
     double step_error = 0;
+    const std::vector<bool> dropped = droppable_triangles(position_group, source);
+    const std::vector<std::uint32_t> valence = valence_of_positions(position_group, source, dropped);
     for (const Submesh& sub : source_subs) {
       Submesh out{static_cast<std::uint32_t>(lod.indices.size()), 0, sub.material};
       if (sub.index_count > 0) {
+        const SubmeshSplit split = split_submesh(mesh, position_group, source, sub, dropped, valence);
         const std::size_t target_indices = std::max<std::size_t>(
             3, static_cast<std::size_t>(std::floor(sub.index_count * options.ratio / 3.0)) * 3);
-        std::vector<std::uint32_t> simplified(sub.index_count);
+        const std::size_t free_target =
+            std::min(split.free.size(), target_indices > split.pinned.size() ? target_indices - split.pinned.size() : 0);
+        std::vector<std::uint32_t> simplified(split.free.size());
         float sub_error = 0;
         // No error cap: the triangle target drives each step, the error is
         // measured and kept beside the level.
-        const std::size_t written = meshopt_simplify(
-            simplified.data(), source.data() + sub.first_index, sub.index_count, positions, vertex_count, stride,
-            target_indices, 1.0f, meshopt_SimplifyLockBorder, &sub_error);
-        lod.indices.insert(lod.indices.end(), simplified.begin(),
-                           simplified.begin() + static_cast<std::ptrdiff_t>(written));
-        out.index_count = static_cast<std::uint32_t>(written);
-        // meshopt's error is a quadric estimate; on a sphere the true
-        // farthest stray measured up to ~2× more with 75 % steps
-        // (mesh_lod_test), so it is taken 2.5 times to keep the pixel budget
-        // an upper bound of the worst stray, not of a typical one.
-        step_error = std::max(step_error, kQuadricToWorstStray * static_cast<double>(sub_error) * scale);
+        const std::size_t written =
+            split.free.empty()
+                ? 0
+                : meshopt_simplify(simplified.data(), split.free.data(), split.free.size(),
+                                   &split.local_positions[0].x, split.local_positions.size(), stride, free_target,
+                                   1.0f, meshopt_SimplifyLockBorder, &sub_error);
+        lod.indices.insert(lod.indices.end(), split.pinned.begin(), split.pinned.end());
+        for (std::size_t i = 0; i < written; ++i) lod.indices.push_back(split.local_to_model[simplified[i]]);
+        out.index_count = static_cast<std::uint32_t>(split.pinned.size() + written);
+        // meshopt's error is a quadric estimate relative to the extent of
+        // what it was given; on a sphere the true farthest stray measured
+        // up to ~2× more with 75 % steps (mesh_lod_test), so it is taken
+        // 2.5 times to keep the pixel budget an upper bound of the worst
+        // stray, not of a typical one.
+        const double local_scale = split.free.empty() ? 0.0
+                                                      : meshopt_simplifyScale(&split.local_positions[0].x,
+                                                                              split.local_positions.size(), stride);
+        step_error = std::max(step_error, kQuadricToWorstStray * static_cast<double>(sub_error) * local_scale);
       }
       lod.submeshes.push_back(out);
     }

@@ -144,12 +144,9 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
   // and, on an open rim (a leg without a sole, a flat eye decal), the
   // outward direction in the face's plane across the boundary edge, as if a
   // cap closed the hole. Without the rim term an open mesh gets no outline
-  // past its boundary.
-  struct Push {
-    glm::dvec3 direction;
-    double weight;
-  };
-  std::vector<std::vector<Push>> pushes(group_count);
+  // past its boundary. The pushes are visited twice (once to sum them, once
+  // for the mitre against their sum) rather than stored per position: a
+  // list per position cost an allocation each, and more than the rest.
   std::unordered_map<std::uint64_t, int> edge_use;
   edge_use.reserve(indices.size());
   auto edge_key = [&](std::uint32_t a, std::uint32_t b) {
@@ -167,53 +164,65 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
   // already pushes the way the rim would. Counting both tilted a corner's
   // offset off its faces and its mitre out to three widths.
   constexpr std::size_t kDirectionsKept = 8;
-  std::vector<std::vector<glm::dvec3>> face_directions(group_count);
+  std::vector<glm::dvec3> face_directions(group_count * kDirectionsKept);
+  std::vector<std::uint8_t> directions_known(group_count, 0);
   for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&)[3],
-                                                   const glm::dvec3& n, const glm::dvec3& angles) {
+                                                   const glm::dvec3& n, const glm::dvec3&) {
     for (int k = 0; k < 3; ++k) {
-      pushes[groups[i[k]]].push_back({n, angles[k]});
-      std::vector<glm::dvec3>& dirs = face_directions[groups[i[k]]];
-      const bool known = std::any_of(dirs.begin(), dirs.end(), [&](const glm::dvec3& d) { return glm::dot(d, n) > 0.999; });
-      if (!known && dirs.size() < kDirectionsKept) dirs.push_back(n);
+      const std::uint32_t g = groups[i[k]];
+      const glm::dvec3* dirs = &face_directions[g * kDirectionsKept];
+      const bool known = std::any_of(dirs, dirs + directions_known[g], [&](const glm::dvec3& d) { return glm::dot(d, n) > 0.999; });
+      if (!known && directions_known[g] < kDirectionsKept) face_directions[g * kDirectionsKept + directions_known[g]++] = n;
     }
   });
   auto faces_push_that_way = [&](std::uint32_t group, const glm::dvec3& direction) {
-    const std::vector<glm::dvec3>& dirs = face_directions[group];
-    return std::any_of(dirs.begin(), dirs.end(), [&](const glm::dvec3& d) { return glm::dot(d, direction) > 0.7; });
+    const glm::dvec3* dirs = &face_directions[group * kDirectionsKept];
+    return std::any_of(dirs, dirs + directions_known[group], [&](const glm::dvec3& d) { return glm::dot(d, direction) > 0.7; });
   };
-  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&p)[3],
-                                                   const glm::dvec3& n, const glm::dvec3&) {
-    for (int k = 0; k < 3; ++k) {
-      const int a = k, b = (k + 1) % 3;
-      if (edge_use[edge_key(i[a], i[b])] != 1) continue;
-      // In the face's plane, perpendicular to the edge, away from the
-      // triangle (counter-clockwise winding puts the interior on the left).
-      const glm::dvec3 outward = glm::normalize(glm::cross(p[b] - p[a], n));
-      const double quarter_turn = std::acos(0.0);
-      for (const std::uint32_t g : {groups[i[a]], groups[i[b]]}) {
-        if (!faces_push_that_way(g, outward)) pushes[g].push_back({outward, quarter_turn});
+  // Calls push(group, direction, weight) for every push of every position.
+  auto for_each_push = [&](auto&& push) {
+    for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&)[3],
+                                                     const glm::dvec3& n, const glm::dvec3& angles) {
+      for (int k = 0; k < 3; ++k) push(groups[i[k]], n, angles[k]);
+    });
+    for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&p)[3],
+                                                     const glm::dvec3& n, const glm::dvec3&) {
+      for (int k = 0; k < 3; ++k) {
+        const int a = k, b = (k + 1) % 3;
+        if (edge_use[edge_key(i[a], i[b])] != 1) continue;
+        // In the face's plane, perpendicular to the edge, away from the
+        // triangle (counter-clockwise winding puts the interior on the left).
+        const glm::dvec3 outward = glm::normalize(glm::cross(p[b] - p[a], n));
+        const double quarter_turn = std::acos(0.0);
+        for (const std::uint32_t g : {groups[i[a]], groups[i[b]]}) {
+          if (!faces_push_that_way(g, outward)) push(g, outward, quarter_turn);
+        }
       }
-    }
-  });
+    });
+  };
 
+  std::vector<glm::dvec3> sums(group_count, glm::dvec3(0.0));
+  for_each_push([&](std::uint32_t g, const glm::dvec3& direction, double weight) { sums[g] += direction * weight; });
+  std::vector<glm::dvec3> units(group_count, glm::dvec3(0.0));
+  for (std::size_t g = 0; g < group_count; ++g) {
+    const double length = glm::length(sums[g]);
+    if (length > 1e-12) units[g] = sums[g] / length;  // else faces cancel: fall back below
+  }
+  // Mitre: at a hard corner the averaged normal leans away from each face
+  // (a cube corner's diagonal meets every face at 54.7°), so one unit
+  // along it moves each face plane by only cos(angle) and the outline
+  // comes out thin along edges. Lengthen it by 1/min cos, so every face
+  // plane moves out one full unit. A face turned away (a fold, a
+  // two-sided sheet) has no mitre that would help; knife edges would need
+  // an unbounded one, so past kMaxMitre the corner is bevelled instead.
+  std::vector<double> min_cos(group_count, 1.0);
+  for_each_push([&](std::uint32_t g, const glm::dvec3& direction, double) {
+    min_cos[g] = std::min(min_cos[g], glm::dot(units[g], direction));
+  });
   std::vector<glm::dvec3> group_offset(group_count, glm::dvec3(0.0));
   for (std::size_t g = 0; g < group_count; ++g) {
-    glm::dvec3 sum(0.0);
-    for (const Push& push : pushes[g]) sum += push.direction * push.weight;
-    const double length = glm::length(sum);
-    if (!(length > 1e-12)) continue;  // faces cancel: fall back below
-    const glm::dvec3 unit = sum / length;
-    // Mitre: at a hard corner the averaged normal leans away from each face
-    // (a cube corner's diagonal meets every face at 54.7°), so one unit
-    // along it moves each face plane by only cos(angle) and the outline
-    // comes out thin along edges. Lengthen it by 1/min cos, so every face
-    // plane moves out one full unit. A face turned away (a fold, a
-    // two-sided sheet) has no mitre that would help; knife edges would need
-    // an unbounded one, so past kMaxMitre the corner is bevelled instead.
-    double min_cos = 1.0;
-    for (const Push& push : pushes[g]) min_cos = std::min(min_cos, glm::dot(unit, push.direction));
-    const double mitre = min_cos <= 0.0 ? 1.0 : 1.0 / std::max(min_cos, 1.0 / kMaxMitre);
-    group_offset[g] = unit * mitre;
+    const double mitre = min_cos[g] <= 0.0 ? 1.0 : 1.0 / std::max(min_cos[g], 1.0 / kMaxMitre);
+    group_offset[g] = units[g] * mitre;
   }
 
   std::vector<glm::vec3> offsets(positions.size());

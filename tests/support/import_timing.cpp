@@ -1,0 +1,43 @@
+#include "support/import_timing.h"
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include "scene/bundle_import.h"
+
+namespace toond::test {
+namespace {
+
+double seconds_to_import(const scene::Bundle& bundle, std::size_t* triangles = nullptr) {
+  const auto start = std::chrono::steady_clock::now();
+  const scene::Model model = scene::import_bundle(bundle);
+  const auto stop = std::chrono::steady_clock::now();
+  if (triangles) *triangles = model.mesh.triangle_count();
+  return std::chrono::duration<double>(stop - start).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+ScalingMeasure measure_scaling(const HeavyInput& input, int n, int runs) {
+  const scene::Bundle small = input.make(n);
+  const scene::Bundle large = input.make(2 * n);
+  ScalingMeasure m{n, small.total_bytes()};
+  seconds_to_import(small, &m.triangles_n);
+  seconds_to_import(large, &m.triangles_2n);
+  std::vector<double> at_n, at_2n;
+  for (int r = 0; r < runs; ++r) {
+    at_n.push_back(seconds_to_import(small));
+    at_2n.push_back(seconds_to_import(large));
+  }
+  m.seconds_n = median(at_n);
+  m.seconds_2n = median(at_2n);
+  return m;
+}
+
+}  // namespace toond::test

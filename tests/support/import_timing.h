@@ -1,0 +1,25 @@
+#pragma once
+// Times imports of heavy inputs the way the scaling test and the benchmark
+// both need: the median of a few runs, sizes n and 2n interleaved so a slow
+// spell of a noisy machine hits both alike.
+#include <cstddef>
+
+#include "support/heavy_inputs.h"
+
+namespace toond::test {
+
+struct ScalingMeasure {
+  int n = 0;
+  std::size_t bytes = 0;          // of the bundle at n
+  double seconds_n = 0.0;         // median import_bundle time at n
+  double seconds_2n = 0.0;        // the same at 2n
+  std::size_t triangles_n = 0;    // of the imported model at n
+  std::size_t triangles_2n = 0;
+  double ratio() const { return seconds_2n / seconds_n; }
+};
+
+// Imports `input` at n and 2n (import_bundle, as an upload does: levels of
+// detail and enclosure included), `runs` times each, after one warm-up.
+ScalingMeasure measure_scaling(const HeavyInput& input, int n, int runs);
+
+}  // namespace toond::test
