@@ -22,6 +22,16 @@ unsigned long long parse_count(const std::string& flag, const std::string& text,
   return v;
 }
 
+double parse_seconds(const std::string& flag, const std::string& text, double min, double max) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(v >= min && v <= max)) {
+    throw std::invalid_argument(flag + " expects seconds in " + std::to_string(min).substr(0, 5) + ".." +
+                                std::to_string(static_cast<long long>(max)) + ", got '" + text + "'");
+  }
+  return v;
+}
+
 constexpr unsigned long long kMaxSide = 4096;  // the schema's largest width/height
 
 }  // namespace
@@ -43,6 +53,8 @@ bool parse_limit_option(const std::vector<std::string>& args, std::size_t& i, ht
     limits.import.max_vertices = count(3, 1ull << 32);
   } else if (flag == "--max-triangles") {
     limits.import.max_triangles = count(1, 1ull << 32);
+  } else if (flag == "--max-import-seconds") {
+    limits.import.max_seconds = parse_seconds(flag, value(), 0.001, 86400);
   } else if (flag == "--max-texture-pixels") {
     limits.import.max_texture_pixels = count(1, 16384ull * 16384ull);
   } else if (flag == "--max-output-pixels") {
@@ -76,6 +88,8 @@ std::string limit_usage() {
   --max-bundle-files N   files in one upload (default 256)
   --max-vertices N       vertex positions in an uploaded model (default 10000000)
   --max-triangles N      triangles in an uploaded model (default 10000000)
+  --max-import-seconds S wall time one upload's import may take; past it the
+                         import is abandoned, nothing is stored (default 30)
   --max-texture-pixels N pixels of one texture, read from its header before
                          decoding (default 67108864 = 8192x8192)
   --max-output-pixels N  width x height of a render (default 16777216 = 4096x4096)

@@ -1,6 +1,7 @@
 // GET /healthz, GET /schema, GET /presets, and the web page (web_page_routes).
 #include <nlohmann/json.hpp>
 
+#include "http/request_limits.h"
 #include "http/routes.h"
 #include "http/web_page_routes.h"
 #include "param_schema.h"
@@ -20,6 +21,7 @@ void register_info_routes(httplib::Server& server, ServiceContext& context) {
           {"glsl_version", gl.glsl_version},
           {"platform", gl.platform}}},
         {"queue_depth", context.renderer.queue_depth()},
+        {"limits", limits_document(context.limits)},
     };
     res.set_content(body.dump(), "application/json");
   });

@@ -45,6 +45,23 @@ void check_request_counts(const nlohmann::json& request, const RequestLimits& li
   check("objects", limits.render.max_objects, "--max-objects");
 }
 
+nlohmann::json limits_document(const RequestLimits& limits) {
+  return {
+      {"--max-upload-bytes", limits.max_upload_bytes},
+      {"--max-bundle-files", limits.max_bundle_files},
+      {"--max-json-bytes", limits.max_json_bytes},
+      {"--max-json-depth", limits.max_json_depth},
+      {"--max-vertices", limits.import.max_vertices},
+      {"--max-triangles", limits.import.max_triangles},
+      {"--max-texture-pixels", limits.import.max_texture_pixels},
+      {"--max-import-seconds", limits.import.max_seconds},
+      {"--max-output-pixels", limits.render.max_output_pixels},
+      {"--max-samples", limits.render.max_samples},
+      {"--max-lights", limits.render.max_lights},
+      {"--max-objects", limits.render.max_objects},
+  };
+}
+
 nlohmann::json parse_limited_json(std::string_view text, const RequestLimits& limits, std::string_view where) {
   if (text.empty()) return nlohmann::json::object();
   if (text.size() > limits.max_json_bytes) {

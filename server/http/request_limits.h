@@ -18,9 +18,13 @@ struct RequestLimits {
   std::size_t max_bundle_files = 256;
   std::size_t max_json_bytes = 1u << 20;  // a JSON body or `params` part
   std::size_t max_json_depth = 32;        // nested arrays/objects
-  scene::ImportLimits import{10'000'000, 10'000'000, 8192ull * 8192ull};
+  scene::ImportLimits import{10'000'000, 10'000'000, 8192ull * 8192ull, 30.0};
   render::RenderLimits render;
 };
+
+// Every limit by the flag that sets it ({"--max-vertices": 10000000, ...}),
+// as GET /healthz reports them.
+nlohmann::json limits_document(const RequestLimits& limits);
 
 // Parses render parameters sent as JSON text (`where` names it in messages:
 // "the request body"). Checks size and nesting depth on the raw text first,

@@ -1,6 +1,7 @@
 #include "scene/bundle_import.h"
 
 #include <algorithm>
+#include <chrono>
 #include <vector>
 
 #include "scene/enclosure.h"
@@ -70,7 +71,13 @@ std::vector<std::string> gltf_files(const Bundle& bundle) {
 
 }  // namespace
 
-Model import_bundle(const Bundle& bundle, const ImportLimits& limits) {
+Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits) {
+  ImportLimits limits = given_limits;
+  if (limits.max_seconds > 0.0 && limits.deadline == std::chrono::steady_clock::time_point::max()) {
+    limits.deadline = std::chrono::steady_clock::now() +
+                      std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                          std::chrono::duration<double>(limits.max_seconds));
+  }
   const std::vector<std::string> gltf = gltf_files(bundle);
   Model model;
   if (gltf.size() == 1 && !std::any_of(bundle.files().begin(), bundle.files().end(), [](const auto& file) {
@@ -85,7 +92,11 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& limits) {
       model = has_extension(path, ".m") ? import_m_bundle(bundle, limits) : import_obj_bundle(bundle, limits);
     }
   }
-  prepare_levels_of_detail(model.mesh);
+  check_import_time(limits, "reading the model");
+  LodOptions lod;
+  lod.between_levels = [&limits] { check_import_time(limits, "simplifying"); };
+  prepare_levels_of_detail(model.mesh, lod);
+  check_import_time(limits, "ordering triangles");
   classify_enclosures(model.mesh);
   return model;
 }

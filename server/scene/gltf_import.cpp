@@ -213,6 +213,7 @@ class GltfImporter {
     images_ = doc_.contains("images") ? std::move(doc_["images"]) : json::array();
     doc_.erase("images");
     load(sources);
+    check_import_time(limits_, "parsing " + path_);
     reader_ = std::make_unique<GltfAccessorReader>(gltf_, path_);
 
     const std::vector<MeshInstance> instances = collect_instances();
@@ -221,6 +222,7 @@ class GltfImporter {
     source.limits = limits_;
     model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
       build_materials(triangles);
+      check_import_time(limits_, "decoding textures");
     });
     report_ignored();
     model_.has_vertex_colors = !model_.mesh.colors.empty();

@@ -82,6 +82,7 @@ class Parser {
 
   Model run() {
     parse();
+    check_import_time(limits_, "parsing " + path_);
     MeshSource source = make_source();
     source.limits = limits_;
     Model model;

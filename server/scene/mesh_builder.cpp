@@ -354,6 +354,7 @@ class Builder {
                     " texture coordinates were not finite numbers and were set to 0");
     }
 
+    check_import_time(src_.limits, "building vertices");
     const WeldReport weld = weld_positions(mesh.positions);
     mesh.weld_tolerance = weld.tolerance;
     mesh.welded_positions = weld.moved;
@@ -376,11 +377,14 @@ class Builder {
       }
     }
 
+    check_import_time(src_.limits, "computing normals");
     mesh.outline_normals = compute_outline_normals(mesh.positions, mesh.indices, mesh.normals);
+    check_import_time(src_.limits, "computing outline normals");
     mesh.tangents = compute_tangents(mesh.positions, mesh.normals, mesh.texcoords, mesh.indices);
     mesh.bounds = compute_bounds(mesh.positions);
     mesh.extremes = extreme_points(mesh.positions);
     mesh.creases = measure_creases(mesh.positions, mesh.normals, mesh.indices);
+    check_import_time(src_.limits, "measuring the mesh");
 
     for (std::size_t t = 0; t < triangles.size();) {
       Submesh sub;

@@ -192,6 +192,7 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options
     const auto target_triangles =
         static_cast<std::size_t>(std::floor(static_cast<double>(source_triangles) * options.ratio));
     if (target_triangles < options.min_triangles) break;
+    if (options.between_levels) options.between_levels();
     MeshLod lod;
     double step_error = 0;
     const std::vector<bool> dropped = droppable_triangles(position_group, source);

@@ -12,6 +12,7 @@
 // level is as closed as its triangles.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "scene/model.h"
@@ -32,6 +33,9 @@ struct LodOptions {
   double min_shrink = 0.85;
   // At most this many coarser levels.
   std::size_t max_levels = 12;
+  // Called before each level is made (the import's time limit, which may
+  // throw to abandon the import).
+  std::function<void()> between_levels;
 };
 
 // Reorders the triangles of each submesh (and of each level already built)

@@ -180,10 +180,12 @@ class Importer {
 
   Model run() {
     parse();
+    check_import_time(limits_, "parsing " + obj_path_);
     MeshSource source = make_source();
     source.limits = limits_;
     model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
       build_materials(triangles);
+      check_import_time(limits_, "decoding textures");
     });
     model_.has_vertex_colors = !model_.mesh.colors.empty();
     model_.warnings = warnings_.take();

@@ -75,6 +75,41 @@ TEST(RenderTimeout, PastItTheAnswerIs503WithRetryAfter) {
   EXPECT_EQ(health->status, 200);
 }
 
+// An import past --max-import-seconds is abandoned with 422 naming the flag,
+// and nothing of it is stored: the model list stays empty and the data
+// folder holds no model. /healthz reports the limit.
+TEST(ImportTimeLimit, PastItTheUploadIs422AndNothingIsStored) {
+  const fs::path data = fs::temp_directory_path() / ("toond-import-limit-" + std::to_string(::getpid()));
+  fs::remove_all(data);
+  Daemon daemon(data, {"--max-import-seconds", "0.001"});
+  auto client = daemon.client();
+  const auto entries = [&] {
+    std::set<std::string> names;
+    for (const auto& entry : fs::recursive_directory_iterator(data)) names.insert(entry.path().string());
+    return names;
+  };
+  const std::set<std::string> before = entries();
+  // 80,000 triangles: far more than a millisecond to import.
+  httplib::MultipartFormDataItems items{{"file", sphere_obj(200, 200), "sphere.obj", "text/plain"}};
+  auto res = client.Post("/models", items);
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 422) << res->body;
+  const json error = error_of(res);
+  EXPECT_EQ(error.value("code", ""), "limit_exceeded");
+  EXPECT_EQ(error.value("limit", ""), "--max-import-seconds");
+  EXPECT_NE(error.value("message", "").find("nothing was stored"), std::string::npos) << error;
+
+  auto models = client.Get("/models");
+  ASSERT_TRUE(models);
+  EXPECT_EQ(json::parse(models->body).value("models", json::array()).size(), 0u) << models->body;
+  EXPECT_EQ(entries(), before) << "the upload left files in " << data;
+
+  auto health = client.Get("/healthz");
+  ASSERT_TRUE(health);
+  EXPECT_DOUBLE_EQ(json::parse(health->body)["limits"].value("--max-import-seconds", 0.0), 0.001) << health->body;
+  fs::remove_all(data);
+}
+
 std::string read_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;

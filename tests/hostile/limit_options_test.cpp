@@ -23,12 +23,14 @@ TEST(LimitOptions, DefaultsAreTheDocumentedOnes) {
   EXPECT_EQ(o.limits.max_json_bytes, 1048576u);
   EXPECT_EQ(o.limits.max_json_depth, 32u);
   EXPECT_DOUBLE_EQ(o.render_timeout_s, 60.0);
+  EXPECT_DOUBLE_EQ(o.limits.import.max_seconds, 30.0);
   EXPECT_TRUE(o.access.token.empty());
   EXPECT_TRUE(o.access.cors_origins.empty());
   // --help states each default as parsed above.
   for (const char* text : {"--max-bundle-files N   files in one upload (default 256)",
                            "(default 10000000)", "(default 67108864", "(default 16777216", "(default 134217728",
                            "(default 8)", "(default 16)", "(default 1048576)", "(default 32)", "--token T",
+                           "--max-import-seconds S", "nothing is stored (default 30)",
                            "--cors-origin O", "TOOND_TOKEN"}) {
     EXPECT_NE(usage().find(text), std::string::npos) << text;
   }
@@ -39,7 +41,7 @@ TEST(LimitOptions, EachFlagSetsItsLimit) {
                                    "--max-texture-pixels", "4096", "--max-output-pixels", "65536", "--max-samples",
                                    "100000", "--max-lights", "2", "--max-objects", "4", "--max-json-bytes", "2000",
                                    "--max-json-depth", "8", "--token", "abc", "--cors-origin", "*",
-                                   "--render-timeout", "0.25"});
+                                   "--render-timeout", "0.25", "--max-import-seconds", "2.5"});
   EXPECT_EQ(o.limits.max_bundle_files, 3u);
   EXPECT_EQ(o.limits.import.max_vertices, 100u);
   EXPECT_EQ(o.limits.import.max_triangles, 50u);
@@ -53,6 +55,7 @@ TEST(LimitOptions, EachFlagSetsItsLimit) {
   EXPECT_EQ(o.access.token, "abc");
   EXPECT_EQ(o.access.cors_origins, std::vector<std::string>{"*"});
   EXPECT_DOUBLE_EQ(o.render_timeout_s, 0.25);
+  EXPECT_DOUBLE_EQ(o.limits.import.max_seconds, 2.5);
 }
 
 TEST(LimitOptions, BadValuesNameTheFlag) {
@@ -62,6 +65,8 @@ TEST(LimitOptions, BadValuesNameTheFlag) {
                                                                 {"--max-vertices", "lots"},
                                                                 {"--token", ""},
                                                                 {"--render-timeout", "0"},
+                                                                {"--max-import-seconds", "0"},
+                                                                {"--max-import-seconds", "soon"},
                                                                 {"--max-samples"}}) {
     try {
       parse_options(args);

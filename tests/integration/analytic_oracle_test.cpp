@@ -58,11 +58,16 @@ class AnalyticOracle : public SharedDaemonTest {
     return estimate_disk(LinearChannel(render_ok(client, params), 1));
   }
 
-  static ErrorStats band_edge_errors(int steps, int msaa, const DiskEstimate& disk, bool band_aa = true) {
+  static ErrorStats band_edge_errors(int steps, int msaa, const DiskEstimate& disk, bool band_aa = true,
+                                     const char* lod = nullptr) {
     auto client = daemon().client();
-    const ErrorStats stats = test::band_edge_errors(render_ok(client, sphere_params(steps, msaa, band_aa)), disk, steps);
-    std::printf("[oracle] steps %d msaa %d band_aa %d: band-edge error mean %.3f px, max %.3f px over %zu edges (%zu missing)\n",
-                steps, msaa, band_aa ? 1 : 0, stats.mean_abs, stats.max_abs, stats.count, stats.missing);
+    json params = sphere_params(steps, msaa, band_aa);
+    if (lod) params["lod"] = lod;
+    const ErrorStats stats = test::band_edge_errors(render_ok(client, params), disk, steps);
+    std::printf("[oracle] steps %d msaa %d band_aa %d lod %s: band-edge error mean %.3f px, max %.3f px over %zu edges "
+                "(%zu missing)\n",
+                steps, msaa, band_aa ? 1 : 0, lod ? lod : "default", stats.mean_abs, stats.max_abs, stats.count,
+                stats.missing);
     return stats;
   }
 };
@@ -96,10 +101,14 @@ TEST_F(AnalyticOracle, SphereBandEdgesSitAtTheAnalyticRadii) {
   }
   // MSAA alone only smooths triangle edges: band edges inside triangles
   // stay pixel steps, off by up to about half a pixel whatever the MSAA
-  // level. Band-edge antialiasing places them to a fraction of that.
+  // level. Band-edge antialiasing places them to a fraction of that. At
+  // full detail, so the claim is about the antialiasing alone: at the
+  // default level the simplified surface's own stray (up to ~0.35 px, held
+  // by MessyMeshOracle) would be measured with it, the same with and
+  // without antialiasing.
   for (int msaa : {1, 4}) {
-    const ErrorStats hard = band_edge_errors(5, msaa, disk, false);
-    const ErrorStats smooth = band_edge_errors(5, msaa, disk, true);
+    const ErrorStats hard = band_edge_errors(5, msaa, disk, false, "full");
+    const ErrorStats smooth = band_edge_errors(5, msaa, disk, true, "full");
     EXPECT_GT(hard.max_abs, 0.4) << "msaa " << msaa;
     EXPECT_LT(smooth.mean_abs, hard.mean_abs / 2) << "msaa " << msaa;
     EXPECT_LT(smooth.max_abs, hard.max_abs / 2) << "msaa " << msaa;
