@@ -1,7 +1,8 @@
 #pragma once
 // Times imports of heavy inputs the way the scaling test and the benchmark
-// both need: the median of a few runs, sizes n and 2n interleaved so a slow
-// spell of a noisy machine hits both alike.
+// both need: the importing thread's CPU time (so other processes of a busy
+// machine do not count), the median of a few runs, sizes n and 2n
+// interleaved so a slow spell hits both alike.
 #include <cstddef>
 
 #include "support/heavy_inputs.h"
@@ -11,7 +12,7 @@ namespace toond::test {
 struct ScalingMeasure {
   int n = 0;
   std::size_t bytes = 0;          // of the bundle at n
-  double seconds_n = 0.0;         // median import_bundle time at n
+  double seconds_n = 0.0;         // median import_bundle CPU time at n
   double seconds_2n = 0.0;        // the same at 2n
   std::size_t triangles_n = 0;    // of the imported model at n
   std::size_t triangles_2n = 0;
