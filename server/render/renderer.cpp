@@ -605,12 +605,16 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     edges.use();
     glBindTextureUnit(0, normals.texture());
     edges.set("u_normal_depth", 0);
-    edges.set("u_reach", std::max(0.5f * outline_px, 1.0f));
+    edges.set("u_half_width", 0.5f * outline_px);
     edges.set("u_depth_threshold", params.outline.depth_threshold * 2.0f * bounds.radius());
     edges.set("u_cos_crease", static_cast<float>(std::cos(glm::radians(params.outline.crease_angle_deg))));
     edges.set("u_edge_color", params.outline.color);
+    // The shader gives each pixel the share of it the line covers.
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glBindVertexArray(fullscreen_vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
     check_gl("edge pass");
     end_pass(Pass::Edges);
