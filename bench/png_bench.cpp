@@ -1,5 +1,5 @@
 // PNG encode time on real toon frames (README "Performance").
-//   toond_png_bench [--repeats N] [--save DIR] [--level L] [FRAME.png ...]
+//   toond_png_bench [--repeats N] [--save DIR] [--level L] [--threads T] [FRAME.png ...]
 // Without frame files it starts the toond built here, uploads models from
 // ../shared/models and renders them with default parameters: the bunny at
 // 512² and 1024² (the frames the encode budget is set for) and a spread of
@@ -37,6 +37,7 @@ struct Frame {
 struct Options {
   int repeats = 200;
   int level = toond::image::PngOptions{}.compression_level;
+  int threads = toond::image::PngOptions{}.threads;
   std::filesystem::path save_dir;
   std::vector<std::filesystem::path> inputs;
 };
@@ -50,12 +51,14 @@ Options parse_options(int argc, char** argv) {
       options.repeats = std::stoi(argv[++i]);
     } else if (arg == "--level" && has_value) {
       options.level = std::stoi(argv[++i]);
+    } else if (arg == "--threads" && has_value) {
+      options.threads = std::stoi(argv[++i]);
     } else if (arg == "--save" && has_value) {
       options.save_dir = argv[++i];
     } else if (!arg.empty() && arg[0] != '-') {
       options.inputs.emplace_back(arg);
     } else {
-      throw std::runtime_error("usage: toond_png_bench [--repeats N] [--save DIR] [--level L] [FRAME.png ...]");
+      throw std::runtime_error("usage: toond_png_bench [--repeats N] [--save DIR] [--level L] [--threads T] [FRAME.png ...]");
     }
   }
   return options;
@@ -120,7 +123,7 @@ const char* colour_type_name(unsigned char type) {
 }
 
 void bench_frame(const Frame& frame, const Options& options) {
-  const toond::image::PngOptions png_options{options.level};
+  const toond::image::PngOptions png_options{options.level, options.threads};
   std::string png = toond::image::encode_png(frame.image, png_options);
   if (toond::image::decode_png(png).rgba != frame.image.rgba) {
     throw std::runtime_error(frame.name + ": the PNG does not decode to the frame");
