@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <climits>
 #include <stdexcept>
-#include <thread>
+
+#include "image/parallel_tasks.h"
 
 namespace toond::image {
 namespace {
@@ -14,53 +15,64 @@ struct DeflatedStrip {
   std::vector<std::uint8_t> bytes;  // raw deflate, byte-aligned at its end
   uLong adler = 1;                  // Adler-32 of the strip's input alone
   std::size_t input_bytes = 0;
-  std::string error;                // empty: fine
 };
 
-// Raw deflate of one strip: no zlib header or trailer, those belong to the
-// whole stream. The last strip finishes the stream; the others sync-flush.
-DeflatedStrip deflate_strip(std::span<const std::uint8_t> input, const DeflateSettings& settings, bool last) {
-  DeflatedStrip strip;
-  strip.input_bytes = input.size();
-  strip.adler = adler32_z(1, input.data(), input.size());
-  z_stream z{};
-  if (deflateInit2(&z, settings.level, Z_DEFLATED, -MAX_WBITS, 8, settings.strategy) != Z_OK) {
-    strip.error = "deflateInit2 failed";
-    return strip;
+// Raw deflate of one strip, fed a few rows at a time: no zlib header or
+// trailer, those belong to the whole stream. Its output grows with what
+// deflate writes, a small fraction of the input on toon frames, rather than
+// being sized for the worst case: fresh large buffers cost page faults that
+// take longer than compressing.
+class StripDeflater {
+ public:
+  explicit StripDeflater(const DeflateSettings& settings) {
+    if (deflateInit2(&z_, settings.level, Z_DEFLATED, -MAX_WBITS, 8, settings.strategy) != Z_OK) {
+      throw std::runtime_error("png: deflateInit2 failed");
+    }
   }
-  strip.bytes.resize(deflateBound(&z, input.size()) + 16);
-  z.next_out = strip.bytes.data();
-  z.avail_out = static_cast<uInt>(strip.bytes.size());
-  std::size_t fed = 0;
-  const int end_flush = last ? Z_FINISH : Z_SYNC_FLUSH;
-  for (;;) {
-    if (z.avail_in == 0 && fed < input.size()) {
-      // avail_in is 32 bits wide: a huge strip goes in in pieces.
-      const std::size_t piece = std::min<std::size_t>(input.size() - fed, UINT_MAX / 2);
-      z.next_in = const_cast<Bytef*>(input.data() + fed);
-      z.avail_in = static_cast<uInt>(piece);
-      fed += piece;
+  ~StripDeflater() { deflateEnd(&z_); }
+  StripDeflater(const StripDeflater&) = delete;
+  StripDeflater& operator=(const StripDeflater&) = delete;
+
+  void add(std::span<const std::uint8_t> input) {
+    strip_.adler = adler32_z(strip_.adler, input.data(), input.size());
+    strip_.input_bytes += input.size();
+    while (!input.empty()) {
+      // avail_in is 32 bits wide: a huge input goes in in pieces.
+      const std::size_t piece = std::min<std::size_t>(input.size(), UINT_MAX / 2);
+      z_.next_in = const_cast<Bytef*>(input.data());
+      z_.avail_in = static_cast<uInt>(piece);
+      run(Z_NO_FLUSH);
+      input = input.subspan(piece);
     }
-    if (z.avail_out == 0) {
-      const std::size_t used = strip.bytes.size();
-      strip.bytes.resize(used * 2);
-      z.next_out = strip.bytes.data() + used;
-      z.avail_out = static_cast<uInt>(strip.bytes.size() - used);
-    }
-    const int flush = fed == input.size() ? end_flush : Z_NO_FLUSH;
-    const int rc = deflate(&z, flush);
-    if (rc == Z_STREAM_ERROR) {
-      strip.error = "deflate failed";
-      break;
-    }
-    if (flush == Z_FINISH && rc == Z_STREAM_END) break;
-    // A sync flush is complete once deflate returns with output room left.
-    if (flush == Z_SYNC_FLUSH && z.avail_in == 0 && z.avail_out > 0) break;
   }
-  strip.bytes.resize(z.total_out);
-  deflateEnd(&z);
-  return strip;
-}
+
+  // The last strip finishes the stream; the others end with a sync flush.
+  DeflatedStrip finish(bool last) {
+    run(last ? Z_FINISH : Z_SYNC_FLUSH);
+    strip_.bytes.resize(z_.total_out);
+    return std::move(strip_);
+  }
+
+ private:
+  void run(int flush) {
+    for (;;) {
+      if (z_.avail_out == 0) make_room();
+      const int rc = deflate(&z_, flush);
+      if (rc == Z_STREAM_ERROR) throw std::runtime_error("png: deflate failed");
+      if (flush == Z_FINISH ? rc == Z_STREAM_END : z_.avail_in == 0 && z_.avail_out > 0) return;
+    }
+  }
+
+  void make_room() {
+    const std::size_t used = strip_.bytes.size();
+    strip_.bytes.resize(std::max<std::size_t>(used * 2, 16 * 1024));
+    z_.next_out = strip_.bytes.data() + used;
+    z_.avail_out = static_cast<uInt>(strip_.bytes.size() - used);
+  }
+
+  z_stream z_{};
+  DeflatedStrip strip_;
+};
 
 // The two-byte zlib header: 32 KiB window, deflate, a level hint as zlib
 // itself would write it, and the check bits that make it a multiple of 31.
@@ -82,36 +94,30 @@ void append_big_endian(std::string& out, uLong value) {
   for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<char>((value >> shift) & 0xff));
 }
 
+// Rows go to deflate in chunks of about this many bytes: small enough for
+// the scratch rows of a filter to stay in cache and off the page-fault path.
+constexpr std::size_t kChunkBytes = 64 * 1024;
+
 }  // namespace
 
-std::string deflate_scanlines(int row_count, const ScanlineSource& source, const DeflateSettings& settings) {
+std::string deflate_scanlines(int row_count, std::size_t scanline_bytes, const ScanlineSource& source,
+                              const DeflateSettings& settings) {
   const int strips = std::clamp(settings.strips, 1, std::max(row_count, 1));
-  const int threads = std::clamp(settings.threads, 1, strips);
+  const int rows_per_chunk = static_cast<int>(std::max<std::size_t>(1, kChunkBytes / std::max<std::size_t>(scanline_bytes, 1)));
   std::vector<DeflatedStrip> deflated(static_cast<std::size_t>(strips));
-
-  // Worker w takes strips w, w + threads, ...; the calling thread is worker 0.
-  auto work = [&](int worker) {
+  run_tasks(strips, settings.threads, [&](int s) {
+    const int first = static_cast<int>(static_cast<long long>(row_count) * s / strips);
+    const int end = static_cast<int>(static_cast<long long>(row_count) * (s + 1) / strips);
+    StripDeflater deflater(settings);
     std::vector<std::uint8_t> scratch;
-    for (int s = worker; s < strips; s += threads) {
-      const int first = static_cast<int>(static_cast<long long>(row_count) * s / strips);
-      const int end = static_cast<int>(static_cast<long long>(row_count) * (s + 1) / strips);
-      try {
-        deflated[static_cast<std::size_t>(s)] = deflate_strip(source(first, end - first, scratch), settings, s == strips - 1);
-      } catch (const std::exception& e) {
-        deflated[static_cast<std::size_t>(s)].error = e.what();
-      }
+    for (int row = first; row < end; row += rows_per_chunk) {
+      deflater.add(source(row, std::min(rows_per_chunk, end - row), scratch));
     }
-  };
-  {
-    std::vector<std::jthread> helpers;
-    helpers.reserve(static_cast<std::size_t>(threads - 1));
-    for (int w = 1; w < threads; ++w) helpers.emplace_back(work, w);
-    work(0);
-  }
+    deflated[static_cast<std::size_t>(s)] = deflater.finish(s == strips - 1);
+  });
 
   std::size_t total = 6;
   for (const DeflatedStrip& strip : deflated) {
-    if (!strip.error.empty()) throw std::runtime_error("png: " + strip.error);
     total += strip.bytes.size();
   }
   std::string stream = zlib_header(settings);

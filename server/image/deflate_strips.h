@@ -27,13 +27,16 @@ struct DeflateSettings {
 
 // The scanlines of rows [first_row, first_row + row_count), each already
 // filtered and preceded by its filter-type byte. The source may return a
-// view of its own memory or fill `scratch` and return a view of it; it is
-// called from several threads at once, once per strip.
+// view of its own memory or fill `scratch` and return a view of it. It is
+// asked for a few rows at a time (about 64 KiB), in order within a strip,
+// from several threads at once, each with its own scratch.
 using ScanlineSource =
     std::function<std::span<const std::uint8_t>(int first_row, int row_count, std::vector<std::uint8_t>& scratch)>;
 
-// The zlib stream of `row_count` scanlines. Throws std::runtime_error when
-// zlib fails.
-std::string deflate_scanlines(int row_count, const ScanlineSource& source, const DeflateSettings& settings);
+// The zlib stream of `row_count` scanlines of `scanline_bytes` bytes each
+// (filter byte included). Throws std::runtime_error when zlib fails, and
+// rethrows what the source throws.
+std::string deflate_scanlines(int row_count, std::size_t scanline_bytes, const ScanlineSource& source,
+                              const DeflateSettings& settings);
 
 }  // namespace toond::image

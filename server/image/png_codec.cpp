@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
-#include <thread>
 
 #include "image/deflate_strips.h"
 #include "image/palette.h"
+#include "image/parallel_tasks.h"
 #include "image/sub_filter.h"
 
 namespace toond::image {
@@ -57,8 +57,7 @@ int deflate_level(int level) { return level >= 1 && level <= 3 ? 1 : level; }
 constexpr std::size_t kMinStripBytes = 128 * 1024;
 
 int usable_threads(const PngOptions& options) {
-  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return options.threads <= 0 ? hardware : std::min(options.threads, hardware);
+  return options.threads <= 0 ? hardware_threads() : std::min(options.threads, hardware_threads());
 }
 
 DeflateSettings deflate_settings(const PngOptions& options, bool paletted, std::size_t scanline_bytes) {
@@ -68,12 +67,12 @@ DeflateSettings deflate_settings(const PngOptions& options, bool paletted, std::
   return {deflate_level(level), deflate_strategy(level, paletted), strips, strips};
 }
 
-void set_palette(png_structp png, png_infop info, const PalettedImage& paletted) {
+void set_palette(png_structp png, png_infop info, const Palette& palette) {
   std::vector<png_color> colours;
   std::vector<png_byte> alphas;
-  for (const Rgba8& c : paletted.colours) {
+  for (const Rgba8& c : palette.colours()) {
     colours.push_back({c.r, c.g, c.b});
-    if (alphas.size() < static_cast<std::size_t>(paletted.translucent_count)) alphas.push_back(c.a);
+    if (alphas.size() < static_cast<std::size_t>(palette.translucent_count())) alphas.push_back(c.a);
   }
   png_set_PLTE(png, info, colours.data(), static_cast<int>(colours.size()));
   if (!alphas.empty()) png_set_tRNS(png, info, alphas.data(), static_cast<int>(alphas.size()), nullptr);
@@ -81,20 +80,20 @@ void set_palette(png_structp png, png_infop info, const PalettedImage& paletted)
 
 // libpng writes the container: signature, header, palette, colour space
 // chunks, the IDAT holding the zlib stream made here, and the end.
-std::string write_png(const Image& image, int colour_type, const PalettedImage* paletted, const std::string& idat) {
+std::string write_png(const Image& image, int colour_type, const Palette* palette, const std::string& idat) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, throw_png_error,
                                             ignore_png_warning);
   if (!png) throw std::runtime_error("png: cannot create write struct");
   png_infop info = png_create_info_struct(png);
   std::string out;
-  out.reserve(idat.size() + 256 + (paletted ? 4 * paletted->colours.size() : 0));
+  out.reserve(idat.size() + 256 + (palette ? 4 * palette->colours().size() : 0));
   try {
     if (!info) throw std::runtime_error("png: cannot create info struct");
     png_set_write_fn(png, &out, append_to_string, nullptr);
     png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
                  static_cast<png_uint_32>(image.height), 8, colour_type,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    if (paletted) set_palette(png, info, *paletted);
+    if (palette) set_palette(png, info, *palette);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_write_info(png, info);
     png_write_chunk(png, reinterpret_cast<png_const_bytep>("IDAT"),
@@ -115,21 +114,23 @@ std::string encode_png(const Image& image, const PngOptions& options) {
       image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
     throw std::runtime_error("png: image size does not match its pixel buffer");
   }
-  if (const auto paletted = make_palette(image)) {
-    const std::size_t stride = static_cast<std::size_t>(image.width) + 1;
-    const ScanlineSource rows = [&](int first_row, int row_count, std::vector<std::uint8_t>&) {
-      return std::span<const std::uint8_t>(paletted->scanlines)
-          .subspan(static_cast<std::size_t>(first_row) * stride, static_cast<std::size_t>(row_count) * stride);
+  const int threads = usable_threads(options);
+  if (const auto palette = find_palette(image, threads)) {
+    const ScanlineSource rows = [&](int first_row, int row_count, std::vector<std::uint8_t>& scratch) {
+      return palette->index_rows(image, first_row, row_count, scratch);
     };
-    const std::string idat = deflate_scanlines(image.height, rows, deflate_settings(options, true, paletted->scanlines.size()));
-    return write_png(image, PNG_COLOR_TYPE_PALETTE, &*paletted, idat);
+    const std::size_t scanline_bytes = static_cast<std::size_t>(image.width) + 1;
+    const std::string idat = deflate_scanlines(image.height, scanline_bytes, rows,
+                                               deflate_settings(options, true, scanline_bytes * image.height));
+    return write_png(image, PNG_COLOR_TYPE_PALETTE, &*palette, idat);
   }
   const TruecolourLayout layout = is_opaque(image) ? TruecolourLayout::Rgb : TruecolourLayout::Rgba;
   const ScanlineSource rows = [&](int first_row, int row_count, std::vector<std::uint8_t>& scratch) {
     return sub_filtered_rows(image, layout, first_row, row_count, scratch);
   };
-  const std::size_t bytes = (static_cast<std::size_t>(image.width) * bytes_per_pixel(layout) + 1) * image.height;
-  const std::string idat = deflate_scanlines(image.height, rows, deflate_settings(options, false, bytes));
+  const std::size_t scanline_bytes = static_cast<std::size_t>(image.width) * bytes_per_pixel(layout) + 1;
+  const std::string idat = deflate_scanlines(image.height, scanline_bytes, rows,
+                                             deflate_settings(options, false, scanline_bytes * image.height));
   return write_png(image, layout == TruecolourLayout::Rgb ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, nullptr, idat);
 }
 

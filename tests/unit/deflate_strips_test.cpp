@@ -42,30 +42,33 @@ TEST(DeflateStrips, StripsJoinIntoOneZlibStream) {
       for (const auto& [level, strategy] : {std::pair{0, Z_DEFAULT_STRATEGY}, {1, Z_RLE}, {1, Z_DEFAULT_STRATEGY},
                                             {9, Z_DEFAULT_STRATEGY}}) {
         SCOPED_TRACE(testing::Message() << strips << " strips, " << threads << " threads, level " << level);
-        const std::string stream = deflate_scanlines(rows, source, {level, strategy, strips, threads});
+        const std::string stream = deflate_scanlines(rows, width, source, {level, strategy, strips, threads});
         EXPECT_TRUE(inflate_zlib(stream, input.size()) == input);
       }
     }
   }
 }
 
-TEST(DeflateStrips, ScratchFilledBySourceIsUsed) {
-  const ScanlineSource source = [](int first, int count, std::vector<std::uint8_t>& scratch) {
-    scratch.assign(static_cast<std::size_t>(count), 0);
-    for (int r = 0; r < count; ++r) scratch[static_cast<std::size_t>(r)] = static_cast<std::uint8_t>(first + r);
+TEST(DeflateStrips, LongRowsAreAskedForAFewAtATime) {
+  // Rows of 40000 bytes: the source is asked for one or two at a time.
+  const std::size_t width = 40000;
+  const ScanlineSource source = [&](int first, int count, std::vector<std::uint8_t>& scratch) {
+    EXPECT_LE(count, 2);
+    scratch.assign(width * static_cast<std::size_t>(count), 0);
+    for (int r = 0; r < count; ++r) scratch[width * static_cast<std::size_t>(r)] = static_cast<std::uint8_t>(first + r);
     return std::span<const std::uint8_t>(scratch);
   };
-  const std::string stream = deflate_scanlines(200, source, {1, Z_RLE, 4, 2});
-  const std::vector<std::uint8_t> out = inflate_zlib(stream, 200);
-  ASSERT_EQ(out.size(), 200u);
-  for (int i = 0; i < 200; ++i) EXPECT_EQ(out[static_cast<std::size_t>(i)], i);
+  const std::string stream = deflate_scanlines(200, width, source, {1, Z_RLE, 4, 2});
+  const std::vector<std::uint8_t> out = inflate_zlib(stream, 200 * width);
+  ASSERT_EQ(out.size(), 200 * width);
+  for (int i = 0; i < 200; ++i) EXPECT_EQ(out[width * static_cast<std::size_t>(i)], i);
 }
 
 TEST(DeflateStrips, SourceFailureIsReported) {
   const ScanlineSource source = [](int, int, std::vector<std::uint8_t>&) -> std::span<const std::uint8_t> {
     throw std::runtime_error("no rows");
   };
-  EXPECT_THROW(deflate_scanlines(10, source, {1, Z_RLE, 2, 2}), std::runtime_error);
+  EXPECT_THROW(deflate_scanlines(10, 10, source, {1, Z_RLE, 2, 2}), std::runtime_error);
 }
 
 }  // namespace
