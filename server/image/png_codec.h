@@ -7,9 +7,11 @@
 namespace toond::image {
 
 struct PngOptions {
-  // zlib level 0..9: 0 stores (fastest, largest); 1 to 3 run-length deflate,
-  // nearly as small as a full search on toon frames and several times
-  // faster; 4 to 9 zlib's full search at that level (smaller, slower).
+  // zlib level 0..9: 0 stores (fastest, largest); 1 to 3 the fastest
+  // search for the layout (run-length matches for palette indices, zlib
+  // level 1 for Sub-filtered truecolour), nearly as small as a full search
+  // on toon frames and several times faster; 4 to 9 zlib's full search at
+  // that level (smaller, slower).
   int compression_level = 3;
   // At most this many threads deflate at once; 0 or more than the hardware
   // has: one per hardware thread.
@@ -23,10 +25,12 @@ struct PngOptions {
 //    as palette indices have no numeric order for a filter to exploit;
 //  - otherwise, every alpha 255: RGB (colour type 2), else RGBA (6); rows Sub
 //    filtered, which turns flat bands into runs of zeros.
-// The zlib stream is made here rather than by libpng so that images of more
-// than 128 KiB of scanlines can be cut into horizontal strips deflated on
-// several cores at once (one per hardware thread at most); libpng still
-// writes every chunk. Throws std::runtime_error on failure.
+// The zlib stream is made here rather than by libpng so that it can be cut
+// into horizontal strips (64 KiB of scanlines at least, up to four per
+// thread) deflated on several cores at once, one thread per hardware thread
+// at most, the caller included; libpng still writes every chunk. The
+// palette is counted the same way, in bands. Throws std::runtime_error on
+// failure.
 std::string encode_png(const Image& image, const PngOptions& options = {});
 
 // Decodes any 8-bit or 16-bit PNG to RGBA8. Throws std::runtime_error with
