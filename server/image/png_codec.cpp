@@ -55,10 +55,13 @@ int deflate_level(int level) { return level >= 1 && level <= 3 ? 1 : level; }
 // Below this many scanline bytes a strip costs more in setup (zlib's state
 // is about 256 KiB to allocate and clear) and in lost matches than it saves.
 constexpr std::size_t kMinStripBytes = 64 * 1024;
-// Strips per thread: a helper that the scheduler pauses (another process
-// has its core) holds up the caller for one small strip, not for half the
-// image, since the caller takes whatever strips are left.
-constexpr int kStripsPerThread = 4;
+// The strip count depends on the image alone, never on the machine or on
+// how many threads run, so a render's PNG is the same bytes everywhere (its
+// ETag and cached answer with it). Eight strips keep every core of a small
+// machine busy and leave a caller whose helper the scheduler has paused
+// (another process has its core) waiting for one small strip at most, the
+// caller taking whatever strips are left.
+constexpr int kMaxStrips = 8;
 
 int usable_threads(const PngOptions& options) {
   return options.threads <= 0 ? hardware_threads() : std::min(options.threads, hardware_threads());
@@ -66,10 +69,8 @@ int usable_threads(const PngOptions& options) {
 
 DeflateSettings deflate_settings(const PngOptions& options, bool paletted, std::size_t scanline_bytes) {
   const int level = std::clamp(options.compression_level, 0, 9);
-  const int worth_it = static_cast<int>(std::max<std::size_t>(1, scanline_bytes / kMinStripBytes));
-  const int threads = std::min(usable_threads(options), worth_it);
-  const int strips = threads == 1 ? 1 : std::min(threads * kStripsPerThread, worth_it);
-  return {deflate_level(level), deflate_strategy(level, paletted), strips, threads};
+  const int strips = static_cast<int>(std::clamp<std::size_t>(scanline_bytes / kMinStripBytes, 1, kMaxStrips));
+  return {deflate_level(level), deflate_strategy(level, paletted), strips, std::min(usable_threads(options), strips)};
 }
 
 void set_palette(png_structp png, png_infop info, const Palette& palette) {

@@ -176,6 +176,16 @@ TEST(PngCodec, EveryLevelAndThreadCountRoundTripsEveryKind) {
   }
 }
 
+TEST(PngCodec, BytesDoNotDependOnTheThreadCount) {
+  // The same render must give the same PNG (and ETag) on every machine.
+  const Image kinds[] = {with_colours(900, 700, 120), noise(900, 700, true, 5)};
+  for (const Image& original : kinds) {
+    const std::string one_thread = encode_png(original, {3, 1});
+    EXPECT_EQ(encode_png(original, {3, 2}), one_thread);
+    EXPECT_EQ(encode_png(original, {3, 0}), one_thread);
+  }
+}
+
 TEST(PngCodec, RejectsNonPng) {
   EXPECT_THROW(decode_png("not a png at all"), std::runtime_error);
   EXPECT_THROW(decode_png(""), std::runtime_error);
