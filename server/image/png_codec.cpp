@@ -3,8 +3,14 @@
 #include <png.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
+
+#include "image/deflate_strips.h"
+#include "image/palette.h"
+#include "image/parallel_tasks.h"
+#include "image/sub_filter.h"
 
 namespace toond::image {
 namespace {
@@ -33,6 +39,80 @@ void read_from_view(png_structp png, png_bytep data, png_size_t length) {
   cursor->offset += length;
 }
 
+// Level 0 stores. Levels 1 to 3 take the fastest search that suits the
+// image kind: palette indices of a toon frame are long runs of one byte,
+// which run-length matching finds as well as a full search does; Sub-filtered
+// truecolour rows also repeat short patterns (an antialiased edge drawn
+// along a line) that zlib's fastest hash search finds at the same speed.
+// From level 4 up the caller asked for size over speed and gets zlib's full
+// search at that level.
+int deflate_strategy(int level, bool paletted) {
+  if (level == 0 || level > 3) return Z_DEFAULT_STRATEGY;
+  return paletted ? Z_RLE : Z_DEFAULT_STRATEGY;
+}
+int deflate_level(int level) { return level >= 1 && level <= 3 ? 1 : level; }
+
+// Below this many scanline bytes a strip costs more in setup (zlib's state
+// is about 256 KiB to allocate and clear) and in lost matches than it saves.
+constexpr std::size_t kMinStripBytes = 64 * 1024;
+// The strip count depends on the image alone, never on the machine or on
+// how many threads run, so a render's PNG is the same bytes everywhere (its
+// ETag and cached answer with it). Eight strips keep every core of a small
+// machine busy and leave a caller whose helper the scheduler has paused
+// (another process has its core) waiting for one small strip at most, the
+// caller taking whatever strips are left.
+constexpr int kMaxStrips = 8;
+
+int usable_threads(const PngOptions& options) {
+  return options.threads <= 0 ? hardware_threads() : std::min(options.threads, hardware_threads());
+}
+
+DeflateSettings deflate_settings(const PngOptions& options, bool paletted, std::size_t scanline_bytes) {
+  const int level = std::clamp(options.compression_level, 0, 9);
+  const int strips = static_cast<int>(std::clamp<std::size_t>(scanline_bytes / kMinStripBytes, 1, kMaxStrips));
+  return {deflate_level(level), deflate_strategy(level, paletted), strips, std::min(usable_threads(options), strips)};
+}
+
+void set_palette(png_structp png, png_infop info, const Palette& palette) {
+  std::vector<png_color> colours;
+  std::vector<png_byte> alphas;
+  for (const Rgba8& c : palette.colours()) {
+    colours.push_back({c.r, c.g, c.b});
+    if (alphas.size() < static_cast<std::size_t>(palette.translucent_count())) alphas.push_back(c.a);
+  }
+  png_set_PLTE(png, info, colours.data(), static_cast<int>(colours.size()));
+  if (!alphas.empty()) png_set_tRNS(png, info, alphas.data(), static_cast<int>(alphas.size()), nullptr);
+}
+
+// libpng writes the container: signature, header, palette, colour space
+// chunks, the IDAT holding the zlib stream made here, and the end.
+std::string write_png(const Image& image, int colour_type, const Palette* palette, const std::string& idat) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, throw_png_error,
+                                            ignore_png_warning);
+  if (!png) throw std::runtime_error("png: cannot create write struct");
+  png_infop info = png_create_info_struct(png);
+  std::string out;
+  out.reserve(idat.size() + 256 + (palette ? 4 * palette->colours().size() : 0));
+  try {
+    if (!info) throw std::runtime_error("png: cannot create info struct");
+    png_set_write_fn(png, &out, append_to_string, nullptr);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
+                 static_cast<png_uint_32>(image.height), 8, colour_type,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (palette) set_palette(png, info, *palette);
+    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    png_write_chunk(png, reinterpret_cast<png_const_bytep>("IDAT"),
+                    reinterpret_cast<png_const_bytep>(idat.data()), idat.size());
+    png_write_chunk(png, reinterpret_cast<png_const_bytep>("IEND"), nullptr, 0);
+  } catch (...) {
+    png_destroy_write_struct(&png, &info);
+    throw;
+  }
+  png_destroy_write_struct(&png, &info);
+  return out;
+}
+
 }  // namespace
 
 std::string encode_png(const Image& image, const PngOptions& options) {
@@ -40,32 +120,24 @@ std::string encode_png(const Image& image, const PngOptions& options) {
       image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
     throw std::runtime_error("png: image size does not match its pixel buffer");
   }
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, throw_png_error,
-                                            ignore_png_warning);
-  if (!png) throw std::runtime_error("png: cannot create write struct");
-  png_infop info = png_create_info_struct(png);
-  std::string out;
-  try {
-    if (!info) throw std::runtime_error("png: cannot create info struct");
-    png_set_write_fn(png, &out, append_to_string, nullptr);
-    png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
-                 static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGBA,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
-    png_set_compression_level(png, options.compression_level);
-    png_set_compression_strategy(png, Z_RLE);
-    png_write_info(png, info);
-    for (int y = 0; y < image.height; ++y) {
-      png_write_row(png, const_cast<png_bytep>(image.pixel(0, y)));
-    }
-    png_write_end(png, nullptr);
-  } catch (...) {
-    png_destroy_write_struct(&png, &info);
-    throw;
+  const int threads = usable_threads(options);
+  if (const auto palette = find_palette(image, threads)) {
+    const ScanlineSource rows = [&](int first_row, int row_count, std::vector<std::uint8_t>& scratch) {
+      return palette->index_rows(image, first_row, row_count, scratch);
+    };
+    const std::size_t scanline_bytes = static_cast<std::size_t>(image.width) + 1;
+    const std::string idat = deflate_scanlines(image.height, scanline_bytes, rows,
+                                               deflate_settings(options, true, scanline_bytes * image.height));
+    return write_png(image, PNG_COLOR_TYPE_PALETTE, &*palette, idat);
   }
-  png_destroy_write_struct(&png, &info);
-  return out;
+  const TruecolourLayout layout = is_opaque(image) ? TruecolourLayout::Rgb : TruecolourLayout::Rgba;
+  const ScanlineSource rows = [&](int first_row, int row_count, std::vector<std::uint8_t>& scratch) {
+    return sub_filtered_rows(image, layout, first_row, row_count, scratch);
+  };
+  const std::size_t scanline_bytes = static_cast<std::size_t>(image.width) * bytes_per_pixel(layout) + 1;
+  const std::string idat = deflate_scanlines(image.height, scanline_bytes, rows,
+                                             deflate_settings(options, false, scanline_bytes * image.height));
+  return write_png(image, layout == TruecolourLayout::Rgb ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, nullptr, idat);
 }
 
 Image decode_png(std::string_view bytes) {

@@ -7,12 +7,30 @@
 namespace toond::image {
 
 struct PngOptions {
-  // zlib level 0..9. Toon images are large flat areas; a low level with the
-  // SUB filter and run-length strategy is much faster at nearly the same size.
+  // zlib level 0..9: 0 stores (fastest, largest); 1 to 3 the fastest
+  // search for the layout (run-length matches for palette indices, zlib
+  // level 1 for Sub-filtered truecolour), nearly as small as a full search
+  // on toon frames and several times faster; 4 to 9 zlib's full search at
+  // that level (smaller, slower).
   int compression_level = 3;
+  // At most this many threads deflate at once; 0 or more than the hardware
+  // has: one per hardware thread.
+  int threads = 0;
 };
 
-// Encodes to PNG (RGBA, 8 bits). Throws std::runtime_error on failure.
+// Encodes to PNG, 8 bits per channel, in the smallest layout that holds the
+// image exactly; whichever is chosen, decoding gives back the same RGBA bytes:
+//  - at most 256 distinct RGBA values: a palette (colour type 3), one byte a
+//    pixel, with a tRNS chunk when any colour is translucent; rows unfiltered,
+//    as palette indices have no numeric order for a filter to exploit;
+//  - otherwise, every alpha 255: RGB (colour type 2), else RGBA (6); rows Sub
+//    filtered, which turns flat bands into runs of zeros.
+// The zlib stream is made here rather than by libpng so that it can be cut
+// into horizontal strips (64 KiB of scanlines at least, up to four per
+// thread) deflated on several cores at once, one thread per hardware thread
+// at most, the caller included; libpng still writes every chunk. The
+// palette is counted the same way, in bands. Throws std::runtime_error on
+// failure.
 std::string encode_png(const Image& image, const PngOptions& options = {});
 
 // Decodes any 8-bit or 16-bit PNG to RGBA8. Throws std::runtime_error with

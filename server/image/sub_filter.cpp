@@ -1,0 +1,63 @@
+#include "image/sub_filter.h"
+
+#include <cstring>
+
+namespace toond::image {
+namespace {
+
+constexpr std::uint8_t kSubFilter = 1;
+
+void sub_filter_rgba_row(const std::uint8_t* __restrict in, std::uint8_t* __restrict out, int width) {
+  std::memcpy(out, in, 4);
+  const std::size_t bytes = static_cast<std::size_t>(width) * 4;
+  for (std::size_t i = 4; i < bytes; ++i) out[i] = static_cast<std::uint8_t>(in[i] - in[i - 4]);
+}
+
+void sub_filter_rgb_row(const std::uint8_t* __restrict in, std::uint8_t* __restrict out, int width) {
+  std::memcpy(out, in, 3);
+  for (int x = 1; x < width; ++x) {
+    const std::uint8_t* p = in + static_cast<std::size_t>(x) * 4;
+    std::uint8_t* o = out + static_cast<std::size_t>(x) * 3;
+    o[0] = static_cast<std::uint8_t>(p[0] - p[-4]);
+    o[1] = static_cast<std::uint8_t>(p[1] - p[-3]);
+    o[2] = static_cast<std::uint8_t>(p[2] - p[-2]);
+  }
+}
+
+}  // namespace
+
+std::span<const std::uint8_t> sub_filtered_rows(const Image& image, TruecolourLayout layout, int first_row,
+                                                int row_count, std::vector<std::uint8_t>& scratch) {
+  const std::size_t stride = static_cast<std::size_t>(image.width) * bytes_per_pixel(layout) + 1;
+  scratch.resize(stride * static_cast<std::size_t>(row_count));
+  for (int r = 0; r < row_count; ++r) {
+    std::uint8_t* out = scratch.data() + static_cast<std::size_t>(r) * stride;
+    const std::uint8_t* in = image.pixel(0, first_row + r);
+    out[0] = kSubFilter;
+    if (layout == TruecolourLayout::Rgba) {
+      sub_filter_rgba_row(in, out + 1, image.width);
+    } else {
+      sub_filter_rgb_row(in, out + 1, image.width);
+    }
+  }
+  return scratch;
+}
+
+bool is_opaque(const Image& image) {
+  // Two pixels a word, ANDed together without branching, so the compiler can
+  // vectorise it; only the alpha bytes of the result are looked at.
+  constexpr std::uint64_t kAlphaBytes = 0xff000000ff000000ull;
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  const std::uint8_t* bytes = image.rgba.data();
+  std::uint64_t all = ~0ull;
+  std::size_t i = 0;
+  for (; i + 2 <= pixels; i += 2) {
+    std::uint64_t two;
+    std::memcpy(&two, bytes + i * 4, 8);
+    all &= two;
+  }
+  if (i < pixels && bytes[i * 4 + 3] != 0xff) return false;
+  return (all & kAlphaBytes) == kAlphaBytes;
+}
+
+}  // namespace toond::image

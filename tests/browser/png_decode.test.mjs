@@ -1,0 +1,157 @@
+// PNGs from toond decoded by Chromium's own decoder, every pixel compared
+// bit for bit: frames rendered by a real toond (their raw pixels taken from
+// libpng's decode, tests/png_decoders/write_png_samples.cpp) and the encoder
+// samples of every layout (palette, palette + tRNS, RGB, RGBA, strips).
+//   node png_decode.test.mjs --toond PATH --samples-writer PATH --work DIR
+// Exit 0: every image decodes exactly; 1: one does not, or the run failed.
+//
+// Pixels are read back through WebGL from an ImageBitmap made without
+// premultiplied alpha or colour conversion: a 2D canvas stores premultiplied
+// colour and would round translucent pixels on the way back.
+import { spawn, spawnSync } from 'node:child_process';
+import { mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { createInterface } from 'node:readline';
+import { fileURLToPath } from 'node:url';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const { chromium } = await import(path.join(here, 'node_modules/playwright-core/index.mjs')).catch(() => {
+  console.error('playwright-core is not installed: run tests/browser/install.sh');
+  process.exit(1);
+});
+
+function argument(name) {
+  const i = process.argv.indexOf(name);
+  if (i < 0 || i + 1 >= process.argv.length) throw new Error(`missing ${name}`);
+  return process.argv[i + 1];
+}
+const toondBinary = argument('--toond');
+const samplesWriter = argument('--samples-writer');
+const work = argument('--work');
+const STEP_TIMEOUT_MS = Number(process.env.TOOND_BROWSER_STEP_TIMEOUT_MS || 45000);
+
+let failures = 0;
+function check(condition, what, detail = '') {
+  console.log(`${condition ? 'ok  ' : 'FAIL'} ${what}${detail ? ` (${detail})` : ''}`);
+  if (!condition) failures += 1;
+}
+
+function startDaemon(dataDir) {
+  const child = spawn(toondBinary, ['--listen', '127.0.0.1:0', '--data-dir', dataDir], { stdio: ['ignore', 'pipe', 'pipe'] });
+  child.stderr.on('data', (d) => process.stderr.write(`[toond] ${d}`));
+  return new Promise((resolve, reject) => {
+    const timer = setTimeout(() => reject(new Error('toond did not print its listening line')), STEP_TIMEOUT_MS);
+    child.on('exit', (code) => reject(new Error(`toond exited early with ${code}`)));
+    createInterface({ input: child.stdout }).on('line', (line) => {
+      const m = /listening on (http:\/\/\S+)/.exec(line);
+      if (m) {
+        clearTimeout(timer);
+        resolve({ child, url: m[1] });
+      }
+    });
+  });
+}
+
+// Default parameters but the size and background: opaque frames at the two
+// sizes the encode budget names, and one on a transparent background.
+const FRAMES = {
+  'demo-512': { width: 512, height: 512 },
+  'demo-1024': { width: 1024, height: 1024 },
+  'demo-512-transparent': { width: 512, height: 512, background: [0.9, 0.9, 0.95, 0] },
+  'demo-256-no-msaa': { width: 256, height: 256, msaa: 1 },
+};
+
+async function renderFrames(url, dir) {
+  const paths = [];
+  for (const [name, params] of Object.entries(FRAMES)) {
+    const res = await fetch(`${url}/render`, { method: 'POST', body: JSON.stringify(params), headers: { 'Content-Type': 'application/json' } });
+    if (res.status !== 200) throw new Error(`render ${name}: ${res.status} ${await res.text()}`);
+    const file = path.join(dir, `${name}.png`);
+    writeFileSync(file, Buffer.from(await res.arrayBuffer()));
+    paths.push(file);
+  }
+  return paths;
+}
+
+// Runs in the page: the PNG's pixels as Chromium decodes them, RGBA rows
+// top to bottom, base64.
+async function decodeInBrowser(pngBase64) {
+  const bytes = Uint8Array.from(atob(pngBase64), (c) => c.charCodeAt(0));
+  const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }),
+    { premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
+  const { width, height } = bitmap;
+  const gl = new OffscreenCanvas(width, height).getContext('webgl2', { premultipliedAlpha: false });
+  if (!gl) throw new Error('no WebGL2 context');
+  gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, false);
+  gl.pixelStorei(gl.UNPACK_COLORSPACE_CONVERSION_WEBGL, gl.NONE);
+  gl.bindTexture(gl.TEXTURE_2D, gl.createTexture());
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, bitmap);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, gl.createFramebuffer());
+  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, gl.getParameter(gl.TEXTURE_BINDING_2D), 0);
+  const pixels = new Uint8Array(width * height * 4);
+  gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  let binary = '';
+  for (let i = 0; i < pixels.length; i += 0x8000) binary += String.fromCharCode(...pixels.subarray(i, i + 0x8000));
+  return { width, height, rgba: btoa(binary) };
+}
+
+async function compare(page, name, pngFile, rawFile, width, height, colourType) {
+  const decoded = await page.evaluate(decodeInBrowser, readFileSync(pngFile).toString('base64'));
+  const raw = readFileSync(rawFile);
+  const got = Buffer.from(decoded.rgba, 'base64');
+  let detail = `${width}x${height}, colour type ${colourType}`;
+  let same = decoded.width === width && decoded.height === height && got.equals(raw);
+  if (!same && got.length === raw.length) {
+    let i = 0;
+    while (got[i] === raw[i]) i += 1;
+    const p = Math.floor(i / 4);
+    detail += `; pixel (${p % width}, ${Math.floor(p / width)}) is ${[...got.subarray(p * 4, p * 4 + 4)]}, was ${[...raw.subarray(p * 4, p * 4 + 4)]}`;
+  } else if (!same) {
+    detail += `; decoded ${decoded.width}x${decoded.height}`;
+  }
+  check(same, `Chromium decodes ${name} exactly`, detail);
+}
+
+rmSync(work, { recursive: true, force: true });
+const framesDir = path.join(work, 'frames');
+const samplesDir = path.join(work, 'samples');
+const dataDir = path.join(work, 'data');
+for (const dir of [framesDir, samplesDir, dataDir]) mkdirSync(dir, { recursive: true });
+
+let daemon = null;
+let browser = null;
+try {
+  daemon = await startDaemon(dataDir);
+  const frames = await renderFrames(daemon.url, framesDir);
+  const writer = spawnSync(samplesWriter, [samplesDir, ...frames], { stdio: 'inherit' });
+  check(writer.status === 0, 'the encoder wrote every sample in the colour type expected of it');
+
+  browser = await chromium.launch({
+    executablePath: '/usr/bin/chromium',
+    headless: true,
+    // WebGL on the CPU: no GPU in CI.
+    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-first-run'],
+  });
+  const page = await browser.newPage();
+  const samples = readFileSync(path.join(samplesDir, 'samples.txt'), 'utf8').trim().split('\n');
+  const types = new Set();
+  for (const line of samples) {
+    const [name, width, height, colourType] = line.split(' ');
+    types.add(colourType);
+    await compare(page, name, path.join(samplesDir, `${name}.png`), path.join(samplesDir, `${name}.rgba`),
+      Number(width), Number(height), colourType);
+    // The frame exactly as the server sent it, against libpng's decode of it.
+    if (name.startsWith('frame-')) {
+      await compare(page, `the server's ${name.slice(6)}.png`, path.join(framesDir, `${name.slice(6)}.png`),
+        path.join(samplesDir, `${name}.rgba`), Number(width), Number(height), 'as served');
+    }
+  }
+  check(['2', '3', '6'].every((t) => types.has(t)), 'palette, RGB and RGBA images were all checked', [...types].join(', '));
+} catch (e) {
+  check(false, 'the PNG decode test ran to the end', e.stack || String(e));
+} finally {
+  if (browser) await browser.close();
+  if (daemon) daemon.child.kill('SIGKILL');
+}
+console.log(`png decode test: ${failures} failed`);
+process.exit(failures > 0 ? 1 : 0);
