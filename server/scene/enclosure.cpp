@@ -7,6 +7,7 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "scene/edge_table.h"
 #include "scene/mesh_processing.h"
 
 namespace toond::scene {
@@ -28,17 +29,14 @@ class Components {
 
 // Per edge between two groups (smaller id in the high half): how many more
 // times the triangles cross it from the smaller id to the larger than back.
-std::unordered_map<std::uint64_t, int> edge_balance(std::span<const std::uint32_t> group,
-                                                    std::span<const std::uint32_t> indices) {
-  std::unordered_map<std::uint64_t, int> balance;
-  balance.reserve(indices.size());
+EdgeTable edge_balance(std::span<const std::uint32_t> group, std::span<const std::uint32_t> indices) {
+  EdgeTable balance(indices.size());
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     for (std::size_t k = 0; k < 3; ++k) {
-      const std::uint64_t a = group[indices[t + k]];
-      const std::uint64_t b = group[indices[t + (k + 1) % 3]];
+      const std::uint32_t a = group[indices[t + k]];
+      const std::uint32_t b = group[indices[t + (k + 1) % 3]];
       if (a == b) continue;  // a collapsed corner: no edge
-      if (a < b) ++balance[a << 32 | b];
-      else --balance[b << 32 | a];
+      balance[EdgeTable::key(a, b)] += a < b ? 1 : -1;
     }
   }
   return balance;
@@ -47,16 +45,21 @@ std::unordered_map<std::uint64_t, int> edge_balance(std::span<const std::uint32_
 // The rims of the holes, as loops of groups in the direction the mesh's own
 // triangles run along them. False when a rim edge is crossed more than once
 // unmatched, or rims touch (two rim edges leave one point): no unique caps.
-bool trace_rims(const std::unordered_map<std::uint64_t, int>& balance, std::vector<std::vector<std::uint32_t>>& rims) {
+bool trace_rims(const EdgeTable& balance, std::vector<std::vector<std::uint32_t>>& rims) {
   std::unordered_map<std::uint32_t, std::uint32_t> next;
-  for (const auto& [key, b] : balance) {
-    if (b == 0) continue;
-    if (b != 1 && b != -1) return false;
+  bool unique = true;
+  balance.for_each([&](std::uint64_t key, int b) {
+    if (b == 0 || !unique) return;
+    if (b != 1 && b != -1) {
+      unique = false;
+      return;
+    }
     const auto low = static_cast<std::uint32_t>(key >> 32);
     const auto high = static_cast<std::uint32_t>(key & 0xffffffffu);
     const auto [from, to] = b > 0 ? std::pair(low, high) : std::pair(high, low);
-    if (!next.emplace(from, to).second) return false;
-  }
+    if (!next.emplace(from, to).second) unique = false;
+  });
+  if (!unique) return false;
   while (!next.empty()) {
     std::vector<std::uint32_t> rim;
     std::uint32_t at = next.begin()->first;

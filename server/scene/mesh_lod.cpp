@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "scene/edge_table.h"
 #include "scene/mesh_processing.h"
 
 namespace toond::scene {
@@ -150,18 +151,17 @@ void reorder_ranges(std::vector<std::uint32_t>& indices, const std::vector<Subme
 // folded pairs) close the surface all the same and do not count.
 std::size_t open_edge_count(const std::vector<std::uint32_t>& position_group,
                             const std::vector<std::uint32_t>& indices) {
-  std::unordered_map<std::uint64_t, int> uses;
-  uses.reserve(indices.size());
+  EdgeTable uses(indices.size());
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     for (std::size_t k = 0; k < 3; ++k) {
-      std::uint64_t a = position_group[indices[t + k]];
-      std::uint64_t b = position_group[indices[t + (k + 1) % 3]];
-      if (a == b) continue;
-      if (a > b) std::swap(a, b);
-      ++uses[a << 32 | b];
+      const std::uint32_t a = position_group[indices[t + k]];
+      const std::uint32_t b = position_group[indices[t + (k + 1) % 3]];
+      if (a != b) ++uses[EdgeTable::key(a, b)];
     }
   }
-  return static_cast<std::size_t>(std::count_if(uses.begin(), uses.end(), [](const auto& e) { return e.second == 1; }));
+  std::size_t open = 0;
+  uses.for_each([&](std::uint64_t, int count) { open += count == 1 ? 1 : 0; });
+  return open;
 }
 
 }  // namespace

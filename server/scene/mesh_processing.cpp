@@ -7,6 +7,8 @@
 #include <limits>
 #include <unordered_map>
 
+#include "scene/edge_table.h"
+
 namespace toond::scene {
 namespace {
 
@@ -147,12 +149,8 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
   // past its boundary. The pushes are visited twice (once to sum them, once
   // for the mitre against their sum) rather than stored per position: a
   // list per position cost an allocation each, and more than the rest.
-  std::unordered_map<std::uint64_t, int> edge_use;
-  edge_use.reserve(indices.size());
-  auto edge_key = [&](std::uint32_t a, std::uint32_t b) {
-    const auto [lo, hi] = std::minmax(groups[a], groups[b]);
-    return static_cast<std::uint64_t>(lo) << 32 | hi;
-  };
+  EdgeTable edge_use(indices.size());
+  auto edge_key = [&](std::uint32_t a, std::uint32_t b) { return EdgeTable::key(groups[a], groups[b]); };
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     for (int k = 0; k < 3; ++k) {
       ++edge_use[edge_key(indices[t + static_cast<std::size_t>(k)], indices[t + static_cast<std::size_t>((k + 1) % 3)])];
@@ -189,7 +187,7 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
                                                      const glm::dvec3& n, const glm::dvec3&) {
       for (int k = 0; k < 3; ++k) {
         const int a = k, b = (k + 1) % 3;
-        if (edge_use[edge_key(i[a], i[b])] != 1) continue;
+        if (edge_use.get(edge_key(i[a], i[b])) != 1) continue;
         // In the face's plane, perpendicular to the edge, away from the
         // triangle (counter-clockwise winding puts the interior on the left).
         const glm::dvec3 outward = glm::normalize(glm::cross(p[b] - p[a], n));
