@@ -56,7 +56,7 @@ json run_versus(httplib::Client& client, const std::string& url, const std::file
                      {"height", 512},
                      {"shading", {{"steps", 3}}},
                      {"specular", {{"enabled", false}}},
-                     {"outline", {{"enabled", true}, {"method", "hull"}}}};
+                     {"outline", {{"enabled", true}, {"width", 1.5}}}};
   json configs = json::array();
   for (int msaa : {1, 4}) {
     image::Image full_image;

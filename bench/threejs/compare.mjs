@@ -1,19 +1,23 @@
-// toond against three.js in one run, on the same machine: the Stanford bunny
-// at 512², 3 bands, outline, without AA and with MSAA 4 / antialias:true.
-// toond: warm request-to-PNG over HTTP on 127.0.0.1 (toond_bench versus).
-// three.js: MeshToonMaterial + OutlineEffect in headless Chromium, render →
-// canvas.toBlob PNG per frame, with SwiftShader and with ANGLE on Mesa
-// llvmpipe (--use-gl=angle --use-angle=gl-egl). Writes compare.json and
-// compare.md to --out and prints the table.
+// toond against three.js in one run, on the same machine, with three.js set
+// up the fast way: the shared anchor harness (../shared/anchors/threejs: a
+// detached canvas, cross-origin isolated page, frame → toBlob PNG; its
+// README says why). The Stanford bunny at 512², 3 bands, 1.5 px outline,
+// without AA and with MSAA 4 / antialias:true, on ANGLE over Mesa llvmpipe
+// and on SwiftShader. Rounds interleave the two sides so a slow spell of
+// the machine falls on both; medians over the rounds are compared.
 //
-//   node bench/threejs/compare.mjs [--bench build/bench/toond_bench]
-//        [--out bench/results] [--frames 20] [--models ../shared/models] [--quick] [--reuse-toond]
+// The harness is copied to a scratch folder and `npm ci` is run there
+// (nothing is written into ../shared), unless --anchor names a prepared copy.
+//
+//   node bench/threejs/compare.mjs [--bench build/bench/toond_bench] [--out docs/perf]
+//        [--rounds 3] [--frames 30] [--models ../shared/models] [--anchor DIR]
+//
+// Writes compare.json and compare.md to --out and prints the table.
 import { spawnSync } from 'node:child_process';
-import { createServer } from 'node:http';
-import { readFileSync, writeFileSync, mkdirSync, existsSync, statSync } from 'node:fs';
-import { dirname, join, resolve, extname } from 'node:path';
+import { cpSync, mkdtempSync, mkdirSync, readFileSync, writeFileSync, existsSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const repo = resolve(here, '..', '..');
@@ -22,89 +26,110 @@ const opt = (name, fallback) => {
   const i = args.indexOf(name);
   return i >= 0 ? args[i + 1] : fallback;
 };
-const quick = args.includes('--quick');
 const bench = resolve(opt('--bench', join(repo, 'build', 'bench', 'toond_bench')));
-const out = resolve(opt('--out', join(repo, 'bench', 'results')));
-const frames = Number(opt('--frames', quick ? 8 : 20));
+const out = resolve(opt('--out', join(repo, 'docs', 'perf')));
+const rounds = Number(opt('--rounds', 3));
+const frames = Number(opt('--frames', 30));
 const models = resolve(opt('--models', join(repo, '..', 'shared', 'models')));
-const chromiumPath = opt('--chromium', '/usr/bin/chromium');
+const bunny = join(models, 'stanford-bunny', 'stanford-bunny.obj');
+// The harness README lists 31.5–38 ms for three.js on llvmpipe at 512²
+// without AA on this kind of machine; slower means the machine, not
+// three.js, is what is measured, and the ratio flatters toond.
+const knownThreeMs = 45;
 mkdirSync(out, { recursive: true });
 
-// 1. toond, through its own driver (starts a daemon of its own).
-// --reuse-toond: take versus.json from an earlier run instead.
-if (!args.includes('--reuse-toond')) {
-  console.error(`compare: toond via ${bench}`);
-  const toondRun = spawnSync(bench, ['versus', '--out', out, '--models', models, '--repeats',
-    String(Math.ceil(frames / 4)), ...(quick ? ['--quick'] : [])], { stdio: ['ignore', 'inherit', 'inherit'] });
-  if (toondRun.status !== 0) throw new Error(`toond_bench versus failed (${toondRun.status})`);
+function run(command, commandArgs, options = {}) {
+  const r = spawnSync(command, commandArgs, { stdio: ['ignore', 'inherit', 'inherit'], ...options });
+  if (r.status !== 0) throw new Error(`${command} ${commandArgs.join(' ')} failed (${r.status})`);
 }
-const toond = JSON.parse(readFileSync(join(out, 'versus.json'), 'utf8'));
 
-// 2. three.js: a static server for the page, three and the model.
-const types = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.obj': 'text/plain' };
-const server = createServer((req, res) => {
-  const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
-  const file = path.startsWith('/models/') ? join(models, path.slice('/models/'.length)) : join(here, path);
-  if (!file.startsWith(here) && !file.startsWith(models)) { res.writeHead(403).end(); return; }
-  if (!existsSync(file) || !statSync(file).isFile()) { res.writeHead(404).end(); return; }
-  res.writeHead(200, { 'Content-Type': types[extname(file)] || 'application/octet-stream' });
-  res.end(readFileSync(file));
-});
-await new Promise((ok) => server.listen(0, '127.0.0.1', ok));
-const base = `http://127.0.0.1:${server.address().port}`;
+function prepareAnchor() {
+  const given = opt('--anchor', null);
+  if (given) return resolve(given);
+  const source = join(repo, '..', 'shared', 'anchors', 'threejs');
+  if (!existsSync(source)) throw new Error(`no three.js anchor at ${source}`);
+  const copy = join(mkdtempSync(join(tmpdir(), 'toond-anchor-')), 'threejs');
+  cpSync(source, copy, { recursive: true });
+  console.error(`compare: anchor copied to ${copy}; npm ci there`);
+  run('npm', ['ci', '--no-audit', '--no-fund'], { cwd: copy });
+  return copy;
+}
 
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s[Math.floor(s.length / 2)];
+};
+
+const anchor = prepareAnchor();
 const backends = [
-  { name: 'SwiftShader', args: ['--enable-unsafe-swiftshader'] },
-  { name: 'ANGLE on Mesa llvmpipe', args: ['--use-gl=angle', '--use-angle=gl-egl', '--ignore-gpu-blocklist'] },
+  { name: 'ANGLE on Mesa llvmpipe', gl: 'angle-gl-egl', tag: 'llvmpipe' },
+  { name: 'SwiftShader', gl: 'default', tag: 'swiftshader' },
 ];
-const three = [];
-for (const backend of backends) {
-  for (const aa of [false, true]) {
-    const browser = await chromium.launch({ executablePath: chromiumPath, headless: true,
-      args: ['--no-sandbox', '--headless=new', ...backend.args] });
-    try {
-      const page = await browser.newPage({ viewport: { width: 600, height: 600 } });
-      page.on('pageerror', (e) => console.error(`page error: ${e.message}`));
-      await page.goto(`${base}/index.html?aa=${aa ? 1 : 0}&size=512&model=/models/stanford-bunny/stanford-bunny.obj`);
-      await page.waitForFunction(() => window.benchReady === true, null, { timeout: 120000 });
-      const r = await page.evaluate((n) => window.runBench(n), frames);
-      writeFileSync(join(out, `threejs-${backend.name.split(' ')[0].toLowerCase()}-${aa ? 'aa' : 'noaa'}.png`),
-        Buffer.from(r.png.split(',')[1], 'base64'));
-      delete r.png;
-      three.push({ backend: backend.name, ...r });
-      console.error(`  three.js ${backend.name} ${aa ? 'antialias' : 'no AA'}: ${r.median_ms.toFixed(2)} ms ` +
-        `(${r.renderer}, ${r.samples} samples, ${r.triangles} triangles)`);
-    } finally {
-      await browser.close();
+const toondRounds = [];
+const threeRounds = {};  // "tag aa" → [results json]
+for (let r = 1; r <= rounds; ++r) {
+  console.error(`compare: round ${r} of ${rounds}: toond`);
+  const toondOut = join(out, `versus-round${r}`);
+  run(bench, ['versus', '--out', toondOut, '--models', models, '--repeats', String(Math.ceil(frames / 4))]);
+  toondRounds.push(JSON.parse(readFileSync(join(toondOut, 'versus.json'), 'utf8')));
+  for (const backend of backends) {
+    for (const aa of [false, true]) {
+      const tag = `three-${backend.tag}-${aa ? 'aa' : 'noaa'}-round${r}`;
+      console.error(`compare: round ${r}: three.js ${backend.name}${aa ? ', antialias' : ''}`);
+      run('node', ['bench.mjs', '--gl', backend.gl, '--no-probe-all', '--sizes', '512', '--frames', String(frames),
+        '--model', bunny, '--out', out, '--tag', tag, ...(aa ? ['--antialias'] : [])], { cwd: anchor });
+      const key = `${backend.tag} ${aa}`;
+      (threeRounds[key] ??= []).push(JSON.parse(readFileSync(join(out, `${tag}.json`), 'utf8')));
     }
   }
 }
-server.close();
 
-// 3. Ratios at equal output settings: no AA ↔ msaa 1, antialias ↔ msaa 4.
+// Medians over the rounds, per configuration.
+const toondConfigs = toondRounds[0].configs.map((c, i) => {
+  const per = toondRounds.map((t) => t.configs[i]);
+  return { ...c, wall_ms: median(per.map((p) => p.wall_ms)), wall_ms_rounds: per.map((p) => p.wall_ms),
+    server_ms: median(per.map((p) => p.server_ms)) };
+});
+const three = [];
+for (const backend of backends) {
+  for (const aa of [false, true]) {
+    const runs = threeRounds[`${backend.tag} ${aa}`];
+    const ms = runs.map((j) => j.results[0].modes.render_png.median);
+    three.push({ backend: backend.name, antialias: aa, renderer: runs[0].glRenderer, median_ms: median(ms),
+      ms_rounds: ms, three: runs[0].three.version });
+  }
+}
+
+// Ratios at equal output settings: no AA ↔ msaa 1, antialias ↔ msaa 4.
 const rows = [];
-for (const c of toond.configs) {
+for (const c of toondConfigs) {
   for (const t of three.filter((x) => x.antialias === (c.msaa > 1))) {
     rows.push({
       toond: `lod ${c.lod}, msaa ${c.msaa}`, three: `${t.backend}, ${t.antialias ? 'antialias' : 'no AA'}`,
-      toond_ms: c.wall_ms, toond_server_ms: c.server_ms, floor_ms: c.floor.total_ms, three_ms: t.median_ms,
-      ratio: c.wall_ms / t.median_ms, target: c.lod === 'auto' ? 0.25 : 0.5,
-      lod_drawn: c.lod_drawn, pct_off_vs_full: c.pct_pixels_off_vs_full ?? null,
+      toond_ms: c.wall_ms, toond_server_ms: c.server_ms, floor_ms: c.floor.total_ms,
+      server_over_floor: c.server_ms / c.floor.total_ms, three_ms: t.median_ms, ratio: c.wall_ms / t.median_ms,
+      ratio_rounds: c.wall_ms_rounds.map((w, i) => w / t.ms_rounds[i]),
+      target: c.lod === 'auto' ? 0.25 : 0.5, lod_drawn: c.lod_drawn, pct_off_vs_full: c.pct_pixels_off_vs_full ?? null,
     });
   }
 }
-const result = { toond, three, rows, frames };
-writeFileSync(join(out, 'compare.json'), JSON.stringify(result, null, 1));
+const llvmpipeNoAa = three.find((t) => t.backend.startsWith('ANGLE') && !t.antialias);
+const threeAtKnownSpeed = llvmpipeNoAa.median_ms <= knownThreeMs;
+writeFileSync(join(out, 'compare.json'),
+  JSON.stringify({ rounds, frames, anchor, toond: toondConfigs, three, rows, threeAtKnownSpeed }, null, 1));
+
 const f = (x, d = 2) => (x === null || x === undefined ? '–' : Number(x).toFixed(d));
-let md = '| toond (request-to-PNG) | three.js (frame-to-PNG) | toond ms | server ms (floor) | three.js ms | ratio | target | auto vs full, % px off |\n';
-md += '|---|---|---:|---:|---:|---:|---:|---:|\n';
+let md = `three.js ${three[0].three} through the shared anchor harness; medians of ${rounds} interleaved rounds.\n`;
+md += threeAtKnownSpeed
+  ? `three.js on llvmpipe without AA took ${f(llvmpipeNoAa.median_ms, 1)} ms, within its known speed here (≤ ${knownThreeMs} ms).\n\n`
+  : `**three.js on llvmpipe without AA took ${f(llvmpipeNoAa.median_ms, 1)} ms, slower than its known speed here ` +
+    `(≤ ${knownThreeMs} ms): these ratios flatter toond; rely on the floor ratio instead.**\n\n`;
+md += '| toond (request-to-PNG) | three.js (frame-to-PNG) | toond ms | server ms / floor | three.js ms | ratio | per round | target | auto vs full, % px off |\n';
+md += '|---|---|---:|---:|---:|---:|---|---:|---:|\n';
 for (const r of rows) {
-  md += `| ${r.toond} | ${r.three} | ${f(r.toond_ms)} | ${f(r.toond_server_ms)} (${f(r.floor_ms)}) | ${f(r.three_ms)} | ` +
-    `${f(r.ratio, 3)} ${r.ratio <= r.target ? '✓' : '✗'} | ≤ ${r.target} | ${f(r.pct_off_vs_full, 3)} |\n`;
-}
-if (toond.load) {
-  md += '\n| clients | requests/s | p50 ms | p99 ms | failed |\n|---:|---:|---:|---:|---:|\n';
-  for (const l of toond.load) md += `| ${l.clients} | ${f(l.requests_per_s, 1)} | ${f(l.p50_ms, 1)} | ${f(l.p99_ms, 1)} | ${l.failures} |\n`;
+  md += `| ${r.toond} | ${r.three} | ${f(r.toond_ms)} | ${f(r.toond_server_ms)} / ${f(r.floor_ms)} = ${f(r.server_over_floor)} | ` +
+    `${f(r.three_ms)} | ${f(r.ratio, 3)} ${r.ratio <= r.target ? '✓' : '✗'} | ${r.ratio_rounds.map((x) => f(x, 2)).join(', ')} | ` +
+    `≤ ${r.target} | ${f(r.pct_off_vs_full, 3)} |\n`;
 }
 writeFileSync(join(out, 'compare.md'), md);
 console.log(md);
