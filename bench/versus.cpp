@@ -47,6 +47,28 @@ json floor_of(const image::Image& content, int samples, int png_level, int repea
 
 }  // namespace
 
+// What drawing the same mesh costs at the least: the same request (size,
+// samples, level of detail) with one constant colour and nothing else (no
+// lights, bands, outline or effects), read back and encoded as usual. A
+// frame's time over this says what the toon look itself costs.
+json geometry_floor_of(httplib::Client& client, json params, int repeats) {
+  params["shading"] = {{"mode", "flat"}, {"base", "white"}};
+  params["outline"] = {{"enabled", false}};
+  params["contour"] = {{"enabled", false}};
+  params["specular"] = {{"enabled", false}};
+  params["rim"] = {{"enabled", false}};
+  params["shadows"] = {{"enabled", false}};
+  render_timed(client, params);  // warm
+  std::vector<double> server, png;
+  TimedRender last;
+  for (int i = 0; i < repeats; ++i) {
+    last = render_timed(client, params);
+    server.push_back(last.server_ms);
+    png.push_back(last.png_ms);
+  }
+  return {{"server_ms", median(server)}, {"png_ms", median(png)}, {"lod_drawn", last.lod}};
+}
+
 json run_versus(httplib::Client& client, const std::string& url, const std::filesystem::path& models, int repeats,
                 double load_seconds) {
   std::cerr << "bench: toond side of the three.js comparison (bunny 512²)\n";
@@ -90,9 +112,15 @@ json run_versus(httplib::Client& client, const std::string& url, const std::file
       }
       c["floor"] = floor_of(img, msaa, 3, repeats);
       c["server_over_floor"] = c["server_ms"].get<double>() / c["floor"]["total_ms"].get<double>();
-      std::fprintf(stderr, "  msaa %d lod %-4s: request-to-PNG %7.2f ms, server %7.2f ms (floor %.2f ms)  [%s]\n",
+      c["geometry_floor"] = geometry_floor_of(client, params, repeats);
+      c["server_over_geometry_floor"] =
+          c["server_ms"].get<double>() / c["geometry_floor"]["server_ms"].get<double>();
+      std::fprintf(stderr,
+                   "  msaa %d lod %-4s: request-to-PNG %7.2f ms, server %7.2f ms (floor %.2f ms; geometry floor "
+                   "%.2f ms, ratio %.2f)  [%s]\n",
                    msaa, lod, c["wall_ms"].get<double>(), c["server_ms"].get<double>(),
-                   c["floor"]["total_ms"].get<double>(), last.lod.c_str());
+                   c["floor"]["total_ms"].get<double>(), c["geometry_floor"]["server_ms"].get<double>(),
+                   c["server_over_geometry_floor"].get<double>(), last.lod.c_str());
       configs.push_back(c);
     }
   }
