@@ -16,6 +16,9 @@
 //   RIM (+ RIM_MASK_LIT | RIM_MASK_SHADOW)   CONTOUR_EVEN | CONTOUR_FRESNEL
 //   HALFTONE_DOTS | HALFTONE_CHECKER   SHADOWS (+ SHADOW_PCF n: (2n+1)² taps)
 //   BAND_AA (bands or TWO_TONE: edges blended across a pixel)
+//   ALPHA_MASK (glTF alphaMode MASK: below the cutoff alpha, nothing is drawn)
+// An unlit material (glTF KHR_materials_unlit) is drawn with MODE_FLAT in
+// place of the request's mode, its other variants kept.
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_texcoord;
@@ -23,6 +26,8 @@ in vec4 v_tangent;
 in vec3 v_color;
 
 uniform vec3 u_base_color;  // material Kd, linear
+uniform float u_opacity;       // ALPHA_MASK: the base colour's alpha
+uniform float u_alpha_cutoff;  // ALPHA_MASK: below this alpha nothing is drawn
 #ifdef SHADE_COLOR
 uniform vec3 u_shade_color;  // linear: the colour of the darkest band
 #endif
@@ -217,6 +222,15 @@ vec3 toward_light(int i, out float reach) {
 }
 
 void main() {
+#ifdef ALPHA_MASK
+  // glTF alphaMode MASK: the texture's alpha cuts the shape out (leaves,
+  // fences, hair cards), whatever colour the request gives the surface.
+  float alpha = u_opacity;
+#ifdef HAS_TEXTURE
+  alpha *= texture(u_diffuse_map, v_texcoord).a;
+#endif
+  if (alpha < u_alpha_cutoff) discard;
+#endif
 #ifdef BASE_WHITE
   vec3 albedo = vec3(1.0);
 #else

@@ -14,6 +14,9 @@ struct GpuMaterial {
   glm::vec3 diffuse{0.8f};
   int texture = -1;         // index into GpuModel::textures()
   int normal_texture = -1;  // tangent-space normal map, linear
+  float opacity = 1.0f;
+  float alpha_cutoff = -1.0f;  // scene::Material::alpha_cutoff; negative: opaque
+  bool unlit = false;
 };
 
 class GpuModel {

@@ -390,8 +390,17 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
       for (const scene::Submesh& sub : model.submeshes(lod_of(i))) {
         const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
         std::vector<std::string> defines = plan.main_defines;
-        const bool textured = plan.sample_textures && material.texture >= 0;
+        if (material.unlit) {
+          // An unlit material shows its base colour as it is: the flat mode.
+          std::replace_if(defines.begin(), defines.end(),
+                          [](const std::string& d) { return d == "MODE_CEL" || d == "MODE_PHONG"; }, "MODE_FLAT");
+        }
+        const bool masked = material.alpha_cutoff >= 0.0f;
+        // A masked material's texture gives its shape: it is sampled even
+        // where the request leaves textures out (base white).
+        const bool textured = (plan.sample_textures || masked) && material.texture >= 0;
         if (textured) defines.push_back("HAS_TEXTURE");
+        if (masked) defines.push_back("ALPHA_MASK");
         const bool normal_mapped = plan.use_normal_maps && material.normal_texture >= 0;
         if (normal_mapped) defines.push_back("NORMAL_MAP");
         // A shade colour changes nothing where nothing is lit to blend from.
@@ -403,6 +412,10 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
         set_main_uniforms(program);
         set_object(program, i);
         program.set("u_base_color", material.diffuse);
+        if (masked) {
+          program.set("u_opacity", material.opacity);
+          program.set("u_alpha_cutoff", material.alpha_cutoff);
+        }
         if (shaded) program.set("u_shade_color", shade->second);
         if (normal_mapped) {
           glBindTextureUnit(2, model.texture(material.normal_texture));

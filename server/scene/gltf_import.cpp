@@ -32,10 +32,11 @@ using nlohmann::json;
 
 // Extensions whose meaning the importer reads; a file that requires any
 // other is refused by name.
-constexpr std::array<std::string_view, 3> kReadExtensions = {
+constexpr std::array<std::string_view, 4> kReadExtensions = {
     "KHR_mesh_quantization",
     "KHR_texture_transform",
     "EXT_texture_webp",
+    "KHR_materials_unlit",
 };
 
 std::string in_quotes(std::string_view s) { return "'" + std::string(s) + "'"; }
@@ -737,6 +738,7 @@ class GltfImporter {
     const json& factor = member(pbr, "baseColorFactor");
     glm::dvec3 base(1.0);
     for (int c = 0; c < 3; ++c) base[c] = std::clamp(number_or(element(factor, static_cast<std::size_t>(c)), 1.0), 0.0, 1.0);
+    material.opacity = static_cast<float>(std::clamp(number_or(element(factor, 3), 1.0), 0.0, 1.0));
     const json& emissive = member(m, "emissiveFactor");
     for (int c = 0; c < 3; ++c) base[c] = std::min(1.0, base[c] + std::max(0.0, number_or(element(emissive, static_cast<std::size_t>(c)), 0.0)));
     material.diffuse = glm::vec3(base);
@@ -756,12 +758,13 @@ class GltfImporter {
     if (member(m, "occlusionTexture").is_object()) ++ignored_["occlusion textures"];
     if (member(m, "emissiveTexture").is_object()) ++ignored_["emissive textures (the emissive factor is added)"];
     const json& mode = member(m, "alphaMode");
-    if (mode.is_string() && mode.get<std::string>() != "OPAQUE") {
-      ++ignored_["alpha modes MASK/BLEND (drawn opaque)"];
+    const std::string alpha_mode = mode.is_string() ? mode.get<std::string>() : "OPAQUE";
+    if (alpha_mode == "MASK") {
+      material.alpha_cutoff = static_cast<float>(std::clamp(number_or(member(m, "alphaCutoff"), 0.5), 0.0, 1.0));
+    } else if (alpha_mode == "BLEND") {
+      ++ignored_["alpha mode BLEND (drawn opaque)"];
     }
-    if (member(member(m, "extensions"), "KHR_materials_unlit").is_object()) {
-      ++ignored_["unlit materials (drawn toon-shaded)"];
-    }
+    material.unlit = member(member(m, "extensions"), "KHR_materials_unlit").is_object();
     return material;
   }
 

@@ -46,6 +46,13 @@ struct Material {
   // Ns, the Phong exponent, clamped to 0..1000 (the MTL range); 32 when the
   // MTL gives none. Blender writes 0 for fully rough materials.
   float shininess = 32.0f;
+  // The base colour's alpha (glTF baseColorFactor.a; 1 for OBJ).
+  float opacity = 1.0f;
+  // glTF alphaMode MASK: a fragment whose alpha (opacity × the base colour
+  // texture's alpha) is below this is not drawn. Negative: opaque.
+  float alpha_cutoff = -1.0f;
+  // glTF KHR_materials_unlit: the base colour as it is, no bands or light.
+  bool unlit = false;
 };
 
 // A run of triangles drawn with one material.

@@ -9,7 +9,9 @@
 #include <filesystem>
 
 #include "scene/obj_import.h"
+#include "image/png_codec.h"
 #include "support/gltf_twin.h"
+#include "support/image_checks.h"
 #include "support/shared_models.h"
 #include "test_client.h"
 
@@ -69,6 +71,98 @@ TEST_P(GltfRender, GlbTwinRendersLikeTheObj) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shared, GltfRender, ::testing::Values("spot", "kenney-cube-pet-dog", "windmill"));
+
+// A unit quad facing +Z with one material, its texture `png`.
+std::string quad_glb(const std::string& png, const nlohmann::json& material_json) {
+  GltfPrimitive quad;
+  quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  quad.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  quad.texcoords = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  quad.material = 0;
+  GltfDocument doc;
+  doc.meshes = {{quad}};
+  doc.images = {{png, "image/png", "cutout.png"}};
+  doc.materials = {{glm::vec4(0.8f, 0.2f, 0.2f, 1.0f), 0, -1, material_json}};
+  return write_gltf(doc, GltfForm::Glb)[0].second;
+}
+
+// 64×64: the left half fully transparent, the right half opaque white.
+std::string half_transparent_png() {
+  image::Image img;
+  img.width = img.height = 64;
+  img.rgba.assign(64 * 64 * 4, 255);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 32; ++x) img.rgba[(static_cast<std::size_t>(y) * 64 + x) * 4 + 3] = 0;
+  return image::encode_png(img);
+}
+
+std::string upload_glb(httplib::Client& client, const std::string& glb) {
+  auto res = client.Post("/models", httplib::MultipartFormDataItems{{"file", glb, "model.glb", "model/gltf-binary"}});
+  EXPECT_TRUE(res && (res->status == 200 || res->status == 201)) << (res ? res->body : "no answer");
+  return res ? json::parse(res->body).value("id", "") : "";
+}
+
+// Share of the quad's left and right thirds (rows through the middle) that
+// show the blue background.
+std::pair<double, double> background_in_thirds(const image::Image& img) {
+  std::size_t left = 0, right = 0, n = 0;
+  for (int y = 48; y < 80; ++y) {
+    for (int x = 0; x < 128; ++x) {
+      const std::uint8_t* p = &img.rgba[(static_cast<std::size_t>(y) * 128 + x) * 4];
+      const bool blue = p[0] < 30 && p[1] < 30 && p[2] > 200;
+      if (x >= 20 && x < 40) left += blue ? 1 : 0, ++n;
+      if (x >= 88 && x < 108) right += blue ? 1 : 0;
+    }
+  }
+  return {static_cast<double>(left) / n, static_cast<double>(right) / n};
+}
+
+class GltfMaterials : public SharedDaemonTest {};
+
+// glTF alphaMode MASK: where the texture's alpha is under the cutoff the
+// surface is not drawn, so the background shows; OPAQUE draws it all.
+TEST_F(GltfMaterials, MaskCutsTheShapeOutOfTheTexture) {
+  auto client = daemon().client();
+  const json look = {{"width", 128}, {"height", 128}, {"background", {0, 0, 1}}, {"outline", {{"enabled", false}}},
+                     {"shading", {{"mode", "flat"}}}, {"camera", {{"yaw", 0}, {"pitch", 0}}}};
+  json params = look;
+  params["model"] = upload_glb(client, quad_glb(half_transparent_png(), {{"alphaMode", "MASK"}}));
+  const auto [masked_left, masked_right] = background_in_thirds(render_ok(client, params));
+  EXPECT_GT(masked_left, 0.99);
+  EXPECT_LT(masked_right, 0.01);
+  params["model"] = upload_glb(client, quad_glb(half_transparent_png(), json::object()));
+  const auto [opaque_left, opaque_right] = background_in_thirds(render_ok(client, params));
+  EXPECT_LT(opaque_left, 0.01);
+  EXPECT_LT(opaque_right, 0.01);
+}
+
+// KHR_materials_unlit: the base colour as it is, whatever the light; the
+// same quad lit at a slant falls into a darker band.
+TEST_F(GltfMaterials, UnlitShowsTheBaseColourWithoutBands) {
+  auto client = daemon().client();
+  const std::string white = image::encode_png([] {
+    image::Image img;
+    img.width = img.height = 4;
+    img.rgba.assign(4 * 4 * 4, 255);
+    return img;
+  }());
+  const json look = {{"width", 128}, {"height", 128}, {"outline", {{"enabled", false}}},
+                     {"shading", {{"mode", "cel"}, {"steps", 3}}}, {"specular", {{"enabled", false}}},
+                     {"rim", {{"enabled", false}}}, {"ambient", 0.2}, {"camera", {{"yaw", 0}, {"pitch", 0}}},
+                     {"lights", {{{"type", "directional"}, {"direction", {-0.95, 0, -0.3}}, {"intensity", 1}}}}};
+  json params = look;
+  params["model"] = upload_glb(client, quad_glb(white, {{"extensions", {{"KHR_materials_unlit", json::object()}}}}));
+  const Rgb unlit = rgb_at(render_ok(client, params), 64, 64);
+  params["model"] = upload_glb(client, quad_glb(white, json::object()));
+  const Rgb lit = rgb_at(render_ok(client, params), 64, 64);
+  // Linear (0.8, 0.2, 0.2), sRGB-encoded on write.
+  EXPECT_NEAR(unlit.r, 231, 2);
+  EXPECT_NEAR(unlit.g, 124, 2);
+  EXPECT_NEAR(unlit.b, 124, 2);
+  EXPECT_LT(lit.r + 10, unlit.r) << "the lit quad should sit in a darker band";
+}
+
 
 }  // namespace
 }  // namespace toond::test

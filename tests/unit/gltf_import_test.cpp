@@ -364,15 +364,38 @@ TEST(GltfImport, MissingNormalsAreSmoothedLikeObj) {
 
 TEST(GltfImport, IgnoredFeaturesAreNamedInTheWarnings) {
   auto parts = test::build_gltf(textured_cube(tiny_png(1, 1, 1)));
-  parts.json["materials"][0]["alphaMode"] = "MASK";
-  parts.json["materials"][0]["extensions"] = {{"KHR_materials_unlit", json::object()}};
+  parts.json["materials"][0]["alphaMode"] = "BLEND";
   parts.json["animations"] = json::array({{{"channels", json::array()}, {"samplers", json::array()}}});
-  parts.json["extensionsUsed"] = {"KHR_materials_unlit", "KHR_lights_punctual"};
+  parts.json["extensionsUsed"] = {"KHR_lights_punctual"};
   const Model m = import_files(test::pack_gltf(parts, GltfForm::Glb));
-  EXPECT_TRUE(has_warning(m, "alpha modes")) << warnings_of(m);
-  EXPECT_TRUE(has_warning(m, "unlit materials")) << warnings_of(m);
+  EXPECT_TRUE(has_warning(m, "alpha mode BLEND")) << warnings_of(m);
   EXPECT_TRUE(has_warning(m, "1 animations")) << warnings_of(m);
   EXPECT_TRUE(has_warning(m, "KHR_lights_punctual")) << warnings_of(m);
+}
+
+TEST(GltfImport, MaskMaterialsKeepTheirCutoffAndUnlitOnesAreMarked) {
+  auto parts = test::build_gltf(textured_cube(tiny_png(1, 1, 1)));
+  parts.json["materials"][0]["alphaMode"] = "MASK";
+  parts.json["materials"][0]["alphaCutoff"] = 0.3;
+  parts.json["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {1, 1, 1, 0.75};
+  parts.json["materials"][0]["extensions"] = {{"KHR_materials_unlit", json::object()}};
+  parts.json["extensionsUsed"] = {"KHR_materials_unlit"};
+  const Model m = import_files(test::pack_gltf(parts, GltfForm::Glb));
+  ASSERT_EQ(m.materials.size(), 1u);
+  EXPECT_FLOAT_EQ(m.materials[0].alpha_cutoff, 0.3f);
+  EXPECT_FLOAT_EQ(m.materials[0].opacity, 0.75f);
+  EXPECT_TRUE(m.materials[0].unlit);
+  EXPECT_FALSE(has_warning(m, "alpha")) << warnings_of(m);
+  EXPECT_FALSE(has_warning(m, "unlit")) << warnings_of(m);
+
+  // MASK without a cutoff takes glTF's 0.5; OPAQUE has none.
+  parts.json["materials"][0].erase("alphaCutoff");
+  EXPECT_FLOAT_EQ(import_files(test::pack_gltf(parts, GltfForm::Glb)).materials[0].alpha_cutoff, 0.5f);
+  parts.json["materials"][0]["alphaMode"] = "OPAQUE";
+  parts.json["materials"][0].erase("extensions");
+  const Model opaque = import_files(test::pack_gltf(parts, GltfForm::Glb));
+  EXPECT_LT(opaque.materials[0].alpha_cutoff, 0.0f);
+  EXPECT_FALSE(opaque.materials[0].unlit);
 }
 
 TEST(GltfImport, ASceneMayBePickedByIndex) {
