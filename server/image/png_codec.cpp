@@ -33,6 +33,22 @@ void read_from_view(png_structp png, png_bytep data, png_size_t length) {
   cursor->offset += length;
 }
 
+// libpng copies the text when it is set, so the pointers need only live
+// through this call.
+void set_text_chunks(png_structp png, png_infop info,
+                     const std::vector<std::pair<std::string, std::string>>& text) {
+  std::vector<png_text> chunks;
+  for (const auto& [key, value] : text) {
+    png_text chunk{};
+    chunk.compression = PNG_TEXT_COMPRESSION_NONE;
+    chunk.key = const_cast<png_charp>(key.c_str());
+    chunk.text = const_cast<png_charp>(value.c_str());
+    chunk.text_length = value.size();
+    chunks.push_back(chunk);
+  }
+  if (!chunks.empty()) png_set_text(png, info, chunks.data(), static_cast<int>(chunks.size()));
+}
+
 }  // namespace
 
 std::string encode_png(const Image& image, const PngOptions& options) {
@@ -52,6 +68,7 @@ std::string encode_png(const Image& image, const PngOptions& options) {
                  static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGBA,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    set_text_chunks(png, info, options.text);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_set_compression_level(png, options.compression_level);
     png_set_compression_strategy(png, Z_RLE);

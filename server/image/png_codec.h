@@ -1,6 +1,8 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "image/image.h"
 
@@ -10,6 +12,9 @@ struct PngOptions {
   // zlib level 0..9. Toon images are large flat areas; a low level with the
   // SUB filter and run-length strategy is much faster at nearly the same size.
   int compression_level = 3;
+  // tEXt chunks (key, Latin-1 text), written ahead of the pixels: a sprite
+  // sheet carries its atlas this way.
+  std::vector<std::pair<std::string, std::string>> text;
 };
 
 // Encodes to PNG (RGBA, 8 bits). Throws std::runtime_error on failure.
