@@ -14,7 +14,7 @@ struct PngOptions {
   int compression_level = 3;
   // tEXt chunks (key, Latin-1 text), written ahead of the pixels: a sprite
   // sheet carries its atlas this way.
-  std::vector<std::pair<std::string, std::string>> text;
+  std::vector<std::pair<std::string, std::string>> text{};
 };
 
 // Encodes to PNG (RGBA, 8 bits). Throws std::runtime_error on failure.
