@@ -17,8 +17,8 @@ packages=(
   libtinygltf-dev libwebp-dev
   # HTTP + JSON + schema validation
   libcpp-httplib-dev libssl-dev nlohmann-json3-dev libvalijson-dev
-  # tests, shader checks, benchmarks
-  libgtest-dev libgmock-dev glslang-tools libbenchmark-dev
+  # tests, shader checks, benchmarks; PIL reads our PNGs as a decoder not our own
+  libgtest-dev libgmock-dev glslang-tools libbenchmark-dev python3-pil
   # libFuzzer targets (scripts/fuzz.sh): clang and its fuzzer runtime
   clang libclang-rt-14-dev
   # the scale-out test's load balancer (tests/integration/scale_out_test.cpp)
