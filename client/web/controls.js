@@ -5,7 +5,9 @@
 import { getPointer, isPlainObject } from './params.js';
 
 // Chosen elsewhere on the page: the model list, the preset menu, scenes.
-const HANDLED_ELSEWHERE = new Set(['model', 'preset', 'objects']);
+// `sheet` turns the preview into a sprite sheet, which the page does not
+// show yet: it is asked for with curl or the CLI.
+const HANDLED_ELSEWHERE = new Set(['model', 'preset', 'objects', 'sheet']);
 // Top-level scalars that belong with a block rather than with the output.
 const GROUP_OF_SCALAR = { ambient: 'lights', light_combine: 'lights' };
 // Ranges this wide (model units up to 1e12) make a useless slider; such a

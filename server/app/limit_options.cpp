@@ -92,9 +92,10 @@ std::string limit_usage() {
                          import is abandoned, nothing is stored (default 30)
   --max-texture-pixels N pixels of one texture, read from its header before
                          decoding (default 67108864 = 8192x8192)
-  --max-output-pixels N  width x height of a render (default 16777216 = 4096x4096)
-  --max-samples N        width x height x supersample^2 x msaa of a render
-                         (default 134217728 = 4096x4096x8)
+  --max-output-pixels N  width x height of a render, or of a whole sprite sheet
+                         (default 16777216 = 4096x4096)
+  --max-samples N        width x height x supersample^2 x msaa of a render, times
+                         its frames for a sheet (default 134217728 = 4096x4096x8)
   --max-lights N         lights in a render (default 8)
   --max-objects N        objects in a scene (default 16)
   --max-json-bytes N     a JSON body or params part (default 1048576)

@@ -1,18 +1,24 @@
 // POST /render: JSON parameters → PNG; or multipart (bundle files + a
-// `params` part) to upload and render in one call.
+// `params` part) to upload and render in one call. With `sheet`: a sprite
+// sheet with its atlas in a tEXt chunk, or (?atlas=json) the atlas alone.
 #include <chrono>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "http/bundle_upload.h"
 #include "http/render_answer.h"
+#include "http/render_wait.h"
+#include "http/sheet_render.h"
 #include "http/request_limits.h"
 #include "http/routes.h"
 #include "http/store_upload.h"
 #include "image/png_codec.h"
 #include "render/ramp_image.h"
 #include "render/render_budget.h"
+#include "render/sheet_atlas.h"
+#include "render/sheet_layout.h"
 #include "param_schema.h"
 #include "presets.h"
 #include "request_error.h"
@@ -103,6 +109,20 @@ void apply_path_model(nlohmann::json& request, const std::string& id) {
   request["model"] = id;
 }
 
+// `?atlas=json` answers a sheet's atlas alone, without rendering; the
+// query names nothing else.
+bool wants_atlas_only(const httplib::Request& req, const render::RenderParams& params) {
+  if (!req.has_param("atlas")) return false;
+  if (req.get_param_value("atlas") != "json") {
+    throw RequestError(400, "invalid_parameter", "?atlas: the only value is json (the sheet's atlas alone)",
+                       "?atlas");
+  }
+  if (!params.sheet) {
+    throw RequestError(400, "invalid_parameter", "?atlas=json needs a `sheet` in the parameters", "/sheet");
+  }
+  return true;
+}
+
 }  // namespace
 
 void register_render_routes(httplib::Server& server, ServiceContext& context) {
@@ -163,23 +183,36 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     }
 
     load_bundle_images(context, job);
+    const bool atlas_only = wants_atlas_only(req, job.params);
+    image::PngOptions png_options;
+    png_options.compression_level = job.params.png_compression;
+    std::optional<render::SheetLayout> layout;
+    if (job.params.sheet) {
+      layout = render::layout_sheet(*job.params.sheet, job.params.width, job.params.height);
+      const nlohmann::json atlas = render::sheet_atlas(*layout, job.params, scene_of(job), "sheet.png");
+      if (atlas_only) {
+        res.set_content(atlas.dump(2), "application/json");
+        return;
+      }
+      png_options.text.emplace_back("toond:atlas", atlas.dump());
+    }
     // Completed parameters name content-addressed models (and bundle files
     // inside them): they decide every byte of the PNG.
     const std::string cache_key = completed.dump();
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
 
-    const image::PngOptions png_options{job.params.png_compression};
     const auto submitted = Clock::now();
     // Past the deadline the render thread skips the job instead of drawing
     // an image nobody waits for any more.
-    job.deadline = submitted + context.render_deadline;
-    auto future = context.renderer.submit(std::move(job));
-    if (future.wait_for(context.render_deadline) != std::future_status::ready) {
-      throw RequestError(503, "deadline_exceeded",
-                         "the render did not finish within the limit --render-timeout = " +
-                             std::to_string(context.render_deadline.count()) + " ms");
+    const auto deadline = submitted + context.render_deadline;
+    render::RenderOutput out;
+    if (layout) {
+      out = render_sheet(context, job, *layout, deadline);
+    } else {
+      job.deadline = deadline;
+      auto future = context.renderer.submit(std::move(job));
+      out = await_render(future, deadline, context.render_deadline);
     }
-    render::RenderOutput out = future.get();
     const double render_ms = render_thread_ms(out);
     const double queue_ms =
         std::chrono::duration<double, std::milli>(Clock::now() - submitted).count() - render_ms;

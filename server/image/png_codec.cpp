@@ -39,6 +39,22 @@ void read_from_view(png_structp png, png_bytep data, png_size_t length) {
   cursor->offset += length;
 }
 
+// libpng copies the text when it is set, so the pointers need only live
+// through this call.
+void set_text_chunks(png_structp png, png_infop info,
+                     const std::vector<std::pair<std::string, std::string>>& text) {
+  std::vector<png_text> chunks;
+  for (const auto& [key, value] : text) {
+    png_text chunk{};
+    chunk.compression = PNG_TEXT_COMPRESSION_NONE;
+    chunk.key = const_cast<png_charp>(key.c_str());
+    chunk.text = const_cast<png_charp>(value.c_str());
+    chunk.text_length = value.size();
+    chunks.push_back(chunk);
+  }
+  if (!chunks.empty()) png_set_text(png, info, chunks.data(), static_cast<int>(chunks.size()));
+}
+
 // Level 0 stores. Levels 1 to 3 take the fastest search that suits the
 // image kind: palette indices of a toon frame are long runs of one byte,
 // which run-length matching finds as well as a full search does; Sub-filtered
@@ -86,7 +102,8 @@ void set_palette(png_structp png, png_infop info, const Palette& palette) {
 
 // libpng writes the container: signature, header, palette, colour space
 // chunks, the IDAT holding the zlib stream made here, and the end.
-std::string write_png(const Image& image, int colour_type, const Palette* palette, const std::string& idat) {
+std::string write_png(const Image& image, int colour_type, const Palette* palette, const std::string& idat,
+                      const std::vector<std::pair<std::string, std::string>>& text) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, throw_png_error,
                                             ignore_png_warning);
   if (!png) throw std::runtime_error("png: cannot create write struct");
@@ -101,6 +118,7 @@ std::string write_png(const Image& image, int colour_type, const Palette* palett
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     if (palette) set_palette(png, info, *palette);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    set_text_chunks(png, info, text);
     png_write_info(png, info);
     png_write_chunk(png, reinterpret_cast<png_const_bytep>("IDAT"),
                     reinterpret_cast<png_const_bytep>(idat.data()), idat.size());
@@ -128,7 +146,7 @@ std::string encode_png(const Image& image, const PngOptions& options) {
     const std::size_t scanline_bytes = static_cast<std::size_t>(image.width) + 1;
     const std::string idat = deflate_scanlines(image.height, scanline_bytes, rows,
                                                deflate_settings(options, true, scanline_bytes * image.height));
-    return write_png(image, PNG_COLOR_TYPE_PALETTE, &*palette, idat);
+    return write_png(image, PNG_COLOR_TYPE_PALETTE, &*palette, idat, options.text);
   }
   const TruecolourLayout layout = is_opaque(image) ? TruecolourLayout::Rgb : TruecolourLayout::Rgba;
   const ScanlineSource rows = [&](int first_row, int row_count, std::vector<std::uint8_t>& scratch) {
@@ -137,7 +155,8 @@ std::string encode_png(const Image& image, const PngOptions& options) {
   const std::size_t scanline_bytes = static_cast<std::size_t>(image.width) * bytes_per_pixel(layout) + 1;
   const std::string idat = deflate_scanlines(image.height, scanline_bytes, rows,
                                              deflate_settings(options, false, scanline_bytes * image.height));
-  return write_png(image, layout == TruecolourLayout::Rgb ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, nullptr, idat);
+  return write_png(image, layout == TruecolourLayout::Rgb ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, nullptr, idat,
+                   options.text);
 }
 
 Image decode_png(std::string_view bytes) {

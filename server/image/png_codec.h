@@ -1,6 +1,8 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "image/image.h"
 
@@ -16,6 +18,9 @@ struct PngOptions {
   // At most this many threads deflate at once; 0 or more than the hardware
   // has: one per hardware thread.
   int threads = 0;
+  // tEXt chunks (key, Latin-1 text), written ahead of the pixels: a sprite
+  // sheet carries its atlas this way.
+  std::vector<std::pair<std::string, std::string>> text{};
 };
 
 // Encodes to PNG, 8 bits per channel, in the smallest layout that holds the

@@ -15,9 +15,9 @@ struct ViewAxes {
   glm::dvec3 right, up, toward_eye;
 };
 
-ViewAxes view_axes(const CameraParams& params) {
-  const double yaw = glm::radians(params.yaw_deg);
-  const double pitch = glm::radians(params.pitch_deg);
+ViewAxes view_axes(double yaw_deg, double pitch_deg) {
+  const double yaw = glm::radians(yaw_deg);
+  const double pitch = glm::radians(pitch_deg);
   ViewAxes axes;
   axes.toward_eye = {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
   // Looking straight up or down makes +Y a bad up vector; pitch is limited
@@ -59,6 +59,13 @@ double fitted_half_height(std::span<const glm::dvec3> points, const glm::dvec3& 
   return half;
 }
 
+// The camera's own view and every view its framing must also hold.
+std::vector<ViewAxes> framed_axes(const CameraParams& params) {
+  std::vector<ViewAxes> views{view_axes(params.yaw_deg, params.pitch_deg)};
+  for (const glm::dvec2& view : params.framed_views) views.push_back(view_axes(view.x, view.y));
+  return views;
+}
+
 }  // namespace
 
 CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, double aspect,
@@ -69,7 +76,8 @@ CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, 
   const std::vector<glm::dvec3> corners = outline.empty() ? box_corners(bounds) : std::vector<glm::dvec3>{};
   const std::span<const glm::dvec3> points = outline.empty() ? std::span<const glm::dvec3>(corners) : outline;
 
-  const ViewAxes axes = view_axes(params);
+  const std::vector<ViewAxes> views = framed_axes(params);
+  const ViewAxes& axes = views.front();
   const double tan_half_y = std::tan(glm::radians(params.fov_deg) * 0.5);
   const double tan_half_x = tan_half_y * aspect;
 
@@ -81,12 +89,18 @@ CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, 
   if (distance <= 0.0) {
     // A flat model seen edge-on projects to a line: the eye still keeps a
     // tenth of a radius clear of it.
-    const double fitted = ortho ? 0.0 : fitted_distance(points, centre, axes, tan_half_x, tan_half_y, kFrameFill);
+    double fitted = 0.0;
+    if (!ortho) {
+      for (const ViewAxes& view : views) {
+        fitted = std::max(fitted, fitted_distance(points, centre, view, tan_half_x, tan_half_y, kFrameFill));
+      }
+    }
     distance = ortho ? radius * 3.0 : std::max(fitted, radius * 0.1) / zoom;
   }
   // Strafing moves eye and target together, so the view direction (and with
   // it the lighting seen) stays; in radii so it means the same at any scale.
   const glm::dvec3 target = centre + (axes.right * params.shift.x + axes.up * params.shift.y) * radius;
+  cam.distance = distance;
   cam.eye = target + axes.toward_eye * distance;
   cam.target = target;
   cam.view = glm::lookAt(cam.eye, target, glm::dvec3(0, 1, 0));
@@ -95,8 +109,11 @@ CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, 
   cam.far_plane = distance + reach;
   if (ortho) {
     cam.near_plane = distance - reach;
-    double half_h = fitted_half_height(points, centre, axes, aspect, kFrameFill) / zoom;
+    double half_h = 0.0;
+    for (const ViewAxes& view : views) half_h = std::max(half_h, fitted_half_height(points, centre, view, aspect, kFrameFill));
+    half_h /= zoom;
     if (!(half_h > 0.0)) half_h = radius / zoom;
+    cam.half_height = half_h;
     const double half_w = half_h * aspect;
     cam.projection = glm::ortho(-half_w, half_w, -half_h, half_h, cam.near_plane, cam.far_plane);
   } else {

@@ -19,6 +19,8 @@ struct CameraSetup {
   glm::dvec3 target{0.0};  // the point looked at: the bounds' centre
   double near_plane = 0.1;
   double far_plane = 100;
+  double distance = 0;     // from eye to target
+  double half_height = 0;  // orthographic: half the view's height in model units; perspective: 0
   glm::mat4 view_projection() const { return glm::mat4(projection * view); }
 };
 
@@ -27,6 +29,8 @@ struct CameraSetup {
 // every point of `outline` lies within kFrameFill of the image's half
 // width and half height: the model fills that much of the limiting
 // dimension whatever its shape. Without points the box's corners stand in.
+// With `params.framed_views` the fit must hold in each of those views too:
+// the widest fit of them all is used.
 // near/far hug the bounds so depth precision does not depend on the
 // model's scale.
 inline constexpr double kFrameFill = 0.88;

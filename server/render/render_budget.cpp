@@ -3,15 +3,45 @@
 #include <string>
 
 #include "limit_error.h"
+#include "render/sheet_layout.h"
 
 namespace toond::render {
 namespace {
 
 std::string count(double n) { return std::to_string(static_cast<unsigned long long>(n)); }
 
+// A sheet is one answer of many frames: its whole image counts against
+// the output pixels, and the samples of all its frames together against
+// the sample budget, so a sheet asks no more of the daemon than one render
+// may. Its frames are drawn one at a time, each within the per-render
+// checks that follow.
+void check_sheet_budget(const RenderParams& p, const RenderLimits& limits) {
+  const SheetLayout layout = layout_sheet(*p.sheet, p.width, p.height);
+  const double pixels = static_cast<double>(layout.width) * layout.height;
+  if (pixels > static_cast<double>(limits.max_output_pixels)) {
+    throw LimitError(422, "--max-output-pixels",
+                     "the sheet of " + std::to_string(layout.columns) + " × " + std::to_string(layout.rows) +
+                         " tiles is " + count(pixels) + " pixels, more than the limit --max-output-pixels = " +
+                         count(static_cast<double>(limits.max_output_pixels)) +
+                         "; lower sheet.frames, the pitches, or width and height",
+                     "/sheet/frames");
+  }
+  const double samples = static_cast<double>(layout.frames.size()) * p.width * p.supersample * p.height *
+                         p.supersample * p.msaa;
+  if (samples > static_cast<double>(limits.max_samples)) {
+    throw LimitError(422, "--max-samples",
+                     std::to_string(layout.frames.size()) + " frames × width × height × supersample² × msaa = " +
+                         count(samples) + " samples, more than the limit --max-samples = " +
+                         count(static_cast<double>(limits.max_samples)) +
+                         "; lower sheet.frames, the pitches, msaa or supersample",
+                     "/sheet/frames");
+  }
+}
+
 }  // namespace
 
 void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
+  if (p.sheet) check_sheet_budget(p, limits);
   const double pixels = static_cast<double>(p.width) * p.height;
   if (pixels > static_cast<double>(limits.max_output_pixels)) {
     throw LimitError(422, "--max-output-pixels",

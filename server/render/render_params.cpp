@@ -16,6 +16,23 @@ glm::dvec3 dvec3_of(const json& a) {
   return {a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>()};
 }
 
+// The `sheet` block with its absent fields taken from the camera: a sheet
+// turns the view the request already has.
+SheetParams sheet_of(const json& s, const CameraParams& camera) {
+  SheetParams sheet;
+  sheet.frames = s.at("frames").get<int>();
+  sheet.columns = s.contains("columns") ? s.at("columns").get<int>() : sheet.frames;
+  sheet.yaw_start_deg = s.contains("yaw_start") ? s.at("yaw_start").get<double>() : camera.yaw_deg;
+  sheet.yaw_step_deg = s.contains("yaw_step") ? s.at("yaw_step").get<double>() : 360.0 / sheet.frames;
+  if (s.contains("pitches")) {
+    for (const json& pitch : s.at("pitches")) sheet.pitches_deg.push_back(pitch.get<double>());
+  } else {
+    sheet.pitches_deg.push_back(camera.pitch_deg);
+  }
+  sheet.padding = s.at("padding").get<int>();
+  return sheet;
+}
+
 }  // namespace
 
 glm::dmat4 SceneObject::matrix() const {
@@ -196,6 +213,7 @@ RenderParams RenderParams::from_json(const json& j) {
   p.lod_auto = j.at("lod") == "auto";
   p.lod_error_px = j.at("lod_error_px").get<double>();
   p.png_compression = j.at("png_compression").get<int>();
+  if (j.contains("sheet")) p.sheet = sheet_of(j.at("sheet"), p.camera);
   return p;
 }
 

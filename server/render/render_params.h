@@ -5,6 +5,7 @@
 // defaults live in proto/render-params.schema.json, not in this file.
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,22 @@ struct CameraParams {
   double distance = 0;  // 0: fit to the model's bounds
   double zoom = 1;      // divides the fitted distance or frame; ignored with distance set
   glm::dvec2 shift{0.0};  // eye and target moved along view right/up, in bounding radii
+  // Not on the wire: more views, as (yaw, pitch) in degrees, that a fitted
+  // distance or orthographic frame must also hold. A sprite sheet lists all
+  // its frames here, so each frame is framed alike and the model keeps its
+  // size and place from one to the next. Empty: the camera's own view only.
+  std::vector<glm::dvec2> framed_views;
+};
+
+// A sprite sheet (the `sheet` block), with every absent field resolved:
+// frames at yaw_start + i × yaw_step, for each pitch in turn.
+struct SheetParams {
+  int frames = 8;
+  int columns = 8;  // absent on the wire: `frames`, one row per pitch
+  double yaw_start_deg = 0;  // absent: the camera's yaw
+  double yaw_step_deg = 45;  // absent: 360 / frames
+  std::vector<double> pitches_deg;  // absent: the camera's pitch alone
+  int padding = 0;  // pixels between neighbouring tiles
 };
 
 enum class LightKind { Directional, Point };
@@ -175,6 +192,7 @@ struct RenderParams {
   bool lod_auto = true;       // false: `lod` "full", every triangle
   double lod_error_px = 0.5;  // the most a level's error may project to, output pixels
   int png_compression = 3;    // zlib level of the answer
+  std::optional<SheetParams> sheet;  // unset: one image
 
   static RenderParams from_json(const nlohmann::json& completed);
 };

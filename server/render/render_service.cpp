@@ -70,6 +70,22 @@ std::future<RenderOutput> RenderService::submit(RenderJob job) {
   return future;
 }
 
+std::vector<std::future<RenderOutput>> RenderService::submit_all(std::vector<RenderJob> jobs) {
+  std::vector<Task> tasks(jobs.size());
+  std::vector<std::future<RenderOutput>> futures;
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    tasks[i].job = std::move(jobs[i]);
+    futures.push_back(tasks[i].promise.get_future());
+  }
+  {
+    std::lock_guard lock(mutex_);
+    if (queue_.size() >= options_.queue_capacity) throw QueueFull();
+    for (Task& task : tasks) queue_.push_back(std::move(task));
+  }
+  wake_.notify_all();
+  return futures;
+}
+
 void RenderService::forget(const std::string& model_key) {
   {
     std::lock_guard lock(mutex_);

@@ -82,6 +82,11 @@ class RenderService {
   const gpu::GlInfo& gl_info() const { return gl_info_; }
 
   std::future<RenderOutput> submit(RenderJob job);
+  // The frames of one request (a sprite sheet), queued one after another
+  // with nothing between them, so a render thread draws them back to back
+  // with the model and programs it just used. Admitted like one job: it
+  // needs a free place in the queue, then all of them go in.
+  std::vector<std::future<RenderOutput>> submit_all(std::vector<RenderJob> jobs);
   // Drops the model's GPU copies (after DELETE /models/{id}).
   void forget(const std::string& model_key);
   std::size_t queue_depth() const;

@@ -107,11 +107,12 @@ async function shot(page, name) {
 // Every numeric leaf of the schema as the JSON pointer of the control that
 // edits it: a number's own pointer, a vector's components, a colour's array
 // (plus its alpha). Arrays of objects are looked at through item 0.
-// `objects` (multi-model scenes) is not edited on this page.
+// `objects` (multi-model scenes) and `sheet` (sprite sheets) are not edited
+// on this page.
 function numericLeaves(schema, pointer = '', out = []) {
   if (schema.type === 'object' && schema.properties) {
     for (const [key, sub] of Object.entries(schema.properties)) {
-      if (pointer === '' && key === 'objects') continue;
+      if (pointer === '' && (key === 'objects' || key === 'sheet')) continue;
       numericLeaves(sub, `${pointer}/${key}`, out);
     }
   } else if (schema.type === 'array' && schema.items?.type === 'object') {

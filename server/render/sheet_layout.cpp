@@ -1,0 +1,55 @@
+#include "render/sheet_layout.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace toond::render {
+namespace {
+
+// The same angle in [0, 360): the atlas and the frame's render both use it,
+// so a single render asked for the atlas's yaw sees exactly the same view.
+double normalised_yaw(double deg) {
+  const double wrapped = std::fmod(deg, 360.0);
+  return wrapped < 0.0 ? wrapped + 360.0 : wrapped;
+}
+
+}  // namespace
+
+SheetLayout layout_sheet(const SheetParams& sheet, int tile_width, int tile_height) {
+  SheetLayout layout;
+  layout.tile_width = tile_width;
+  layout.tile_height = tile_height;
+  layout.columns = std::min(sheet.columns, sheet.frames);
+  layout.padding = sheet.padding;
+  const int rows_per_pitch = (sheet.frames + layout.columns - 1) / layout.columns;
+  layout.rows = rows_per_pitch * static_cast<int>(sheet.pitches_deg.size());
+  layout.width = layout.columns * tile_width + (layout.columns - 1) * sheet.padding;
+  layout.height = layout.rows * tile_height + (layout.rows - 1) * sheet.padding;
+  int index = 0;
+  for (std::size_t p = 0; p < sheet.pitches_deg.size(); ++p) {
+    for (int f = 0; f < sheet.frames; ++f) {
+      const int row = static_cast<int>(p) * rows_per_pitch + f / layout.columns;
+      const int column = f % layout.columns;
+      SheetFrame frame;
+      frame.index = index++;
+      frame.x = column * (tile_width + sheet.padding);
+      frame.y = row * (tile_height + sheet.padding);
+      frame.yaw_deg = normalised_yaw(sheet.yaw_start_deg + f * sheet.yaw_step_deg);
+      frame.pitch_deg = sheet.pitches_deg[p];
+      layout.frames.push_back(frame);
+    }
+  }
+  return layout;
+}
+
+RenderParams frame_params(const RenderParams& sheet_params, const SheetLayout& layout, const SheetFrame& frame) {
+  RenderParams params = sheet_params;
+  params.sheet.reset();
+  params.camera.yaw_deg = frame.yaw_deg;
+  params.camera.pitch_deg = frame.pitch_deg;
+  params.camera.framed_views.clear();
+  for (const SheetFrame& other : layout.frames) params.camera.framed_views.emplace_back(other.yaw_deg, other.pitch_deg);
+  return params;
+}
+
+}  // namespace toond::render

@@ -1,0 +1,38 @@
+#pragma once
+// Where each frame of a sprite sheet goes and which view it shows. Pure
+// arithmetic on the resolved `sheet` parameters: the HTTP layer checks
+// limits and writes the atlas from it before anything is rendered.
+#include <vector>
+
+#include "render/render_params.h"
+
+namespace toond::render {
+
+struct SheetFrame {
+  int index = 0;   // 0 .. frames × pitches − 1, row by row
+  int x = 0;       // the tile's top-left pixel in the sheet
+  int y = 0;
+  double yaw_deg = 0;    // in [0, 360)
+  double pitch_deg = 0;
+};
+
+struct SheetLayout {
+  int tile_width = 0;
+  int tile_height = 0;
+  int columns = 0;
+  int rows = 0;     // per pitch, ceil(frames / columns); then times the pitches
+  int padding = 0;  // between neighbouring tiles, not around the edge
+  int width = 0;    // of the whole sheet
+  int height = 0;
+  std::vector<SheetFrame> frames;
+};
+
+// Pitch by pitch, frames fill rows of `columns` tiles from the top left; a
+// pitch's last row may be short, and the next pitch starts a new row.
+SheetLayout layout_sheet(const SheetParams& sheet, int tile_width, int tile_height);
+
+// The parameters of one frame's render: the sheet's own, turned to the
+// frame's view, framed to hold every frame of the sheet, and with no sheet.
+RenderParams frame_params(const RenderParams& sheet_params, const SheetLayout& layout, const SheetFrame& frame);
+
+}  // namespace toond::render

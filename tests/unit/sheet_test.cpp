@@ -1,0 +1,242 @@
+// Sprite sheets without GL: where tiles go, the framing every frame shares,
+// the atlas, the sprite camera presets and the sheet's limits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include "limit_error.h"
+#include "param_schema.h"
+#include "presets.h"
+#include "render/camera.h"
+#include "render/render_budget.h"
+#include "render/sheet_atlas.h"
+#include "render/sheet_layout.h"
+
+namespace toond::render {
+namespace {
+
+using nlohmann::json;
+
+RenderParams params_of(const json& request) {
+  const json expanded = proto::Presets::builtin().expand(request);
+  return RenderParams::from_json(proto::ParamSchema::render_params().validate_and_complete(expanded));
+}
+
+TEST(SheetLayout, AbsentFieldsComeFromTheCameraAndAFullTurn) {
+  const RenderParams p = params_of({{"camera", {{"yaw", 20}, {"pitch", 10}}}, {"sheet", {{"frames", 6}}}});
+  ASSERT_TRUE(p.sheet);
+  EXPECT_EQ(p.sheet->columns, 6) << "one row per pitch";
+  EXPECT_DOUBLE_EQ(p.sheet->yaw_start_deg, 20);
+  EXPECT_DOUBLE_EQ(p.sheet->yaw_step_deg, 60);
+  EXPECT_EQ(p.sheet->pitches_deg, std::vector<double>{10});
+  EXPECT_FALSE(params_of(json::object()).sheet) << "no sheet unless asked";
+}
+
+TEST(SheetLayout, RowsPerColumnsAndPerPitchWithPaddingBetweenTiles) {
+  SheetParams sheet;
+  sheet.frames = 5;
+  sheet.columns = 2;
+  sheet.yaw_start_deg = 350;
+  sheet.yaw_step_deg = 10;
+  sheet.pitches_deg = {0, 30};
+  sheet.padding = 3;
+  const SheetLayout layout = layout_sheet(sheet, 40, 30);
+  EXPECT_EQ(layout.columns, 2);
+  EXPECT_EQ(layout.rows, 6) << "3 rows for 5 frames, for each of 2 pitches";
+  EXPECT_EQ(layout.width, 2 * 40 + 3);
+  EXPECT_EQ(layout.height, 6 * 30 + 5 * 3);
+  ASSERT_EQ(layout.frames.size(), 10u);
+  // The second pitch starts a new row after the first pitch's short row.
+  EXPECT_EQ(layout.frames[4].x, 0);
+  EXPECT_EQ(layout.frames[4].y, 2 * 33);
+  EXPECT_EQ(layout.frames[5].y, 3 * 33);
+  EXPECT_EQ(layout.frames[5].pitch_deg, 30);
+  EXPECT_EQ(layout.frames[3].x, 43);
+  // Yaws wrap into [0, 360).
+  EXPECT_DOUBLE_EQ(layout.frames[0].yaw_deg, 350);
+  EXPECT_DOUBLE_EQ(layout.frames[1].yaw_deg, 0);
+  EXPECT_DOUBLE_EQ(layout.frames[2].yaw_deg, 10);
+}
+
+TEST(SheetLayout, TilesStayInsideTheSheetAndNeverOverlap) {
+  SheetParams sheet;
+  sheet.frames = 7;
+  sheet.columns = 3;
+  sheet.pitches_deg = {10, 20, 30};
+  sheet.padding = 2;
+  const SheetLayout layout = layout_sheet(sheet, 16, 24);
+  std::set<std::pair<int, int>> covered;
+  for (const SheetFrame& f : layout.frames) {
+    EXPECT_GE(f.x, 0);
+    EXPECT_GE(f.y, 0);
+    EXPECT_LE(f.x + 16, layout.width);
+    EXPECT_LE(f.y + 24, layout.height);
+    for (int y = f.y; y < f.y + 24; ++y) {
+      for (int x = f.x; x < f.x + 16; ++x) EXPECT_TRUE(covered.insert({x, y}).second) << "overlap at " << x << "," << y;
+    }
+  }
+}
+
+TEST(SheetLayout, MoreColumnsThanFramesGiveOneRow) {
+  SheetParams sheet;
+  sheet.frames = 3;
+  sheet.columns = 10;
+  sheet.pitches_deg = {0};
+  const SheetLayout layout = layout_sheet(sheet, 10, 10);
+  EXPECT_EQ(layout.width, 30);
+  EXPECT_EQ(layout.rows, 1);
+}
+
+// A long box seen end-on needs less room than seen side-on: fitted alone,
+// each view scales it differently; framed with all views, every frame has
+// the distance (perspective) or frame (orthographic) of the widest.
+TEST(SheetFraming, EveryFrameSharesTheWidestFit) {
+  const scene::Bounds long_box{{-3, -1, -0.5f}, {3, 1, 0.5f}};
+  for (Projection projection : {Projection::Perspective, Projection::Orthographic}) {
+    CameraParams end_on;
+    end_on.projection = projection;
+    end_on.yaw_deg = 90;
+    CameraParams side_on = end_on;
+    side_on.yaw_deg = 0;
+    const CameraSetup alone_end = fit_camera(end_on, long_box, 1.0);
+    const CameraSetup alone_side = fit_camera(side_on, long_box, 1.0);
+    const double alone_end_size = projection == Projection::Orthographic ? alone_end.half_height : alone_end.distance;
+    const double alone_side_size =
+        projection == Projection::Orthographic ? alone_side.half_height : alone_side.distance;
+    ASSERT_LT(alone_end_size * 1.5, alone_side_size) << "the test needs views that fit differently";
+
+    end_on.framed_views = side_on.framed_views = {{0, 0}, {90, 0}};
+    const CameraSetup shared_end = fit_camera(end_on, long_box, 1.0);
+    const CameraSetup shared_side = fit_camera(side_on, long_box, 1.0);
+    EXPECT_DOUBLE_EQ(shared_end.distance, shared_side.distance);
+    EXPECT_DOUBLE_EQ(shared_end.half_height, shared_side.half_height);
+    if (projection == Projection::Orthographic) {
+      EXPECT_DOUBLE_EQ(shared_end.half_height, alone_side.half_height);
+    } else {
+      EXPECT_DOUBLE_EQ(shared_end.distance, alone_side.distance);
+    }
+    // The view itself is still the frame's own.
+    EXPECT_NEAR(glm::normalize(shared_end.eye - shared_end.target).x, 1.0, 1e-12);
+  }
+}
+
+TEST(SheetFraming, WithoutFramedViewsASingleRenderFitsAsBefore) {
+  const scene::Bounds box{{-1, -2, -1}, {1, 2, 1}};
+  CameraParams params;
+  params.yaw_deg = 30;
+  params.pitch_deg = 15;
+  const CameraSetup plain = fit_camera(params, box, 1.5);
+  params.framed_views = {{30, 15}};
+  const CameraSetup framed = fit_camera(params, box, 1.5);
+  EXPECT_EQ(plain.distance, framed.distance) << "its own view adds nothing";
+  EXPECT_EQ(plain.view, framed.view);
+  EXPECT_EQ(plain.projection, framed.projection);
+}
+
+TEST(SheetFraming, FrameParamsTurnTheViewAndDropTheSheet) {
+  const RenderParams p = params_of({{"sheet", {{"frames", 4}, {"pitches", {0, 45}}}}});
+  const SheetLayout layout = layout_sheet(*p.sheet, p.width, p.height);
+  const RenderParams one = frame_params(p, layout, layout.frames[6]);
+  EXPECT_FALSE(one.sheet);
+  EXPECT_DOUBLE_EQ(one.camera.yaw_deg, layout.frames[6].yaw_deg);
+  EXPECT_DOUBLE_EQ(one.camera.pitch_deg, 45);
+  EXPECT_EQ(one.camera.framed_views.size(), 8u);
+}
+
+TEST(SheetAtlas, FollowsTexturePackersHashLayoutWithYawAndPitch) {
+  const RenderParams p = params_of({{"width", 32}, {"height", 48}, {"sheet", {{"frames", 8}, {"columns", 4}}}});
+  const SheetLayout layout = layout_sheet(*p.sheet, p.width, p.height);
+  SceneFrame scene;
+  scene.bounds = {{-1, 0, -1}, {1, 2, 1}};
+  const json atlas = sheet_atlas(layout, p, scene, "sheet.png");
+  ASSERT_EQ(atlas["frames"].size(), 8u);
+  const json& f = atlas["frames"]["frame_005"];
+  EXPECT_EQ(f["frame"], (json{{"x", 32}, {"y", 48}, {"w", 32}, {"h", 48}}));
+  EXPECT_EQ(f["spriteSourceSize"], (json{{"x", 0}, {"y", 0}, {"w", 32}, {"h", 48}}));
+  EXPECT_EQ(f["sourceSize"], (json{{"w", 32}, {"h", 48}}));
+  EXPECT_EQ(f["rotated"], false);
+  EXPECT_EQ(f["trimmed"], false);
+  EXPECT_DOUBLE_EQ(f["yaw"].get<double>(), std::fmod(30.0 + 5 * 45.0, 360.0));
+  EXPECT_DOUBLE_EQ(f["pitch"].get<double>(), 15.0);
+  // The foot of an upright model stands on the tile's vertical middle line,
+  // below its centre, at the same place in every frame.
+  EXPECT_NEAR(f["pivot"]["x"].get<double>(), 0.5, 1e-9);
+  EXPECT_GT(f["pivot"]["y"].get<double>(), 0.5);
+  EXPECT_LT(f["pivot"]["y"].get<double>(), 1.0);
+  EXPECT_NEAR(f["pivot"]["y"].get<double>(), atlas["frames"]["frame_000"]["pivot"]["y"].get<double>(), 1e-9);
+  const json& meta = atlas["meta"];
+  EXPECT_EQ(meta["image"], "sheet.png");
+  EXPECT_EQ(meta["size"], (json{{"w", 128}, {"h", 96}}));
+  EXPECT_EQ(meta["padding"], 0);
+  EXPECT_EQ(meta["camera"]["projection"], "perspective");
+  EXPECT_GT(meta["camera"]["distance"].get<double>(), 0);
+}
+
+TEST(SheetBudget, TheWholeSheetCountsAgainstTheLimits) {
+  RenderLimits limits;
+  limits.max_output_pixels = 64 * 64 * 8;
+  limits.max_samples = 64 * 64 * 8 * 4;
+  const RenderParams fits = params_of({{"width", 64}, {"height", 64}, {"sheet", {{"frames", 8}}}});
+  EXPECT_NO_THROW(check_render_budget(fits, limits));
+  const RenderParams too_many = params_of({{"width", 64}, {"height", 64}, {"sheet", {{"frames", 9}}}});
+  try {
+    check_render_budget(too_many, limits);
+    ADD_FAILURE() << "9 tiles of 64² passed a limit of 8";
+  } catch (const LimitError& e) {
+    EXPECT_EQ(e.limit(), "--max-output-pixels");
+    EXPECT_EQ(e.status(), 422);
+  }
+  const RenderParams too_fine =
+      params_of({{"width", 64}, {"height", 64}, {"msaa", 8}, {"sheet", {{"frames", 8}}}});
+  try {
+    check_render_budget(too_fine, limits);
+    ADD_FAILURE() << "8 frames × msaa 8 passed a sample limit of 8 × msaa 4";
+  } catch (const LimitError& e) {
+    EXPECT_EQ(e.limit(), "--max-samples");
+  }
+}
+
+TEST(CameraPresets, SpriteViewsAreOrthographicAndGivenFieldsWin) {
+  const RenderParams iso = params_of({{"camera", {{"preset", "isometric"}}}});
+  EXPECT_EQ(iso.camera.projection, Projection::Orthographic);
+  EXPECT_NEAR(iso.camera.pitch_deg, glm::degrees(std::atan(1.0 / std::sqrt(2.0))), 1e-3);
+  EXPECT_DOUBLE_EQ(iso.camera.yaw_deg, 45);
+  const RenderParams dimetric = params_of({{"preset", "anime"}, {"camera", {{"preset", "dimetric"}, {"yaw", 10}}}});
+  EXPECT_EQ(dimetric.camera.projection, Projection::Orthographic);
+  EXPECT_DOUBLE_EQ(dimetric.camera.pitch_deg, 30);
+  EXPECT_DOUBLE_EQ(dimetric.camera.yaw_deg, 10) << "the request's own yaw";
+  EXPECT_EQ(dimetric.mode, params_of({{"preset", "anime"}}).mode) << "combines with a look preset";
+}
+
+TEST(SheetSchema, BadSheetsAreRefusedWithTheirPath) {
+  const auto& schema = proto::ParamSchema::render_params();
+  auto path_of = [&](const json& request) {
+    try {
+      schema.validate(request);
+    } catch (const RequestError& e) {
+      return e.path();
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(path_of({{"sheet", {{"frames", 0}}}}), "/sheet/frames");
+  EXPECT_EQ(path_of({{"sheet", {{"frames", 65}}}}), "/sheet/frames");
+  EXPECT_EQ(path_of({{"sheet", {{"columns", 0}}}}), "/sheet/columns");
+  EXPECT_EQ(path_of({{"sheet", {{"pitches", {0, 1, 2, 3, 4, 5, 6, 7, 8}}}}}), "/sheet/pitches");
+  EXPECT_EQ(path_of({{"sheet", {{"pitches", {90}}}}}), "/sheet/pitches/0");
+  EXPECT_EQ(path_of({{"sheet", {{"padding", 65}}}}), "/sheet/padding");
+  EXPECT_EQ(path_of({{"sheet", {{"fps", 5}}}}), "/sheet/fps");
+  EXPECT_EQ(path_of({{"camera", {{"preset", "cabinet"}}}}), "/camera/preset");
+  EXPECT_EQ(path_of({{"sheet", json::object()}}), "(accepted)");
+}
+
+TEST(SheetSchema, SetFromTextReachesTheSheet) {
+  json params = json::object();
+  proto::ParamSchema::render_params().set_from_text(params, "sheet.frames", "8");
+  proto::ParamSchema::render_params().set_from_text(params, "sheet.pitches", "[0,30]");
+  EXPECT_EQ(params, (json{{"sheet", {{"frames", 8}, {"pitches", {0, 30}}}}}));
+}
+
+}  // namespace
+}  // namespace toond::render
