@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <set>
 
@@ -235,18 +236,27 @@ TEST_F(Sheet, AnotherDecoderReadsTheSheetAndItsAtlas) {
   ASSERT_FALSE(png.empty());
   const auto file = make_temp_dir("toond-sheet") / "sheet.png";
   std::ofstream(file, std::ios::binary) << png;
+  // The encoder picks palette, RGB or RGBA by content: PIL's pixels, made
+  // RGBA, must be our decoder's bytes whichever it chose.
+  const auto pixels = file.parent_path() / "sheet.rgba";
   const auto r = run_process({"/usr/bin/python3", "-c",
                               "import sys, json\n"
                               "from PIL import Image\n"
                               "im = Image.open(sys.argv[1]); im.load()\n"
-                              "print(json.dumps({'size': list(im.size), 'mode': im.mode,"
+                              "open(sys.argv[2], 'wb').write(im.convert('RGBA').tobytes())\n"
+                              "print(json.dumps({'size': list(im.size),"
                               " 'atlas': json.loads(im.text['toond:atlas'])}))\n",
-                              file.string()});
+                              file.string(), pixels.string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const json seen = json::parse(r.out);
   EXPECT_EQ(seen["size"], (json{96, 96}));
-  EXPECT_EQ(seen["mode"], "RGBA");
   EXPECT_EQ(seen["atlas"], atlas_of(png));
+  std::ifstream in(pixels, std::ios::binary);
+  const std::string theirs((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const image::Image ours = image::decode_png(png);
+  EXPECT_TRUE(theirs.size() == ours.rgba.size() && std::equal(ours.rgba.begin(), ours.rgba.end(), theirs.begin(),
+                                                              [](std::uint8_t a, char b) { return a == static_cast<std::uint8_t>(b); }))
+      << "PIL's pixels differ from the sheet's";
 }
 
 TEST_F(Sheet, TheCliAsksForASheetWithSet) {
