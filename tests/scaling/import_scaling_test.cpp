@@ -13,7 +13,7 @@ namespace toond::test {
 namespace {
 
 constexpr double kLinearBound = 2.5;
-constexpr int kRuns = 5;
+constexpr int kRuns = 7;
 
 }  // namespace
 
