@@ -8,10 +8,10 @@
 // Pixels are read back through WebGL from an ImageBitmap made without
 // premultiplied alpha or colour conversion: a 2D canvas stores premultiplied
 // colour and would round translucent pixels on the way back.
-import { spawn, spawnSync } from 'node:child_process';
+import { spawnSync } from 'node:child_process';
 import { mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { createInterface } from 'node:readline';
+import { startDaemon } from './daemon.mjs';
 import { fileURLToPath } from 'node:url';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -36,20 +36,8 @@ function check(condition, what, detail = '') {
   if (!condition) failures += 1;
 }
 
-function startDaemon(dataDir) {
-  const child = spawn(toondBinary, ['--listen', '127.0.0.1:0', '--data-dir', dataDir], { stdio: ['ignore', 'pipe', 'pipe'] });
-  child.stderr.on('data', (d) => process.stderr.write(`[toond] ${d}`));
-  return new Promise((resolve, reject) => {
-    const timer = setTimeout(() => reject(new Error('toond did not print its listening line')), STEP_TIMEOUT_MS);
-    child.on('exit', (code) => reject(new Error(`toond exited early with ${code}`)));
-    createInterface({ input: child.stdout }).on('line', (line) => {
-      const m = /listening on (http:\/\/\S+)/.exec(line);
-      if (m) {
-        clearTimeout(timer);
-        resolve({ child, url: m[1] });
-      }
-    });
-  });
+function startDaemonIn(dataDir) {
+  return startDaemon(toondBinary, '127.0.0.1:0', dataDir, STEP_TIMEOUT_MS);
 }
 
 // Default parameters but the size and background: opaque frames at the two
@@ -121,7 +109,7 @@ for (const dir of [framesDir, samplesDir, dataDir]) mkdirSync(dir, { recursive: 
 let daemon = null;
 let browser = null;
 try {
-  daemon = await startDaemon(dataDir);
+  daemon = await startDaemonIn(dataDir);
   const frames = await renderFrames(daemon.url, framesDir);
   const writer = spawnSync(samplesWriter, [samplesDir, ...frames], { stdio: 'inherit' });
   check(writer.status === 0, 'the encoder wrote every sample in the colour type expected of it');

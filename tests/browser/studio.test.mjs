@@ -4,11 +4,10 @@
 // Exit 0: every check passed; 1: a check failed; 77 (CTest SKIP_RETURN_CODE):
 // everything that ran passed but the spot upload was skipped because the
 // shared models are absent. Screenshots go to --artifacts.
-import { spawn } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { createInterface } from 'node:readline';
+import { startDaemon } from './daemon.mjs';
 import { fileURLToPath } from 'node:url';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -41,20 +40,8 @@ function check(condition, what, detail = '') {
 
 // ---- the daemon -------------------------------------------------------------
 
-function startDaemon(listen, dataDir) {
-  const child = spawn(toondBinary, ['--listen', listen, '--data-dir', dataDir], { stdio: ['ignore', 'pipe', 'pipe'] });
-  child.stderr.on('data', (d) => process.stderr.write(`[toond] ${d}`));
-  return new Promise((resolve, reject) => {
-    const timer = setTimeout(() => reject(new Error('toond did not print its listening line')), STEP_TIMEOUT_MS);
-    child.on('exit', (code) => reject(new Error(`toond exited early with ${code}`)));
-    createInterface({ input: child.stdout }).on('line', (line) => {
-      const m = /listening on (http:\/\/\S+)/.exec(line);
-      if (m) {
-        clearTimeout(timer);
-        resolve({ child, url: m[1] });
-      }
-    });
-  });
+function startToond(listen, dataDir) {
+  return startDaemon(toondBinary, listen, dataDir, STEP_TIMEOUT_MS);
 }
 
 function stopDaemon(daemon) {
@@ -360,7 +347,7 @@ async function checkLostServer(page, daemon, dataDir) {
   await shot(page, '09-lost-server.png');
   // Back on the same port: the page retries, hides the banner and renders.
   const shown = await rendersShown(page);
-  const revived = await startDaemon(`127.0.0.1:${port}`, dataDir);
+  const revived = await startToond(`127.0.0.1:${port}`, dataDir);
   await page.waitForSelector('#banner', { state: 'hidden', timeout: STEP_TIMEOUT_MS });
   await waitForFullRender(page, shown);
   check(true, 'the page reconnects when the server is back');
@@ -374,7 +361,7 @@ let daemon = null;
 let browser = null;
 const started = Date.now();
 try {
-  daemon = await startDaemon('127.0.0.1:0', dataDir);
+  daemon = await startToond('127.0.0.1:0', dataDir);
   console.log(`toond at ${daemon.url}`);
   browser = await chromium.launch({
     executablePath: '/usr/bin/chromium',
