@@ -106,6 +106,37 @@ SubmeshSplit split_submesh(const Mesh& mesh, const std::vector<std::uint32_t>& p
   return split;
 }
 
+// Appends to `out` one submesh of the next level: its triangles at hubs as
+// they are, the rest simplified toward `options.ratio` of the submesh with
+// its border locked. Returns the step's error bound in the mesh's units.
+double simplify_submesh(const Mesh& mesh, const std::vector<std::uint32_t>& position_group,
+                        const std::vector<std::uint32_t>& source, const Submesh& sub, const std::vector<bool>& dropped,
+                        const std::vector<std::uint32_t>& valence, const LodOptions& options,
+                        std::vector<std::uint32_t>& out) {
+  constexpr std::size_t stride = sizeof(glm::vec3);
+  const SubmeshSplit split = split_submesh(mesh, position_group, source, sub, dropped, valence);
+  out.insert(out.end(), split.pinned.begin(), split.pinned.end());
+  if (split.free.empty()) return 0.0;
+  const std::size_t target_indices =
+      std::max<std::size_t>(3, static_cast<std::size_t>(std::floor(sub.index_count * options.ratio / 3.0)) * 3);
+  const std::size_t free_target =
+      std::min(split.free.size(), target_indices > split.pinned.size() ? target_indices - split.pinned.size() : 0);
+  std::vector<std::uint32_t> simplified(split.free.size());
+  float error = 0;
+  // No error cap: the triangle target drives each step, the error is
+  // measured and kept beside the level.
+  const std::size_t written =
+      meshopt_simplify(simplified.data(), split.free.data(), split.free.size(), &split.local_positions[0].x,
+                       split.local_positions.size(), stride, free_target, 1.0f, meshopt_SimplifyLockBorder, &error);
+  for (std::size_t i = 0; i < written; ++i) out.push_back(split.local_to_model[simplified[i]]);
+  // meshopt's error is a quadric estimate relative to the extent of what
+  // it was given; on a sphere the true farthest stray measured up to ~2×
+  // more with 75 % steps (mesh_lod_test), so it is taken 2.5 times to keep
+  // the pixel budget an upper bound of the worst stray, not of a typical one.
+  const double extent = meshopt_simplifyScale(&split.local_positions[0].x, split.local_positions.size(), stride);
+  return kQuadricToWorstStray * static_cast<double>(error) * extent;
+}
+
 // Reorders one submesh's triangles for the vertex cache, on a compact copy
 // of its vertex ids: the optimiser's tables are as long as the vertex
 // count it is given, and a model of many small submeshes would otherwise
@@ -174,7 +205,6 @@ void optimize_for_vertex_cache(Mesh& mesh) {
 std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options) {
   std::vector<MeshLod> chain;
   if (mesh.positions.empty() || mesh.indices.empty()) return chain;
-  const std::size_t stride = sizeof(glm::vec3);
 
   // Each level is simplified from the one before (cheap: every step works on
   // half the triangles of the last); its error is the sum of the steps'.
@@ -200,33 +230,9 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options
     for (const Submesh& sub : source_subs) {
       Submesh out{static_cast<std::uint32_t>(lod.indices.size()), 0, sub.material};
       if (sub.index_count > 0) {
-        const SubmeshSplit split = split_submesh(mesh, position_group, source, sub, dropped, valence);
-        const std::size_t target_indices = std::max<std::size_t>(
-            3, static_cast<std::size_t>(std::floor(sub.index_count * options.ratio / 3.0)) * 3);
-        const std::size_t free_target =
-            std::min(split.free.size(), target_indices > split.pinned.size() ? target_indices - split.pinned.size() : 0);
-        std::vector<std::uint32_t> simplified(split.free.size());
-        float sub_error = 0;
-        // No error cap: the triangle target drives each step, the error is
-        // measured and kept beside the level.
-        const std::size_t written =
-            split.free.empty()
-                ? 0
-                : meshopt_simplify(simplified.data(), split.free.data(), split.free.size(),
-                                   &split.local_positions[0].x, split.local_positions.size(), stride, free_target,
-                                   1.0f, meshopt_SimplifyLockBorder, &sub_error);
-        lod.indices.insert(lod.indices.end(), split.pinned.begin(), split.pinned.end());
-        for (std::size_t i = 0; i < written; ++i) lod.indices.push_back(split.local_to_model[simplified[i]]);
-        out.index_count = static_cast<std::uint32_t>(split.pinned.size() + written);
-        // meshopt's error is a quadric estimate relative to the extent of
-        // what it was given; on a sphere the true farthest stray measured
-        // up to ~2× more with 75 % steps (mesh_lod_test), so it is taken
-        // 2.5 times to keep the pixel budget an upper bound of the worst
-        // stray, not of a typical one.
-        const double local_scale = split.free.empty() ? 0.0
-                                                      : meshopt_simplifyScale(&split.local_positions[0].x,
-                                                                              split.local_positions.size(), stride);
-        step_error = std::max(step_error, kQuadricToWorstStray * static_cast<double>(sub_error) * local_scale);
+        const double error = simplify_submesh(mesh, position_group, source, sub, dropped, valence, options, lod.indices);
+        out.index_count = static_cast<std::uint32_t>(lod.indices.size() - out.first_index);
+        step_error = std::max(step_error, error);
       }
       lod.submeshes.push_back(out);
     }

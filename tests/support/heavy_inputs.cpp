@@ -200,7 +200,7 @@ const std::vector<HeavyInput>& heavy_inputs() {
       {"many_materials", "n materials in the MTL sharing one texture, each used once", many_materials_one_texture,
        20000},
       {"missing_textures", "40n materials with missing textures beside n other files", missing_textures_many_files,
-       480},
+       120},
       {"long_lines", "a number with n digits and a comment n bytes long", long_lines, 4000000},
       {"repeated_corners", "one polygon naming the same three vertices n times", repeated_corners, 40000},
       {"repeated_triangle", "the same triangle n times", repeated_triangle, 40000},
