@@ -167,10 +167,19 @@ TEST_F(AnalyticOracle, OutlineWidthPerMethod) {
       std::printf("[oracle] %-9s %.1f px (%s): %.2f..%.2f px, mean error %.3f, max %.3f, %zu stray\n", method, width,
                   units, ring.min_width, ring.max_width, ring.width_error.mean_abs, ring.width_error.max_abs,
                   ring.stray_pixels);
-      if (std::string(method) != "hull") continue;
+      if (std::string(method) == "wireframe") continue;
       EXPECT_EQ(ring.width_error.missing, 0u) << method << " " << width << " " << units;
-      EXPECT_LE(ring.width_error.max_abs, 0.5) << method << " " << width << " " << units;
       EXPECT_EQ(ring.stray_pixels, 0u) << method << " " << width << " " << units;
+      if (std::string(method) == "hull") {
+        EXPECT_LE(ring.width_error.max_abs, 0.5) << method << " " << width << " " << units;
+      } else {
+        // Screen-space edges draw the width by coverage, but the prepass
+        // knows an edge only to the half pixel: 0.5 px is the target, what
+        // holds today is a mean of 0.2 and a max of 0.85 (whole-pixel
+        // widths measured a mean of 1.4 at 5 px).
+        EXPECT_LE(ring.width_error.mean_abs, 0.2) << method << " " << width << " " << units;
+        EXPECT_LE(ring.width_error.max_abs, 0.85) << method << " " << width << " " << units;
+      }
     }
   }
 }
