@@ -70,21 +70,37 @@ std::vector<std::uint32_t> valence_of_positions(const std::vector<std::uint32_t>
   return valence;
 }
 
+// Dense local ids for the model vertices a submesh uses, in first-use
+// order: meshoptimizer's tables are as long as the vertex count it is
+// given, so each submesh goes to it on its own compact numbering.
+class CompactIds {
+ public:
+  std::uint32_t local(std::uint32_t model_id) {
+    const auto [it, added] = local_of_.emplace(model_id, static_cast<std::uint32_t>(to_model_.size()));
+    if (added) to_model_.push_back(model_id);
+    return it->second;
+  }
+  const std::vector<std::uint32_t>& to_model() const { return to_model_; }
+
+ private:
+  std::unordered_map<std::uint32_t, std::uint32_t> local_of_;
+  std::vector<std::uint32_t> to_model_;
+};
+
 // One submesh's triangles sorted for simplification: those at a hub pass
 // through unchanged, the rest go to the simplifier on their own compact
 // vertex list, so its cost follows the submesh, not the whole model.
 struct SubmeshSplit {
-  std::vector<std::uint32_t> pinned;       // model vertex ids, kept as they are
-  std::vector<std::uint32_t> free;         // local ids into `local_to_model`
-  std::vector<std::uint32_t> local_to_model;
-  std::vector<glm::vec3> local_positions;
+  std::vector<std::uint32_t> pinned;  // model vertex ids, kept as they are
+  std::vector<std::uint32_t> free;    // local ids of `ids`
+  CompactIds ids;
+  std::vector<glm::vec3> local_positions;  // per local id
 };
 
 SubmeshSplit split_submesh(const Mesh& mesh, const std::vector<std::uint32_t>& position_group,
                            const std::vector<std::uint32_t>& source, const Submesh& sub,
                            const std::vector<bool>& dropped, const std::vector<std::uint32_t>& valence) {
   SubmeshSplit split;
-  std::unordered_map<std::uint32_t, std::uint32_t> local_of;
   for (std::size_t i = sub.first_index; i + 2 < std::size_t{sub.first_index} + sub.index_count; i += 3) {
     if (dropped[i / 3]) continue;
     const std::uint32_t* tri = &source[i];
@@ -94,15 +110,9 @@ SubmeshSplit split_submesh(const Mesh& mesh, const std::vector<std::uint32_t>& p
       split.pinned.insert(split.pinned.end(), tri, tri + 3);
       continue;
     }
-    for (int k = 0; k < 3; ++k) {
-      const auto [it, added] = local_of.emplace(tri[k], static_cast<std::uint32_t>(split.local_to_model.size()));
-      if (added) {
-        split.local_to_model.push_back(tri[k]);
-        split.local_positions.push_back(mesh.positions[tri[k]]);
-      }
-      split.free.push_back(it->second);
-    }
+    for (int k = 0; k < 3; ++k) split.free.push_back(split.ids.local(tri[k]));
   }
+  for (const std::uint32_t v : split.ids.to_model()) split.local_positions.push_back(mesh.positions[v]);
   return split;
 }
 
@@ -128,7 +138,7 @@ double simplify_submesh(const Mesh& mesh, const std::vector<std::uint32_t>& posi
   const std::size_t written =
       meshopt_simplify(simplified.data(), split.free.data(), split.free.size(), &split.local_positions[0].x,
                        split.local_positions.size(), stride, free_target, 1.0f, meshopt_SimplifyLockBorder, &error);
-  for (std::size_t i = 0; i < written; ++i) out.push_back(split.local_to_model[simplified[i]]);
+  for (std::size_t i = 0; i < written; ++i) out.push_back(split.ids.to_model()[simplified[i]]);
   // meshopt's error is a quadric estimate relative to the extent of what
   // it was given; on a sphere the true farthest stray measured up to ~2×
   // more with 75 % steps (mesh_lod_test), so it is taken 2.5 times to keep
@@ -137,22 +147,17 @@ double simplify_submesh(const Mesh& mesh, const std::vector<std::uint32_t>& posi
   return kQuadricToWorstStray * static_cast<double>(error) * extent;
 }
 
-// Reorders one submesh's triangles for the vertex cache, on a compact copy
-// of its vertex ids: the optimiser's tables are as long as the vertex
-// count it is given, and a model of many small submeshes would otherwise
-// pay the whole model's vertex count for each one. The optimiser also
+// Reorders one submesh's triangles for the vertex cache, on compact ids (a
+// model of many small submeshes would otherwise pay the whole model's
+// vertex count for each one). The optimiser also
 // scores every triangle of each vertex in its cache at each step, so a hub
 // would cost the square of its valence; triangles at hubs follow the rest
 // in their own order (a hub stays in the cache anyway).
 void reorder_range(std::uint32_t* indices, std::size_t count) {
-  std::unordered_map<std::uint32_t, std::uint32_t> local_of;
-  std::vector<std::uint32_t> local_to_model;
+  CompactIds ids;
   std::vector<std::uint32_t> local(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    const auto [it, added] = local_of.emplace(indices[i], static_cast<std::uint32_t>(local_to_model.size()));
-    if (added) local_to_model.push_back(indices[i]);
-    local[i] = it->second;
-  }
+  for (std::size_t i = 0; i < count; ++i) local[i] = ids.local(indices[i]);
+  const std::vector<std::uint32_t>& local_to_model = ids.to_model();
   std::vector<std::uint32_t> valence(local_to_model.size(), 0);
   for (const auto v : local) ++valence[v];
   std::vector<std::uint32_t> ordinary;
