@@ -29,9 +29,13 @@ void emit_edge(int a, int b) {
   if (len < 1e-6) return;
   along /= len;
   // Half the width to each side, and half a width past each end so that
-  // neighbouring edges join without notches.
-  vec2 side = vec2(-along.y, along.x) * (0.5 * u_line_px);
-  vec2 ext = along * (0.5 * u_line_px);
+  // neighbouring edges join without notches, plus a pixel: the fragment
+  // shader gives the line's edge its coverage, which reaches half a pixel
+  // (diagonally √½) past the width. A quad cut at the width would also cut
+  // the samples of those pixels and thin the line by up to half a pixel.
+  const float kCoverageMargin = 1.0;
+  vec2 side = vec2(-along.y, along.x) * (0.5 * u_line_px + kCoverageMargin);
+  vec2 ext = along * (0.5 * u_line_px + kCoverageMargin);
   vec2 to_ndc = 2.0 / u_viewport;
   // Set before every vertex: flat outputs are undefined after EmitVertex.
   gl_Position = vec4(ca.xy + (-side - ext) * to_ndc * ca.w, ca.zw);

@@ -16,6 +16,11 @@
 namespace toond::render {
 namespace {
 
+// Samples per pixel of the edge prepass when it places silhouettes: a
+// quarter pixel of coverage per sample, which the analytic oracle measures
+// as widths within 0.4 px.
+constexpr int kSilhouetteSamples = 4;
+
 void check_gl(const char* where) {
   const GLenum error = glGetError();
   if (error != GL_NO_ERROR) {
@@ -131,10 +136,10 @@ void redraw_where_caps_show(const GpuModel& model, std::size_t lod, HiddenFaces 
 
 }  // namespace
 
-gpu::NormalDepthTarget& Renderer::normal_depth_for(int width, int height) {
-  if (!normal_depth_ || !normal_depth_->matches(width, height)) {
+gpu::NormalDepthTarget& Renderer::normal_depth_for(int width, int height, int samples) {
+  if (!normal_depth_ || !normal_depth_->matches(width, height, samples)) {
     normal_depth_.reset();
-    normal_depth_.emplace(width, height);
+    normal_depth_.emplace(width, height, samples);
   }
   return *normal_depth_;
 }
@@ -584,7 +589,11 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   }
 
   if (plan.has(Pass::Edges)) {
-    gpu::NormalDepthTarget& normals = normal_depth_for(draw_width, draw_height);
+    // Silhouettes are placed by the share of a pixel the model covers, which
+    // takes samples; creases and depth jumps are found on whole pixels, so
+    // a pass drawing creases alone does with one.
+    const int prepass_samples = plan.creases_only ? 1 : kSilhouetteSamples;
+    gpu::NormalDepthTarget& normals = normal_depth_for(draw_width, draw_height, prepass_samples);
     normals.bind_for_drawing();
     glDisable(GL_STENCIL_TEST);
     glEnable(GL_DEPTH_TEST);
@@ -607,6 +616,17 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
       }
     }
     glDisable(GL_CULL_FACE);
+    if (normals.needs_resolve()) {
+      normals.bind_for_resolve();
+      glDisable(GL_DEPTH_TEST);
+      gpu::Program& resolve = programs_.get("fullscreen.vert", "normal_depth_resolve.frag", {});
+      resolve.use();
+      glBindTextureUnit(0, normals.sample_texture());
+      resolve.set("u_samples", 0);
+      resolve.set("u_sample_count", normals.samples());
+      glBindVertexArray(fullscreen_vao_.id());
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
     check_gl("edge prepass");
     end_pass(Pass::EdgePrepass);
 
@@ -617,7 +637,9 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
                                                           : std::vector<std::string>{});
     edges.use();
     glBindTextureUnit(0, normals.texture());
+    glBindTextureUnit(1, normals.coverage_texture());
     edges.set("u_normal_depth", 0);
+    edges.set("u_coverage", 1);
     edges.set("u_half_width", 0.5f * outline_px);
     edges.set("u_depth_threshold", params.outline.depth_threshold * 2.0f * bounds.radius());
     edges.set("u_cos_crease", static_cast<float>(std::cos(glm::radians(params.outline.crease_angle_deg))));

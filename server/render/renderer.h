@@ -64,7 +64,7 @@ class Renderer {
  private:
   gpu::RenderTarget& target_for(int width, int height, int samples);
   gpu::ShadowMap& shadow_map_for(int size);
-  gpu::NormalDepthTarget& normal_depth_for(int width, int height);
+  gpu::NormalDepthTarget& normal_depth_for(int width, int height, int samples);
   const GpuModel& floor_for(const scene::Bounds& bounds, const FloorParams& floor, bool textured);
 
   gpu::ProgramCache& programs_;
