@@ -1,0 +1,77 @@
+#include "render/frame_resources.h"
+
+namespace toond::render {
+namespace {
+
+// A square ground plane just under the model's lowest point (a hair lower,
+// so a flat-bottomed model does not z-fight with it), facing up; its texture
+// coordinates run over `repeat` tiles per side.
+scene::Model make_floor(const scene::Bounds& bounds, float size, float repeat,
+                        const std::shared_ptr<const scene::Texture>& image) {
+  const float half = bounds.radius() * size;
+  const glm::vec3 c = bounds.centre();
+  const float y = bounds.min.y - bounds.radius() * 1e-3f;
+  scene::Model floor;
+  scene::Mesh& m = floor.mesh;
+  m.positions = {{c.x - half, y, c.z - half}, {c.x + half, y, c.z - half}, {c.x + half, y, c.z + half},
+                 {c.x - half, y, c.z + half}};
+  m.normals.assign(4, glm::vec3(0, 1, 0));
+  m.outline_normals.assign(4, glm::vec3(0, 1, 0));
+  m.texcoords = {{0, 0}, {repeat, 0}, {repeat, repeat}, {0, repeat}};
+  m.indices = {0, 2, 1, 0, 3, 2};
+  m.submeshes = {{0, 6, 0}};
+  m.bounds = {m.positions[0], m.positions[2]};
+  floor.materials.push_back({});
+  if (image) {
+    floor.textures.push_back(*image);
+    floor.materials[0].diffuse_texture = 0;
+  }
+  return floor;
+}
+
+}  // namespace
+
+gpu::RenderTarget& FrameResources::target_for(int width, int height, int samples, bool real_gpu) {
+  if (!target_ || !target_->matches(width, height, samples)) {
+    target_.reset();  // free the old storage before allocating the new
+    target_.emplace(width, height, samples, real_gpu ? gpu::ReadbackPath::PixelBuffer : gpu::ReadbackPath::ClientMemory);
+  }
+  return *target_;
+}
+
+gpu::ShadowMap& FrameResources::shadow_map_for(int size) {
+  if (!shadow_map_ || shadow_map_->size() != size) {
+    shadow_map_.reset();
+    shadow_map_.emplace(size);
+  }
+  return *shadow_map_;
+}
+
+gpu::NormalDepthTarget& FrameResources::normal_depth_for(int width, int height, int samples) {
+  if (!normal_depth_ || !normal_depth_->matches(width, height, samples)) {
+    normal_depth_.reset();
+    normal_depth_.emplace(width, height, samples);
+  }
+  return *normal_depth_;
+}
+
+const GpuModel& FrameResources::floor_for(const scene::Bounds& b, const FloorParams& params, bool textured) {
+  const std::shared_ptr<const scene::Texture> image = textured ? params.image : nullptr;
+  if (!floor_ || floor_size_ != params.size || floor_repeat_ != params.texture_repeat || floor_image_ != image ||
+      floor_bounds_.min != b.min || floor_bounds_.max != b.max) {
+    floor_.reset();
+    floor_.emplace(make_floor(b, params.size, params.texture_repeat, image));
+    floor_bounds_ = b;
+    floor_size_ = params.size;
+    floor_repeat_ = params.texture_repeat;
+    floor_image_ = image;
+  }
+  return *floor_;
+}
+
+void FrameResources::draw_fullscreen_triangle() const {
+  glBindVertexArray(fullscreen_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace toond::render

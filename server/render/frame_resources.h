@@ -1,0 +1,49 @@
+#pragma once
+// The GL objects frames draw into and with, kept from one render to the next
+// while their size stays the same: the target, the shadow map, the edge
+// prepass, the floor's mesh and the full-screen triangle's vertex array.
+// Render thread only.
+#include <memory>
+#include <optional>
+
+#include "gpu/normal_depth_target.h"
+#include "gpu/render_target.h"
+#include "gpu/shadow_map.h"
+#include "render/gpu_model.h"
+#include "render/render_params.h"
+
+namespace toond::render {
+
+class FrameResources {
+ public:
+  // `real_gpu`: read back through a pixel buffer (on a CPU rasterizer the
+  // pack happens inside glReadPixels whatever the destination, and straight
+  // into memory measured faster there).
+  gpu::RenderTarget& target_for(int width, int height, int samples, bool real_gpu);
+  gpu::ShadowMap& shadow_map_for(int size);
+  gpu::NormalDepthTarget& normal_depth_for(int width, int height, int samples);
+  // A square ground plane under `bounds`, rebuilt when they or the floor's
+  // parameters change.
+  const GpuModel& floor_for(const scene::Bounds& bounds, const FloorParams& floor, bool textured);
+  // The shadow map and the edge prepass the last shadow pass and prepass
+  // drew.
+  const gpu::ShadowMap& shadow_map() const { return *shadow_map_; }
+  const gpu::NormalDepthTarget& normal_depth() const { return *normal_depth_; }
+  // Binds the vertex array a full-screen triangle is drawn with (core
+  // profile draws need one even when the vertex shader makes its own
+  // positions) and draws it.
+  void draw_fullscreen_triangle() const;
+
+ private:
+  std::optional<gpu::RenderTarget> target_;
+  std::optional<gpu::ShadowMap> shadow_map_;
+  std::optional<gpu::NormalDepthTarget> normal_depth_;
+  gpu::VertexArray fullscreen_vao_ = gpu::VertexArray::create();
+  std::optional<GpuModel> floor_;
+  scene::Bounds floor_bounds_;
+  float floor_size_ = 0;
+  float floor_repeat_ = 0;
+  std::shared_ptr<const scene::Texture> floor_image_;  // the image floor_ was built with
+};
+
+}  // namespace toond::render

@@ -1,0 +1,80 @@
+#include "render/object_draw.h"
+
+#include "render/frame_context.h"
+
+namespace toond::render {
+namespace {
+
+HiddenFaces other_side(HiddenFaces faces) {
+  if (faces == HiddenFaces::None) return HiddenFaces::None;
+  return faces == HiddenFaces::Back ? HiddenFaces::Front : HiddenFaces::Back;
+}
+
+// After an object was drawn with `hidden` skipped: draws its caps with the
+// pass's program and tests but writing nothing, counting the samples that
+// pass, and draws the skipped side (`draw`) only if any did. A skipped face
+// that would have shown is met by its ray after the ray came in through a
+// hole (a closed surface is entered through a face turned toward the
+// viewer), so past a cap turned toward the camera and nearer than that
+// face, which passes every test the face would. `query` keeps the answer.
+void redraw_where_caps_show(const GpuModel& model, std::size_t lod, HiddenFaces hidden, gpu::Query& query,
+                            const std::function<void()>& draw) {
+  GLboolean depth_writes = GL_TRUE;
+  GLint stencil_writes = 0;
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_writes);
+  glGetIntegerv(GL_STENCIL_WRITEMASK, &stencil_writes);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  glStencilMask(0);
+  query = gpu::Query::create(GL_ANY_SAMPLES_PASSED);
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, query.id());
+  model.draw_caps(lod);  // their hidden side skipped like the mesh's: they are wound like it
+  glEndQuery(GL_ANY_SAMPLES_PASSED);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(depth_writes);
+  glStencilMask(static_cast<GLuint>(stencil_writes));
+  glBeginConditionalRender(query.id(), GL_QUERY_WAIT);
+  cull(other_side(hidden));
+  draw();
+  glEndConditionalRender();
+  cull(hidden);
+}
+
+}  // namespace
+
+void cull(HiddenFaces faces) {
+  if (faces == HiddenFaces::None) {
+    glDisable(GL_CULL_FACE);
+    return;
+  }
+  glEnable(GL_CULL_FACE);
+  glCullFace(faces == HiddenFaces::Back ? GL_BACK : GL_FRONT);
+}
+
+void set_object_matrices(gpu::Program& program, const FrameContext& frame, std::size_t i) {
+  program.set("u_model", frame.model_matrices[i]);
+  program.set("u_normal_matrix", frame.normal_matrices[i]);
+}
+
+void draw_objects(const FrameContext& frame, const ObjectDraw& how) {
+  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+    const GpuModel& model = frame.objects[i].model;
+    const FaceSkip skip = how.faces(i);
+    cull(skip.hidden);
+    if (how.program) set_object_matrices(*how.program, frame, i);
+    model.bind();
+    how.draw(i);
+    if (skip.unless_caps_show) {
+      gpu::Query local;
+      gpu::Query& check = how.cap_checks ? (*how.cap_checks)[i] : local;
+      redraw_where_caps_show(model, frame.lod_of(i), skip.hidden, check, [&] { how.draw(i); });
+    }
+  }
+  glDisable(GL_CULL_FACE);
+}
+
+void draw_whole_object(const FrameContext& frame, std::size_t i) {
+  frame.objects[i].model.draw_all(frame.lod_of(i));
+}
+
+}  // namespace toond::render

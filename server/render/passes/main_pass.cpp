@@ -1,0 +1,94 @@
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "render/passes/passes.h"
+#include "render/passes/shading_uniforms.h"
+
+namespace toond::render {
+namespace {
+
+// The shading program's features for one material, on top of the frame's.
+std::vector<std::string> material_defines(const FrameContext& frame, const GpuMaterial& material) {
+  std::vector<std::string> defines = frame.plan.main_defines;
+  if (material.unlit) {
+    // An unlit material shows its base colour as it is: the flat mode.
+    std::replace_if(defines.begin(), defines.end(),
+                    [](const std::string& d) { return d == "MODE_CEL" || d == "MODE_PHONG"; }, "MODE_FLAT");
+  }
+  const bool masked = material.alpha_cutoff >= 0.0f;
+  // A masked material's texture gives its shape: it is sampled even where
+  // the request leaves textures out (base white).
+  if ((frame.plan.sample_textures || masked) && material.texture >= 0) defines.push_back("HAS_TEXTURE");
+  if (masked) defines.push_back("ALPHA_MASK");
+  if (frame.plan.use_normal_maps && material.normal_texture >= 0) defines.push_back("NORMAL_MAP");
+  // A shade colour changes nothing where nothing is lit to blend from.
+  if (frame.params.shade_colors.contains(material.name) && frame.params.mode != ShadingMode::Flat) {
+    defines.push_back("SHADE_COLOR");
+  }
+  return defines;
+}
+
+bool has(const std::vector<std::string>& defines, const char* name) {
+  return std::find(defines.begin(), defines.end(), name) != defines.end();
+}
+
+// Object i, submesh by submesh, each with its material's program.
+void shade_object(PassContext& context, std::size_t i) {
+  const FrameContext& frame = context.frame;
+  const GpuModel& model = frame.objects[i].model;
+  for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
+    const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
+    const std::vector<std::string> defines = material_defines(frame, material);
+    gpu::Program& program = context.programs.get("toon.vert", "toon.frag", defines);
+    program.use();
+    set_shading_uniforms(program, frame);
+    set_object_matrices(program, frame, i);
+    program.set("u_base_color", material.diffuse);
+    if (has(defines, "ALPHA_MASK")) {
+      program.set("u_opacity", material.opacity);
+      program.set("u_alpha_cutoff", material.alpha_cutoff);
+    }
+    if (has(defines, "SHADE_COLOR")) program.set("u_shade_color", frame.params.shade_colors.at(material.name));
+    if (has(defines, "NORMAL_MAP")) {
+      glBindTextureUnit(2, model.texture(material.normal_texture));
+      program.set("u_normal_map", 2);
+    }
+    if (has(defines, "HAS_TEXTURE")) {
+      glBindTextureUnit(0, model.texture(material.texture));
+      program.set("u_diffuse_map", 0);
+    }
+    if (frame.shadow) set_shadow_uniforms(program, context);
+    model.draw(sub);
+  }
+}
+
+}  // namespace
+
+// Shades every object, and marks every covered sample in the stencil so the
+// hull outline can only land outside the model.
+void draw_main_pass(PassContext& context) {
+  const FrameContext& frame = context.frame;
+  const RenderParams& params = frame.params;
+  context.target.bind_for_drawing();
+  glEnable(GL_FRAMEBUFFER_SRGB);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glEnable(GL_STENCIL_TEST);
+  glStencilMask(0xff);
+  glClearColor(params.background.r, params.background.g, params.background.b, params.background.a);
+  glClearDepth(1.0);
+  glClearStencil(0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glStencilFunc(GL_ALWAYS, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  context.main_cap_checks.resize(frame.objects.size());
+  draw_objects(frame, {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
+                       .draw = [&](std::size_t i) { shade_object(context, i); },
+                       .cap_checks = &context.main_cap_checks});
+}
+
+}  // namespace toond::render

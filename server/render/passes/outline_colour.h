@@ -1,0 +1,15 @@
+#pragma once
+// Hull and wireframe lines take their colour the same way: a fixed colour,
+// or per material (its colour darkened, or the texture under the line).
+#include <functional>
+
+#include "render/passes/pass_context.h"
+
+namespace toond::render {
+
+// Draws every object with the outline `program`, skipping the faces
+// `faces(i)` says.
+void draw_outline_objects(PassContext& context, gpu::Program& program,
+                          const std::function<FaceSkip(std::size_t)>& faces);
+
+}  // namespace toond::render

@@ -1,0 +1,25 @@
+#pragma once
+// What a pass draws with: the frame worked out before the first pass, the
+// programs, the kept GL objects and the frame's target. Render thread only.
+#include <vector>
+
+#include "gpu/gl_object.h"
+#include "gpu/program_cache.h"
+#include "gpu/render_target.h"
+#include "render/frame_context.h"
+#include "render/frame_resources.h"
+
+namespace toond::render {
+
+struct PassContext {
+  const FrameContext& frame;
+  gpu::ProgramCache& programs;
+  FrameResources& resources;
+  gpu::RenderTarget& target;
+  // The main pass's cap checks (object_draw.h), read once the image is back
+  // (when their answers are ready anyway) to report which objects drew both
+  // sides.
+  std::vector<gpu::Query> main_cap_checks;
+};
+
+}  // namespace toond::render

@@ -1,0 +1,24 @@
+#pragma once
+// Every pass that draws, one function each, in the order a plan may run
+// them (pass_plan.h). A new pass is a function here, its own file, a line
+// in `drawing_pass` and a line in plan_passes.
+#include "render/pass_plan.h"
+#include "render/passes/pass_context.h"
+
+namespace toond::render {
+
+void draw_shadow_pass(PassContext& context);      // depth from the shadow-casting light
+void draw_main_pass(PassContext& context);        // clears the target, shades, marks the stencil
+void draw_floor_pass(PassContext& context);       // the ground plane, shaded like the model
+void draw_hull_outline_pass(PassContext& context);
+void draw_wireframe_pass(PassContext& context);
+void draw_edge_prepass(PassContext& context);     // normals, distances and coverage per pixel
+void draw_edge_pass(PassContext& context);
+
+using DrawPass = void (*)(PassContext&);
+
+// The function that draws `pass`; nullptr for the passes after drawing
+// (resolve, readback, downsample), which the renderer runs itself.
+DrawPass drawing_pass(Pass pass);
+
+}  // namespace toond::render

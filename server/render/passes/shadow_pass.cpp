@@ -1,0 +1,34 @@
+#include "render/passes/passes.h"
+
+namespace toond::render {
+
+void draw_shadow_pass(PassContext& context) {
+  const FrameContext& frame = context.frame;
+  const RenderParams& params = frame.params;
+  const Light& caster = params.lights[static_cast<std::size_t>(frame.plan.shadow_light)];
+  gpu::ShadowMap& map = context.resources.shadow_map_for(params.shadows.map_size);
+  map.bind_for_drawing();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_STENCIL_TEST);
+  // Slope-scaled bias for surfaces the light grazes; the normal offset in
+  // the main pass handles the rest.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(2.0f, 2.0f);
+  gpu::Program& program = context.programs.get("shadow.vert", "shadow.frag", {});
+  program.use();
+  program.set("u_light_view_projection", glm::mat4(frame.shadow->view_projection));
+  const Viewer light{glm::dvec3(0.0), glm::normalize(caster.direction), true};
+  draw_objects(frame, {.program = &program,
+                       // The nearest surface seen from the light is the same
+                       // with the far side skipped, so the map is too.
+                       .faces = [&](std::size_t i) {
+                         return FaceSkip{frame.culling_for(i, frame.shadow->view_projection, light, false).hidden};
+                       },
+                       .draw = [&](std::size_t i) { draw_whole_object(frame, i); }});
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+}  // namespace toond::render
