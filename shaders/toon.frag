@@ -31,11 +31,45 @@ uniform float u_alpha_cutoff;  // ALPHA_MASK: below this alpha nothing is drawn
 #ifdef SHADE_COLOR
 uniform vec3 u_shade_color;  // linear: the colour of the darkest band
 #endif
-uniform float u_ambient;
-uniform float u_steps;
-uniform vec3 u_eye;         // camera position, same coordinates as v_position
-uniform vec3 u_view_dir;    // orthographic views: the direction the camera looks
-uniform int u_orthographic;
+
+// Everything the frame's shading programs share, one uniform block filled
+// once per frame (render/passes/shading_uniforms.cpp mirrors its std140
+// layout, and ShadingBlock tests the two agree). Each variant reads what
+// its features need.
+layout(std140, binding = 0) uniform FrameShading {
+  vec3 u_eye;  // camera position, same coordinates as v_position
+  float u_ambient;
+  vec3 u_view_dir;  // orthographic views: the direction the camera looks
+  float u_steps;
+  vec3 u_specular_color;
+  float u_shininess;
+  vec3 u_rim_color;
+  float u_rim_power;
+  vec3 u_contour_color;
+  float u_contour_width;  // pixels
+  vec3 u_halftone_ink;
+  float u_halftone_cell;  // pixels
+  float u_specular_threshold;
+  float u_specular_strength;
+  float u_rim_strength;
+  float u_rim_threshold;
+  float u_contour_threshold;  // N·V
+  float u_halftone_angle;     // radians
+  float u_halftone_ink_mix;
+  float u_two_tone_threshold;
+  float u_two_tone_shadow;
+  int u_orthographic;
+  vec3 u_light_vec[8];    // directional: unit vector toward the light; point: position
+  vec3 u_light_color[8];  // linear colour × intensity
+  int u_light_is_point[8];
+  float u_light_radius[8];  // 0: unlimited
+  float u_ramp_at[16];
+  vec3 u_ramp_color[16];
+  mat4 u_shadow_matrix;   // scene (frame) coordinates → light clip space
+  int u_shadow_light;     // which light casts
+  float u_shadow_texel;   // one texel in the map's [0,1] coordinates
+  float u_shadow_offset;  // normal offset in scene units, against acne
+};
 
 // The number of lights is part of the program variant, not a uniform: a
 // loop with a constant bound unrolls, where llvmpipe ran a uniform-bounded
@@ -44,12 +78,6 @@ uniform int u_orthographic;
 #ifndef LIGHT_COUNT
 #define LIGHT_COUNT 0
 #endif
-uniform vec3 u_light_vec[8];     // directional: unit vector toward the light; point: position
-uniform vec3 u_light_color[8];   // linear colour × intensity
-#ifdef HAS_POINT_LIGHTS
-uniform int u_light_is_point[8];
-uniform float u_light_radius[8];  // 0: unlimited
-#endif
 
 #ifdef HAS_TEXTURE
 uniform sampler2D u_diffuse_map;  // sRGB texture: sampling returns linear values
@@ -57,36 +85,9 @@ uniform sampler2D u_diffuse_map;  // sRGB texture: sampling returns linear value
 #ifdef NORMAL_MAP
 uniform sampler2D u_normal_map;   // linear, tangent space, OpenGL convention (+Y = +V)
 #endif
-#ifdef SPECULAR
-uniform vec3 u_specular_color;
-uniform float u_shininess;
-uniform float u_specular_threshold;
-uniform float u_specular_strength;
-#endif
-#ifdef RIM
-uniform vec3 u_rim_color;
-uniform float u_rim_power;
-uniform float u_rim_strength;
-uniform float u_rim_threshold;
-#endif
-#if defined(CONTOUR_EVEN) || defined(CONTOUR_FRESNEL)
-uniform vec3 u_contour_color;
-uniform float u_contour_width;      // pixels
-uniform float u_contour_threshold;  // N·V
-#endif
-#if defined(HALFTONE_DOTS) || defined(HALFTONE_CHECKER)
-uniform float u_halftone_cell;   // pixels
-uniform float u_halftone_angle;  // radians
-uniform vec3 u_halftone_ink;
-uniform float u_halftone_ink_mix;
-#endif
 
 #ifdef SHADOWS
 uniform sampler2DShadow u_shadow_map;
-uniform mat4 u_shadow_matrix;   // scene (frame) coordinates → light clip space
-uniform int u_shadow_light;     // which light casts
-uniform float u_shadow_texel;   // one texel in the map's [0,1] coordinates
-uniform float u_shadow_offset;  // normal offset in scene units, against acne
 #endif
 
 layout(location = 0) out vec4 o_color;
@@ -120,16 +121,11 @@ float shadow_visibility(vec3 n) {
 }
 #endif
 
-#if defined(TWO_TONE)
-uniform float u_two_tone_threshold;
-uniform float u_two_tone_shadow;
-#elif defined(RAMP)
+#if defined(RAMP)
 // Compiled in for the same reason as LIGHT_COUNT.
 #ifndef RAMP_COUNT
 #define RAMP_COUNT 0
 #endif
-uniform float u_ramp_at[16];
-uniform vec3 u_ramp_color[16];
 #endif
 
 #if defined(MODE_CEL) && !defined(TWO_TONE) && !defined(RAMP)

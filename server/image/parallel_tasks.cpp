@@ -101,8 +101,8 @@ class HelperPool {
   }
 
   // An encode asks for help twice in quick succession (palette, then
-  // deflate), and waking a sleeping thread took up to 100 us on the 2-core
-  // virtual machine this was measured on: a helper that just finished
+  // deflate), and waking a sleeping thread costs a large share of a small
+  // frame's encode on two cores (toond_png_bench): a helper that just finished
   // watches for the next job a little while before it sleeps. Kept short,
   // as the watching takes a core from whatever else wants it.
   void wait_briefly_for_work() const {

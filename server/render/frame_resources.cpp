@@ -69,6 +69,15 @@ const GpuModel& FrameResources::floor_for(const scene::Bounds& b, const FloorPar
   return *floor_;
 }
 
+const gpu::Buffer& FrameResources::uniform_buffer(std::size_t size) {
+  if (!uniform_buffer_ || uniform_buffer_size_ != size) {
+    uniform_buffer_ = gpu::Buffer::create();
+    glNamedBufferStorage(uniform_buffer_.id(), static_cast<GLsizeiptr>(size), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    uniform_buffer_size_ = size;
+  }
+  return uniform_buffer_;
+}
+
 void FrameResources::draw_fullscreen_triangle() const {
   glBindVertexArray(fullscreen_vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

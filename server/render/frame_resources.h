@@ -29,6 +29,8 @@ class FrameResources {
   // drew.
   const gpu::ShadowMap& shadow_map() const { return *shadow_map_; }
   const gpu::NormalDepthTarget& normal_depth() const { return *normal_depth_; }
+  // A uniform buffer of `size` bytes, the same from frame to frame.
+  const gpu::Buffer& uniform_buffer(std::size_t size);
   // Binds the vertex array a full-screen triangle is drawn with (core
   // profile draws need one even when the vertex shader makes its own
   // positions) and draws it.
@@ -39,6 +41,8 @@ class FrameResources {
   std::optional<gpu::ShadowMap> shadow_map_;
   std::optional<gpu::NormalDepthTarget> normal_depth_;
   gpu::VertexArray fullscreen_vao_ = gpu::VertexArray::create();
+  gpu::Buffer uniform_buffer_;
+  std::size_t uniform_buffer_size_ = 0;
   std::optional<GpuModel> floor_;
   scene::Bounds floor_bounds_;
   float floor_size_ = 0;

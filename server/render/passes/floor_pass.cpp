@@ -15,7 +15,7 @@ void draw_floor_pass(PassContext& context) {
   if (textured) defines.push_back("HAS_TEXTURE");
   gpu::Program& program = context.programs.get("toon.vert", "toon.frag", defines);
   program.use();
-  set_shading_uniforms(program, frame);
+  set_camera_uniforms(program, frame);
   // The floor is made in frame coordinates already.
   program.set("u_model", glm::mat4(1.0f));
   program.set("u_normal_matrix", glm::mat3(1.0f));

@@ -42,7 +42,7 @@ void shade_object(PassContext& context, std::size_t i) {
     const std::vector<std::string> defines = material_defines(frame, material);
     gpu::Program& program = context.programs.get("toon.vert", "toon.frag", defines);
     program.use();
-    set_shading_uniforms(program, frame);
+    set_camera_uniforms(program, frame);
     set_object_matrices(program, frame, i);
     program.set("u_base_color", material.diffuse);
     if (has(defines, "ALPHA_MASK")) {
@@ -86,6 +86,7 @@ void draw_main_pass(PassContext& context) {
   glStencilFunc(GL_ALWAYS, 1, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   context.main_cap_checks.resize(frame.objects.size());
+  upload_shading_block(context);
   draw_objects(frame, {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
                        .draw = [&](std::size_t i) { shade_object(context, i); },
                        .cap_checks = &context.main_cap_checks});
