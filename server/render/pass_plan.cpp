@@ -49,8 +49,8 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   }
   if (plan.shadow_light >= 0) {
     plan.passes.push_back(Pass::Shadow);
-    plan.main_defines.push_back("SHADOWS");
-    if (params.shadows.pcf > 0) plan.main_defines.push_back("SHADOW_PCF " + std::to_string(params.shadows.pcf));
+    plan.shading.set(ToonFeature::Shadows);
+    plan.shading.shadow_pcf = params.shadows.pcf;
   }
   plan.passes.push_back(Pass::Main);
   if (params.floor.enabled) plan.passes.push_back(Pass::Floor);
@@ -59,57 +59,55 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   const bool band_edges_to_smooth = params.band_aa && !params.lights.empty();
   switch (params.mode) {
     case ShadingMode::Cel:
-      plan.main_defines.push_back("MODE_CEL");
+      plan.shading.set(ToonFeature::ModeCel);
       if (!params.ramp.empty()) {
-        plan.main_defines.push_back("RAMP");
-        plan.main_defines.push_back("RAMP_COUNT " + std::to_string(params.ramp.size()));
+        plan.shading.set(ToonFeature::Ramp);
+        plan.shading.ramp_count = static_cast<int>(params.ramp.size());
       } else if (params.two_tone.enabled) {
-        plan.main_defines.push_back("TWO_TONE");
-        if (band_edges_to_smooth) plan.main_defines.push_back("BAND_AA");
+        plan.shading.set(ToonFeature::TwoTone);
+        plan.shading.set(ToonFeature::BandAa, band_edges_to_smooth);
       } else {
-        if (band_edges_to_smooth) plan.main_defines.push_back("BAND_AA");
+        plan.shading.set(ToonFeature::BandAa, band_edges_to_smooth);
         // Rounding only matters when N·L is quantized into equal bands.
-        plan.main_defines.push_back(params.rounding == Rounding::Floor   ? "ROUND_FLOOR"
-                                    : params.rounding == Rounding::Round ? "ROUND_ROUND"
-                                                                         : "ROUND_CEIL");
+        plan.shading.set(params.rounding == Rounding::Floor   ? ToonFeature::RoundFloor
+                         : params.rounding == Rounding::Round ? ToonFeature::RoundRound
+                                                              : ToonFeature::RoundCeil);
       }
       break;
-    case ShadingMode::Phong: plan.main_defines.push_back("MODE_PHONG"); break;
-    case ShadingMode::Flat: plan.main_defines.push_back("MODE_FLAT"); break;
+    case ShadingMode::Phong: plan.shading.set(ToonFeature::ModePhong); break;
+    case ShadingMode::Flat: plan.shading.set(ToonFeature::ModeFlat); break;
   }
   // Lit modes loop over the lights with a compile-time bound (see toon.frag).
   if (params.mode != ShadingMode::Flat) {
-    plan.main_defines.push_back("LIGHT_COUNT " + std::to_string(params.lights.size()));
+    plan.shading.light_count = static_cast<int>(params.lights.size());
   }
   // A white base ignores the material, so its textures are never read.
   plan.sample_textures = model.has_textures && params.base == BaseColor::Material;
   plan.floor_textured = plan.has(Pass::Floor) && !params.floor.texture.empty() && params.base == BaseColor::Material;
-  if (params.base == BaseColor::White) plan.main_defines.push_back("BASE_WHITE");
-  if (params.base == BaseColor::Material && model.has_vertex_colors) plan.main_defines.push_back("VERTEX_COLOR");
+  plan.shading.set(ToonFeature::BaseWhite, params.base == BaseColor::White);
+  plan.shading.set(ToonFeature::VertexColor, params.base == BaseColor::Material && model.has_vertex_colors);
   // Normal maps only bend the lighting: unlit colour never reads them.
   plan.use_normal_maps = model.has_normal_maps && params.mode != ShadingMode::Flat;
 
   // Lighting effects change nothing on unlit (flat) colour or without lights.
   const bool lit = params.mode != ShadingMode::Flat && !params.lights.empty();
   if (lit) {
-    if (params.light_combine == LightCombine::Sum && params.lights.size() > 1) {
-      plan.main_defines.push_back("COMBINE_SUM");
-    }
+    plan.shading.set(ToonFeature::CombineSum, params.light_combine == LightCombine::Sum && params.lights.size() > 1);
     const bool any_point = std::any_of(params.lights.begin(), params.lights.end(),
                                        [](const Light& l) { return l.kind == LightKind::Point; });
-    if (any_point) plan.main_defines.push_back("HAS_POINT_LIGHTS");
-    if (params.specular.enabled && params.specular.strength > 0.0f) plan.main_defines.push_back("SPECULAR");
+    plan.shading.set(ToonFeature::HasPointLights, any_point);
+    plan.shading.set(ToonFeature::Specular, params.specular.enabled && params.specular.strength > 0.0f);
   }
   if (params.mode != ShadingMode::Flat && params.rim.enabled && params.rim.strength > 0.0f) {
-    plan.main_defines.push_back("RIM");
-    if (params.rim.mask == RimMask::Lit) plan.main_defines.push_back("RIM_MASK_LIT");
-    if (params.rim.mask == RimMask::Shadow) plan.main_defines.push_back("RIM_MASK_SHADOW");
+    plan.shading.set(ToonFeature::Rim);
+    plan.shading.set(ToonFeature::RimMaskLit, params.rim.mask == RimMask::Lit);
+    plan.shading.set(ToonFeature::RimMaskShadow, params.rim.mask == RimMask::Shadow);
   }
   if (params.halftone.enabled && params.mode != ShadingMode::Flat) {
-    plan.main_defines.push_back(params.halftone.style == HalftoneStyle::Dots ? "HALFTONE_DOTS" : "HALFTONE_CHECKER");
+    plan.shading.set(params.halftone.style == HalftoneStyle::Dots ? ToonFeature::HalftoneDots : ToonFeature::HalftoneChecker);
   }
   if (params.contour.enabled) {
-    plan.main_defines.push_back(params.contour.style == ContourStyle::Even ? "CONTOUR_EVEN" : "CONTOUR_FRESNEL");
+    plan.shading.set(params.contour.style == ContourStyle::Even ? ToonFeature::ContourEven : ToonFeature::ContourFresnel);
   }
 
   if (params.outline.any()) {
@@ -125,10 +123,10 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
     }
     switch (params.outline.color_mode) {
       case OutlineColorMode::Fixed: break;
-      case OutlineColorMode::Material: plan.outline_defines.push_back("OUTLINE_MATERIAL"); break;
+      case OutlineColorMode::Material: plan.outline.set(OutlineFeature::Material); break;
       case OutlineColorMode::Texture:
         // Without textures the texture mode falls back to the material colour.
-        plan.outline_defines.push_back(plan.sample_textures ? "OUTLINE_TEXTURE" : "OUTLINE_MATERIAL");
+        plan.outline.set(plan.sample_textures ? OutlineFeature::Texture : OutlineFeature::Material);
         break;
     }
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/render_params.h"
+#include "render/shader_variant.h"
 
 namespace toond::render {
 
@@ -34,10 +35,11 @@ struct ModelTraits {
 
 struct PassPlan {
   std::vector<Pass> passes;
-  // #defines shared by every main-pass program of this render.
-  std::vector<std::string> main_defines;
-  // #defines of the hull outline programs (where its colour comes from).
-  std::vector<std::string> outline_defines;
+  // The features every main-pass program of this render shares (a material
+  // may add its own).
+  ToonVariant shading;
+  // Where the hull's and the wireframe's colour comes from.
+  OutlineVariant outline;
   bool sample_textures = false;
   bool use_normal_maps = false;  // per material: NORMAL_MAP where it has one
   bool floor_textured = false;   // the floor pass samples floor.texture

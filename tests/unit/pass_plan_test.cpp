@@ -15,8 +15,10 @@ RenderParams params(const json& request) {
   return RenderParams::from_json(proto::ParamSchema::render_params().validate_and_complete(request));
 }
 
+// Whether the main pass's programs get #define d.
 bool has_define(const PassPlan& plan, const std::string& d) {
-  return std::find(plan.main_defines.begin(), plan.main_defines.end(), d) != plan.main_defines.end();
+  const std::vector<std::string> defines = plan.shading.defines();
+  return std::find(defines.begin(), defines.end(), d) != defines.end();
 }
 
 TEST(PassPlan, DefaultsDrawOutlineAndResolve) {
@@ -79,7 +81,8 @@ TEST(PassPlan, TheLightCountIsPartOfTheVariant) {
   EXPECT_TRUE(has_define(plan_passes(params(two), {}), "LIGHT_COUNT 2"));
   EXPECT_TRUE(has_define(plan_passes(params({{"lights", json::array()}}), {}), "LIGHT_COUNT 0"));
   const PassPlan flat = plan_passes(params({{"shading", {{"mode", "flat"}}}}), {});
-  EXPECT_TRUE(std::none_of(flat.main_defines.begin(), flat.main_defines.end(),
+  const std::vector<std::string> flat_defines = flat.shading.defines();
+  EXPECT_TRUE(std::none_of(flat_defines.begin(), flat_defines.end(),
                            [](const std::string& d) { return d.rfind("LIGHT_COUNT", 0) == 0; }));
   const json ramp = {{"shading", {{"ramp", {{{"at", -1}, {"value", 0.2}}, {{"at", 0.5}, {"value", 1}}}}}}};
   EXPECT_TRUE(has_define(plan_passes(params(ramp), {}), "RAMP_COUNT 2"));

@@ -11,9 +11,9 @@ void draw_floor_pass(PassContext& context) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   const bool textured = frame.plan.floor_textured && params.image;
   const GpuModel& floor = context.resources.floor_for(frame.scene.bounds, params, textured);
-  std::vector<std::string> defines = frame.plan.main_defines;
-  if (textured) defines.push_back("HAS_TEXTURE");
-  gpu::Program& program = context.programs.get("toon.vert", "toon.frag", defines);
+  ToonVariant variant = frame.plan.shading;
+  variant.set(ToonFeature::HasTexture, textured);
+  gpu::Program& program = context.programs.get("toon.vert", "toon.frag", variant.defines());
   program.use();
   set_camera_uniforms(program, frame);
   // The floor is made in frame coordinates already.

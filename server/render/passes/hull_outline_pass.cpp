@@ -30,7 +30,7 @@ void draw_hull_outline_pass(PassContext& context) {
   context.target.bind_for_drawing();
   glStencilFunc(GL_NOTEQUAL, 1, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  gpu::Program& program = context.programs.get("hull.vert", "hull.frag", frame.plan.outline_defines);
+  gpu::Program& program = context.programs.get("hull.vert", "hull.frag", frame.plan.outline.defines());
   program.use();
   program.set("u_view_projection", frame.view_projection);
   // projection[1][1] maps a view-space height at depth w to NDC, and NDC

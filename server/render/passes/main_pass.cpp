@@ -1,7 +1,3 @@
-#include <algorithm>
-#include <string>
-#include <vector>
-
 #include "render/passes/passes.h"
 #include "render/passes/shading_uniforms.h"
 
@@ -9,28 +5,20 @@ namespace toond::render {
 namespace {
 
 // The shading program's features for one material, on top of the frame's.
-std::vector<std::string> material_defines(const FrameContext& frame, const GpuMaterial& material) {
-  std::vector<std::string> defines = frame.plan.main_defines;
-  if (material.unlit) {
-    // An unlit material shows its base colour as it is: the flat mode.
-    std::replace_if(defines.begin(), defines.end(),
-                    [](const std::string& d) { return d == "MODE_CEL" || d == "MODE_PHONG"; }, "MODE_FLAT");
-  }
+ToonVariant material_variant(const FrameContext& frame, const GpuMaterial& material) {
+  ToonVariant variant = frame.plan.shading;
+  // An unlit material shows its base colour as it is: the flat mode.
+  if (material.unlit) variant.set_mode(ToonFeature::ModeFlat);
   const bool masked = material.alpha_cutoff >= 0.0f;
   // A masked material's texture gives its shape: it is sampled even where
   // the request leaves textures out (base white).
-  if ((frame.plan.sample_textures || masked) && material.texture >= 0) defines.push_back("HAS_TEXTURE");
-  if (masked) defines.push_back("ALPHA_MASK");
-  if (frame.plan.use_normal_maps && material.normal_texture >= 0) defines.push_back("NORMAL_MAP");
+  variant.set(ToonFeature::HasTexture, (frame.plan.sample_textures || masked) && material.texture >= 0);
+  variant.set(ToonFeature::AlphaMask, masked);
+  variant.set(ToonFeature::NormalMap, frame.plan.use_normal_maps && material.normal_texture >= 0);
   // A shade colour changes nothing where nothing is lit to blend from.
-  if (frame.params.shade_colors.contains(material.name) && frame.params.mode != ShadingMode::Flat) {
-    defines.push_back("SHADE_COLOR");
-  }
-  return defines;
-}
-
-bool has(const std::vector<std::string>& defines, const char* name) {
-  return std::find(defines.begin(), defines.end(), name) != defines.end();
+  variant.set(ToonFeature::ShadeColor,
+              frame.params.shade_colors.contains(material.name) && frame.params.mode != ShadingMode::Flat);
+  return variant;
 }
 
 // Object i, submesh by submesh, each with its material's program.
@@ -39,22 +27,22 @@ void shade_object(PassContext& context, std::size_t i) {
   const GpuModel& model = frame.objects[i].model;
   for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
     const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
-    const std::vector<std::string> defines = material_defines(frame, material);
-    gpu::Program& program = context.programs.get("toon.vert", "toon.frag", defines);
+    const ToonVariant variant = material_variant(frame, material);
+    gpu::Program& program = context.programs.get("toon.vert", "toon.frag", variant.defines());
     program.use();
     set_camera_uniforms(program, frame);
     set_object_matrices(program, frame, i);
     program.set("u_base_color", material.diffuse);
-    if (has(defines, "ALPHA_MASK")) {
+    if (variant.has(ToonFeature::AlphaMask)) {
       program.set("u_opacity", material.opacity);
       program.set("u_alpha_cutoff", material.alpha_cutoff);
     }
-    if (has(defines, "SHADE_COLOR")) program.set("u_shade_color", frame.params.shade_colors.at(material.name));
-    if (has(defines, "NORMAL_MAP")) {
+    if (variant.has(ToonFeature::ShadeColor)) program.set("u_shade_color", frame.params.shade_colors.at(material.name));
+    if (variant.has(ToonFeature::NormalMap)) {
       glBindTextureUnit(2, model.texture(material.normal_texture));
       program.set("u_normal_map", 2);
     }
-    if (has(defines, "HAS_TEXTURE")) {
+    if (variant.has(ToonFeature::HasTexture)) {
       glBindTextureUnit(0, model.texture(material.texture));
       program.set("u_diffuse_map", 0);
     }

@@ -26,7 +26,7 @@ void draw_outline_objects(PassContext& context, gpu::Program& program,
   const FrameContext& frame = context.frame;
   program.set("u_outline_color", frame.params.outline.color);
   program.set("u_darken", frame.params.outline.darken);
-  const bool per_material = !frame.plan.outline_defines.empty();
+  const bool per_material = frame.plan.outline.per_material();
   draw_objects(frame, {.program = &program,
                        .faces = faces,
                        .draw = [&](std::size_t i) {

@@ -10,10 +10,10 @@ void draw_wireframe_pass(PassContext& context) {
   const FrameContext& frame = context.frame;
   context.target.bind_for_drawing();
   glDisable(GL_STENCIL_TEST);
-  std::vector<std::string> defines = frame.plan.outline_defines;
-  defines.push_back("LINE_SEGMENT");
+  OutlineVariant variant = frame.plan.outline;
+  variant.set(OutlineFeature::LineSegment);
   gpu::Program& program =
-      context.programs.get(std::vector<std::string>{"wire.vert", "wire.geom", "hull.frag"}, defines);
+      context.programs.get(std::vector<std::string>{"wire.vert", "wire.geom", "hull.frag"}, variant.defines());
   program.use();
   program.set("u_view_projection", frame.view_projection);
   program.set("u_viewport", glm::vec2(static_cast<float>(frame.draw_width), static_cast<float>(frame.draw_height)));
