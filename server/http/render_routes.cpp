@@ -16,7 +16,7 @@
 #include "http/store_upload.h"
 #include "image/png_codec.h"
 #include "render/ramp_image.h"
-#include "render/render_budget.h"
+#include "http/render_budget.h"
 #include "render/sheet_atlas.h"
 #include "render/sheet_layout.h"
 #include "param_schema.h"
@@ -155,7 +155,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     render::RenderJob job;
     const nlohmann::json completed = schema.validate_and_complete(proto::Presets::builtin().expand(request));
     job.params = render::RenderParams::from_json(completed);
-    render::check_render_budget(job.params, context.limits.render);
+    check_render_budget(job.params, context.limits.render);
     if (!job.params.objects.empty()) {
       for (std::size_t i = 0; i < job.params.objects.size(); ++i) {
         const render::SceneObject& object = job.params.objects[i];

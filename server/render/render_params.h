@@ -16,6 +16,12 @@
 
 namespace toond::render {
 
+// sRGB transfer function, for colours given in the wire format.
+float srgb_to_linear(float c);
+glm::vec3 srgb_to_linear(const glm::vec3& c);
+
+// The members' initial values are the schema's defaults (colours as the
+// schema writes them, made linear); RenderParamsDefaults checks each.
 enum class ShadingMode { Cel, Phong, Flat };
 enum class BaseColor { Material, White };
 enum class Rounding { Ceil, Floor, Round };
@@ -23,8 +29,8 @@ enum class Projection { Perspective, Orthographic };
 
 struct CameraParams {
   Projection projection = Projection::Perspective;
-  double yaw_deg = 0;
-  double pitch_deg = 0;
+  double yaw_deg = 30;
+  double pitch_deg = 15;
   double fov_deg = 35;
   double distance = 0;  // 0: fit to the model's bounds
   double zoom = 1;      // divides the fitted distance or frame; ignored with distance set
@@ -92,7 +98,7 @@ struct ContourParams {
   ContourStyle style = ContourStyle::Even;
   float width_px = 1.5f;
   float threshold = 0.2f;
-  glm::vec3 color{0.0f};  // linear
+  glm::vec3 color = srgb_to_linear(glm::vec3(0.06f, 0.05f, 0.08f));  // linear
 };
 
 struct ShadowParams {
@@ -104,7 +110,7 @@ struct ShadowParams {
 
 struct FloorParams {
   bool enabled = false;
-  glm::vec3 color{0.7f};  // linear
+  glm::vec3 color = srgb_to_linear(glm::vec3(0.85f, 0.85f, 0.82f));  // linear
   float size = 4;         // half side, in bounding radii
   std::string texture;    // bundle path; empty: plain colour
   float texture_repeat = 4;
@@ -127,7 +133,7 @@ struct OutlineParams {
   bool edges = false;
   float width = 2;  // in `units`
   OutlineUnits units = OutlineUnits::Pixels;
-  glm::vec3 color{0.0f};  // linear
+  glm::vec3 color = srgb_to_linear(glm::vec3(0.06f, 0.05f, 0.08f));  // linear
   OutlineColorMode color_mode = OutlineColorMode::Fixed;
   float darken = 0.6f;
   OutlineCreases creases = OutlineCreases::Auto;
@@ -164,7 +170,7 @@ struct RenderParams {
   std::vector<SceneObject> objects;  // empty: `model` alone, untransformed
   int width = 512;
   int height = 512;
-  glm::vec4 background{1.0f};  // linear rgb, alpha
+  glm::vec4 background{srgb_to_linear(glm::vec3(0.92f, 0.92f, 0.94f)), 1.0f};  // linear rgb, alpha
   CameraParams camera;
   std::vector<Light> lights;
   LightCombine light_combine = LightCombine::Max;
@@ -187,7 +193,7 @@ struct RenderParams {
   ShadowParams shadows;
   FloorParams floor;
   OutlineParams outline;
-  int msaa = 1;
+  int msaa = 4;
   int supersample = 1;
   bool lod_auto = true;       // false: `lod` "full", every triangle
   double lod_error_px = 0.5;  // the most a level's error may project to, output pixels
@@ -196,9 +202,5 @@ struct RenderParams {
 
   static RenderParams from_json(const nlohmann::json& completed);
 };
-
-// sRGB transfer function, for colours given in the wire format.
-float srgb_to_linear(float c);
-glm::vec3 srgb_to_linear(const glm::vec3& c);
 
 }  // namespace toond::render

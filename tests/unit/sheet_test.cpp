@@ -10,7 +10,7 @@
 #include "param_schema.h"
 #include "presets.h"
 #include "render/camera.h"
-#include "render/render_budget.h"
+#include "http/render_budget.h"
 #include "render/sheet_atlas.h"
 #include "render/sheet_layout.h"
 
@@ -98,6 +98,7 @@ TEST(SheetFraming, EveryFrameSharesTheWidestFit) {
     CameraParams end_on;
     end_on.projection = projection;
     end_on.yaw_deg = 90;
+    end_on.pitch_deg = 0;  // level, like the framed views below
     CameraParams side_on = end_on;
     side_on.yaw_deg = 0;
     const CameraSetup alone_end = fit_camera(end_on, long_box, 1.0);
@@ -175,7 +176,8 @@ TEST(SheetAtlas, FollowsTexturePackersHashLayoutWithYawAndPitch) {
 }
 
 TEST(SheetBudget, TheWholeSheetCountsAgainstTheLimits) {
-  RenderLimits limits;
+  using http::check_render_budget;
+  http::RenderLimits limits;
   limits.max_output_pixels = 64 * 64 * 8;
   limits.max_samples = 64 * 64 * 8 * 4;
   const RenderParams fits = params_of({{"width", 64}, {"height", 64}, {"sheet", {{"frames", 8}}}});

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace toond::render {
+namespace toond::http {
 
 struct RenderLimits {
   // width × height of the image answered.
@@ -17,4 +17,4 @@ struct RenderLimits {
   std::size_t max_objects = 16;  // the schema's most
 };
 
-}  // namespace toond::render
+}  // namespace toond::http

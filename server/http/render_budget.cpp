@@ -1,11 +1,14 @@
-#include "render/render_budget.h"
+#include "http/render_budget.h"
 
 #include <string>
 
 #include "limit_error.h"
 #include "render/sheet_layout.h"
 
-namespace toond::render {
+namespace toond::http {
+
+using render::layout_sheet;
+using render::SheetLayout;
 namespace {
 
 std::string count(double n) { return std::to_string(static_cast<unsigned long long>(n)); }
@@ -79,4 +82,4 @@ void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
   }
 }
 
-}  // namespace toond::render
+}  // namespace toond::http

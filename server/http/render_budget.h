@@ -1,8 +1,12 @@
 #pragma once
-#include "render/render_limits.h"
+// Admission of a render request against the daemon's --max-* limits:
+// an HTTP concern, so its errors may name the flags.
+#include "http/render_limits.h"
 #include "render/render_params.h"
 
-namespace toond::render {
+namespace toond::http {
+
+using render::RenderParams;
 
 // The largest framebuffer side GL is asked for, whatever the limits say.
 inline constexpr int kMaxDrawnSide = 16384;
@@ -14,4 +18,4 @@ inline constexpr int kMaxDrawnSide = 16384;
 // and all its frames' samples count too.
 void check_render_budget(const RenderParams& params, const RenderLimits& limits = {});
 
-}  // namespace toond::render
+}  // namespace toond::http
