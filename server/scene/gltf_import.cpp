@@ -21,6 +21,7 @@
 #include "scene/data_uri.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_container.h"
+#include "scene/gltf_draco.h"
 #include "scene/gltf_json.h"
 #include "scene/gltf_meshopt.h"
 #include "scene/import_error.h"
@@ -34,9 +35,9 @@ using namespace gltf_json;
 
 // Extensions whose meaning the importer reads; a file that requires any
 // other is refused by name.
-constexpr std::array<std::string_view, 5> kReadExtensions = {
+constexpr std::array<std::string_view, 6> kReadExtensions = {
     "KHR_mesh_quantization", "KHR_texture_transform", "EXT_texture_webp", "KHR_materials_unlit",
-    "EXT_meshopt_compression",
+    "EXT_meshopt_compression", "KHR_draco_mesh_compression",
 };
 
 bool reads_extension(std::string_view name) {
@@ -182,18 +183,21 @@ class GltfImporter {
     parse_json(container.json);
     check_required_extensions();
     warn_unread_extensions();
+    draco_primitives_ = take_draco_primitives(doc_, path_);
     BufferSources sources = prepare_buffers(container.bin);
     // Images are decoded only for the materials that use them, by the
     // importer's own decoders with their limits.
     images_ = doc_.contains("images") ? std::move(doc_["images"]) : json::array();
     doc_.erase("images");
     load(sources);
+    restore_draco_indices(draco_primitives_, gltf_);
     check_import_time(limits_, "parsing " + path_);
     meshopt_views_ = std::make_unique<MeshoptViews>(doc_, gltf_, meshopt_fallbacks_, path_, limits_);
     reader_ = std::make_unique<GltfAccessorReader>(gltf_, path_, [this](int view) { return decoded_view(view); });
 
     const std::vector<MeshInstance> instances = collect_instances();
     check_counts(instances);
+    decode_draco(instances);
     MeshSource source = make_source(instances);
     source.limits = limits_;
     model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
@@ -210,7 +214,24 @@ class GltfImporter {
   [[noreturn]] void fail(const std::string& message) const { throw ImportError(path_, path_ + ": " + message); }
 
   // The bytes of a buffer view that a compression extension holds.
-  std::optional<std::span<const std::uint8_t>> decoded_view(int view) { return meshopt_views_->bytes(view); }
+  std::optional<std::span<const std::uint8_t>> decoded_view(int view) {
+    if (const auto it = draco_views_.find(view); it != draco_views_.end()) return it->second;
+    return meshopt_views_->bytes(view);
+  }
+
+  // The Draco primitives of the drawn meshes, each decoded once however
+  // often its mesh is placed. Runs after check_counts, so the counts the
+  // decoded meshes must match are within the limits.
+  void decode_draco(const std::vector<MeshInstance>& instances) {
+    std::set<int> drawn;
+    for (const MeshInstance& instance : instances) drawn.insert(instance.mesh);
+    for (const DracoPrimitive& primitive : draco_primitives_) {
+      if (drawn.contains(primitive.mesh)) {
+        decode_draco_primitive(primitive, gltf_, *reader_, draco_views_, limits_, path_);
+      }
+    }
+    if (!draco_primitives_.empty()) check_import_time(limits_, "decoding Draco meshes");
+  }
 
   void parse_json(std::string_view text) {
     try {
@@ -808,6 +829,8 @@ class GltfImporter {
   json doc_;
   json images_;
   tinygltf::Model gltf_;
+  std::vector<DracoPrimitive> draco_primitives_;
+  std::map<int, std::vector<std::uint8_t>> draco_views_;
   std::set<int> meshopt_fallbacks_;
   std::unique_ptr<MeshoptViews> meshopt_views_;
   std::unique_ptr<GltfAccessorReader> reader_;

@@ -500,8 +500,9 @@ TEST(GltfMalformed, RequiredExtensionsNotReadAreNamed) {
   parts.json["extensionsRequired"] = {"KHR_materials_variants"};
   const std::string error = import_error(test::pack_gltf(parts, GltfForm::Glb));
   EXPECT_NE(error.find("requires the glTF extension 'KHR_materials_variants'"), std::string::npos) << error;
-  // The answer lists what is read.
+  // The answer lists what is read, the compression extensions among it.
   EXPECT_NE(error.find("EXT_meshopt_compression"), std::string::npos) << error;
+  EXPECT_NE(error.find("KHR_draco_mesh_compression"), std::string::npos) << error;
 }
 
 TEST(GltfMalformed, NotJsonOrNotVersionTwoIsRefused) {
