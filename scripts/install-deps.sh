@@ -13,8 +13,9 @@ packages=(
   libglm-dev libtinyobjloader-dev libstb-dev libpng-dev zlib1g-dev
   # vertex-cache order and levels of detail at import; glTF's meshopt buffers
   libmeshoptimizer-dev
-  # glTF 2.0 / GLB import (JSON and container; images go through our decoders)
-  libtinygltf-dev libwebp-dev
+  # glTF 2.0 / GLB import (JSON and container; images go through our decoders);
+  # Draco for KHR_draco_mesh_compression, decoded in the toond-draco-decode helper
+  libtinygltf-dev libwebp-dev libdraco-dev
   # HTTP + JSON + schema validation
   libcpp-httplib-dev libssl-dev nlohmann-json3-dev libvalijson-dev
   # tests, shader checks, benchmarks; Pillow decodes our PNGs as a second opinion

@@ -108,8 +108,7 @@ std::span<const std::uint8_t> GltfAccessorReader::view(int view, const std::stri
                                  ", which does not exist");
   }
   if (view_override_) {
-    const auto bytes = view_override_(view);
-    if (!bytes.empty()) return bytes;
+    if (const auto bytes = view_override_(view)) return *bytes;
   }
   const tinygltf::BufferView& v = model_.bufferViews[static_cast<std::size_t>(view)];
   if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= model_.buffers.size()) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -20,9 +21,9 @@ namespace toond::scene {
 class GltfAccessorReader {
  public:
   // The bytes of buffer view `view`, when something other than the plain
-  // buffer slice holds them (a decompressed view); an empty function or an
-  // empty span means the buffer slice.
-  using ViewOverride = std::function<std::span<const std::uint8_t>(int view)>;
+  // buffer slice holds them (a decompressed view); an empty function or
+  // nullopt means the buffer slice.
+  using ViewOverride = std::function<std::optional<std::span<const std::uint8_t>>(int view)>;
 
   // `file` is the bundle path named in errors.
   GltfAccessorReader(const tinygltf::Model& model, std::string file, ViewOverride view_override = {});

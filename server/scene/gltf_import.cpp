@@ -21,6 +21,9 @@
 #include "scene/data_uri.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_container.h"
+#include "scene/gltf_draco.h"
+#include "scene/gltf_json.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/import_error.h"
 #include "scene/mesh_builder.h"
 #include "scene/texture_decode.h"
@@ -28,45 +31,17 @@
 namespace toond::scene {
 namespace {
 
-using nlohmann::json;
+using namespace gltf_json;
 
 // Extensions whose meaning the importer reads; a file that requires any
 // other is refused by name.
-constexpr std::array<std::string_view, 4> kReadExtensions = {
-    "KHR_mesh_quantization",
-    "KHR_texture_transform",
-    "EXT_texture_webp",
-    "KHR_materials_unlit",
+constexpr std::array<std::string_view, 6> kReadExtensions = {
+    "KHR_mesh_quantization", "KHR_texture_transform", "EXT_texture_webp", "KHR_materials_unlit",
+    "EXT_meshopt_compression", "KHR_draco_mesh_compression",
 };
-
-std::string in_quotes(std::string_view s) { return "'" + std::string(s) + "'"; }
 
 bool reads_extension(std::string_view name) {
   return std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end();
-}
-
-// A member of a JSON object, or null when `object` is not one or lacks it.
-const json& member(const json& object, std::string_view key) {
-  static const json kNull;
-  if (!object.is_object()) return kNull;
-  const auto it = object.find(key);
-  return it == object.end() ? kNull : *it;
-}
-
-const json& element(const json& array, std::size_t index) {
-  static const json kNull;
-  return array.is_array() && index < array.size() ? array[index] : kNull;
-}
-
-double number_or(const json& value, double fallback) {
-  return value.is_number() && std::isfinite(value.get<double>()) ? value.get<double>() : fallback;
-}
-
-// A non-negative integer that fits an int, or `fallback`.
-int index_or(const json& value, int fallback) {
-  if (!value.is_number_integer() && !value.is_number_unsigned()) return fallback;
-  const auto v = value.get<std::int64_t>();
-  return v >= 0 && v <= INT32_MAX ? static_cast<int>(v) : fallback;
 }
 
 std::string percent_decoded(std::string_view uri) {
@@ -208,17 +183,21 @@ class GltfImporter {
     parse_json(container.json);
     check_required_extensions();
     warn_unread_extensions();
+    draco_primitives_ = take_draco_primitives(doc_, path_);
     BufferSources sources = prepare_buffers(container.bin);
     // Images are decoded only for the materials that use them, by the
     // importer's own decoders with their limits.
     images_ = doc_.contains("images") ? std::move(doc_["images"]) : json::array();
     doc_.erase("images");
     load(sources);
+    restore_draco_indices(draco_primitives_, gltf_);
     check_import_time(limits_, "parsing " + path_);
-    reader_ = std::make_unique<GltfAccessorReader>(gltf_, path_);
+    meshopt_views_ = std::make_unique<MeshoptViews>(doc_, gltf_, meshopt_fallbacks_, path_, limits_);
+    reader_ = std::make_unique<GltfAccessorReader>(gltf_, path_, [this](int view) { return decoded_view(view); });
 
     const std::vector<MeshInstance> instances = collect_instances();
     check_counts(instances);
+    decode_draco(instances);
     MeshSource source = make_source(instances);
     source.limits = limits_;
     model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
@@ -233,6 +212,26 @@ class GltfImporter {
 
  private:
   [[noreturn]] void fail(const std::string& message) const { throw ImportError(path_, path_ + ": " + message); }
+
+  // The bytes of a buffer view that a compression extension holds.
+  std::optional<std::span<const std::uint8_t>> decoded_view(int view) {
+    if (const auto it = draco_views_.find(view); it != draco_views_.end()) return it->second;
+    return meshopt_views_->bytes(view);
+  }
+
+  // The Draco primitives of the drawn meshes, each decoded once however
+  // often its mesh is placed. Runs after check_counts, so the counts the
+  // decoded meshes must match are within the limits.
+  void decode_draco(const std::vector<MeshInstance>& instances) {
+    std::set<int> drawn;
+    for (const MeshInstance& instance : instances) drawn.insert(instance.mesh);
+    for (const DracoPrimitive& primitive : draco_primitives_) {
+      if (drawn.contains(primitive.mesh)) {
+        decode_draco_primitive(primitive, gltf_, *reader_, draco_views_, limits_, path_);
+      }
+    }
+    if (!draco_primitives_.empty()) check_import_time(limits_, "decoding Draco meshes");
+  }
 
   void parse_json(std::string_view text) {
     try {
@@ -253,8 +252,10 @@ class GltfImporter {
       if (!name.is_string()) continue;
       const auto text = name.get<std::string>();
       if (!reads_extension(text)) {
+        std::string known;
+        for (const std::string_view read : kReadExtensions) known += (known.empty() ? "" : ", ") + std::string(read);
         fail("the file requires the glTF extension " + in_quotes(text) + ", which toond does not read (it reads " +
-             "KHR_mesh_quantization, KHR_texture_transform and EXT_texture_webp)");
+             known + ")");
       }
     }
   }
@@ -291,14 +292,25 @@ class GltfImporter {
     return bundle_.resolve(path_, decoded);
   }
 
+  bool uses_extension(std::string_view name) const {
+    for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
+      const json& names = member(doc_, list);
+      if (names.is_array() && std::find(names.begin(), names.end(), json(std::string(name))) != names.end()) return true;
+    }
+    return false;
+  }
+
   // Gives every buffer a name the file-system callbacks serve: the GLB's
   // BIN chunk, a decoded data: URI, or a bundle file, cut to the buffer's
-  // declared length.
+  // declared length. A buffer that only stands in for EXT_meshopt_compression
+  // views is not loaded: those views are decoded from their compressed
+  // bytes, even where the stand-in has a file of its own.
   BufferSources prepare_buffers(const std::optional<std::string_view>& bin) {
     BufferSources sources;
     json& buffers = doc_["buffers"];
     if (buffers.is_null()) buffers = json::array();
     if (!buffers.is_array()) fail("'buffers' is not a list");
+    const bool uses_meshopt = uses_extension("EXT_meshopt_compression");
     for (std::size_t i = 0; i < buffers.size(); ++i) {
       json& buffer = buffers[i];
       const std::string role = "buffer " + std::to_string(i);
@@ -307,6 +319,17 @@ class GltfImporter {
       const auto length = length_value.get<std::uint64_t>();
       const std::string name = "toond-buffer-" + std::to_string(i);
       const json& uri_value = member(buffer, "uri");
+      const bool has_data = uri_value.is_string() || (i == 0 && bin);
+      if (is_meshopt_fallback(buffer, has_data, uses_meshopt)) {
+        // tinygltf refuses a buffer without bytes; one zero byte stands in,
+        // and MeshoptViews refuses any view that would read it.
+        static constexpr char kStandIn[1] = {0};
+        sources.views[name] = std::string_view(kStandIn, 1);
+        buffer["byteLength"] = 1;
+        buffer["uri"] = name;
+        meshopt_fallbacks_.insert(static_cast<int>(i));
+        continue;
+      }
       std::string_view bytes;
       if (uri_value.is_string() && is_data_uri(uri_value.get<std::string>())) {
         auto decoded = decode_data_uri(uri_value.get<std::string>());
@@ -806,6 +829,10 @@ class GltfImporter {
   json doc_;
   json images_;
   tinygltf::Model gltf_;
+  std::vector<DracoPrimitive> draco_primitives_;
+  std::map<int, std::vector<std::uint8_t>> draco_views_;
+  std::set<int> meshopt_fallbacks_;
+  std::unique_ptr<MeshoptViews> meshopt_views_;
   std::unique_ptr<GltfAccessorReader> reader_;
   ImportWarnings warnings_;
   std::map<std::string, std::size_t> ignored_;

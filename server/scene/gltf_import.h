@@ -23,10 +23,12 @@ namespace toond::scene {
 //   normalTexture the normal map; emissiveFactor is added to the base colour
 //   (clamped to 1), the approximation a toon shade without glow allows;
 // - extensions: KHR_mesh_quantization, KHR_texture_transform (of the base
-//   colour texture), EXT_texture_webp.
+//   colour texture), EXT_texture_webp, KHR_materials_unlit,
+//   EXT_meshopt_compression (gltf_meshopt.h) and KHR_draco_mesh_compression
+//   (gltf_draco.h; decoded in a helper process, draco_decoder.h).
 // What is not read (animations, skins, morph targets, cameras, lights,
-// metallic-roughness and occlusion, alpha modes, unlit, points and lines) is
-// named in Model::warnings. An extension in extensionsRequired that is not
+// metallic-roughness and occlusion, BLEND, points and lines) is named in
+// Model::warnings. An extension in extensionsRequired that is not
 // read is an ImportError naming it, checked before anything else is read.
 // Every URI must name a file of the bundle or be a data: URI; one that would
 // leave the bundle (a scheme such as http:, an absolute path, `..` above the

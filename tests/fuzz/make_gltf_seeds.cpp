@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/gltf_meshopt_writer.h"
 #include "support/gltf_writer.h"
 
 namespace {
@@ -79,6 +80,35 @@ int main(int argc, char** argv) {
       {"KHR_texture_transform", {{"offset", {0.5, 0}}, {"rotation", 0.3}, {"scale", {2, 2}}}}};
   parts.json["extensionsRequired"] = {"KHR_texture_transform"};
   save("sparse-transform.glb", pack_gltf(parts, GltfForm::Glb)[0].second);
+
+  // EXT_meshopt_compression as gltfpack writes it: every mesh view a
+  // stream in the binary chunk, the views themselves in a stand-in buffer
+  // without data.
+  save("meshopt.glb", pack_gltf(meshopt_compress(build_gltf(doc)), GltfForm::Glb)[0].second);
+
+  // KHR_draco_mesh_compression on the first primitive: its accessors lose
+  // their views and its data is a Draco header over noise. The fuzz targets
+  // run without the decoder helper, so this seed reaches what comes before
+  // the decode (the extension object, the indices kept from tinygltf, the
+  // counts) and its refusal.
+  parts = build_gltf(doc);
+  std::string draco("DRACO\x02\x02\x01\x01\x00\x00", 11);
+  for (int i = 0; i < 53; ++i) draco.push_back(static_cast<char>(i * 37 + 11));
+  while (parts.bin.size() % 4 != 0) parts.bin.push_back('\0');
+  parts.json["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", parts.bin.size()}, {"byteLength", draco.size()}});
+  parts.bin += draco;
+  parts.json["buffers"][0]["byteLength"] = parts.bin.size();
+  nlohmann::json& primitive = parts.json["meshes"][0]["primitives"][0];
+  primitive["extensions"]["KHR_draco_mesh_compression"] = {
+      {"bufferView", parts.json["bufferViews"].size() - 1},
+      {"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}, {"COLOR_0", 3}}}};
+  for (const auto& [semantic, accessor] : primitive["attributes"].items()) {
+    parts.json["accessors"][accessor.get<std::size_t>()].erase("bufferView");
+  }
+  parts.json["accessors"][primitive["indices"].get<std::size_t>()].erase("bufferView");
+  parts.json["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+  parts.json["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  save("draco.glb", pack_gltf(parts, GltfForm::Glb)[0].second);
 
   parts = build_gltf(doc);
   parts.json["accessors"][0]["count"] = 2000000000;
