@@ -22,6 +22,7 @@
 #include <draco/mesh/mesh.h>
 
 #include "draco_decode/draco_wire.h"
+#include "draco_decode/stdio_bytes.h"
 
 namespace {
 
@@ -77,30 +78,6 @@ void limit_resources(const Options& options) {
   const rlim_t bytes = static_cast<rlim_t>(options.memory_mb) << 20;
   set(RLIMIT_AS, bytes, bytes);
 #endif
-}
-
-std::string read_input() {
-  std::string input;
-  char chunk[1 << 16];
-  for (;;) {
-    const ssize_t n = read(STDIN_FILENO, chunk, sizeof chunk);
-    if (n > 0) {
-      input.append(chunk, static_cast<std::size_t>(n));
-    } else if (n == 0 || errno != EINTR) {
-      return input;
-    }
-  }
-}
-
-bool write_output(const std::string& bytes) {
-  std::size_t at = 0;
-  while (at < bytes.size()) {
-    const ssize_t n = write(STDOUT_FILENO, bytes.data() + at, bytes.size() - at);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    at += static_cast<std::size_t>(n);
-  }
-  return true;
 }
 
 int fail(const std::string& why) {
@@ -160,7 +137,7 @@ std::optional<draco_wire::Attribute> values_of(const draco::Mesh& mesh, const dr
 }
 
 int decode(const Options& options) {
-  const std::string input = read_input();
+  const std::string input = draco_wire::read_all_stdin();
   draco::DecoderBuffer buffer;
   buffer.Init(input.data(), input.size());
   draco::Decoder decoder;
@@ -182,7 +159,7 @@ int decode(const Options& options) {
     if (!values) return fail(why);
     out.attributes.push_back(std::move(*values));
   }
-  if (!write_output(draco_wire::write_mesh(out))) return fail("cannot write the answer");
+  if (!draco_wire::write_all_stdout(draco_wire::write_mesh(out))) return fail("cannot write the answer");
   return 0;
 }
 

@@ -21,23 +21,11 @@
 #include <draco/mesh/mesh.h>
 
 #include "draco_decode/draco_wire.h"
+#include "draco_decode/stdio_bytes.h"
 
 namespace {
 
 using namespace toond;
-
-std::string read_input() {
-  std::string input;
-  char chunk[1 << 16];
-  for (;;) {
-    const ssize_t n = read(STDIN_FILENO, chunk, sizeof chunk);
-    if (n > 0) {
-      input.append(chunk, static_cast<std::size_t>(n));
-    } else if (n == 0 || errno != EINTR) {
-      return input;
-    }
-  }
-}
 
 void put_u32(std::string& out, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
@@ -66,7 +54,7 @@ int main(int argc, char** argv) {
     if (flag == "--bits") bits = std::atoi(argv[i + 1]);
     if (flag == "--type") types.push_back(type_named(argv[i + 1]));
   }
-  const draco_wire::Mesh input = draco_wire::read_mesh(read_input());
+  const draco_wire::Mesh input = draco_wire::read_mesh(draco_wire::read_all_stdin());
   if (input.attributes.size() != types.size()) return fail("one --type per attribute, please");
 
   draco::Mesh mesh;
@@ -114,5 +102,5 @@ int main(int argc, char** argv) {
   put_u32(out, static_cast<std::uint32_t>(ids.size()));
   for (const std::uint32_t id : ids) put_u32(out, id);
   out.append(encoded.data(), encoded.size());
-  return std::fwrite(out.data(), 1, out.size(), stdout) == out.size() ? 0 : 1;
+  return draco_wire::write_all_stdout(out) ? 0 : 1;
 }

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "gltf_import_checks.h"
 #include "model_checks.h"
 #include "scene/bundle_import.h"
 #include "scene/import_error.h"
@@ -29,7 +30,10 @@ using nlohmann::json;
 using test::DracoOptions;
 using test::GltfForm;
 using test::GltfParts;
+using test_checks::import_error;
+using test_checks::import_files;
 using test_checks::make_bundle;
+using test_checks::sphere_parts;
 using test_checks::unmatched_triangles;
 
 // Every test finds the helper the build made (the daemon finds it beside
@@ -39,27 +43,6 @@ class GltfDraco : public ::testing::Test {
   void SetUp() override { setenv("TOOND_DRACO_DECODER", TOOND_DRACO_DECODER_PATH, 1); }
 };
 using GltfDracoMalformed = GltfDraco;
-
-Model import_files(const test::GltfFiles& files, const ImportLimits& limits = {}) {
-  return import_bundle(make_bundle(files), limits);
-}
-
-std::string import_error(const test::GltfFiles& files, const ImportLimits& limits = {}) {
-  try {
-    import_files(files, limits);
-  } catch (const ImportLimitError& e) {
-    return std::string("limit ") + e.limit() + ": " + e.what();
-  } catch (const ImportError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "the import succeeded";
-  return {};
-}
-
-GltfParts sphere_parts() {
-  const Bundle bundle = make_bundle({{"sphere.obj", test::sphere_obj(24, 12)}});
-  return test::build_gltf(test::gltf_twin(import_obj_bundle(bundle), bundle));
-}
 
 json& draco_extension(GltfParts& parts) {
   return parts.json["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"];

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "gltf_import_checks.h"
 #include "model_checks.h"
 #include "scene/bundle_import.h"
 #include "scene/gltf_import.h"
@@ -24,6 +25,8 @@ using test::GltfDocument;
 using test::GltfForm;
 using test::GltfPrimitive;
 using test_checks::has_warning;
+using test_checks::import_error;
+using test_checks::import_files;
 using test_checks::make_bundle;
 using test_checks::tiny_png;
 using test_checks::warnings_of;
@@ -75,23 +78,6 @@ GltfPrimitive triangle_primitive() {
   GltfPrimitive p;
   p.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   return p;
-}
-
-Model import_files(const test::GltfFiles& files, const ImportLimits& limits = {}) {
-  return import_bundle(make_bundle(files), limits);
-}
-
-// The message of the ImportError that importing `files` throws.
-std::string import_error(const test::GltfFiles& files, const ImportLimits& limits = {}) {
-  try {
-    import_files(files, limits);
-  } catch (const ImportLimitError& e) {
-    return std::string("limit ") + e.limit() + ": " + e.what();
-  } catch (const ImportError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "the import succeeded";
-  return {};
 }
 
 glm::vec3 world_min(const Model& m) { return glm::vec3(m.mesh.origin + glm::dvec3(m.mesh.bounds.min)); }

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "gltf_import_checks.h"
 #include "model_checks.h"
 #include "scene/bundle_import.h"
 #include "scene/import_error.h"
@@ -27,30 +28,11 @@ using nlohmann::json;
 using test::GltfForm;
 using test::GltfParts;
 using test::MeshoptFallback;
+using test_checks::import_error;
+using test_checks::import_files;
 using test_checks::make_bundle;
+using test_checks::sphere_parts;
 using test_checks::unmatched_triangles;
-
-Model import_files(const test::GltfFiles& files, const ImportLimits& limits = {}) {
-  return import_bundle(make_bundle(files), limits);
-}
-
-std::string import_error(const test::GltfFiles& files, const ImportLimits& limits = {}) {
-  try {
-    import_files(files, limits);
-  } catch (const ImportLimitError& e) {
-    return std::string("limit ") + e.limit() + ": " + e.what();
-  } catch (const ImportError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "the import succeeded";
-  return {};
-}
-
-// A UV sphere with normals and texture coordinates, as glTF.
-GltfParts sphere_parts() {
-  const Bundle bundle = make_bundle({{"sphere.obj", test::sphere_obj(24, 12)}});
-  return test::build_gltf(test::gltf_twin(import_obj_bundle(bundle), bundle));
-}
 
 json& extension_of(GltfParts& parts, int view) { return parts.json["bufferViews"][view]["extensions"]["EXT_meshopt_compression"]; }
 
