@@ -150,12 +150,7 @@ TEST_F(GltfDracoMalformed, TruncatedOrDamagedDataIsRefusedOrDecodesToCheckedData
       const std::size_t at = offset + (seed * 7919 + k * 104729) % length;
       damaged.bin[at] = static_cast<char>(damaged.bin[at] ^ static_cast<char>(seed * 37 + k + 1));
     }
-    try {
-      const Model m = import_files(test::pack_gltf(damaged, GltfForm::Glb));
-      for (const auto i : m.mesh.indices) ASSERT_LT(i, m.mesh.positions.size());
-    } catch (const ImportError&) {
-      // A refusal is the expected answer; a crash or another exception is not.
-    }
+    test_checks::expect_refused_or_sound(test::pack_gltf(damaged, GltfForm::Glb));
   }
 }
 

@@ -33,6 +33,39 @@ inline std::string import_error(const test::GltfFiles& files, const ImportLimits
   return {};
 }
 
+// A unit cube: 24 vertices (4 per face, with the face's normal), 12
+// triangles, counter-clockwise seen from outside.
+inline test::GltfPrimitive cube_primitive() {
+  test::GltfPrimitive p;
+  const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (int a = 0; a < 3; ++a) {
+    for (const float sign : {1.0f, -1.0f}) {
+      const glm::vec3 n = axes[a] * sign;
+      const glm::vec3 u = axes[(a + 1) % 3] * sign;
+      const glm::vec3 v = axes[(a + 2) % 3];
+      const auto base = static_cast<std::uint32_t>(p.positions.size());
+      for (const glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+        p.positions.push_back(n + u * c.x + v * c.y);
+        p.normals.push_back(n);
+        p.texcoords.push_back((c + 1.0f) * 0.5f);
+      }
+      p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+  }
+  return p;
+}
+
+// Importing `files` either refuses them (ImportError) or gives a mesh whose
+// every index is in range: for damaged data, which may still decode.
+inline void expect_refused_or_sound(const test::GltfFiles& files) {
+  try {
+    const Model m = import_files(files);
+    for (const auto i : m.mesh.indices) ASSERT_LT(i, m.mesh.positions.size());
+  } catch (const ImportError&) {
+    // A refusal is the expected answer; a crash or another exception is not.
+  }
+}
+
 // A UV sphere with normals and texture coordinates, as glTF.
 inline test::GltfParts sphere_parts() {
   const Bundle bundle = make_bundle({{"sphere.obj", test::sphere_obj(24, 12)}});

@@ -24,34 +24,13 @@ using nlohmann::json;
 using test::GltfDocument;
 using test::GltfForm;
 using test::GltfPrimitive;
+using test_checks::cube_primitive;
 using test_checks::has_warning;
 using test_checks::import_error;
 using test_checks::import_files;
 using test_checks::make_bundle;
 using test_checks::tiny_png;
 using test_checks::warnings_of;
-
-// A unit cube: 24 vertices (4 per face, with the face's normal), 12
-// triangles, counter-clockwise seen from outside.
-GltfPrimitive cube_primitive() {
-  GltfPrimitive p;
-  const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  for (int a = 0; a < 3; ++a) {
-    for (const float sign : {1.0f, -1.0f}) {
-      const glm::vec3 n = axes[a] * sign;
-      const glm::vec3 u = axes[(a + 1) % 3] * sign;
-      const glm::vec3 v = axes[(a + 2) % 3];
-      const auto base = static_cast<std::uint32_t>(p.positions.size());
-      for (const glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
-        p.positions.push_back(n + u * c.x + v * c.y);
-        p.normals.push_back(n);
-        p.texcoords.push_back((c + 1.0f) * 0.5f);
-      }
-      p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-    }
-  }
-  return p;
-}
 
 GltfDocument cube_document() {
   GltfDocument doc;
