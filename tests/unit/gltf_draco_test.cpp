@@ -263,13 +263,7 @@ class SharedDracoTwin : public ::testing::TestWithParam<const char*> {
 
 TEST_P(SharedDracoTwin, ImportsLikeThePlainTwinWithinTheQuantizationStep) {
   TOOND_REQUIRE_SHARED_MODELS();
-  Bundle bundle;
-  const auto dir = test::shared_models_dir() / GetParam();
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
-    if (entry.is_regular_file()) {
-      bundle.add(std::filesystem::relative(entry.path(), dir).generic_string(), test::read_file(entry.path()));
-    }
-  }
+  const Bundle bundle = test_checks::shared_model_bundle(GetParam());
   const GltfParts plain = test::build_gltf(test::gltf_twin(import_obj_bundle(bundle), bundle));
   DracoOptions options;
   options.quantization_bits = 16;

@@ -2,6 +2,7 @@
 // What the glTF import tests share: importing generated files as an
 // upload would, the message an import refuses them with, and a UV sphere
 // as glTF.
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include "support/generated_models.h"
 #include "support/gltf_twin.h"
 #include "support/gltf_writer.h"
+#include "support/shared_models.h"
 
 namespace toond::scene::test_checks {
 
@@ -64,6 +66,18 @@ inline void expect_refused_or_sound(const test::GltfFiles& files) {
   } catch (const ImportError&) {
     // A refusal is the expected answer; a crash or another exception is not.
   }
+}
+
+// Every file of a shared model's folder, as an upload of that folder.
+inline Bundle shared_model_bundle(const std::string& name) {
+  Bundle bundle;
+  const auto dir = test::shared_models_dir() / name;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file()) {
+      bundle.add(std::filesystem::relative(entry.path(), dir).generic_string(), test::read_file(entry.path()));
+    }
+  }
+  return bundle;
 }
 
 // A UV sphere with normals and texture coordinates, as glTF.

@@ -483,13 +483,7 @@ class SharedTwin : public ::testing::TestWithParam<std::pair<const char*, const 
 TEST_P(SharedTwin, ImportsLikeItsObj) {
   TOOND_REQUIRE_SHARED_MODELS();
   const auto [folder, obj] = GetParam();
-  Bundle bundle;
-  const auto dir = test::shared_models_dir() / folder;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
-    if (entry.is_regular_file()) {
-      bundle.add(std::filesystem::relative(entry.path(), dir).generic_string(), test::read_file(entry.path()));
-    }
-  }
+  const Bundle bundle = test_checks::shared_model_bundle(folder);
   const Model reference = import_obj_bundle(bundle);
   const Model twin = import_files(test::write_gltf(test::gltf_twin(reference, bundle), GltfForm::Glb));
   EXPECT_EQ(twin.mesh.triangle_count(), reference.mesh.triangle_count()) << obj;

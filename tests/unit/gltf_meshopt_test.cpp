@@ -288,13 +288,7 @@ class SharedMeshoptTwin : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SharedMeshoptTwin, ImportsLikeThePlainTwin) {
   TOOND_REQUIRE_SHARED_MODELS();
-  Bundle bundle;
-  const auto dir = test::shared_models_dir() / GetParam();
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
-    if (entry.is_regular_file()) {
-      bundle.add(std::filesystem::relative(entry.path(), dir).generic_string(), test::read_file(entry.path()));
-    }
-  }
+  const Bundle bundle = test_checks::shared_model_bundle(GetParam());
   const GltfParts plain = test::build_gltf(test::gltf_twin(import_obj_bundle(bundle), bundle));
   const Model from_plain = import_files(test::pack_gltf(plain, GltfForm::Glb));
   const Model from_compressed = import_files(test::pack_gltf(test::meshopt_compress(plain), GltfForm::Glb));
