@@ -2,7 +2,7 @@
 // Outline colour: the stencil test leaves only the ring outside the model.
 // Variants: fixed colour (default), OUTLINE_MATERIAL (the material colour
 // darkened), OUTLINE_TEXTURE (the texture under the line, inverted and
-// darkened).
+// darkened); ALPHA_MASK (no line where a masked material is cut out).
 in vec2 v_texcoord;
 
 uniform vec3 u_outline_color;  // linear
@@ -34,7 +34,25 @@ float distance_to_segment(vec2 p, vec2 a, vec2 b) {
 
 layout(location = 0) out vec4 o_color;
 
+#ifdef ALPHA_MASK
+// Masked materials (glTF alphaMode MASK): the same alpha test as the main
+// pass, so nothing lands where it drew nothing (render/passes/alpha_mask.h
+// sets these; an opaque material's cutoff is one nothing fails).
+uniform sampler2D u_mask_map;
+uniform int u_mask_has_texture;
+uniform float u_mask_opacity;
+uniform float u_mask_cutoff;
+
+bool masked_out(vec2 uv) {
+  float alpha = u_mask_opacity * (u_mask_has_texture != 0 ? texture(u_mask_map, uv).a : 1.0);
+  return alpha < u_mask_cutoff;
+}
+#endif
+
 void main() {
+#ifdef ALPHA_MASK
+  if (masked_out(v_texcoord)) discard;
+#endif
 #ifdef LINE_SEGMENT
   // How much of the pixel the line covers across its edge; with
   // multisampling it becomes the samples written (alpha to coverage), so

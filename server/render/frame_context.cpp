@@ -15,6 +15,7 @@ PassPlan plan_for(const std::vector<RenderObject>& objects, const RenderParams& 
     traits.has_normal_maps |= o.model.has_normal_maps();
     traits.has_vertex_colors |= o.model.has_vertex_colors();
     traits.hard_edged |= o.model.creases().hard_edged(params.outline.crease_angle_deg);
+    traits.has_masked_materials |= o.model.has_masked_materials();
   }
   return plan_passes(params, traits);
 }

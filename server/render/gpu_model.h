@@ -48,6 +48,13 @@ class GpuModel {
   GLuint texture(int index) const { return textures_[static_cast<std::size_t>(index)].id(); }
   bool has_textures() const { return !textures_.empty(); }
   bool has_vertex_colors() const { return has_vertex_colors_; }
+  // Whether a material is drawn only where its alpha passes a cutoff
+  // (glTF alphaMode MASK).
+  bool has_masked_materials() const {
+    for (const GpuMaterial& m : materials_)
+      if (m.alpha_cutoff >= 0.0f) return true;
+    return false;
+  }
   bool has_normal_maps() const {
     for (const GpuMaterial& m : materials_)
       if (m.normal_texture >= 0) return true;

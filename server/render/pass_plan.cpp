@@ -121,6 +121,8 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
       plan.passes.push_back(Pass::EdgePrepass);
       plan.passes.push_back(Pass::Edges);
     }
+    plan.alpha_tested_outlines = model.has_masked_materials;
+    plan.outline.set(OutlineFeature::AlphaMask, plan.alpha_tested_outlines);
     switch (params.outline.color_mode) {
       case OutlineColorMode::Fixed: break;
       case OutlineColorMode::Material: plan.outline.set(OutlineFeature::Material); break;

@@ -31,6 +31,7 @@ struct ModelTraits {
   bool has_normal_maps = false;
   bool has_vertex_colors = false;
   bool hard_edged = false;  // creased at the requested crease angle (scene::CreaseProfile)
+  bool has_masked_materials = false;  // glTF alphaMode MASK
 };
 
 struct PassPlan {
@@ -46,6 +47,9 @@ struct PassPlan {
   int samples = 1;
   int supersample = 1;
   int shadow_light = -1;  // index into RenderParams::lights, -1: no shadows
+  // Outlines follow what the main pass drew of masked materials: the hull,
+  // the wireframe and the edge prepass test the same alpha.
+  bool alpha_tested_outlines = false;
   // The edge pass draws crease lines only: it joins a hull or wireframe
   // outline (which draws the silhouette) on a hard-edged model.
   bool creases_only = false;

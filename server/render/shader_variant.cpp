@@ -40,6 +40,7 @@ const char* define_name(OutlineFeature feature) {
     case OutlineFeature::Material: return "OUTLINE_MATERIAL";
     case OutlineFeature::Texture: return "OUTLINE_TEXTURE";
     case OutlineFeature::LineSegment: return "LINE_SEGMENT";
+    case OutlineFeature::AlphaMask: return "ALPHA_MASK";
     case OutlineFeature::Count: break;
   }
   return "?";

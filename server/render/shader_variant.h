@@ -59,7 +59,7 @@ struct ToonVariant {
 };
 
 // hull.frag's features (the hull pass and the wireframe share it).
-enum class OutlineFeature : std::size_t { Material, Texture, LineSegment, Count };
+enum class OutlineFeature : std::size_t { Material, Texture, LineSegment, AlphaMask, Count };
 const char* define_name(OutlineFeature feature);
 
 struct OutlineVariant {

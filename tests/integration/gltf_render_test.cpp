@@ -97,6 +97,19 @@ std::string half_transparent_png() {
   return image::encode_png(img);
 }
 
+// 64×64: opaque white only in columns 32..61. The clear columns at both
+// ends keep a repeating texture's filtering at u = 0 from reaching the
+// opaque half, so the quad's cut-away edge is cut away to its last pixel.
+std::string opaque_middle_right_png() {
+  image::Image img;
+  img.width = img.height = 64;
+  img.rgba.assign(64 * 64 * 4, 255);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x)
+      if (x < 32 || x >= 62) img.rgba[(static_cast<std::size_t>(y) * 64 + x) * 4 + 3] = 0;
+  return image::encode_png(img);
+}
+
 std::string upload_glb(httplib::Client& client, const std::string& glb) {
   auto res = client.Post("/models", httplib::MultipartFormDataItems{{"file", glb, "model.glb", "model/gltf-binary"}});
   EXPECT_TRUE(res && (res->status == 200 || res->status == 201)) << (res ? res->body : "no answer");
@@ -135,6 +148,41 @@ TEST_F(GltfMaterials, MaskCutsTheShapeOutOfTheTexture) {
   const auto [opaque_left, opaque_right] = background_in_thirds(render_ok(client, params));
   EXPECT_LT(opaque_left, 0.01);
   EXPECT_LT(opaque_right, 0.01);
+}
+
+// Outline-coloured pixels in the half of the image (less a margin at the
+// middle) where the half transparent quad is cut away: the left half seen
+// from the front, the right half seen from behind.
+std::size_t outline_pixels_where_cut_away(const image::Image& img, bool from_behind) {
+  std::size_t red = 0;
+  const int half = img.width / 2 - 6;
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = from_behind ? img.width - half : 0; x < (from_behind ? img.width : half); ++x) {
+      const std::uint8_t* p = &img.rgba[(static_cast<std::size_t>(y) * img.width + x) * 4];
+      red += (p[0] > 100 && p[1] < 80 && p[2] < 80) ? 1 : 0;
+    }
+  }
+  return red;
+}
+
+// Every outline method tests a masked material's alpha like the main pass:
+// no line runs round the quad's cut-away half. An opaque quad has one. The
+// wireframe draws back faces' edges, so it sees the quad from behind.
+TEST_F(GltfMaterials, OutlinesFollowWhatTheMaskLeaves) {
+  auto client = daemon().client();
+  const std::string masked = upload_glb(client, quad_glb(opaque_middle_right_png(), {{"alphaMode", "MASK"}}));
+  const std::string opaque = upload_glb(client, quad_glb(opaque_middle_right_png(), json::object()));
+  for (const char* method : {"hull", "wireframe", "edges"}) {
+    json params = {{"width", 128}, {"height", 128}, {"background", {0, 0, 1}}, {"shading", {{"mode", "flat"}, {"base", "white"}}},
+                   {"outline", {{"method", method}, {"width", 3}, {"color", {1, 0, 0}}, {"creases", "never"}}}};
+    const bool from_behind = std::string(method) == "wireframe";
+    params["camera"] = {{"yaw", from_behind ? 180 : 0}, {"pitch", 0}};
+    params["model"] = opaque;
+    EXPECT_GT(outline_pixels_where_cut_away(render_ok(client, params), from_behind), 40u)
+        << method << ": the opaque quad's outline";
+    params["model"] = masked;
+    EXPECT_EQ(outline_pixels_where_cut_away(render_ok(client, params), from_behind), 0u) << method;
+  }
 }
 
 // KHR_materials_unlit: the base colour as it is, whatever the light; the

@@ -197,5 +197,17 @@ TEST(PassPlan, ReadbackIsAlwaysLast) {
   }
 }
 
+// A model with masked materials has its outlines alpha-tested (the hull's
+// and wireframe's programs get ALPHA_MASK; so does the edge prepass).
+TEST(PassPlan, MaskedMaterialsAlphaTestTheOutlines) {
+  ModelTraits masked;
+  masked.has_masked_materials = true;
+  const PassPlan plan = plan_passes(params(json::object()), masked);
+  EXPECT_TRUE(plan.alpha_tested_outlines);
+  EXPECT_TRUE(plan.outline.has(OutlineFeature::AlphaMask));
+  EXPECT_FALSE(plan_passes(params(json::object()), {}).alpha_tested_outlines);
+  EXPECT_FALSE(plan_passes(params({{"outline", {{"enabled", false}}}}), masked).alpha_tested_outlines);
+}
+
 }  // namespace
 }  // namespace toond::render

@@ -1,3 +1,4 @@
+#include "render/passes/alpha_mask.h"
 #include "render/passes/passes.h"
 
 namespace toond::render {
@@ -7,6 +8,15 @@ namespace {
 // pixel of coverage per sample, which AnalyticOracle.OutlineWidthPerMethod
 // measures as widths within 0.4 px.
 constexpr int kSilhouetteSamples = 4;
+
+// Object i, material by material, each with its alpha test.
+void draw_alpha_tested(const FrameContext& frame, gpu::Program& program, std::size_t i) {
+  const GpuModel& model = frame.objects[i].model;
+  for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
+    set_alpha_mask_uniforms(program, model, model.materials()[static_cast<std::size_t>(sub.material)]);
+    model.draw(sub);
+  }
+}
 
 }  // namespace
 
@@ -22,7 +32,10 @@ void draw_edge_prepass(PassContext& context) {
   glDisable(GL_STENCIL_TEST);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  gpu::Program& prepass = context.programs.get("toon.vert", "normal_depth.frag", {});
+  const bool alpha_tested = frame.plan.alpha_tested_outlines;
+  gpu::Program& prepass = context.programs.get("toon.vert", "normal_depth.frag",
+                                               alpha_tested ? std::vector<std::string>{"ALPHA_MASK"}
+                                                            : std::vector<std::string>{});
   prepass.use();
   prepass.set("u_view_projection", frame.view_projection);
   prepass.set("u_eye", frame.eye());
@@ -30,7 +43,10 @@ void draw_edge_prepass(PassContext& context) {
   prepass.set("u_orthographic", frame.orthographic() ? 1 : 0);
   draw_objects(frame, {.program = &prepass,
                        .faces = [&](std::size_t i) { return frame.main_faces[i]; },
-                       .draw = [&](std::size_t i) { draw_whole_object(frame, i); }});
+                       .draw = [&](std::size_t i) {
+                         if (alpha_tested) draw_alpha_tested(frame, prepass, i);
+                         else draw_whole_object(frame, i);
+                       }});
   if (!normals.needs_resolve()) return;
   normals.bind_for_resolve();
   glDisable(GL_DEPTH_TEST);
