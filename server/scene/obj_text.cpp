@@ -1,6 +1,9 @@
 #include "scene/obj_text.h"
 #include "text/trim.h"
 
+#include <algorithm>
+#include <charconv>
+#include <system_error>
 #include <vector>
 
 namespace toond::scene {
@@ -120,7 +123,53 @@ std::string material_alias(std::string_view name) {
   return alias;
 }
 
-std::string prepare_obj_text(std::string_view text) {
+namespace {
+
+// Face corners' position indices against the positions the file defines: a
+// negative index counts back from the positions defined so far, a positive
+// one may name a position defined further down (tinyobj reads them so), so
+// the largest is checked once the file is read.
+class VertexIndexCheck {
+ public:
+  void position() { ++positions_; }
+  void face(std::string_view rest, std::size_t line) {
+    std::size_t at = 0;
+    while (at < rest.size()) {
+      while (at < rest.size() && is_blank(rest[at])) ++at;
+      const std::size_t end = std::min(rest.find_first_of(" \t\r/", at), rest.size());
+      if (end > at) check(rest.substr(at, end - at), line);
+      at = rest.find_first_of(" \t\r", end);
+      if (at == std::string_view::npos) break;
+    }
+  }
+  std::size_t first_bad_line() const {
+    if (bad_line_ != 0) return bad_line_;
+    return largest_ > positions_ ? largest_line_ : 0;
+  }
+
+ private:
+  void check(std::string_view token, std::size_t line) {
+    long long index = 0;
+    if (std::from_chars(token.data(), token.data() + token.size(), index).ec != std::errc{}) return;
+    const bool bad = index == 0 || (index < 0 && static_cast<unsigned long long>(-index) > positions_);
+    if (bad && bad_line_ == 0) bad_line_ = line;
+    if (index > 0 && static_cast<unsigned long long>(index) > largest_) {
+      largest_ = static_cast<unsigned long long>(index);
+      largest_line_ = line;
+    }
+  }
+
+  unsigned long long positions_ = 0;
+  unsigned long long largest_ = 0;
+  std::size_t largest_line_ = 0;
+  std::size_t bad_line_ = 0;
+};
+
+}  // namespace
+
+std::string prepare_obj_text(std::string_view text, ObjTextFindings* findings) {
+  VertexIndexCheck indices;
+  std::size_t line_number = 0;
   std::string out;
   out.reserve(text.size() + text.size() / 64);
   std::size_t pos = 0;
@@ -149,7 +198,11 @@ std::string prepare_obj_text(std::string_view text) {
     std::string_view keyword;
     std::string_view rest;
     std::string_view line(joined);
+    const std::size_t first_line = line_number + 1;
+    line_number += consumed_lines;
     if (split_statement(line, keyword, rest)) {
+      if (keyword == "v") indices.position();
+      if (keyword == "f") indices.face(rest, first_line);
       if (keyword == "f" && corner_count(rest) > kMaxEarClippedCorners) {
         const std::string fixed = needs_corner_fix(rest) ? fix_corners(keyword, rest) : std::string(line);
         out += fan_of(std::string_view(fixed).substr(fixed.find('f') + 1));
@@ -169,6 +222,7 @@ std::string prepare_obj_text(std::string_view text) {
     }
     for (std::size_t i = 0; i < consumed_lines; ++i) out += '\n';
   }
+  if (findings) findings->missing_vertex_line = indices.first_bad_line();
   return out;
 }
 

@@ -19,7 +19,14 @@ namespace toond::scene {
 // - A face of more than 256 corners becomes a triangle fan, one `f` line per
 //   triangle (tinyobj's ear clipping would take time growing with the
 //   square of the corners or worse); only such faces shift later lines.
-std::string prepare_obj_text(std::string_view text);
+//
+// `findings`, when given, says what the text holds that tinyobj would pass
+// over without a word: the first face naming a vertex position the file
+// does not define (tinyobj drops such quads silently).
+struct ObjTextFindings {
+  std::size_t missing_vertex_line = 0;  // 1-based; 0: none
+};
+std::string prepare_obj_text(std::string_view text, ObjTextFindings* findings = nullptr);
 
 // A single-token stand-in for a material name: trimmed, each run of blanks
 // replaced by one U+001F. Names without blanks are returned trimmed.

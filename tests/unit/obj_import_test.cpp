@@ -208,6 +208,11 @@ TEST(ObjImport, MissingMtlIsAWarning) {
   ASSERT_EQ(m.materials.size(), 1u);
   EXPECT_EQ(m.materials[0].diffuse, glm::vec3(0.8f));
   EXPECT_TRUE(has_warning(m, "nothere.mtl")) << warnings_of(m);
+  // Said once, by the importer: the parser adds no warning of its own.
+  std::size_t about_the_library = 0;
+  for (const std::string& w : m.warnings) about_the_library += w.find("material file") != std::string::npos ||
+                                                               w.find("nothere.mtl") != std::string::npos;
+  EXPECT_EQ(about_the_library, 1u) << warnings_of(m);
 }
 
 void expect_import_error(const Bundle& bundle, const std::string& file, const std::string& needle) {
@@ -450,6 +455,27 @@ TEST(ObjText, PreparationKeepsLineNumbersAndMeaning) {
   EXPECT_EQ(prepare_obj_text("usemtl plain\nf 1/2/3 4//5\n"), "usemtl plain\nf 1/2/3 4//5\n");
   EXPECT_EQ(prepare_obj_text("mtllib mats\\a.mtl my\\ file.mtl\n"), "mtllib mats/a.mtl my\\ file.mtl\n");
   EXPECT_EQ(material_alias(" a  b "), "a\x1f" "b");
+}
+
+// Faces naming a position the file does not define are found before
+// tinyobj reads the text (it drops such quads without a word): a positive
+// index past the file's last position, a negative one reaching back past
+// the first, or 0. A positive index may name a position defined further
+// down.
+TEST(ObjText, FindsFacesNamingMissingPositions) {
+  auto missing_line = [](std::string_view text) {
+    ObjTextFindings findings;
+    prepare_obj_text(text, &findings);
+    return findings.missing_vertex_line;
+  };
+  const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n";
+  EXPECT_EQ(missing_line(verts + "f 1 2 3 4\nf -1 -2 -3\n"), 0u);
+  EXPECT_EQ(missing_line("f 1 2 3\n" + verts), 0u) << "a position defined further down";
+  EXPECT_EQ(missing_line(verts + "f 1 2 3\nf 1/1 2/2 3/3 9/4\n"), 6u);
+  EXPECT_EQ(missing_line(verts + "f -1 -2 -5\n"), 5u);
+  EXPECT_EQ(missing_line("v 0 0 0\nf -1 -2 -3\nv 1 0 0\nv 0 1 0\n"), 2u) << "counted back from line 2";
+  EXPECT_EQ(missing_line(verts + "f 0 1 2\n"), 5u);
+  EXPECT_EQ(missing_line(verts + "f 1 2 \\\n 9\n"), 5u) << "a continued face is named by its first line";
 }
 
 TEST(TextureDecode, DecodesPng) {
