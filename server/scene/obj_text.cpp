@@ -150,7 +150,10 @@ class VertexIndexCheck {
  private:
   void check(std::string_view token, std::size_t line) {
     long long index = 0;
-    if (std::from_chars(token.data(), token.data() + token.size(), index).ec != std::errc{}) return;
+    const std::errc parsed = std::from_chars(token.data(), token.data() + token.size(), index).ec;
+    // A number too long for 64 bits names no position any file has.
+    if (parsed == std::errc::result_out_of_range && bad_line_ == 0) bad_line_ = line;
+    if (parsed != std::errc{}) return;
     const bool bad = index == 0 || (index < 0 && static_cast<unsigned long long>(-index) > positions_);
     if (bad && bad_line_ == 0) bad_line_ = line;
     if (index > 0 && static_cast<unsigned long long>(index) > largest_) {
