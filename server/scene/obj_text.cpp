@@ -154,7 +154,9 @@ class VertexIndexCheck {
     // A number too long for 64 bits names no position any file has.
     if (parsed == std::errc::result_out_of_range && bad_line_ == 0) bad_line_ = line;
     if (parsed != std::errc{}) return;
-    const bool bad = index == 0 || (index < 0 && static_cast<unsigned long long>(-index) > positions_);
+    // Negated as unsigned: -LLONG_MIN does not fit a long long.
+    const unsigned long long back = 0ULL - static_cast<unsigned long long>(index);
+    const bool bad = index == 0 || (index < 0 && back > positions_);
     if (bad && bad_line_ == 0) bad_line_ = line;
     if (index > 0 && static_cast<unsigned long long>(index) > largest_) {
       largest_ = static_cast<unsigned long long>(index);

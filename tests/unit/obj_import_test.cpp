@@ -476,6 +476,7 @@ TEST(ObjText, FindsFacesNamingMissingPositions) {
   EXPECT_EQ(missing_line("v 0 0 0\nf -1 -2 -3\nv 1 0 0\nv 0 1 0\n"), 2u) << "counted back from line 2";
   EXPECT_EQ(missing_line(verts + "f 0 1 2\n"), 5u);
   EXPECT_EQ(missing_line(verts + "f 1 2 99999999999999999999999\n"), 5u);
+  EXPECT_EQ(missing_line(verts + "f 1 2 -9223372036854775808\n"), 5u);
   EXPECT_EQ(missing_line(verts + "f 1 2 \\\n 9\n"), 5u) << "a continued face is named by its first line";
 }
 
