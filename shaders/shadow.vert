@@ -1,7 +1,13 @@
 #version 430 core
 // Shadow pass: depth as the shadow-casting light sees the model.
 layout(location = 0) in vec3 a_position;
+layout(location = 2) in vec2 a_texcoord;
 uniform mat4 u_light_view_projection;
 uniform mat4 u_model;  // mesh → scene (frame) coordinates
 
-void main() { gl_Position = u_light_view_projection * (u_model * vec4(a_position, 1.0)); }
+out vec2 v_texcoord;  // for the alpha test of masked materials
+
+void main() {
+  v_texcoord = a_texcoord;
+  gl_Position = u_light_view_projection * (u_model * vec4(a_position, 1.0));
+}

@@ -49,6 +49,7 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   }
   if (plan.shadow_light >= 0) {
     plan.passes.push_back(Pass::Shadow);
+    plan.alpha_tested_shadows = model.has_masked_materials;
     plan.shading.set(ToonFeature::Shadows);
     plan.shading.shadow_pcf = params.shadows.pcf;
   }

@@ -50,6 +50,7 @@ struct PassPlan {
   // Outlines follow what the main pass drew of masked materials: the hull,
   // the wireframe and the edge prepass test the same alpha.
   bool alpha_tested_outlines = false;
+  bool alpha_tested_shadows = false;  // the shadow pass tests it too
   // The edge pass draws crease lines only: it joins a hull or wireframe
   // outline (which draws the silhouette) on a hard-edged model.
   bool creases_only = false;

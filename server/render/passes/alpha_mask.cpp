@@ -13,4 +13,12 @@ void set_alpha_mask_uniforms(gpu::Program& program, const GpuModel& model, const
   program.set("u_mask_map", kMaskUnit);
 }
 
+void draw_alpha_tested(const FrameContext& frame, gpu::Program& program, std::size_t i) {
+  const GpuModel& model = frame.objects[i].model;
+  for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
+    set_alpha_mask_uniforms(program, model, model.materials()[static_cast<std::size_t>(sub.material)]);
+    model.draw(sub);
+  }
+}
+
 }  // namespace toond::render

@@ -9,15 +9,6 @@ namespace {
 // measures as widths within 0.4 px.
 constexpr int kSilhouetteSamples = 4;
 
-// Object i, material by material, each with its alpha test.
-void draw_alpha_tested(const FrameContext& frame, gpu::Program& program, std::size_t i) {
-  const GpuModel& model = frame.objects[i].model;
-  for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
-    set_alpha_mask_uniforms(program, model, model.materials()[static_cast<std::size_t>(sub.material)]);
-    model.draw(sub);
-  }
-}
-
 }  // namespace
 
 // Each pixel's normal, distance from the eye and covered share, for the

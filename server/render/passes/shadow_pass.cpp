@@ -1,3 +1,4 @@
+#include "render/passes/alpha_mask.h"
 #include "render/passes/passes.h"
 
 namespace toond::render {
@@ -17,7 +18,10 @@ void draw_shadow_pass(PassContext& context) {
   // the main pass handles the rest.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(2.0f, 2.0f);
-  gpu::Program& program = context.programs.get("shadow.vert", "shadow.frag", {});
+  // Masked materials cast a shadow only where the main pass draws them.
+  const bool alpha_tested = frame.plan.alpha_tested_shadows;
+  gpu::Program& program = context.programs.get(
+      "shadow.vert", "shadow.frag", alpha_tested ? std::vector<std::string>{"ALPHA_MASK"} : std::vector<std::string>{});
   program.use();
   program.set("u_light_view_projection", glm::mat4(frame.shadow->view_projection));
   const Viewer light{glm::dvec3(0.0), glm::normalize(caster.direction), true};
@@ -27,7 +31,10 @@ void draw_shadow_pass(PassContext& context) {
                        .faces = [&](std::size_t i) {
                          return FaceSkip{frame.culling_for(i, frame.shadow->view_projection, light, false).hidden};
                        },
-                       .draw = [&](std::size_t i) { draw_whole_object(frame, i); }});
+                       .draw = [&](std::size_t i) {
+                         if (alpha_tested) draw_alpha_tested(frame, program, i);
+                         else draw_whole_object(frame, i);
+                       }});
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
