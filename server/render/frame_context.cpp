@@ -73,7 +73,7 @@ ShadingLights lights_of(const RenderParams& params, const glm::dvec3& origin) {
 
 }  // namespace
 
-FaceSkip FrameContext::culling_for(std::size_t i, const glm::dmat4& clip, const Viewer& seen_by,
+FaceSkip FrameContext::culling_for(std::size_t i, const glm::dmat4& view_to_clip, const Viewer& seen_by,
                                    bool caps_checked) const {
   FaceSkip skip;
   if (!face_culling) return skip;
@@ -81,7 +81,7 @@ FaceSkip FrameContext::culling_for(std::size_t i, const glm::dmat4& clip, const 
   const scene::Enclosure enclosure = model.enclosure(lod_of(i));
   const bool caps_away = caps_face_away(model.caps(lod_of(i)), enclosure, scene.matrices[i], seen_by);
   if (!caps_away && !caps_checked) return skip;
-  skip.hidden = hidden_faces(enclosure, scene.matrices[i], clip, model.bounds());
+  skip.hidden = hidden_faces(enclosure, scene.matrices[i], view_to_clip, model.bounds());
   skip.unless_caps_show = !caps_away && skip.hidden != HiddenFaces::None;
   return skip;
 }
@@ -98,7 +98,8 @@ FrameContext build_frame_context(const std::vector<RenderObject>& objects, const
   }
   frame.camera = fit_camera(params.camera, frame.scene.bounds, static_cast<double>(params.width) / params.height,
                             frame.scene.outline);
-  frame.view_projection = frame.camera.view_projection();
+  frame.clip = frame.camera.projection * frame.camera.view;
+  frame.view_projection = glm::mat4(frame.clip);
   frame.viewer = Viewer{frame.camera.eye, glm::normalize(frame.camera.target - frame.camera.eye),
                         params.camera.projection == Projection::Orthographic};
   frame.supersample = frame.plan.supersample;
@@ -108,9 +109,8 @@ FrameContext build_frame_context(const std::vector<RenderObject>& objects, const
                                                          params.height)) *
                      static_cast<float>(frame.supersample);
   frame.lods = choose_levels(frame);
-  const glm::dmat4 clip = frame.camera.projection * frame.camera.view;
   for (std::size_t i = 0; i < objects.size(); ++i) {
-    frame.main_faces.push_back(frame.culling_for(i, clip, frame.viewer, true));
+    frame.main_faces.push_back(frame.culling_for(i, frame.clip, frame.viewer, true));
     frame.lods[i].culled = frame.main_faces[i].hidden;
   }
   if (frame.plan.has(Pass::Shadow)) {

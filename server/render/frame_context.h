@@ -58,7 +58,8 @@ struct FrameContext {
   std::vector<glm::mat4> model_matrices{};   // per object, rounded to float from scene.matrices
   std::vector<glm::mat3> normal_matrices{};  // inverse-transpose of their upper 3×3
   CameraSetup camera{};
-  glm::mat4 view_projection{1.0f};
+  glm::dmat4 clip{1.0};               // projection × view, in double
+  glm::mat4 view_projection{1.0f};    // the same, rounded for the shaders
   Viewer viewer{};
   // Supersampling draws everything `supersample` times larger, pixel sizes
   // included, then averages back down.

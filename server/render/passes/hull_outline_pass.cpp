@@ -15,9 +15,8 @@ double hull_reach(const FrameContext& frame, double world_per_px) {
   if (frame.orthographic()) return k;
   if (k >= 0.5) return std::numeric_limits<double>::infinity();
   double w_max = 1.0;
-  const glm::dmat4 clip = frame.camera.projection * frame.camera.view;
   for (int corner = 0; corner < 8; ++corner) {
-    w_max = std::max(w_max, (clip * glm::dvec4(frame.scene.bounds.corner(corner), 1.0)).w);
+    w_max = std::max(w_max, (frame.clip * glm::dvec4(frame.scene.bounds.corner(corner), 1.0)).w);
   }
   return k * w_max / (1.0 - k);
 }
@@ -49,12 +48,11 @@ void draw_hull_outline_pass(PassContext& context) {
   // The hull must not be cut by the near or far plane either: where it is,
   // its back faces show through the cut.
   const double reach = hull_reach(frame, world_per_px);
-  const glm::dmat4 clip = frame.camera.projection * frame.camera.view;
   draw_outline_objects(context, program, [&](std::size_t i) {
     const GpuModel& model = frame.objects[i].model;
     FaceSkip hull;
     if (frame.main_faces[i].hidden == HiddenFaces::None) return hull;
-    hull.hidden = hidden_faces(model.enclosure(frame.lod_of(i)), frame.scene.matrices[i], clip, model.bounds(), reach);
+    hull.hidden = hidden_faces(model.enclosure(frame.lod_of(i)), frame.scene.matrices[i], frame.clip, model.bounds(), reach);
     // The hull's holes move with its offset and may turn toward the camera
     // where the model's do not: its own caps, offset like it (they share
     // its vertices), are checked.
