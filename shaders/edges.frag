@@ -12,8 +12,8 @@
 // where it crosses them. CREASES_ONLY (another pass draws the silhouette)
 // leaves the silhouette's work out. The depth threshold is a fraction of
 // the model's size, so the test does not depend on how large the model is.
-uniform sampler2D u_normal_depth;  // xyz normal, w distance from the eye; w = 0: background
-uniform sampler2D u_coverage;      // the share of each pixel the model covers
+layout(binding = 0) uniform sampler2D u_normal_depth;  // xyz normal, w distance from the eye; w = 0: background
+layout(binding = 1) uniform sampler2D u_coverage;  // the share of each pixel the model covers
 uniform float u_half_width;        // pixels: half the line width
 uniform float u_depth_threshold;   // scene units
 uniform float u_cos_crease;

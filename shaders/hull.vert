@@ -7,25 +7,15 @@
 //
 // The distance is `u_width` pixels at the vertex's own depth (a width in
 // world units arrives converted to pixels, render/outline_width.h):
-// `u_world_per_px_at_w1` is the size of one pixel at clip w = 1, and a pixel
-// at depth w is w times that (w is 1 everywhere for orthographic views). A
+// `u_world_per_px_at_w1` (view.glsl) gives a pixel's size at each depth. A
 // silhouette point's normal lies in the image plane, so there the ring is
 // exactly that many pixels wide, at any distance from the camera.
-layout(location = 0) in vec3 a_position;
-layout(location = 2) in vec2 a_texcoord;
-layout(location = 3) in vec3 a_outline_offset;
+#include "attributes.glsl"
+#include "view.glsl"
+#include "object.glsl"
+#include "outline_style.glsl"
 
 out vec2 v_texcoord;
-
-uniform mat4 u_view_projection;
-uniform mat4 u_model;          // mesh → scene (frame) coordinates
-uniform mat3 u_normal_matrix;  // inverse-transpose of u_model's 3×3
-uniform float u_world_per_px_at_w1;
-uniform float u_width;        // pixels
-uniform vec2 u_viewport_px;   // the drawn image's size
-uniform vec3 u_eye;           // frame coordinates
-uniform vec3 u_view_dir;      // the view's axis, unit
-uniform int u_orthographic;
 
 // A pixel's size at depth w holds for a move parallel to the image. Off
 // the view's axis a silhouette point's normal is perpendicular to its own

@@ -3,7 +3,7 @@
 // sample stands for the surface and the share of covered samples becomes
 // the coverage. A pixel less than half covered counts as background
 // (distance 0) but keeps its coverage, which places the silhouette.
-uniform sampler2DMS u_samples;  // normal, distance from the eye (0: background)
+layout(binding = 0) uniform sampler2DMS u_samples;  // normal, distance from the eye (0: background)
 uniform int u_sample_count;
 
 layout(location = 0) out vec4 o_normal_depth;

@@ -1,9 +1,9 @@
 #version 430 core
 // Shadow pass: depth as the shadow-casting light sees the model.
-layout(location = 0) in vec3 a_position;
-layout(location = 2) in vec2 a_texcoord;
+#include "attributes.glsl"
+#include "object.glsl"
+
 uniform mat4 u_light_view_projection;
-uniform mat4 u_model;  // mesh → scene (frame) coordinates
 
 out vec2 v_texcoord;  // for the alpha test of masked materials
 

@@ -4,15 +4,9 @@
 // scene, relative to the scene's middle (composed in double on the CPU), so
 // the float maths here stays precise however far the model sits from its
 // own coordinate origin. Lighting happens in that scene-relative space.
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec2 a_texcoord;
-layout(location = 4) in vec4 a_tangent;  // xyz, w = bitangent handedness
-layout(location = 5) in vec3 a_color;    // sRGB-encoded vertex colour
-
-uniform mat4 u_view_projection;
-uniform mat4 u_model;          // mesh → scene (frame) coordinates
-uniform mat3 u_normal_matrix;  // inverse-transpose of u_model's 3×3
+#include "attributes.glsl"
+#include "view.glsl"
+#include "object.glsl"
 
 out vec3 v_position;
 out vec3 v_normal;

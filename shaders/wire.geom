@@ -1,6 +1,6 @@
 #version 430 core
 // Back-face wireframe lines of a chosen pixel width. Core profile has no wide
-// lines, so each edge of a back-facing triangle becomes a quad `u_line_px`
+// lines, so each edge of a back-facing triangle becomes a quad `line_px()`
 // pixels across. Front faces drawn in the main pass hide the lines except
 // where back faces show past them: at the silhouette and at folds, which is
 // what makes it an outline. Culling happens here, before the quads exist,
@@ -14,10 +14,14 @@ out vec2 v_texcoord;
 flat out vec2 v_segment_a;  // the edge's ends in window coordinates
 flat out vec2 v_segment_b;
 
-uniform vec2 u_viewport;  // pixels
-uniform float u_line_px;
+#include "view.glsl"
+#include "outline_style.glsl"
 
-vec2 to_screen(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * u_viewport; }
+// Half of each line lies inside the silhouette, under the front faces:
+// lines twice as wide leave the outline's width showing.
+float line_px() { return 2.0 * u_width; }
+
+vec2 to_screen(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * u_viewport_px; }
 
 void emit_edge(int a, int b) {
   vec4 ca = gl_in[a].gl_Position;
@@ -34,9 +38,9 @@ void emit_edge(int a, int b) {
   // (diagonally √½) past the width. A quad cut at the width would also cut
   // the samples of those pixels and thin the line by up to half a pixel.
   const float kCoverageMargin = 1.0;
-  vec2 side = vec2(-along.y, along.x) * (0.5 * u_line_px + kCoverageMargin);
-  vec2 ext = along * (0.5 * u_line_px + kCoverageMargin);
-  vec2 to_ndc = 2.0 / u_viewport;
+  vec2 side = vec2(-along.y, along.x) * (0.5 * line_px() + kCoverageMargin);
+  vec2 ext = along * (0.5 * line_px() + kCoverageMargin);
+  vec2 to_ndc = 2.0 / u_viewport_px;
   // Set before every vertex: flat outputs are undefined after EmitVertex.
   gl_Position = vec4(ca.xy + (-side - ext) * to_ndc * ca.w, ca.zw);
   v_texcoord = g_texcoord[a];

@@ -1,12 +1,23 @@
 #include "gpu/program.h"
 
+#include <regex>
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/gpu_error.h"
 #include "gpu/shader_compile_error.h"
+#include "gpu/shader_log.h"
 
 namespace toond::gpu {
 namespace {
+
+// The file the log's first error lies in: a module's, when the error is in
+// text an #include pasted in.
+std::string file_of_first_error(const ShaderSource& source, const std::string& log) {
+  const std::optional<int> number = first_shader_error(log).source;
+  if (!number || *number <= 0 || static_cast<std::size_t>(*number) >= source.files.size()) return source.name;
+  return source.files[static_cast<std::size_t>(*number)];
+}
 
 Shader compile_stage(GLenum stage, const ShaderSource& source, const std::vector<std::string>& defines) {
   Shader shader = Shader::create(stage);
@@ -22,7 +33,7 @@ Shader compile_stage(GLenum stage, const ShaderSource& source, const std::vector
     std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
     glGetShaderInfoLog(shader.id(), static_cast<GLsizei>(log.size()), nullptr, log.data());
     log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
-    throw ShaderCompileError(source.name, log);
+    throw ShaderCompileError(file_of_first_error(source, log), log);
   }
   return shader;
 }
@@ -59,10 +70,11 @@ Program::Program(const ShaderSource& vertex, const ShaderSource& fragment,
 
 Program::Program(const std::vector<ShaderSource>& stages, const std::vector<std::string>& defines) {
   std::vector<Shader> shaders;
-  std::string names;
+  std::string& names = names_;
   for (const ShaderSource& source : stages) {
     shaders.push_back(compile_stage(stage_of(source.name), source, defines));
     names += (names.empty() ? "" : " + ") + source.name;
+    declared_.merge(declared_uniforms(source.text));
   }
   program_ = ProgramObject::create();
   for (const Shader& sh : shaders) glAttachShader(program_.id(), sh.id());
@@ -79,10 +91,23 @@ Program::Program(const std::vector<ShaderSource>& stages, const std::vector<std:
   }
 }
 
+std::unordered_set<std::string> declared_uniforms(std::string_view source) {
+  static const std::regex declaration(R"(\buniform\s+\w+\s+(\w+)\s*[\[;=])");
+  std::unordered_set<std::string> names;
+  const std::string text(source);
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), declaration); it != std::sregex_iterator(); ++it) {
+    names.insert((*it)[1].str());
+  }
+  return names;
+}
+
 GLint Program::location(std::string_view name) {
   auto it = locations_.find(std::string(name));
   if (it != locations_.end()) return it->second;
   const std::string key(name);
+  if (!declared_.contains(key.substr(0, key.find('[')))) {
+    throw GpuError("the program of " + names_ + " declares no uniform named " + key);
+  }
   const GLint loc = glGetUniformLocation(program_.id(), key.c_str());
   locations_.emplace(key, loc);
   return loc;

@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -16,6 +17,9 @@ namespace toond::gpu {
 struct ShaderSource {
   std::string name;  // file name, for error messages
   std::string text;
+  // The files a source-string number in the text's #line directives names
+  // (gpu/shader_includes.h); empty: the text is all `name`'s.
+  std::vector<std::string> files = {};
 };
 
 class Program {
@@ -32,8 +36,11 @@ class Program {
   GLuint id() const { return program_.id(); }
   void use() const { glUseProgram(program_.id()); }
 
-  // Uniform setters look the location up once and remember it; a uniform
-  // the compiler optimised away is silently skipped (location -1).
+  // Uniform setters look the location up once and remember it. A uniform
+  // the sources declare but the compiler optimised away (a variant that
+  // does not read it) is skipped; a name no source declares is a mistake
+  // and throws GpuError, so a misspelt name fails the first render that
+  // sets it rather than leaving a value at zero.
   void set(std::string_view name, float v);
   void set(std::string_view name, int v);
   void set(std::string_view name, const glm::vec2& v);
@@ -49,8 +56,14 @@ class Program {
   GLint location(std::string_view name);
 
   ProgramObject program_;
+  std::string names_;  // the stage files, for messages
+  std::unordered_set<std::string> declared_;
   std::unordered_map<std::string, GLint> locations_;
 };
+
+// The names of the uniforms `source` declares outside blocks
+// ("uniform vec3 u_x;" gives u_x; a block's members are not among them).
+std::unordered_set<std::string> declared_uniforms(std::string_view source);
 
 // Inserts `#define X` lines right after the source's #version line.
 std::string with_defines(std::string_view source, const std::vector<std::string>& defines);

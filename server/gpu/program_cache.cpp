@@ -4,6 +4,7 @@
 #include <set>
 
 #include "gpu/shader_compile_error.h"
+#include "gpu/shader_includes.h"
 
 namespace toond::gpu {
 
@@ -32,11 +33,24 @@ Program& ProgramCache::get(const std::vector<std::string>& stages, std::vector<s
   for (const auto& d : defines) key += "|" + d;
   auto it = programs_.find(key);
   if (it != programs_.end()) return *it->second.program;
-  std::vector<ShaderSource> sources;
-  for (const auto& file : stages) sources.push_back({file, text(file)});
-  auto program = std::make_unique<Program>(sources, defines);
-  Entry entry{stages, std::move(defines), std::move(program)};
+  Built built = build(stages, defines, [&](const std::string& name) { return text(name); });
+  Entry entry{stages, std::move(built.files), std::move(defines), std::move(built.program)};
   return *programs_.emplace(key, std::move(entry)).first->second.program;
+}
+
+ProgramCache::Built ProgramCache::build(const std::vector<std::string>& stages,
+                                        const std::vector<std::string>& defines, const ShaderTextReader& read) {
+  Built built;
+  std::vector<ShaderSource> sources;
+  for (const auto& file : stages) {
+    ExpandedShader expanded = expand_includes(file, read);
+    for (const std::string& used : expanded.files) {
+      if (std::find(built.files.begin(), built.files.end(), used) == built.files.end()) built.files.push_back(used);
+    }
+    sources.push_back({file, std::move(expanded.text), std::move(expanded.files)});
+  }
+  built.program = std::make_unique<Program>(sources, defines);
+  return built;
 }
 
 ProgramCache::Reload ProgramCache::refresh() {
@@ -66,25 +80,36 @@ ProgramCache::Reload ProgramCache::refresh() {
   if (stale.empty()) return {};
 
   // Build every affected variant before swapping any in: the cache never
-  // mixes old and new texts, and a failure leaves it untouched.
-  std::vector<std::pair<Entry*, std::unique_ptr<Program>>> rebuilt;
-  auto text_of = [&](const std::string& name) -> const std::string& {
-    return stale.contains(name) ? disk_.at(name).text : live_.at(name);
+  // mixes old and new texts, and a failure leaves it untouched. An edit may
+  // include a module no program used yet: it is read here and kept only if
+  // everything builds.
+  std::map<std::string, std::string> first_read;
+  auto text_of = [&](const std::string& name) -> std::string {
+    if (stale.contains(name)) return disk_.at(name).text;
+    if (auto live = live_.find(name); live != live_.end()) return live->second;
+    if (auto read = first_read.find(name); read != first_read.end()) return read->second;
+    return first_read.emplace(name, sources_->read(name)).first->second;
   };
+  std::vector<std::pair<Entry*, Built>> rebuilt;
   for (auto& [key, entry] : programs_) {
-    const bool affected = std::any_of(entry.stages.begin(), entry.stages.end(),
+    const bool affected = std::any_of(entry.files.begin(), entry.files.end(),
                                       [&](const std::string& file) { return stale.contains(file); });
     if (!affected) continue;
-    std::vector<ShaderSource> sources;
-    for (const auto& file : entry.stages) sources.push_back({file, text_of(file)});
-    rebuilt.emplace_back(&entry, std::make_unique<Program>(sources, entry.defines));
+    rebuilt.emplace_back(&entry, build(entry.stages, entry.defines, text_of));
   }
 
   Reload reload;
-  for (auto& [entry, program] : rebuilt) entry->program = std::move(program);
+  for (auto& [entry, built] : rebuilt) {
+    entry->program = std::move(built.program);
+    entry->files = std::move(built.files);
+  }
   for (const auto& name : stale) {
     live_[name] = disk_.at(name).text;
     reload.files.push_back(name);
+  }
+  for (auto& [name, text] : first_read) {
+    disk_[name] = DiskText{text, nullptr};
+    live_[name] = std::move(text);
   }
   reload.programs = rebuilt.size();
   return reload;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "gpu/program.h"
+#include "gpu/shader_includes.h"
 #include "gpu/shader_source.h"
 
 namespace toond::gpu {
@@ -40,7 +41,8 @@ class ProgramCache {
   // Render thread, between renders (it may replace programs that get()
   // returned). Returns at once, touching no file, when the sources cannot
   // change. Otherwise asks them which files changed; when one did, rebuilds
-  // every cached program that uses an edited file and swaps them all in only
+  // every cached program that uses an edited file (a stage or a module it
+  // includes) and swaps them all in only
   // if all of them build. If one does not (or a file cannot be read), the
   // cache stays as it was and its ShaderCompileError is thrown, once: later
   // calls do not try again until a file changes again.
@@ -52,9 +54,17 @@ class ProgramCache {
  private:
   struct Entry {
     std::vector<std::string> stages;  // file names
+    std::vector<std::string> files;   // the stages and every module they include
     std::vector<std::string> defines;
     std::unique_ptr<Program> program;
   };
+  struct Built {
+    std::unique_ptr<Program> program;
+    std::vector<std::string> files;
+  };
+  // Expands each stage's includes with texts from `read`, then compiles.
+  static Built build(const std::vector<std::string>& stages, const std::vector<std::string>& defines,
+                     const ShaderTextReader& read);
   struct DiskText {
     std::string text;
     std::exception_ptr error;  // set when the file could not be read

@@ -9,6 +9,7 @@ namespace {
 
 struct Located {
   bool is_error = false;
+  std::optional<int> source;
   std::optional<int> line;
   std::string text;
 };
@@ -34,13 +35,13 @@ std::optional<Located> parse_line(const std::string& line) {
   std::smatch m;
   auto is_error = [](const std::string& kind) { return kind[0] == 'e' || kind[0] == 'E'; };
   if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia)) {
-    return Located{is_error(m[3].str()), to_line(m[2].str()), m[4].str()};
+    return Located{is_error(m[3].str()), to_line(m[1].str()), to_line(m[2].str()), m[4].str()};
   }
   if (std::regex_match(line, m, glslang)) {
-    return Located{is_error(m[1].str()), to_line(m[3].str()), m[4].str()};
+    return Located{is_error(m[1].str()), to_line(m[2].str()), to_line(m[3].str()), m[4].str()};
   }
   if (std::regex_match(line, m, bare)) {
-    return Located{is_error(m[1].str()), std::nullopt, m[2].str()};
+    return Located{is_error(m[1].str()), std::nullopt, std::nullopt, m[2].str()};
   }
   return std::nullopt;
 }
@@ -60,11 +61,11 @@ ShaderLogError first_shader_error(std::string_view log) {
     if (first_text.empty()) first_text = line;
     auto located = parse_line(line);
     if (!located) continue;
-    if (located->is_error) return {located->line, located->text};
+    if (located->is_error) return {located->source, located->line, located->text};
     if (!first_warning) first_warning = std::move(located);
   }
-  if (first_warning) return {first_warning->line, first_warning->text};
-  return {std::nullopt, first_text};
+  if (first_warning) return {first_warning->source, first_warning->line, first_warning->text};
+  return {std::nullopt, std::nullopt, first_text};
 }
 
 }  // namespace toond::gpu

@@ -5,8 +5,9 @@
 //   NVIDIA:          0(12) : error C0000: syntax error, unexpected ';'
 //   glslang, AMD,
 //   Intel (Windows): ERROR: 0:12: 'x' : undeclared identifier
-// Programs are compiled from with_defines() text, whose #line directive keeps
-// these numbers equal to the lines of the file on disk.
+// The first number is the source string: 0 for the stage file, the
+// module's number for text pasted in by #include (gpu/shader_includes.h),
+// whose #line directives keep the line equal to the line of that file.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,6 +15,7 @@
 namespace toond::gpu {
 
 struct ShaderLogError {
+  std::optional<int> source;  // source-string number, when the log gives one
   std::optional<int> line;  // 1-based line in the shader file, when the log gives one
   std::string text;         // the message, without the location prefix ("syntax error, …")
 };

@@ -80,6 +80,10 @@ struct FrameContext {
   bool orthographic() const { return viewer.orthographic; }
   glm::vec3 eye() const { return glm::vec3(camera.eye); }
   glm::vec3 view_dir() const { return glm::vec3(viewer.forward); }
+  // The size of one drawn pixel at clip w = 1 (a pixel at depth w is w
+  // times it): projection[1][1] maps a view-space height at depth w to NDC,
+  // and NDC spans `draw_height` pixels over 2 units.
+  double world_per_px_at_w1() const { return 2.0 / (camera.projection[1][1] * draw_height); }
   // The faces of object i that cannot show through `view_projection` to
   // `seen_by`. An object with holes whose caps do not all turn away skips
   // them too in a pass that can check its caps (`caps_checked`), else none.

@@ -6,8 +6,10 @@ namespace {
 // A square ground plane just under the model's lowest point (a hair lower,
 // so a flat-bottomed model does not z-fight with it), facing up; its texture
 // coordinates run over `repeat` tiles per side.
-scene::Model make_floor(const scene::Bounds& bounds, float size, float repeat,
+scene::Model make_floor(const scene::Bounds& bounds, const FloorParams& params,
                         const std::shared_ptr<const scene::Texture>& image) {
+  const float size = params.size;
+  const float repeat = params.texture_repeat;
   const float half = bounds.radius() * size;
   const glm::vec3 c = bounds.centre();
   const float y = bounds.min.y - bounds.radius() * 1e-3f;
@@ -22,6 +24,7 @@ scene::Model make_floor(const scene::Bounds& bounds, float size, float repeat,
   m.submeshes = {{0, 6, 0}};
   m.bounds = {m.positions[0], m.positions[2]};
   floor.materials.push_back({});
+  floor.materials[0].diffuse = params.color;
   if (image) {
     floor.textures.push_back(*image);
     floor.materials[0].diffuse_texture = 0;
@@ -58,24 +61,16 @@ gpu::NormalDepthTarget& FrameResources::normal_depth_for(int width, int height, 
 const GpuModel& FrameResources::floor_for(const scene::Bounds& b, const FloorParams& params, bool textured) {
   const std::shared_ptr<const scene::Texture> image = textured ? params.image : nullptr;
   if (!floor_ || floor_size_ != params.size || floor_repeat_ != params.texture_repeat || floor_image_ != image ||
-      floor_bounds_.min != b.min || floor_bounds_.max != b.max) {
+      floor_color_ != params.color || floor_bounds_.min != b.min || floor_bounds_.max != b.max) {
     floor_.reset();
-    floor_.emplace(make_floor(b, params.size, params.texture_repeat, image));
+    floor_.emplace(make_floor(b, params, image));
     floor_bounds_ = b;
     floor_size_ = params.size;
     floor_repeat_ = params.texture_repeat;
     floor_image_ = image;
+    floor_color_ = params.color;
   }
   return *floor_;
-}
-
-const gpu::Buffer& FrameResources::uniform_buffer(std::size_t size) {
-  if (!uniform_buffer_ || uniform_buffer_size_ != size) {
-    uniform_buffer_ = gpu::Buffer::create();
-    glNamedBufferStorage(uniform_buffer_.id(), static_cast<GLsizeiptr>(size), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    uniform_buffer_size_ = size;
-  }
-  return uniform_buffer_;
 }
 
 void FrameResources::draw_fullscreen_triangle() const {

@@ -1,7 +1,8 @@
 #pragma once
 // The GL objects frames draw into and with, kept from one render to the next
 // while their size stays the same: the target, the shadow map, the edge
-// prepass, the floor's mesh and the full-screen triangle's vertex array.
+// prepass, the floor's mesh, the full-screen triangle's vertex array and
+// the buffer of the frame's uniform blocks.
 // Render thread only.
 #include <memory>
 #include <optional>
@@ -9,6 +10,7 @@
 #include "gpu/normal_depth_target.h"
 #include "gpu/render_target.h"
 #include "gpu/shadow_map.h"
+#include "gpu/uniform_arena.h"
 #include "render/gpu_model.h"
 #include "render/render_params.h"
 
@@ -29,8 +31,9 @@ class FrameResources {
   // drew.
   const gpu::ShadowMap& shadow_map() const { return *shadow_map_; }
   const gpu::NormalDepthTarget& normal_depth() const { return *normal_depth_; }
-  // A uniform buffer of `size` bytes, the same from frame to frame.
-  const gpu::Buffer& uniform_buffer(std::size_t size);
+  // Where the frame's uniform blocks are written (render/frame_blocks.h),
+  // the same buffer from frame to frame.
+  gpu::UniformArena& frame_uniforms() { return frame_uniforms_; }
   // Binds the vertex array a full-screen triangle is drawn with (core
   // profile draws need one even when the vertex shader makes its own
   // positions) and draws it.
@@ -41,12 +44,12 @@ class FrameResources {
   std::optional<gpu::ShadowMap> shadow_map_;
   std::optional<gpu::NormalDepthTarget> normal_depth_;
   gpu::VertexArray fullscreen_vao_ = gpu::VertexArray::create();
-  gpu::Buffer uniform_buffer_;
-  std::size_t uniform_buffer_size_ = 0;
+  gpu::UniformArena frame_uniforms_;
   std::optional<GpuModel> floor_;
   scene::Bounds floor_bounds_;
   float floor_size_ = 0;
   float floor_repeat_ = 0;
+  glm::vec3 floor_color_{0.0f};
   std::shared_ptr<const scene::Texture> floor_image_;  // the image floor_ was built with
 };
 

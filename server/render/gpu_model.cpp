@@ -4,18 +4,10 @@
 #include <cmath>
 #include <cstring>
 
+#include "render/vertex_attribute.h"
+
 namespace toond::render {
 namespace {
-
-// Attribute locations shared with shaders/*.vert.
-enum Attribute : GLuint {
-  kPosition = 0,
-  kNormal = 1,
-  kTexcoord = 2,
-  kOutlineNormal = 3,
-  kTangent = 4,
-  kColor = 5,
-};
 
 struct Vertex {
   float position[3];
@@ -107,17 +99,29 @@ GpuModel::GpuModel(const scene::Model& model)
     glVertexArrayAttribFormat(vao_.id(), location, size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(offset));
     glVertexArrayAttribBinding(vao_.id(), location, 0);
   };
-  attribute(kPosition, 3, offsetof(Vertex, position));
-  attribute(kNormal, 3, offsetof(Vertex, normal));
-  attribute(kTexcoord, 2, offsetof(Vertex, texcoord));
-  attribute(kOutlineNormal, 3, offsetof(Vertex, outline_normal));
-  attribute(kTangent, 4, offsetof(Vertex, tangent));
-  attribute(kColor, 3, offsetof(Vertex, color));
+  attribute(kPositionAttribute, 3, offsetof(Vertex, position));
+  attribute(kNormalAttribute, 3, offsetof(Vertex, normal));
+  attribute(kTexcoordAttribute, 2, offsetof(Vertex, texcoord));
+  attribute(kOutlineOffsetAttribute, 3, offsetof(Vertex, outline_normal));
+  attribute(kTangentAttribute, 4, offsetof(Vertex, tangent));
+  attribute(kColorAttribute, 3, offsetof(Vertex, color));
 
   for (const scene::Texture& tex : model.textures) textures_.push_back(upload_texture(tex, gpu_bytes_));
   for (const scene::Material& m : model.materials) {
     materials_.push_back({m.name, m.diffuse, m.diffuse_texture, m.normal_texture, m.opacity, m.alpha_cutoff, m.unlit});
+    MaterialBlock block;
+    block.base_color = m.diffuse;
+    block.opacity = m.opacity;
+    block.alpha_cutoff = m.alpha_cutoff;
+    block.has_texture = m.diffuse_texture >= 0 ? 1 : 0;
+    material_blocks_.push_back(material_arena_.add(block));
   }
+  material_arena_.upload();
+}
+
+void GpuModel::bind_material(int index) const {
+  material_arena_.bind(MaterialBlock::kBinding, material_blocks_[static_cast<std::size_t>(index)],
+                       sizeof(MaterialBlock));
 }
 
 void GpuModel::draw(const scene::Submesh& submesh) const {

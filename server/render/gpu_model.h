@@ -1,10 +1,14 @@
 #pragma once
 // A model's GPU copy: one interleaved vertex buffer, one index buffer (the
-// full mesh, then each coarser level of detail, then every level's caps), its textures (sRGB, mipmapped, repeating) and per-material draw ranges.
+// full mesh, then each coarser level of detail, then every level's caps),
+// its textures (sRGB, mipmapped, repeating), per-material draw ranges and
+// one uniform block per material.
 // Created and destroyed on the render thread only.
 #include <vector>
 
 #include "gpu/gl_object.h"
+#include "gpu/uniform_arena.h"
+#include "render/uniform_blocks.h"
 #include "scene/model.h"
 
 namespace toond::render {
@@ -24,6 +28,9 @@ class GpuModel {
   explicit GpuModel(const scene::Model& model);
 
   void bind() const { glBindVertexArray(vao_.id()); }
+  // Binds a material's uniform block (shaders/material.glsl), made once
+  // when the model was uploaded.
+  void bind_material(int index) const;
   // Draws one submesh (the VAO must be bound); the ranges of every level
   // index the one index buffer.
   void draw(const scene::Submesh& submesh) const;
@@ -74,6 +81,8 @@ class GpuModel {
   gpu::Buffer indices_;
   std::vector<gpu::Texture> textures_;
   std::vector<GpuMaterial> materials_;
+  gpu::UniformArena material_arena_;
+  std::vector<std::size_t> material_blocks_;  // each material's offset in the arena
   struct Level {
     std::vector<scene::Submesh> submeshes;  // ranges of the shared index buffer
     std::size_t first_index = 0;            // the level's whole range

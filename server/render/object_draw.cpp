@@ -1,6 +1,8 @@
 #include "render/object_draw.h"
 
+#include "render/frame_blocks.h"
 #include "render/frame_context.h"
+#include "render/texture_unit.h"
 
 namespace toond::render {
 namespace {
@@ -51,17 +53,12 @@ void cull(HiddenFaces faces) {
   glCullFace(faces == HiddenFaces::Back ? GL_BACK : GL_FRONT);
 }
 
-void set_object_matrices(gpu::Program& program, const FrameContext& frame, std::size_t i) {
-  program.set("u_model", frame.model_matrices[i]);
-  program.set("u_normal_matrix", frame.normal_matrices[i]);
-}
-
-void draw_objects(const FrameContext& frame, const ObjectDraw& how) {
+void draw_objects(const FrameContext& frame, const FrameBlocks& blocks, const ObjectDraw& how) {
   for (std::size_t i = 0; i < frame.objects.size(); ++i) {
     const GpuModel& model = frame.objects[i].model;
     const FaceSkip skip = how.faces(i);
     cull(skip.hidden);
-    if (how.program) set_object_matrices(*how.program, frame, i);
+    blocks.bind_object(i);
     model.bind();
     how.draw(i);
     if (skip.unless_caps_show) {
@@ -75,6 +72,20 @@ void draw_objects(const FrameContext& frame, const ObjectDraw& how) {
 
 void draw_whole_object(const FrameContext& frame, std::size_t i) {
   frame.objects[i].model.draw_all(frame.lod_of(i));
+}
+
+void bind_material(const GpuModel& model, int material) {
+  model.bind_material(material);
+  const int texture = model.materials()[static_cast<std::size_t>(material)].texture;
+  if (texture >= 0) glBindTextureUnit(texture_unit::kDiffuse, model.texture(texture));
+}
+
+void draw_by_material(const FrameContext& frame, std::size_t i) {
+  const GpuModel& model = frame.objects[i].model;
+  for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
+    bind_material(model, sub.material);
+    model.draw(sub);
+  }
 }
 
 }  // namespace toond::render

@@ -50,7 +50,8 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   gpu::RenderTarget& target =
       resources_.target_for(frame.draw_width, frame.draw_height, frame.plan.samples, real_gpu());
   out.samples = target.samples();
-  PassContext context{frame, programs_, resources_, target, {}};
+  const FrameBlocks blocks(frame, resources_.frame_uniforms());
+  PassContext context{frame, blocks, programs_, resources_, target, {}};
   for (Pass pass : frame.plan.passes) {
     const DrawPass draw = drawing_pass(pass);
     if (!draw) continue;

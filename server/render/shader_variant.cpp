@@ -1,50 +1,47 @@
 #include "render/shader_variant.h"
 
+#include <array>
+
 namespace toond::render {
 
-const char* define_name(ToonFeature feature) {
-  switch (feature) {
-    case ToonFeature::ModeCel: return "MODE_CEL";
-    case ToonFeature::ModePhong: return "MODE_PHONG";
-    case ToonFeature::ModeFlat: return "MODE_FLAT";
-    case ToonFeature::RoundCeil: return "ROUND_CEIL";
-    case ToonFeature::RoundFloor: return "ROUND_FLOOR";
-    case ToonFeature::RoundRound: return "ROUND_ROUND";
-    case ToonFeature::TwoTone: return "TWO_TONE";
-    case ToonFeature::Ramp: return "RAMP";
-    case ToonFeature::BandAa: return "BAND_AA";
-    case ToonFeature::BaseWhite: return "BASE_WHITE";
-    case ToonFeature::HasTexture: return "HAS_TEXTURE";
-    case ToonFeature::VertexColor: return "VERTEX_COLOR";
-    case ToonFeature::NormalMap: return "NORMAL_MAP";
-    case ToonFeature::ShadeColor: return "SHADE_COLOR";
-    case ToonFeature::CombineSum: return "COMBINE_SUM";
-    case ToonFeature::HasPointLights: return "HAS_POINT_LIGHTS";
-    case ToonFeature::Specular: return "SPECULAR";
-    case ToonFeature::Rim: return "RIM";
-    case ToonFeature::RimMaskLit: return "RIM_MASK_LIT";
-    case ToonFeature::RimMaskShadow: return "RIM_MASK_SHADOW";
-    case ToonFeature::ContourEven: return "CONTOUR_EVEN";
-    case ToonFeature::ContourFresnel: return "CONTOUR_FRESNEL";
-    case ToonFeature::HalftoneDots: return "HALFTONE_DOTS";
-    case ToonFeature::HalftoneChecker: return "HALFTONE_CHECKER";
-    case ToonFeature::Shadows: return "SHADOWS";
-    case ToonFeature::AlphaMask: return "ALPHA_MASK";
-    case ToonFeature::Count: break;
+namespace {
+
+// Each feature's #define, in the order of its enum. An array sized by the
+// enum's Count but given fewer names fills up with nulls: all_named keeps
+// the two in step.
+constexpr std::array<const char*, static_cast<std::size_t>(ToonFeature::Count)> kToonDefines = {
+    "MODE_CEL",         "MODE_PHONG",      "MODE_FLAT",     "ROUND_CEIL",   "ROUND_FLOOR",  "ROUND_ROUND",
+    "TWO_TONE",         "RAMP",            "BAND_AA",       "BASE_WHITE",   "HAS_TEXTURE",  "VERTEX_COLOR",
+    "NORMAL_MAP",       "SHADE_COLOR",     "COMBINE_SUM",   "HAS_POINT_LIGHTS", "SPECULAR", "RIM",
+    "RIM_MASK_LIT",     "RIM_MASK_SHADOW", "CONTOUR_EVEN",  "CONTOUR_FRESNEL", "HALFTONE_DOTS",
+    "HALFTONE_CHECKER", "SHADOWS",         "ALPHA_MASK"};
+constexpr std::array<const char*, static_cast<std::size_t>(OutlineFeature::Count)> kOutlineDefines = {
+    "OUTLINE_MATERIAL", "OUTLINE_TEXTURE", "LINE_SEGMENT", "ALPHA_MASK"};
+constexpr std::array<const char*, static_cast<std::size_t>(DepthFeature::Count)> kDepthDefines = {"ALPHA_MASK"};
+constexpr std::array<const char*, static_cast<std::size_t>(EdgeFeature::Count)> kEdgeDefines = {"CREASES_ONLY"};
+
+template <std::size_t N>
+constexpr bool all_named(const std::array<const char*, N>& names) {
+  for (const char* name : names) {
+    if (name == nullptr) return false;
   }
-  return "?";
+  return true;
+}
+static_assert(all_named(kToonDefines) && all_named(kOutlineDefines) && all_named(kDepthDefines) &&
+              all_named(kEdgeDefines));
+
+template <class Feature, std::size_t N>
+const char* name_in(const std::array<const char*, N>& names, Feature feature) {
+  const auto i = static_cast<std::size_t>(feature);
+  return i < N ? names[i] : "?";
 }
 
-const char* define_name(OutlineFeature feature) {
-  switch (feature) {
-    case OutlineFeature::Material: return "OUTLINE_MATERIAL";
-    case OutlineFeature::Texture: return "OUTLINE_TEXTURE";
-    case OutlineFeature::LineSegment: return "LINE_SEGMENT";
-    case OutlineFeature::AlphaMask: return "ALPHA_MASK";
-    case OutlineFeature::Count: break;
-  }
-  return "?";
-}
+}  // namespace
+
+const char* define_name(ToonFeature feature) { return name_in(kToonDefines, feature); }
+const char* define_name(OutlineFeature feature) { return name_in(kOutlineDefines, feature); }
+const char* define_name(DepthFeature feature) { return name_in(kDepthDefines, feature); }
+const char* define_name(EdgeFeature feature) { return name_in(kEdgeDefines, feature); }
 
 ToonVariant& ToonVariant::set_mode(ToonFeature mode) {
   set(ToonFeature::ModeCel, false);
@@ -64,12 +61,5 @@ std::vector<std::string> ToonVariant::defines() const {
   return out;
 }
 
-std::vector<std::string> OutlineVariant::defines() const {
-  std::vector<std::string> out;
-  for (std::size_t i = 0; i < features.size(); ++i) {
-    if (features.test(i)) out.emplace_back(define_name(static_cast<OutlineFeature>(i)));
-  }
-  return out;
-}
 
 }  // namespace toond::render

@@ -2,6 +2,8 @@
 // Shader variants as types: a set of features (each a #define of the
 // shader) plus the counts some features carry. The plan and the passes
 // build and test these; only ProgramCache sees their #define strings.
+// Every program variant a plan can draw with is one of these types, so a
+// test can build them all (ShaderVariants).
 #include <bitset>
 #include <cstddef>
 #include <string>
@@ -58,22 +60,52 @@ struct ToonVariant {
   bool operator==(const ToonVariant&) const = default;
 };
 
+// A set of on/off features of a shader with no counts: `Feature` is an
+// enum ending in Count, and define_name(Feature) names its #defines.
+template <class Feature>
+struct FeatureSet {
+  static constexpr std::size_t kCount = static_cast<std::size_t>(Feature::Count);
+  std::bitset<kCount> features;
+
+  bool has(Feature f) const { return features.test(static_cast<std::size_t>(f)); }
+  FeatureSet& set(Feature f, bool on = true) {
+    features.set(static_cast<std::size_t>(f), on);
+    return *this;
+  }
+  std::vector<std::string> defines() const {
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < kCount; ++i) {
+      if (features.test(i)) out.emplace_back(define_name(static_cast<Feature>(i)));
+    }
+    return out;
+  }
+  // Every set of these features, for tests that compile them all.
+  static std::vector<FeatureSet> all() {
+    std::vector<FeatureSet> out;
+    for (unsigned long bits = 0; bits < (1ul << kCount); ++bits) out.push_back(FeatureSet{std::bitset<kCount>(bits)});
+    return out;
+  }
+  bool operator==(const FeatureSet&) const = default;
+};
+
 // hull.frag's features (the hull pass and the wireframe share it).
 enum class OutlineFeature : std::size_t { Material, Texture, LineSegment, AlphaMask, Count };
 const char* define_name(OutlineFeature feature);
 
-struct OutlineVariant {
-  std::bitset<static_cast<std::size_t>(OutlineFeature::Count)> features;
-
-  bool has(OutlineFeature f) const { return features.test(static_cast<std::size_t>(f)); }
-  OutlineVariant& set(OutlineFeature f, bool on = true) {
-    features.set(static_cast<std::size_t>(f), on);
-    return *this;
-  }
+struct OutlineVariant : FeatureSet<OutlineFeature> {
   // Whether the colour comes from each material (not one fixed colour).
   bool per_material() const { return has(OutlineFeature::Material) || has(OutlineFeature::Texture); }
-  std::vector<std::string> defines() const;
-  bool operator==(const OutlineVariant&) const = default;
 };
+
+// The passes that write only depth or normals (shadow.frag,
+// normal_depth.frag): the alpha test of masked materials.
+enum class DepthFeature : std::size_t { AlphaMask, Count };
+const char* define_name(DepthFeature feature);
+using DepthVariant = FeatureSet<DepthFeature>;
+
+// edges.frag's: creases alone, when another pass draws the silhouette.
+enum class EdgeFeature : std::size_t { CreasesOnly, Count };
+const char* define_name(EdgeFeature feature);
+using EdgeVariant = FeatureSet<EdgeFeature>;
 
 }  // namespace toond::render

@@ -81,7 +81,7 @@ bool trace_rims(const EdgeTable& balance, std::vector<std::vector<std::uint32_t>
 // many of them (a hostile upload) leave the mesh Open instead, which only
 // means its back faces are drawn.
 constexpr std::size_t kLongestRim = 256;
-constexpr double kCappingBudget = 4e7;  // Σ n³ over the rims, about 0.1 s
+constexpr double kCappingBudget = 4e7;  // Σ n³ over the rims: a fraction of a second, not minutes
 
 // The triangulation of least total area spanning the loop of points (dynamic
 // programming over its vertices, O(n³)), its triangles wound like the loop.

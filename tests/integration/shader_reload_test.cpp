@@ -33,7 +33,7 @@ fs::path copy_shaders() {
   const fs::path dir = make_temp_dir("toond-shaders");
   for (const auto& entry : fs::directory_iterator(TOOND_SHADER_SOURCE_DIR)) {
     const auto ext = entry.path().extension();
-    if (ext == ".vert" || ext == ".frag") fs::copy_file(entry.path(), dir / entry.path().filename());
+    if (ext == ".vert" || ext == ".frag" || ext == ".geom" || ext == ".glsl") fs::copy_file(entry.path(), dir / entry.path().filename());
   }
   return dir;
 }
@@ -111,6 +111,37 @@ TEST_F(ShaderReload, EditsRenderBrokenEditsReportFileAndLineAndThePreviousProgra
   write_text(frag, original);
   const image::Image fixed = render_ok(client, params_);
   EXPECT_EQ(differing_pixels(before, fixed), 0u);
+}
+
+TEST_F(ShaderReload, AModuleEditRendersAndABrokenOneIsReportedAtItsOwnLine) {
+  Daemon daemon({}, {"--shader-dir", dir_.string()});
+  auto client = daemon.client();
+  const fs::path module = dir_ / "toon_contour.glsl";
+  const std::string original = read_text(module);
+  const image::Image before = render_ok(client, params_);
+  ASSERT_GT(before.width, 0);
+
+  // The module's last function inverts every colour before it returns.
+  const std::size_t at = original.rfind("return color;");
+  ASSERT_NE(at, std::string::npos);
+  auto with_line = [&](const std::string& text, const std::string& line) {
+    return text.substr(0, at) + line + "\n  " + text.substr(at);
+  };
+  write_text(module, with_line(original, "color = vec3(1.0) - color;"));
+  const image::Image edited = render_ok(client, params_);
+  EXPECT_GT(differing_pixels(before, edited), 96u * 96u / 10) << "the module's edit did not change the image";
+
+  write_text(module, with_line(original, "float broken = ;"));
+  const int broken_line = 1 + static_cast<int>(std::count(original.begin(), original.begin() + static_cast<long>(at), '\n'));
+  auto res = post_json(client, "/render", params_);
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 500) << res->body;
+  const json error = error_of(res);
+  EXPECT_EQ(error.value("path", ""), "toon_contour.glsl") << res->body;
+  EXPECT_EQ(error.value("line", 0), broken_line) << res->body;
+
+  write_text(module, original);
+  EXPECT_EQ(differing_pixels(before, render_ok(client, params_)), 0u);
 }
 
 TEST_F(ShaderReload, AMissingFileInTheFolderIsAnErrorNamingIt) {

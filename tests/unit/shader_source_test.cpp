@@ -215,6 +215,57 @@ TEST_F(ShaderReload, AnEditRebuildsEveryVariantUsingTheFile) {
   EXPECT_NE(cache.get("t.vert", "t.frag", {"FEATURE"}).id(), variant);
 }
 
+TEST_F(ShaderReload, AnEditedModuleRebuildsTheProgramsThatIncludeIt) {
+  write(dir_ / "tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
+  write(dir_ / "m.frag",
+        "#version 430 core\nout vec4 o_color;\n#include \"tint.glsl\"\nvoid main() { o_color = vec4(tint(), 1.0); }\n");
+  ProgramCache cache(std::make_unique<ShaderDirectory>(dir_));
+  const GLuint with_module = cache.get("t.vert", "m.frag", {}).id();
+  const GLuint without = cache.get("t.vert", "t.frag", {}).id();
+
+  write(dir_ / "tint.glsl", "vec3 tint() { return vec3(0.5); }\n");
+  const auto reload = cache.refresh();
+  EXPECT_EQ(reload.files, std::vector<std::string>{"tint.glsl"});
+  EXPECT_EQ(reload.programs, 1u);
+  EXPECT_NE(cache.get("t.vert", "m.frag", {}).id(), with_module);
+  EXPECT_EQ(cache.get("t.vert", "t.frag", {}).id(), without);
+
+  // An error inside the module names the module and its own line.
+  write(dir_ / "tint.glsl", "// tint\nvec3 tint() { return ; }\n");
+  try {
+    cache.refresh();
+    FAIL() << "a broken module was accepted";
+  } catch (const ShaderCompileError& e) {
+    EXPECT_EQ(e.file(), "tint.glsl") << e.log();
+    EXPECT_EQ(first_shader_error(e.log()).line, 2) << e.log();
+  }
+}
+
+TEST_F(ShaderReload, AnEditMayIncludeAModuleNoProgramUsedYet) {
+  ProgramCache cache(std::make_unique<ShaderDirectory>(dir_));
+  const GLuint before = cache.get("t.vert", "t.frag", {}).id();
+  write(dir_ / "half.glsl", "vec3 half_of(vec3 v) { return 0.5 * v; }\n");
+  write(dir_ / "t.frag",
+        "#version 430 core\nin vec3 v_tint;\nout vec4 o_color;\n#include \"half.glsl\"\n"
+        "void main() { o_color = vec4(half_of(v_tint), 1.0); }\n");
+  EXPECT_EQ(cache.refresh().programs, 1u);
+  EXPECT_NE(cache.get("t.vert", "t.frag", {}).id(), before);
+  // The module is watched from now on.
+  write(dir_ / "half.glsl", "vec3 half_of(vec3 v) { return 0.25 * v; }\n");
+  EXPECT_EQ(cache.refresh().files, std::vector<std::string>{"half.glsl"});
+}
+
+TEST_F(ShaderReload, AUniformNoSourceDeclaresIsAnErrorAndAnInactiveOneIsNot) {
+  ProgramCache cache(std::make_unique<ShaderDirectory>(dir_));
+  write(dir_ / "u.frag",
+        "#version 430 core\nout vec4 o_color;\nuniform float u_used;\nuniform float u_unused;\n"
+        "void main() { o_color = vec4(u_used); }\n");
+  Program& program = cache.get("t.vert", "u.frag", {});
+  EXPECT_NO_THROW(program.set("u_used", 1.0f));
+  EXPECT_NO_THROW(program.set("u_unused", 1.0f));  // declared, optimised away by this variant
+  EXPECT_THROW(program.set("u_usde", 1.0f), GpuError);
+}
+
 TEST_F(ShaderReload, ABrokenEditReportsOnceAndKeepsThePreviousProgram) {
   ProgramCache cache(std::make_unique<ShaderDirectory>(dir_));
   const GLuint good = cache.get("t.vert", "t.frag", {}).id();

@@ -1,6 +1,7 @@
 #include <cmath>
 
 #include "render/passes/passes.h"
+#include "render/texture_unit.h"
 
 namespace toond::render {
 
@@ -12,14 +13,11 @@ void draw_edge_pass(PassContext& context) {
   const gpu::NormalDepthTarget& normals = context.resources.normal_depth();
   context.target.bind_for_drawing();
   glDisable(GL_DEPTH_TEST);
-  gpu::Program& edges =
-      context.programs.get("fullscreen.vert", "edges.frag",
-                           frame.plan.creases_only ? std::vector<std::string>{"CREASES_ONLY"} : std::vector<std::string>{});
+  const EdgeVariant variant = EdgeVariant{}.set(EdgeFeature::CreasesOnly, frame.plan.creases_only);
+  gpu::Program& edges = context.programs.get("fullscreen.vert", "edges.frag", variant.defines());
   edges.use();
-  glBindTextureUnit(0, normals.texture());
-  glBindTextureUnit(1, normals.coverage_texture());
-  edges.set("u_normal_depth", 0);
-  edges.set("u_coverage", 1);
+  glBindTextureUnit(texture_unit::kNormalDepth, normals.texture());
+  glBindTextureUnit(texture_unit::kCoverage, normals.coverage_texture());
   edges.set("u_half_width", 0.5f * frame.outline_px);
   edges.set("u_depth_threshold", outline.depth_threshold * 2.0f * frame.scene.bounds.radius());
   edges.set("u_cos_crease", static_cast<float>(std::cos(glm::radians(outline.crease_angle_deg))));

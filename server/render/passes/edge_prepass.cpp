@@ -1,5 +1,5 @@
-#include "render/passes/alpha_mask.h"
 #include "render/passes/passes.h"
+#include "render/texture_unit.h"
 
 namespace toond::render {
 namespace {
@@ -24,27 +24,21 @@ void draw_edge_prepass(PassContext& context) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   const bool alpha_tested = frame.plan.alpha_tested_outlines;
-  gpu::Program& prepass = context.programs.get("toon.vert", "normal_depth.frag",
-                                               alpha_tested ? std::vector<std::string>{"ALPHA_MASK"}
-                                                            : std::vector<std::string>{});
+  const DepthVariant variant = DepthVariant{}.set(DepthFeature::AlphaMask, alpha_tested);
+  gpu::Program& prepass = context.programs.get("toon.vert", "normal_depth.frag", variant.defines());
   prepass.use();
-  prepass.set("u_view_projection", frame.view_projection);
-  prepass.set("u_eye", frame.eye());
-  prepass.set("u_view_dir", frame.view_dir());
-  prepass.set("u_orthographic", frame.orthographic() ? 1 : 0);
-  draw_objects(frame, {.program = &prepass,
-                       .faces = [&](std::size_t i) { return frame.main_faces[i]; },
-                       .draw = [&](std::size_t i) {
-                         if (alpha_tested) draw_alpha_tested(frame, prepass, i);
-                         else draw_whole_object(frame, i);
-                       }});
+  draw_objects(frame, context.blocks,
+               {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
+                .draw = [&](std::size_t i) {
+                  if (alpha_tested) draw_by_material(frame, i);
+                  else draw_whole_object(frame, i);
+                }});
   if (!normals.needs_resolve()) return;
   normals.bind_for_resolve();
   glDisable(GL_DEPTH_TEST);
   gpu::Program& resolve = context.programs.get("fullscreen.vert", "normal_depth_resolve.frag", {});
   resolve.use();
-  glBindTextureUnit(0, normals.sample_texture());
-  resolve.set("u_samples", 0);
+  glBindTextureUnit(texture_unit::kPrepassSamples, normals.sample_texture());
   resolve.set("u_sample_count", normals.samples());
   context.resources.draw_fullscreen_triangle();
 }

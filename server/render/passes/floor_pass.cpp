@@ -1,5 +1,5 @@
 #include "render/passes/passes.h"
-#include "render/passes/shading_uniforms.h"
+#include "render/texture_unit.h"
 
 namespace toond::render {
 
@@ -15,16 +15,10 @@ void draw_floor_pass(PassContext& context) {
   variant.set(ToonFeature::HasTexture, textured);
   gpu::Program& program = context.programs.get("toon.vert", "toon.frag", variant.defines());
   program.use();
-  set_camera_uniforms(program, frame);
   // The floor is made in frame coordinates already.
-  program.set("u_model", glm::mat4(1.0f));
-  program.set("u_normal_matrix", glm::mat3(1.0f));
-  program.set("u_base_color", params.color);
-  if (textured) {
-    glBindTextureUnit(0, floor.texture(0));
-    program.set("u_diffuse_map", 0);
-  }
-  if (frame.shadow) set_shadow_uniforms(program, context);
+  context.blocks.bind_frame_placement();
+  bind_material(floor, 0);
+  if (frame.shadow) glBindTextureUnit(texture_unit::kShadowMap, context.resources.shadow_map().texture());
   floor.bind();
   floor.draw_all();
 }

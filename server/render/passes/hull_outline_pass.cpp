@@ -31,24 +31,14 @@ void draw_hull_outline_pass(PassContext& context) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   gpu::Program& program = context.programs.get("hull.vert", "hull.frag", frame.plan.outline.defines());
   program.use();
-  program.set("u_view_projection", frame.view_projection);
-  // projection[1][1] maps a view-space height at depth w to NDC, and NDC
-  // spans `height` pixels over 2 units.
-  const double world_per_px = 2.0 / (frame.camera.projection[1][1] * frame.draw_height);
-  program.set("u_world_per_px_at_w1", static_cast<float>(world_per_px));
-  program.set("u_width", frame.outline_px);
-  program.set("u_viewport_px", glm::vec2(static_cast<float>(frame.draw_width), static_cast<float>(frame.draw_height)));
-  program.set("u_eye", frame.eye());
-  program.set("u_view_dir", frame.view_dir());
-  program.set("u_orthographic", frame.orthographic() ? 1 : 0);
   // The stencil keeps the hull off the model, so its faces toward the
   // camera may draw the ring: where a closed model's back faces may be
   // skipped, the hull's may too. Its front faces lie nearer than its back
   // ones, so they pass every depth test (a floor's) the back ones would.
   // The hull must not be cut by the near or far plane either: where it is,
   // its back faces show through the cut.
-  const double reach = hull_reach(frame, world_per_px);
-  draw_outline_objects(context, program, [&](std::size_t i) {
+  const double reach = hull_reach(frame, frame.world_per_px_at_w1());
+  draw_outline_objects(context, [&](std::size_t i) {
     const GpuModel& model = frame.objects[i].model;
     FaceSkip hull;
     if (frame.main_faces[i].hidden == HiddenFaces::None) return hull;

@@ -1,5 +1,5 @@
 #include "render/passes/passes.h"
-#include "render/passes/shading_uniforms.h"
+#include "render/texture_unit.h"
 
 namespace toond::render {
 namespace {
@@ -21,32 +21,24 @@ ToonVariant material_variant(const FrameContext& frame, const GpuMaterial& mater
   return variant;
 }
 
-// Object i, submesh by submesh, each with its material's program.
+// Object i, submesh by submesh, each with its material's program and
+// block; a program is switched only where the variant changes.
 void shade_object(PassContext& context, std::size_t i) {
   const FrameContext& frame = context.frame;
   const GpuModel& model = frame.objects[i].model;
+  const gpu::Program* in_use = nullptr;
   for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
     const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
     const ToonVariant variant = material_variant(frame, material);
     gpu::Program& program = context.programs.get("toon.vert", "toon.frag", variant.defines());
-    program.use();
-    set_camera_uniforms(program, frame);
-    set_object_matrices(program, frame, i);
-    program.set("u_base_color", material.diffuse);
-    if (variant.has(ToonFeature::AlphaMask)) {
-      program.set("u_opacity", material.opacity);
-      program.set("u_alpha_cutoff", material.alpha_cutoff);
-    }
-    if (variant.has(ToonFeature::ShadeColor)) program.set("u_shade_color", frame.params.shade_colors.at(material.name));
+    if (&program != in_use) program.use();
+    in_use = &program;
+    bind_material(model, sub.material);
     if (variant.has(ToonFeature::NormalMap)) {
-      glBindTextureUnit(2, model.texture(material.normal_texture));
-      program.set("u_normal_map", 2);
+      glBindTextureUnit(texture_unit::kNormalMap, model.texture(material.normal_texture));
     }
-    if (variant.has(ToonFeature::HasTexture)) {
-      glBindTextureUnit(0, model.texture(material.texture));
-      program.set("u_diffuse_map", 0);
-    }
-    if (frame.shadow) set_shadow_uniforms(program, context);
+    // A request's colour for one material's darkest band, by its name.
+    if (variant.has(ToonFeature::ShadeColor)) program.set("u_shade_color", frame.params.shade_colors.at(material.name));
     model.draw(sub);
   }
 }
@@ -74,8 +66,8 @@ void draw_main_pass(PassContext& context) {
   glStencilFunc(GL_ALWAYS, 1, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   context.main_cap_checks.resize(frame.objects.size());
-  upload_shading_block(context);
-  draw_objects(frame, {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
+  if (frame.shadow) glBindTextureUnit(texture_unit::kShadowMap, context.resources.shadow_map().texture());
+  draw_objects(frame, context.blocks, {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
                        .draw = [&](std::size_t i) { shade_object(context, i); },
                        .cap_checks = &context.main_cap_checks});
 }

@@ -7,9 +7,8 @@
 
 namespace toond::render {
 
-// Draws every object with the outline `program`, skipping the faces
+// Draws every object with the outline program in use, skipping the faces
 // `faces(i)` says.
-void draw_outline_objects(PassContext& context, gpu::Program& program,
-                          const std::function<FaceSkip(std::size_t)>& faces);
+void draw_outline_objects(PassContext& context, const std::function<FaceSkip(std::size_t)>& faces);
 
 }  // namespace toond::render

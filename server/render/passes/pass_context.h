@@ -1,11 +1,13 @@
 #pragma once
-// What a pass draws with: the frame worked out before the first pass, the
-// programs, the kept GL objects and the frame's target. Render thread only.
+// What a pass draws with: the frame worked out before the first pass, its
+// uniform blocks, the programs, the kept GL objects and the frame's target.
+// Render thread only.
 #include <vector>
 
 #include "gpu/gl_object.h"
 #include "gpu/program_cache.h"
 #include "gpu/render_target.h"
+#include "render/frame_blocks.h"
 #include "render/frame_context.h"
 #include "render/frame_resources.h"
 
@@ -13,6 +15,7 @@ namespace toond::render {
 
 struct PassContext {
   const FrameContext& frame;
+  const FrameBlocks& blocks;
   gpu::ProgramCache& programs;
   FrameResources& resources;
   gpu::RenderTarget& target;

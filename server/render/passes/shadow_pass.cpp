@@ -1,4 +1,3 @@
-#include "render/passes/alpha_mask.h"
 #include "render/passes/passes.h"
 
 namespace toond::render {
@@ -20,21 +19,21 @@ void draw_shadow_pass(PassContext& context) {
   glPolygonOffset(2.0f, 2.0f);
   // Masked materials cast a shadow only where the main pass draws them.
   const bool alpha_tested = frame.plan.alpha_tested_shadows;
-  gpu::Program& program = context.programs.get(
-      "shadow.vert", "shadow.frag", alpha_tested ? std::vector<std::string>{"ALPHA_MASK"} : std::vector<std::string>{});
+  const DepthVariant variant = DepthVariant{}.set(DepthFeature::AlphaMask, alpha_tested);
+  gpu::Program& program = context.programs.get("shadow.vert", "shadow.frag", variant.defines());
   program.use();
   program.set("u_light_view_projection", glm::mat4(frame.shadow->view_projection));
   const Viewer light{glm::dvec3(0.0), glm::normalize(caster.direction), true};
-  draw_objects(frame, {.program = &program,
-                       // The nearest surface seen from the light is the same
-                       // with the far side skipped, so the map is too.
-                       .faces = [&](std::size_t i) {
-                         return FaceSkip{frame.culling_for(i, frame.shadow->view_projection, light, false).hidden};
-                       },
-                       .draw = [&](std::size_t i) {
-                         if (alpha_tested) draw_alpha_tested(frame, program, i);
-                         else draw_whole_object(frame, i);
-                       }});
+  draw_objects(frame, context.blocks,
+               {// The nearest surface seen from the light is the same with
+                // the far side skipped, so the map is too.
+                .faces = [&](std::size_t i) {
+                  return FaceSkip{frame.culling_for(i, frame.shadow->view_projection, light, false).hidden};
+                },
+                .draw = [&](std::size_t i) {
+                  if (alpha_tested) draw_by_material(frame, i);
+                  else draw_whole_object(frame, i);
+                }});
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 

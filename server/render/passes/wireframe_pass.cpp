@@ -15,19 +15,10 @@ void draw_wireframe_pass(PassContext& context) {
   gpu::Program& program =
       context.programs.get(std::vector<std::string>{"wire.vert", "wire.geom", "hull.frag"}, variant.defines());
   program.use();
-  program.set("u_view_projection", frame.view_projection);
-  program.set("u_viewport", glm::vec2(static_cast<float>(frame.draw_width), static_cast<float>(frame.draw_height)));
-  // Half of each line lies inside the silhouette, under the front faces:
-  // lines twice as wide leave `width` pixels showing.
-  program.set("u_line_px", 2.0f * frame.outline_px);
-  program.set("u_half_line_px", frame.outline_px);
-  program.set("u_eye", frame.eye());
-  program.set("u_view_dir", frame.view_dir());
-  program.set("u_orthographic", frame.orthographic() ? 1 : 0);
   // The line's coverage picks the samples it writes, each written opaque.
   glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   glEnable(GL_SAMPLE_ALPHA_TO_ONE);
-  draw_outline_objects(context, program, [](std::size_t) { return FaceSkip{}; });
+  draw_outline_objects(context, [](std::size_t) { return FaceSkip{}; });
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   glDisable(GL_SAMPLE_ALPHA_TO_ONE);
 }

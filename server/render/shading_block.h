@@ -1,10 +1,10 @@
 #pragma once
-// The FrameShading uniform block of toon.frag, member for member in its
+// The FrameShading uniform block (shaders/frame_shading.glsl), member for member in its
 // std140 layout: what every shading program of a frame shares, uploaded
 // once per frame. std140 gives a vec3 a 16-byte slot only when a scalar
 // does not follow it, and every array element a 16-byte stride, hence the
 // vec4 arrays. ShadingBlock.MatchesTheShadersLayout checks each member's
-// offset against what the driver reports for toon.frag.
+// offset against what the driver reports.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -18,23 +18,21 @@
 namespace toond::render {
 
 struct ShadingBlock {
-  static constexpr int kBinding = 0;  // layout(binding = 0) in toon.frag
+  static constexpr int kBinding = 0;  // layout(binding = 0) in frame_shading.glsl
   static constexpr std::size_t kLights = 8;
   static constexpr std::size_t kRampStops = 16;
 
-  glm::vec3 eye{0.0f};
   float ambient = 0;
-  glm::vec3 view_dir{0.0f};
   float steps = 0;
-  glm::vec3 specular_color{0.0f};
   float shininess = 0;
-  glm::vec3 rim_color{0.0f};
   float rim_power = 0;
-  glm::vec3 contour_color{0.0f};
+  glm::vec3 specular_color{0.0f};
   float contour_width = 0;
-  glm::vec3 halftone_ink{0.0f};
+  glm::vec3 rim_color{0.0f};
   float halftone_cell = 0;
+  glm::vec3 contour_color{0.0f};
   float specular_threshold = 0;
+  glm::vec3 halftone_ink{0.0f};
   float specular_strength = 0;
   float rim_strength = 0;
   float rim_threshold = 0;
@@ -43,8 +41,7 @@ struct ShadingBlock {
   float halftone_ink_mix = 0;
   float two_tone_threshold = 0;
   float two_tone_shadow = 0;
-  std::int32_t orthographic = 0;
-  std::int32_t padding_0[2] = {};
+  float padding_0 = 0;
   glm::vec4 light_vec[kLights] = {};       // .xyz
   glm::vec4 light_color[kLights] = {};     // .xyz
   glm::ivec4 light_is_point[kLights] = {};  // .x

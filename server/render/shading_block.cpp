@@ -1,17 +1,15 @@
-#include "render/passes/shading_block.h"
+#include "render/shading_block.h"
 
 #include <algorithm>
 
 namespace toond::render {
 
-static_assert(sizeof(ShadingBlock) == 1248, "FrameShading's std140 size");
-static_assert(offsetof(ShadingBlock, light_vec) == 144, "arrays start on a 16-byte boundary after orthographic");
+static_assert(sizeof(ShadingBlock) == 1216, "FrameShading's std140 size");
+static_assert(offsetof(ShadingBlock, light_vec) == 112, "arrays start on a 16-byte boundary");
 
 std::vector<std::pair<std::string_view, std::size_t>> shading_block_members() {
   return {
-      {"u_eye", offsetof(ShadingBlock, eye)},
       {"u_ambient", offsetof(ShadingBlock, ambient)},
-      {"u_view_dir", offsetof(ShadingBlock, view_dir)},
       {"u_steps", offsetof(ShadingBlock, steps)},
       {"u_specular_color", offsetof(ShadingBlock, specular_color)},
       {"u_shininess", offsetof(ShadingBlock, shininess)},
@@ -30,7 +28,6 @@ std::vector<std::pair<std::string_view, std::size_t>> shading_block_members() {
       {"u_halftone_ink_mix", offsetof(ShadingBlock, halftone_ink_mix)},
       {"u_two_tone_threshold", offsetof(ShadingBlock, two_tone_threshold)},
       {"u_two_tone_shadow", offsetof(ShadingBlock, two_tone_shadow)},
-      {"u_orthographic", offsetof(ShadingBlock, orthographic)},
       {"u_light_vec[0]", offsetof(ShadingBlock, light_vec)},
       {"u_light_color[0]", offsetof(ShadingBlock, light_color)},
       {"u_light_is_point[0]", offsetof(ShadingBlock, light_is_point)},
@@ -48,11 +45,8 @@ ShadingBlock shading_block_for(const FrameContext& frame) {
   const RenderParams& params = frame.params;
   const float px = static_cast<float>(frame.supersample);
   ShadingBlock b;
-  b.eye = frame.eye();
   b.ambient = params.ambient;
-  b.view_dir = frame.view_dir();
   b.steps = static_cast<float>(params.steps);
-  b.orthographic = frame.orthographic() ? 1 : 0;
   const std::size_t lights = std::min(frame.lights.vec.size(), ShadingBlock::kLights);
   for (std::size_t i = 0; i < lights; ++i) {
     b.light_vec[i] = glm::vec4(frame.lights.vec[i], 0.0f);
