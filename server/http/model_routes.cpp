@@ -1,20 +1,40 @@
 // POST /models, GET /models, GET /models/{id}, DELETE /models/{id}.
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "http/bundle_upload.h"
 #include "http/error_response.h"
 #include "http/routes.h"
 #include "http/store_upload.h"
+#include "request_error.h"
 
 namespace toond::http {
 namespace {
 constexpr const char* kIdPattern = "/models/([0-9a-f]{16,64})";
+
+
+// `?scene=N`: the glTF scene the upload asks for.
+scene::ImportChoices import_choices(const httplib::Request& req) {
+  scene::ImportChoices choices;
+  if (!req.has_param("scene")) return choices;
+  const std::string text = req.get_param_value("scene");
+  const bool digits = !text.empty() && text.size() <= 9 &&
+                      std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (!digits) {
+    throw RequestError(400, "invalid_parameter", "?scene: a glTF scene's index, a whole number from 0", "?scene");
+  }
+  choices.gltf_scene = std::stoi(text);
+  return choices;
 }
+
+}  // namespace
 
 void register_model_routes(httplib::Server& server, ServiceContext& context) {
   server.Post("/models", [&context](const httplib::Request& req, httplib::Response& res) {
+    const scene::ImportChoices choices = import_choices(req);
     const scene::Bundle bundle = bundle_from_multipart(req, {}, context.limits);
-    const auto result = store_upload(context, bundle);
+    const auto result = store_upload(context, bundle, choices);
     res.status = result.created ? 201 : 200;
     res.set_content(dump_for_client(result.info.to_json()), "application/json");
   });

@@ -8,6 +8,7 @@
 
 namespace toond::http {
 
-scene::ModelStore::PutResult store_upload(ServiceContext& context, const scene::Bundle& bundle);
+scene::ModelStore::PutResult store_upload(ServiceContext& context, const scene::Bundle& bundle,
+                                          const scene::ImportChoices& choices = {});
 
 }  // namespace toond::http

@@ -71,7 +71,7 @@ std::vector<std::string> gltf_files(const Bundle& bundle) {
 
 }  // namespace
 
-Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits) {
+Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, const ImportChoices& choices) {
   ImportLimits limits = given_limits;
   if (limits.max_seconds > 0.0 && limits.deadline == std::chrono::steady_clock::time_point::max()) {
     limits.deadline = std::chrono::steady_clock::now() +
@@ -83,12 +83,15 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits) {
   if (gltf.size() == 1 && !std::any_of(bundle.files().begin(), bundle.files().end(), [](const auto& file) {
         return has_extension(file.first, ".obj") || has_extension(file.first, ".m");
       })) {
-    model = import_gltf_bundle(bundle, gltf.front(), limits);
+    model = import_gltf_bundle(bundle, gltf.front(), limits, choices.gltf_scene);
   } else {
     const std::string path = find_model_file(bundle, {".obj", ".m", ".gltf", ".glb"}, ".obj, .m, .gltf or .glb");
     if (has_extension(path, ".gltf") || has_extension(path, ".glb")) {
-      model = import_gltf_bundle(bundle, path, limits);
+      model = import_gltf_bundle(bundle, path, limits, choices.gltf_scene);
     } else {
+      if (choices.gltf_scene) {
+        throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");
+      }
       model = has_extension(path, ".m") ? import_m_bundle(bundle, limits) : import_obj_bundle(bundle, limits);
     }
   }

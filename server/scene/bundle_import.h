@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "scene/bundle.h"
+#include "scene/import_choices.h"
 #include "scene/import_limits.h"
 #include "scene/model.h"
 
@@ -20,7 +21,9 @@ namespace toond::scene {
 // than one, and whatever the importer throws. The mesh comes back with its levels of detail and in vertex-cache
 // order (prepare_levels_of_detail, mesh_lod.h).
 // `limits` bound what an upload may make (ImportLimitError beyond).
-Model import_bundle(const Bundle& bundle, const ImportLimits& limits = {});
+// `choices.gltf_scene` picks a glTF file's scene (ImportError when the
+// model file is not glTF, or has no such scene).
+Model import_bundle(const Bundle& bundle, const ImportLimits& limits = {}, const ImportChoices& choices = {});
 
 // Whether `path` ends in `extension` (".obj"), ASCII case-insensitive.
 bool has_extension(std::string_view path, std::string_view extension);

@@ -407,7 +407,7 @@ class GltfImporter {
       roots = scenes[static_cast<std::size_t>(chosen)].nodes;
       if (scenes.size() > 1) {
         warnings_.add(path_ + ": the file has " + std::to_string(scenes.size()) + " scenes; scene " +
-                      std::to_string(chosen) + " is drawn");
+                      std::to_string(chosen) + " is drawn (an upload with ?scene=N picks another)");
       }
     } else if (scene_) {
       fail("scene " + std::to_string(*scene_) + " was asked for, but the file has no scenes");

@@ -49,8 +49,9 @@ std::shared_ptr<const scene::Model> ModelLibrary::get(const std::string& id) {
   }
   // Import outside the lock: a large model must not stall other requests.
   std::optional<scene::Bundle> bundle = store_.load(id);
-  if (!bundle) return nullptr;
-  auto model = std::make_shared<const scene::Model>(scene::import_bundle(*bundle));
+  const std::optional<scene::ModelInfo> stored = store_.info(id);
+  if (!bundle || !stored) return nullptr;
+  auto model = std::make_shared<const scene::Model>(scene::import_bundle(*bundle, {}, stored->choices));
   std::lock_guard lock(mutex_);
   insert_bounded(models_, order_, id, model, capacity_);
   return model;

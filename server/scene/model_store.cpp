@@ -100,9 +100,11 @@ void remove_quietly(const fs::path& path) {
 }  // namespace
 
 nlohmann::json ModelInfo::to_json() const {
-  return {{"id", id},       {"triangles", triangles}, {"materials", materials}, {"textures", textures},
+  nlohmann::json j = {{"id", id},       {"triangles", triangles}, {"materials", materials}, {"textures", textures},
           {"bytes", bytes}, {"files", files},         {"warnings", warnings},
           {"weld", {{"tolerance", weld.tolerance}, {"positions", weld.positions}}}};
+  if (choices.gltf_scene) j["scene"] = *choices.gltf_scene;
+  return j;
 }
 
 ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
@@ -119,10 +121,13 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
     info.weld.tolerance = weld->value("tolerance", 0.0);
     info.weld.positions = weld->value("positions", std::size_t{0});
   }
+  if (const auto scene = j.find("scene"); scene != j.end() && scene->is_number_integer()) {
+    info.choices.gltf_scene = scene->get<int>();
+  }
   return info;
 }
 
-std::string bundle_id(const Bundle& bundle) {
+std::string bundle_id(const Bundle& bundle, const ImportChoices& choices) {
   std::unique_ptr<EVP_MD_CTX, void (*)(EVP_MD_CTX*)> ctx(EVP_MD_CTX_new(), EVP_MD_CTX_free);
   if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1) {
     throw std::runtime_error("SHA-256 is not available");
@@ -138,6 +143,11 @@ std::string bundle_id(const Bundle& bundle) {
     feed(std::to_string(content.size()));
     feed(std::string_view("\0", 1));
     feed(content);
+  }
+  // No path holds a NUL, so this record cannot be taken for a file's.
+  if (choices.gltf_scene) {
+    feed(std::string_view("\0scene\0", 7));
+    feed(std::to_string(*choices.gltf_scene));
   }
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
@@ -163,15 +173,17 @@ ModelStore::ModelStore(fs::path data_dir) : root_(std::move(data_dir) / "models"
   fsync_dir(root_);
 }
 
-ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& limits) {
-  const std::string id = bundle_id(bundle);
+ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& limits,
+                                      const ImportChoices& choices) {
+  const std::string id = bundle_id(bundle, choices);
   if (auto existing = info(id)) return {std::move(*existing), false};
 
   // The import runs unlocked: it can take a while (texture decoding) and
   // concerns only this bundle.
-  const Model model = import_bundle(bundle, limits);
+  const Model model = import_bundle(bundle, limits, choices);
   ModelInfo info;
   info.id = id;
+  info.choices = choices;
   info.triangles = model.mesh.triangle_count();
   info.materials = model.materials.size();
   info.textures = model.textures.size();

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/bundle.h"
+#include "scene/import_choices.h"
 #include "scene/import_limits.h"
 
 namespace toond::scene {
@@ -32,14 +33,18 @@ struct ModelInfo {
     double tolerance = 0;
     std::size_t positions = 0;
   } weld;
+  // What the upload asked of the import (a glTF scene), kept so that a
+  // re-import makes the same model.
+  ImportChoices choices;
 
   nlohmann::json to_json() const;
   static ModelInfo from_json(const nlohmann::json& j);
 };
 
 // The content-addressed id of a bundle: 32 hex digits of SHA-256 over the
-// sorted (path, size, bytes) records.
-std::string bundle_id(const Bundle& bundle);
+// sorted (path, size, bytes) records, and the import choices where any is
+// made (the same files with another glTF scene are another model).
+std::string bundle_id(const Bundle& bundle, const ImportChoices& choices = {});
 
 class ModelStore {
  public:
@@ -55,8 +60,9 @@ class ModelStore {
     bool created = false;  // false: the same bundle was already stored
   };
   // Imports the bundle (throws ImportError when it is not a model, and
-  // ImportLimitError beyond `limits`), then stores it. Thread-safe.
-  PutResult put(const Bundle& bundle, const ImportLimits& limits = {});
+  // ImportLimitError beyond `limits`), then stores it with `choices`.
+  // Thread-safe.
+  PutResult put(const Bundle& bundle, const ImportLimits& limits = {}, const ImportChoices& choices = {});
 
   std::optional<ModelInfo> info(const std::string& id) const;
   // Whether the model is stored now: one stat, cheap enough for every render
