@@ -606,6 +606,19 @@ class GltfImporter {
           }
         }
         const bool has_normals = attribute("NORMAL") >= 0;
+        const std::int64_t tangent_base = static_cast<std::int64_t>(source.tangents.size());
+        const bool has_tangents = attribute("TANGENT") >= 0;
+        if (has_tangents) {
+          const std::vector<double> tangents = reader_->read(attribute("TANGENT"), name + " TANGENT", 4);
+          check_count(tangents, 4, "tangents");
+          // A tangent lies in the surface: it turns with the node's matrix
+          // itself, and a mirroring matrix turns the bitangent's hand.
+          const double hand = mirrored ? -1.0 : 1.0;
+          for (std::size_t i = 0; i < count; ++i) {
+            const glm::dvec3 along = linear * glm::dvec3(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2]);
+            source.tangents.emplace_back(along, tangents[4 * i + 3] * hand);
+          }
+        }
         const TexcoordChoice uv = texcoord_choice(primitive.material);
         const int texcoord_accessor = attribute("TEXCOORD_" + std::to_string(uv.set));
         const std::int64_t texcoord_base = static_cast<std::int64_t>(source.texcoords.size());
@@ -643,6 +656,7 @@ class GltfImporter {
             corner.position = position_of[picks[k]];
             corner.normal = has_normals ? normal_base + picks[k] : -1;
             corner.texcoord = has_texcoords ? texcoord_base + picks[k] : -1;
+            corner.tangent = has_tangents ? tangent_base + picks[k] : -1;
           }
           tri.material = primitive.material;
           source.triangles.push_back(tri);

@@ -71,6 +71,7 @@ struct VertexKey {
   std::uint32_t v;
   std::int64_t vn;
   std::int64_t vt;
+  std::int64_t tangent;
   std::int64_t smoothing;
   bool operator==(const VertexKey&) const = default;
 };
@@ -79,7 +80,8 @@ struct VertexKeyHash {
   std::size_t operator()(const VertexKey& k) const noexcept {
     std::uint64_t h = 1469598103934665603ull;
     for (const std::uint64_t part : {static_cast<std::uint64_t>(k.v), static_cast<std::uint64_t>(k.vn),
-                                     static_cast<std::uint64_t>(k.vt), static_cast<std::uint64_t>(k.smoothing)}) {
+                                     static_cast<std::uint64_t>(k.vt), static_cast<std::uint64_t>(k.tangent),
+                                     static_cast<std::uint64_t>(k.smoothing)}) {
       h = (h ^ part) * 1099511628211ull;
     }
     return static_cast<std::size_t>(h);
@@ -158,6 +160,7 @@ class Builder {
   void check_indices() {
     const auto normal_count = static_cast<std::int64_t>(src_.normals.size());
     const auto texcoord_count = static_cast<std::int64_t>(src_.texcoords.size());
+    const auto tangent_count = static_cast<std::int64_t>(src_.tangents.size());
     std::size_t dropped = 0;
     for (std::size_t t = 0; t < src_.triangles.size(); ++t) {
       for (SourceCorner& corner : src_.triangles[t].corner) {
@@ -174,11 +177,30 @@ class Builder {
           corner.texcoord = -1;
           ++dropped;
         }
+        if (corner.tangent < -1 || corner.tangent >= tangent_count) {
+          corner.tangent = -1;
+          ++dropped;
+        }
       }
     }
     if (dropped > 0) {
       warnings_.add(src_.file + ": " + std::to_string(dropped) +
-                    " normal or texture-coordinate references point past the end of their lists and were ignored");
+                    " normal, texture-coordinate or tangent references point past the end of their lists and were "
+                    "ignored");
+    }
+  }
+
+  // A vertex whose corner came with a usable tangent (finite, of some
+  // length, a handedness) keeps it: the file's normal map was baked against
+  // it. The rest keep the derived one.
+  void keep_file_tangents(Mesh& mesh, const std::vector<std::int64_t>& file_tangents) const {
+    for (std::size_t v = 0; v < file_tangents.size(); ++v) {
+      if (file_tangents[v] < 0) continue;
+      const glm::dvec4 t = src_.tangents[static_cast<std::size_t>(file_tangents[v])];
+      const glm::dvec3 along(t);
+      const double length = glm::length(along);
+      if (!std::isfinite(length) || !(length > 1e-12) || !std::isfinite(t.w) || t.w == 0.0) continue;
+      mesh.tangents[v] = glm::vec4(glm::vec3(along / length), t.w < 0.0 ? -1.0f : 1.0f);
     }
   }
 
@@ -303,6 +325,7 @@ class Builder {
     std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> vertex_of;
     std::vector<std::int64_t> smoothing_of_vertex;
     std::vector<bool> needs_normal;
+    std::vector<std::int64_t> file_tangents;  // per vertex: its corner's tangent in the source, or -1
     std::size_t bad_texcoords = 0;
     mesh.indices.reserve(triangles.size() * 3);
 
@@ -322,7 +345,8 @@ class Builder {
             smoothing = flat_key(tri);
           }
         }
-        const VertexKey key{corner.position, has_normal ? corner.normal : -1, corner.texcoord, smoothing};
+        const VertexKey key{corner.position, has_normal ? corner.normal : -1, corner.texcoord, corner.tangent,
+                            smoothing};
         const auto [it, inserted] = vertex_of.emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
         if (inserted) {
           if (mesh.positions.size() >= std::numeric_limits<std::uint32_t>::max()) {
@@ -342,6 +366,7 @@ class Builder {
             }
           }
           mesh.texcoords.push_back(uv);
+          file_tangents.push_back(corner.tangent);
           if (with_colors) mesh.colors.emplace_back(src_.colors[corner.position]);
           smoothing_of_vertex.push_back(smoothing);
           needs_normal.push_back(!has_normal);
@@ -381,6 +406,7 @@ class Builder {
     mesh.outline_normals = compute_outline_normals(mesh.positions, mesh.indices, mesh.normals);
     check_import_time(src_.limits, "computing outline normals");
     mesh.tangents = compute_tangents(mesh.positions, mesh.normals, mesh.texcoords, mesh.indices);
+    keep_file_tangents(mesh, file_tangents);
     mesh.bounds = compute_bounds(mesh.positions);
     mesh.extremes = extreme_points(mesh.positions);
     mesh.creases = measure_creases(mesh.positions, mesh.normals, mesh.indices);

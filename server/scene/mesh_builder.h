@@ -46,6 +46,7 @@ struct SourceCorner {
   std::uint32_t position = 0;  // into MeshSource::positions
   std::int64_t normal = -1;    // into MeshSource::normals, -1 = none
   std::int64_t texcoord = -1;  // into MeshSource::texcoords, -1 = none
+  std::int64_t tangent = -1;   // into MeshSource::tangents, -1 = none (computed)
 };
 
 struct SourceTriangle {
@@ -64,6 +65,9 @@ struct MeshSource {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;    // need not be unit length, may be unusable
   std::vector<glm::dvec2> texcoords;
+  // The file's own tangents (glTF TANGENT): xyz along the texture's u, w the
+  // bitangent's handedness (±1); need not be unit length, may be unusable.
+  std::vector<glm::dvec4> tangents;
   std::vector<glm::dvec3> colors;     // empty, or one per position (0..1 expected)
   std::vector<SourceTriangle> triangles;
   // Names position `i` in messages, e.g. "vertex 12 (line 40)"; only called
@@ -93,7 +97,8 @@ struct MeshSource {
 //   per position within the mesh, the smoothing group or, with smoothing
 //   off where groups are used, the face); texcoords that are not finite
 //   become (0,0) and colours are sanitised, each with a warning;
-// - outline normals, tangents and bounds are derived, and triangles are
+// - outline normals, tangents and bounds are derived (a corner's usable
+//   file tangent is kept instead of the derived one), and triangles are
 //   sorted (stably) into one submesh per material.
 Mesh build_mesh(MeshSource& source, ImportWarnings& warnings,
                 const std::function<void(std::vector<SourceTriangle>&)>& assign_materials);

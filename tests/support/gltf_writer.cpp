@@ -71,6 +71,7 @@ GltfParts build_gltf(const GltfDocument& document) {
       json attributes = {{"POSITION", add_accessor(writer, doc, p.positions, "VEC3", 5126, 3, true)}};
       if (!p.normals.empty()) attributes["NORMAL"] = add_accessor(writer, doc, p.normals, "VEC3", 5126, 3, false);
       if (!p.texcoords.empty()) attributes["TEXCOORD_0"] = add_accessor(writer, doc, p.texcoords, "VEC2", 5126, 2, false);
+      if (!p.tangents.empty()) attributes["TANGENT"] = add_accessor(writer, doc, p.tangents, "VEC4", 5126, 4, false);
       if (!p.colours.empty()) attributes["COLOR_0"] = add_accessor(writer, doc, p.colours, "VEC4", 5126, 4, false);
       json primitive = {{"attributes", attributes}, {"mode", p.mode}};
       if (!p.indices.empty()) {

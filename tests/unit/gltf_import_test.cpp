@@ -307,6 +307,60 @@ TEST(GltfImport, QuantizedAndSparseAccessorsAreRead) {
   EXPECT_NEAR(world_max(m).z, 1.0f, 1e-6f);  // 0.5 without the sparse substitution
 }
 
+// A unit quad facing +Z with texture coordinates, and the tangent the
+// file gives every corner (none when `tangent` is unset).
+GltfDocument quad_document(std::optional<glm::vec4> tangent) {
+  GltfPrimitive quad;
+  quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  quad.normals.assign(4, {0, 0, 1});
+  quad.texcoords = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  if (tangent) quad.tangents.assign(4, *tangent);
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  GltfDocument doc;
+  doc.meshes = {{quad}};
+  return doc;
+}
+
+TEST(GltfImport, TheFilesTangentsAreKeptAndTurnWithTheirNode) {
+  // Along +y, left-handed: not what the texture coordinates would give
+  // (+x), so a derived tangent cannot pass for it.
+  const glm::vec4 given(0, 2, 0, -1);
+  const Model derived = import_files(test::write_gltf(quad_document(std::nullopt), GltfForm::Glb));
+  for (const glm::vec4& t : derived.mesh.tangents) EXPECT_NEAR(std::abs(t.x), 1.0f, 1e-6f);
+  const Model kept = import_files(test::write_gltf(quad_document(given), GltfForm::Glb));
+  ASSERT_EQ(kept.mesh.tangents.size(), 4u);
+  for (const glm::vec4& t : kept.mesh.tangents) {
+    EXPECT_NEAR(t.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(t.y, 1.0f, 1e-6f);  // unit length
+    EXPECT_EQ(t.w, -1.0f);
+  }
+
+  // A node turned a quarter about z and mirrored in x: the tangent turns
+  // with it, and the mirror changes its hand.
+  GltfDocument turned = quad_document(given);
+  test::GltfNode node;
+  node.mesh = 0;
+  node.rotation = glm::dvec4(0, 0, std::sqrt(0.5), std::sqrt(0.5));
+  node.scale = glm::dvec3(-1, 1, 1);
+  turned.nodes = {node};
+  turned.scene_roots = {0};
+  const Model moved = import_files(test::write_gltf(turned, GltfForm::Glb));
+  for (const glm::vec4& t : moved.mesh.tangents) {
+    // Scale first: (0,1,0) stays; the quarter turn takes +y to -x.
+    EXPECT_NEAR(t.x, -1.0f, 1e-6f);
+    EXPECT_NEAR(t.y, 0.0f, 1e-6f);
+    EXPECT_EQ(t.w, 1.0f);
+  }
+}
+
+TEST(GltfImport, AnUnusableTangentFallsBackToTheDerivedOne) {
+  const Model zero = import_files(test::write_gltf(quad_document(glm::vec4(0, 0, 0, 1)), GltfForm::Glb));
+  const Model no_hand = import_files(test::write_gltf(quad_document(glm::vec4(0, 1, 0, 0)), GltfForm::Glb));
+  const Model derived = import_files(test::write_gltf(quad_document(std::nullopt), GltfForm::Glb));
+  EXPECT_EQ(zero.mesh.tangents, derived.mesh.tangents);
+  EXPECT_EQ(no_hand.mesh.tangents, derived.mesh.tangents);
+}
+
 TEST(GltfImport, MissingNormalsAreSmoothedLikeObj) {
   GltfPrimitive p = cube_primitive();
   p.normals.clear();
