@@ -44,13 +44,9 @@ std::map<std::string, GivenStatements> given_statements(std::string_view mtl) {
   std::size_t pos = 0;
   while (pos < mtl.size()) {
     const std::size_t end = std::min(mtl.find_first_of("\r\n", pos), mtl.size());
-    std::string_view line = mtl.substr(pos, end - pos);
+    const std::string_view line = text::trim(mtl.substr(pos, end - pos));
     pos = end + ((end + 1 < mtl.size() && mtl[end] == '\r' && mtl[end + 1] == '\n') ? 2 : 1);
-    const auto last = line.find_last_not_of(" \t");
-    line = last == std::string_view::npos ? std::string_view{} : line.substr(0, last + 1);
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string_view::npos) continue;
-    line.remove_prefix(first);
+    if (line.empty()) continue;
     const auto blank_at = [&](std::size_t i) { return i < line.size() && (line[i] == ' ' || line[i] == '\t'); };
     if (line.starts_with("newmtl") && blank_at(6)) {
       current = std::string(line.substr(7));

@@ -518,6 +518,7 @@ TEST(Reply, ForeignBodiesAreSummarised) {
   EXPECT_EQ(describe_error_reply(502, "<html>Bad Gateway</html>\n<body>...", ""),
             "error 502: <html>Bad Gateway</html>");
   EXPECT_EQ(describe_error_reply(500, "", ""), "error 500 (empty answer)");
+  EXPECT_EQ(describe_error_reply(502, " \tBad Gateway \r\nmore", ""), "error 502: Bad Gateway");
 }
 
 TEST(Reply, PngSizeAndHelpers) {
