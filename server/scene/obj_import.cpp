@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "bundle_paths/statement_names.h"
 #include "scene/bundle_import.h"
 #include "scene/import_error.h"
 #include "scene/mesh_builder.h"
@@ -157,20 +158,6 @@ bool is_greyscale(const Texture& texture) {
   return true;
 }
 
-// MTL texture statements may carry quotes or trailing options that tinyobj
-// leaves in the name; try the plausible readings in turn.
-std::vector<std::string> texture_name_candidates(const std::string& raw) {
-  std::vector<std::string> names;
-  std::string name(text::trim(raw));
-  if (name.size() >= 2 && (name.front() == '"' || name.front() == '\'') && name.back() == name.front()) {
-    name = name.substr(1, name.size() - 2);
-  }
-  if (!name.empty()) names.push_back(name);
-  const auto space = name.find_first_of(" \t");
-  if (space != std::string::npos) names.push_back(name.substr(0, space));
-  return names;
-}
-
 class Importer {
  public:
   Importer(const Bundle& bundle, const ImportLimits& limits)
@@ -293,29 +280,21 @@ class Importer {
     const std::string kind = colour_map ? "texture" : "normal map";
     const std::string fallback =
         colour_map ? "the material colour is used instead" : "the material is shaded without it";
-    const auto candidates = texture_name_candidates(raw_name);
+    const std::vector<bundle_paths::TextureName> candidates = bundle_paths::texture_names(raw_name);
     if (candidates.empty()) return -1;
+    const std::string& written = candidates.front().name;
     std::optional<std::string> path;
-    for (const auto& name : candidates) {
-      if ((path = bundle_.resolve(mtl_path, name))) break;
-    }
-    if (!path) {
-      // Exporters often write the artist's absolute path; the file itself
-      // usually travels beside the MTL.
-      std::string base = candidates.front();
-      std::replace(base.begin(), base.end(), '\\', '/');
-      base = base.substr(base.find_last_of('/') == std::string::npos ? 0 : base.find_last_of('/') + 1);
-      if (!base.empty() && base != candidates.front()) {
-        path = bundle_.resolve(mtl_path, base);
-        if (path) {
-          warnings_.add(mtl_path + ": " + kind + " " + quoted(candidates.front()) + " of material " +
-                        quoted(material_name) + " was found by its file name alone, as " + quoted(*path));
-        }
+    for (const bundle_paths::TextureName& candidate : candidates) {
+      if (!(path = bundle_.resolve(mtl_path, candidate.name))) continue;
+      if (candidate.file_name_only) {
+        warnings_.add(mtl_path + ": " + kind + " " + quoted(written) + " of material " + quoted(material_name) +
+                      " was found by its file name alone, as " + quoted(*path));
       }
+      break;
     }
     if (!path) {
-      warnings_.add(mtl_path + ": " + kind + " " + quoted(candidates.front()) + " of material " +
-                    quoted(material_name) + " is not in the bundle; " + fallback);
+      warnings_.add(mtl_path + ": " + kind + " " + quoted(written) + " of material " + quoted(material_name) +
+                    " is not in the bundle; " + fallback);
       return -1;
     }
     const auto key = std::make_pair(*path, space);

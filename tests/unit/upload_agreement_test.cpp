@@ -1,0 +1,74 @@
+// What `toon upload` sends is what the daemon uses: each bundle is found on
+// disk by the CLI's scan, then imported from exactly the files it sent. The
+// cases are the texture statements the two sides once read differently.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "bundle_scan.h"
+#include "cli_test_helpers.h"
+#include "model_checks.h"
+#include "scene/obj_import.h"
+
+namespace toond {
+namespace {
+
+using cli::cli_test::TempDir;
+
+// One triangle with texture coordinates and material `a`.
+constexpr const char* kObj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n";
+
+struct Outcome {
+  std::set<std::string> sent;  // texture files the scan found and sent
+  std::set<std::string> used;  // textures the import decoded from them
+  std::vector<std::string> warnings;
+};
+
+Outcome upload(const TempDir& dir) {
+  const cli::BundleScan scan = cli::scan_obj_bundle(dir.path() / "m.obj");
+  scene::Bundle bundle;
+  Outcome out;
+  for (const cli::BundleFile& f : scan.files) {
+    bundle.add(f.name, f.content);
+    if (f.name != "m.obj" && f.name != "m.mtl") out.sent.insert(f.name);
+  }
+  const scene::Model model = scene::import_obj_bundle(bundle);
+  for (const scene::Texture& t : model.textures) out.used.insert(t.path);
+  out.warnings = model.warnings;
+  return out;
+}
+
+struct Case {
+  const char* statement;  // the texture statement of material `a`
+  const char* file;       // the one file on disk beside the MTL that it means
+};
+
+class UploadAgreement : public ::testing::TestWithParam<Case> {};
+
+TEST_P(UploadAgreement, TheDaemonUsesTheTextureTheCliSent) {
+  TempDir dir;
+  dir.write("m.obj", kObj);
+  dir.write("m.mtl", std::string("newmtl a\nKd 1 1 1\n") + GetParam().statement + "\n");
+  dir.write(GetParam().file, scene::test_checks::tiny_png(10, 20, 30));
+  const Outcome outcome = upload(dir);
+  EXPECT_EQ(outcome.sent, std::set<std::string>{GetParam().file});
+  EXPECT_EQ(outcome.used, outcome.sent);
+  for (const std::string& w : outcome.warnings) EXPECT_EQ(w.find("not in the bundle"), std::string::npos) << w;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Statements, UploadAgreement,
+    ::testing::Values(
+        // The daemon read the first word, the CLI the last.
+        Case{"map_Kd scanned texture.png", "texture.png"},
+        // The CLI refused the absolute path; the daemon falls back to the file name.
+        Case{"map_Kd C:\\Users\\artist\\skin.png", "skin.png"},
+        // The daemon took off the quotes, the CLI did not.
+        Case{"map_Kd \"my skin.png\"", "my skin.png"},
+        // Options after the name, and in upper case.
+        Case{"map_Kd wood.png -BM 1.5", "wood.png"},
+        Case{"map_Kd -bm 1 .\\TEX\\Wood.PNG", "Tex/wood.png"}));
+
+}  // namespace
+}  // namespace toond
