@@ -29,16 +29,23 @@ std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 std::string find_obj(const Bundle& bundle) { return find_model_file(bundle, {".obj"}, ".obj"); }
 
 // Which statements an MTL gave a material, where tinyobj's defaults cannot
-// be told apart from values written in the file.
+// be told apart from values written in the file, and the texture statements
+// as written: tinyobj's option parser reads the name as a number after -o,
+// -s or -t with fewer than three numbers, while bundle_paths::texture_names
+// (the reading `toon` sends files by) does not.
 struct GivenStatements {
   bool kd = false;
   bool ns = false;
+  std::optional<std::string> map_kd;  // the text after the keyword
+  std::optional<std::string> bump;    // map_Bump, map_bump or bump
+  std::optional<std::string> norm;
 };
 
-// The statements given per material name in an MTL text. Lines and names
-// are cut exactly as tinyobj's LoadMtl cuts them (any of \n, \r\n, \r ends
-// a line; the name is the rest of the newmtl line less trailing blanks), so
-// the names match the ones it produced.
+// The statements given per material name in an MTL text. Lines, names and
+// keywords are cut exactly as tinyobj's LoadMtl cuts them (any of \n, \r\n,
+// \r ends a line; the name is the rest of the newmtl line less trailing
+// blanks; keywords are case-sensitive), so the names match the ones it
+// produced and the same statements count.
 std::map<std::string, GivenStatements> given_statements(std::string_view mtl) {
   std::map<std::string, GivenStatements> given;
   std::string current;
@@ -48,13 +55,29 @@ std::map<std::string, GivenStatements> given_statements(std::string_view mtl) {
     const std::string_view line = text::trim(mtl.substr(pos, end - pos));
     pos = end + ((end + 1 < mtl.size() && mtl[end] == '\r' && mtl[end + 1] == '\n') ? 2 : 1);
     if (line.empty()) continue;
-    const auto blank_at = [&](std::size_t i) { return i < line.size() && (line[i] == ' ' || line[i] == '\t'); };
-    if (line.starts_with("newmtl") && blank_at(6)) {
+    const auto is = [&](std::string_view keyword) {
+      return line.starts_with(keyword) && line.size() > keyword.size() &&
+             (line[keyword.size()] == ' ' || line[keyword.size()] == '\t');
+    };
+    // As tinyobj, a statement that names no file leaves the one before.
+    const auto texture = [&](std::optional<std::string>& statement, std::size_t keyword_size) {
+      const std::string_view rest = line.substr(keyword_size);
+      if (!bundle_paths::texture_names(rest).empty()) statement = std::string(rest);
+    };
+    if (is("newmtl")) {
       current = std::string(line.substr(7));
-    } else if (line.starts_with("Kd") && blank_at(2)) {
+    } else if (is("Kd")) {
       given[current].kd = true;
-    } else if (line.starts_with("Ns") && blank_at(2)) {
+    } else if (is("Ns")) {
       given[current].ns = true;
+    } else if (is("map_Kd")) {
+      texture(given[current].map_kd, 6);
+    } else if (is("map_Bump") || is("map_bump")) {
+      texture(given[current].bump, 8);
+    } else if (is("bump")) {
+      texture(given[current].bump, 4);
+    } else if (is("norm")) {
+      texture(given[current].norm, 4);
     }
   }
   return given;
@@ -343,8 +366,9 @@ class Importer {
       Material material;
       material.name = source.name;
       material.diffuse = sanitize_colour(source.diffuse, 0.8f);
-      if (!source.diffuse_texname.empty()) {
-        material.diffuse_texture = texture_for(source.diffuse_texname, source.name, mtl_path, ColorSpace::Srgb);
+      const std::string diffuse_name = given.map_kd.value_or(source.diffuse_texname);
+      if (!diffuse_name.empty()) {
+        material.diffuse_texture = texture_for(diffuse_name, source.name, mtl_path, ColorSpace::Srgb);
       }
       if (!given.kd) {
         // Without Kd a texture or the vertex colours show as painted
@@ -355,7 +379,8 @@ class Importer {
       // `norm` names a normal map outright; tinyobj files map_Bump, map_bump
       // and bump under bump_texname, which Blender and most exporters use
       // for tangent-space normal maps (windmill does).
-      const std::string& normal_name = !source.normal_texname.empty() ? source.normal_texname : source.bump_texname;
+      const std::string normal_name = given.norm.value_or(
+          given.bump.value_or(!source.normal_texname.empty() ? source.normal_texname : source.bump_texname));
       if (!normal_name.empty()) {
         material.normal_texture = texture_for(normal_name, source.name, mtl_path, ColorSpace::Linear);
       }

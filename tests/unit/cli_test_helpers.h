@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -31,8 +32,9 @@ class TempDir {
  public:
   TempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("toon-cli-test-" + std::to_string(::getpid()) + "-" + info->name());
+    std::string name = info->name();
+    std::replace(name.begin(), name.end(), '/', '-');  // parameterised tests' names hold '/'
+    path_ = std::filesystem::temp_directory_path() / ("toon-cli-test-" + std::to_string(::getpid()) + "-" + name);
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }

@@ -40,6 +40,7 @@ Outcome upload(const TempDir& dir) {
 }
 
 struct Case {
+  const char* name;       // for the test's name
   const char* statement;  // the texture statement of material `a`
   const char* file;       // the one file on disk beside the MTL that it means
 };
@@ -61,14 +62,17 @@ INSTANTIATE_TEST_SUITE_P(
     Statements, UploadAgreement,
     ::testing::Values(
         // The daemon read the first word, the CLI the last.
-        Case{"map_Kd scanned texture.png", "texture.png"},
+        Case{"UnescapedSpace", "map_Kd scanned texture.png", "texture.png"},
         // The CLI refused the absolute path; the daemon falls back to the file name.
-        Case{"map_Kd C:\\Users\\artist\\skin.png", "skin.png"},
+        Case{"ForeignAbsolutePath", "map_Kd C:\\Users\\artist\\skin.png", "skin.png"},
         // The daemon took off the quotes, the CLI did not.
-        Case{"map_Kd \"my skin.png\"", "my skin.png"},
-        // Options after the name, and in upper case.
-        Case{"map_Kd wood.png -BM 1.5", "wood.png"},
-        Case{"map_Kd -bm 1 .\\TEX\\Wood.PNG", "Tex/wood.png"}));
+        Case{"Quoted", "map_Kd \"my skin.png\"", "my skin.png"},
+        // tinyobjloader reads the name as the second or third number of -o or -s.
+        Case{"ShortOffset", "map_Kd -o 0.1 diffuse.jpg", "diffuse.jpg"},
+        Case{"ShortScale", "norm -s 2 2 normal.png", "normal.png"},
+        Case{"OptionAfterTheName", "map_Kd wood.png -BM 1.5", "wood.png"},
+        Case{"BackslashesAndCase", "map_Kd -bm 1 .\\TEX\\Wood.PNG", "Tex/wood.png"}),
+    [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
 
 }  // namespace
 }  // namespace toond
