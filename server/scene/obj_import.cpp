@@ -91,16 +91,42 @@ class BundleMaterialReader : public tinyobj::MaterialReader {
   BundleMaterialReader(const Bundle& bundle, std::string obj_path, ImportWarnings& warnings)
       : bundle_(bundle), obj_path_(std::move(obj_path)), warnings_(warnings) {}
 
-  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+  // `line` is a whole mtllib line (prepare_obj_text keeps tinyobj from
+  // cutting it), read as toon reads it.
+  bool operator()(const std::string& line, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* material_map, std::string*, std::string*) override {
-    const std::string reference(text::trim(name));
+    const auto in_bundle = [&](const std::string& name) { return bundle_.resolve(obj_path_, name).has_value(); };
+    for (const std::string& reference : bundle_paths::mtllib_names(line, in_bundle)) {
+      load(reference, materials, material_map);
+    }
+    // Missing libraries are said by load, precisely: answering "found" keeps
+    // tinyobj from adding a warning of its own.
+    return true;
+  }
+
+  // What the MTL set for material `id`: tinyobj fills in its own defaults
+  // (Kd 0 without a texture and 0.6 with one, Ns 1) that cannot be told
+  // apart from values written in the file.
+  GivenStatements given(int id) const {
+    return id >= 0 && static_cast<std::size_t>(id) < given_.size() ? given_[static_cast<std::size_t>(id)]
+                                                                    : GivenStatements{};
+  }
+
+  // The MTL that defined material `id` (the OBJ itself when unknown).
+  const std::string& source_of(int id) const {
+    return id >= 0 && static_cast<std::size_t>(id) < sources_.size() ? sources_[static_cast<std::size_t>(id)]
+                                                                      : obj_path_;
+  }
+
+ private:
+  // The materials of library `reference`, added to tinyobj's lists.
+  void load(const std::string& reference, std::vector<tinyobj::material_t>* materials,
+            std::map<std::string, int>* material_map) {
     const auto path = bundle_.resolve(obj_path_, reference);
     if (!path) {
       warnings_.add(obj_path_ + ": material library " + quoted(reference) +
                     " is not in the bundle; its materials fall back to the default colour");
-      // Said here, precisely: answering "found, and empty" keeps tinyobj
-      // from adding a warning of its own.
-      return true;
+      return;
     }
     std::istringstream in(*bundle_.find(*path));
     std::string warn;
@@ -122,24 +148,8 @@ class BundleMaterialReader : public tinyobj::MaterialReader {
       // prepare_obj_text turned usemtl names with blanks into this alias.
       material_map->emplace(material_alias(material), static_cast<int>(i));
     }
-    return true;
   }
 
-  // What the MTL set for material `id`: tinyobj fills in its own defaults
-  // (Kd 0 without a texture and 0.6 with one, Ns 1) that cannot be told
-  // apart from values written in the file.
-  GivenStatements given(int id) const {
-    return id >= 0 && static_cast<std::size_t>(id) < given_.size() ? given_[static_cast<std::size_t>(id)]
-                                                                    : GivenStatements{};
-  }
-
-  // The MTL that defined material `id` (the OBJ itself when unknown).
-  const std::string& source_of(int id) const {
-    return id >= 0 && static_cast<std::size_t>(id) < sources_.size() ? sources_[static_cast<std::size_t>(id)]
-                                                                      : obj_path_;
-  }
-
- private:
   const Bundle& bundle_;
   std::string obj_path_;
   ImportWarnings& warnings_;

@@ -16,8 +16,8 @@ namespace {
 
 using cli::cli_test::TempDir;
 
-// One triangle with texture coordinates and material `a`.
-constexpr const char* kObj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n";
+// One triangle with texture coordinates and material `a`, after the mtllib line.
+const std::string kMesh = "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n";
 
 struct Outcome {
   std::set<std::string> sent;  // texture files the scan found and sent
@@ -31,7 +31,7 @@ Outcome upload(const TempDir& dir) {
   Outcome out;
   for (const cli::BundleFile& f : scan.files) {
     bundle.add(f.name, f.content);
-    if (f.name != "m.obj" && f.name != "m.mtl") out.sent.insert(f.name);
+    if (!f.name.ends_with(".obj") && !f.name.ends_with(".mtl")) out.sent.insert(f.name);
   }
   const scene::Model model = scene::import_obj_bundle(bundle);
   for (const scene::Texture& t : model.textures) out.used.insert(t.path);
@@ -49,13 +49,32 @@ class UploadAgreement : public ::testing::TestWithParam<Case> {};
 
 TEST_P(UploadAgreement, TheDaemonUsesTheTextureTheCliSent) {
   TempDir dir;
-  dir.write("m.obj", kObj);
+  dir.write("m.obj", "mtllib m.mtl" + kMesh);
   dir.write("m.mtl", std::string("newmtl a\nKd 1 1 1\n") + GetParam().statement + "\n");
   dir.write(GetParam().file, scene::test_checks::tiny_png(10, 20, 30));
   const Outcome outcome = upload(dir);
   EXPECT_EQ(outcome.sent, std::set<std::string>{GetParam().file});
   EXPECT_EQ(outcome.used, outcome.sent);
   for (const std::string& w : outcome.warnings) EXPECT_EQ(w.find("not in the bundle"), std::string::npos) << w;
+}
+
+TEST(UploadAgreement, TheDaemonReadsEveryMaterialLibraryTheCliSent) {
+  struct Library {
+    const char* mtllib;  // the OBJ's line
+    const char* file;    // the library on disk it means
+  };
+  // The daemon read only the first name of a line, and cut names at blanks.
+  for (const Library& library : {Library{"mtllib gone.mtl m.mtl", "m.mtl"},
+                                 Library{"mtllib my model.mtl", "my model.mtl"}}) {
+    SCOPED_TRACE(library.mtllib);
+    TempDir dir;
+    dir.write("m.obj", library.mtllib + kMesh);
+    dir.write(library.file, "newmtl a\nKd 1 1 1\nmap_Kd skin.png\n");
+    dir.write("skin.png", scene::test_checks::tiny_png(10, 20, 30));
+    const Outcome outcome = upload(dir);
+    EXPECT_EQ(outcome.sent, std::set<std::string>{"skin.png"});
+    EXPECT_EQ(outcome.used, outcome.sent);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
