@@ -432,26 +432,30 @@ TEST(BundleScan, MissingObjIsAUsageError) {
   EXPECT_FALSE(usage_error([&] { scan_obj_bundle(dir.path()); }).empty());
 }
 
+// The scan of an OBJ whose one library, m.mtl, holds `mtl`.
+BundleScan scan_with_library(const TempDir& dir, const std::string& mtl) {
+  dir.write("m.obj", "mtllib m.mtl\n");
+  dir.write("m.mtl", mtl);
+  return scan_obj_bundle(dir.path() / "m.obj");
+}
+
 TEST(BundleScan, OtherCaseIsMatchedOverTheWholePathAsTheDaemonDoes) {
   TempDir dir;
-  dir.write("m.obj", "mtllib m.mtl\n");
   // "tex" exists as written but holds only "A.png"; of the spellings of
   // "tex/a.png" on disk, the daemon's rule picks the least, "Tex/a.png", so
   // that is the one file both statements need.
-  dir.write("m.mtl", "newmtl a\nmap_Kd tex/a.png\nnewmtl b\nmap_Kd Tex/a.png\n");
   dir.write("tex/A.png", "lower folder");
   dir.write("Tex/a.png", "upper folder");
-  const BundleScan scan = scan_obj_bundle(dir.path() / "m.obj");
+  const BundleScan scan = scan_with_library(dir, "newmtl a\nmap_Kd tex/a.png\nnewmtl b\nmap_Kd Tex/a.png\n");
   EXPECT_EQ(names(scan), (std::vector<std::string>{"m.obj", "m.mtl", "Tex/a.png"}));
   EXPECT_TRUE(scan.warnings.empty());
 }
 
 TEST(BundleScan, ForeignAbsolutePathsFallBackToTheFileNameBesideTheMtl) {
   TempDir dir;
-  dir.write("m.obj", "mtllib m.mtl\n");
-  dir.write("m.mtl", "newmtl a\nmap_Kd C:\\Users\\artist\\skin.png\nmap_Ks /etc/passwd\n");
   dir.write("skin.png", "png");
-  const BundleScan scan = scan_obj_bundle(dir.path() / "m.obj");
+  const BundleScan scan =
+      scan_with_library(dir, "newmtl a\nmap_Kd C:\\Users\\artist\\skin.png\nmap_Ks /etc/passwd\n");
   EXPECT_EQ(names(scan), (std::vector<std::string>{"m.obj", "m.mtl", "skin.png"}));
   EXPECT_TRUE(has_warning(scan, "'/etc/passwd' refused: absolute path"));
 }
