@@ -1,9 +1,9 @@
 #pragma once
 // Finding the files of an OBJ bundle on disk: the OBJ, the MTL files its
-// `mtllib` lines name, and the textures those MTL files reference. The
-// daemon resolves references the same way (relative to the referring file,
-// `\` as `/`, case-insensitive fallback), so what is sent here is what it
-// will look for. Nothing outside the OBJ's folder is ever read.
+// `mtllib` lines name, and the textures those MTL files reference. Names are
+// read and resolved by the daemon's own rules (bundle_paths), so what is
+// sent here is what it will look for. Nothing outside the OBJ's folder is
+// ever read.
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -32,16 +32,7 @@ BundleScan scan_obj_bundle(const std::filesystem::path& obj_path);
 // Whether a file name ends in .gltf or .glb (any case).
 bool is_gltf_name(std::string_view name);
 
-// The parts of an MTL line that name files, exposed for tests.
 // Whether `keyword` (any case) is a texture statement whose file is sent.
 bool is_texture_keyword(std::string_view keyword);
-// File names a `mtllib` line lists (several per line are allowed; `\ `
-// escapes a space).
-std::vector<std::string> mtllib_names(std::string_view rest_of_line);
-// Candidate file names for a texture statement, best first: the options
-// (-bm 2, -o 0.1 0.2, -imfchan r, ...) are dropped, and when several words
-// remain both "all of them with their spaces" and "the last word" are
-// offered, since exporters write unescaped spaces and readers disagree.
-std::vector<std::string> texture_name_candidates(std::string_view rest_of_line);
 
 }  // namespace toond::cli

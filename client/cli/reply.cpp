@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "text/trim.h"
+
 namespace toond::cli {
 
 std::string describe_error_reply(int status, std::string_view body, std::string_view retry_after) {
@@ -25,10 +27,7 @@ std::string describe_error_reply(int status, std::string_view body, std::string_
     const std::string message = text(*error, "message");
     out += ": " + (message.empty() ? std::string("(no message)") : message);
   } else {
-    std::string_view first = body.substr(0, body.find('\n'));
-    while (!first.empty() && std::isspace(static_cast<unsigned char>(first.back()))) {
-      first.remove_suffix(1);
-    }
+    const std::string_view first = text::trim(body.substr(0, body.find('\n')));
     constexpr std::size_t kMax = 200;
     if (first.empty()) {
       out += " (empty answer)";

@@ -7,19 +7,21 @@
 #include <string>
 #include <string_view>
 
+#include "bundle_paths/name_index.h"
+
 namespace toond::scene {
 
 class Bundle {
  public:
-  // Adds a file. The path is normalised (see normalize_path); throws
+  // Adds a file. The path is normalised (see bundle_paths::read_path); throws
   // ImportError (naming the file) when it is not a safe relative path, when
   // it is already present, or when it would be both a file and a folder.
   void add(std::string_view path, std::string content);
 
-  // Resolves `reference` (as written in an OBJ or MTL) relative to the folder
-  // of `from` (a bundle path). `\` counts as `/`; when no exact match exists a
-  // case-insensitive match is tried. Returns the bundle path, or nullopt when
-  // the reference names no file of the bundle or would leave it.
+  // The file `reference` (as written in an OBJ, MTL or glTF) names from
+  // bundle file `from`, by bundle_paths::resolve_reference and NameIndex's
+  // case rule: the rule `toon` sends files by. Returns the bundle path, or
+  // nullopt when the reference names no file of the bundle or would leave it.
   std::optional<std::string> resolve(std::string_view from, std::string_view reference) const;
 
   const std::string* find(std::string_view path) const;
@@ -29,15 +31,7 @@ class Bundle {
 
  private:
   std::map<std::string, std::string> files_;
-  // ASCII-lowercased path → the path, for resolve's case-insensitive match
-  // in one look-up (a scan per reference made many missing textures cost
-  // references × files).
-  std::map<std::string, std::string> folded_names_;
+  bundle_paths::NameIndex names_;
 };
-
-// Normalises a relative path: `\` → `/`, drops `.` segments and empty
-// segments, resolves `..` inside the path. Returns nullopt for absolute paths,
-// drive letters, NUL bytes, or `..` that would climb above the root.
-std::optional<std::string> normalize_path(std::string_view path);
 
 }  // namespace toond::scene

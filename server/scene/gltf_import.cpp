@@ -18,6 +18,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bundle_paths/bundle_path.h"
 #include "scene/data_uri.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_container.h"
@@ -42,22 +43,6 @@ constexpr std::array<std::string_view, 6> kReadExtensions = {
 
 bool reads_extension(std::string_view name) {
   return std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end();
-}
-
-std::string percent_decoded(std::string_view uri) {
-  std::string out;
-  for (std::size_t i = 0; i < uri.size(); ++i) {
-    const auto hex = [](char c) {
-      return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
-    };
-    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
-      out.push_back(static_cast<char>(hex(uri[i + 1]) * 16 + hex(uri[i + 2])));
-      i += 2;
-    } else {
-      out.push_back(uri[i]);
-    }
-  }
-  return out;
 }
 
 // Whether `uri` starts with a scheme ("http:", "file:"); a single letter
@@ -281,14 +266,11 @@ class GltfImporter {
            "; a glTF upload may only name files of the upload or carry data: URIs");
     };
     if (has_scheme(uri)) refuse("which points outside the upload");
-    const std::string decoded = percent_decoded(uri);
+    const std::string decoded = bundle_paths::uri_reference(uri);
     if (decoded.empty()) refuse("which is empty");
-    if (decoded.front() == '/' || decoded.front() == '\\' || (decoded.size() > 1 && decoded[1] == ':')) {
-      refuse("an absolute path");
-    }
-    const auto slash = path_.find_last_of('/');
-    const std::string folder = slash == std::string::npos ? "" : path_.substr(0, slash + 1);
-    if (!normalize_path(folder + decoded)) refuse("which leaves the upload's folder");
+    const bundle_paths::Refusal refusal = bundle_paths::resolve_reference(path_, decoded).refusal;
+    if (refusal == bundle_paths::Refusal::absolute) refuse("an absolute path");
+    if (refusal != bundle_paths::Refusal::none) refuse("which leaves the upload's folder");
     return bundle_.resolve(path_, decoded);
   }
 

@@ -15,17 +15,12 @@
 #include "scene/bundle_import.h"
 #include "scene/import_error.h"
 #include "scene/mesh_builder.h"
+#include "text/trim.h"
 
 namespace toond::scene {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
-
-std::string_view strip(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-  return s;
-}
 
 std::vector<std::string_view> split(std::string_view s) {
   std::vector<std::string_view> tokens;
@@ -110,7 +105,7 @@ class Parser {
     while (pos < text_.size()) {
       // Any of \n, \r\n and \r ends a line.
       const std::size_t end = std::min(text_.find_first_of("\r\n", pos), text_.size());
-      const std::string_view line = strip(text_.substr(pos, end - pos));
+      const std::string_view line = text::trim(text_.substr(pos, end - pos));
       pos = end + ((end + 1 < text_.size() && text_[end] == '\r' && text_[end + 1] == '\n') ? 2 : 1);
       ++line_number;
       if (line.empty() || line.front() == '#') continue;

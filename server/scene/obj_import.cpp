@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "bundle_paths/statement_names.h"
 #include "scene/bundle_import.h"
 #include "scene/import_error.h"
 #include "scene/mesh_builder.h"
@@ -28,36 +29,55 @@ std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 std::string find_obj(const Bundle& bundle) { return find_model_file(bundle, {".obj"}, ".obj"); }
 
 // Which statements an MTL gave a material, where tinyobj's defaults cannot
-// be told apart from values written in the file.
+// be told apart from values written in the file, and the texture statements
+// as written: tinyobj's option parser reads the name as a number after -o,
+// -s or -t with fewer than three numbers, while bundle_paths::texture_names
+// (the reading `toon` sends files by) does not.
 struct GivenStatements {
   bool kd = false;
   bool ns = false;
+  std::optional<std::string> map_kd;  // the text after the keyword
+  std::optional<std::string> bump;    // map_Bump, map_bump or bump
+  std::optional<std::string> norm;
 };
 
-// The statements given per material name in an MTL text. Lines and names
-// are cut exactly as tinyobj's LoadMtl cuts them (any of \n, \r\n, \r ends
-// a line; the name is the rest of the newmtl line less trailing blanks), so
-// the names match the ones it produced.
+// The statements given per material name in an MTL text. Lines, names and
+// keywords are cut exactly as tinyobj's LoadMtl cuts them (any of \n, \r\n,
+// \r ends a line; the name is the rest of the newmtl line less trailing
+// blanks; keywords are case-sensitive), so the names match the ones it
+// produced and the same statements count.
 std::map<std::string, GivenStatements> given_statements(std::string_view mtl) {
   std::map<std::string, GivenStatements> given;
   std::string current;
   std::size_t pos = 0;
   while (pos < mtl.size()) {
     const std::size_t end = std::min(mtl.find_first_of("\r\n", pos), mtl.size());
-    std::string_view line = mtl.substr(pos, end - pos);
+    const std::string_view line = text::trim(mtl.substr(pos, end - pos));
     pos = end + ((end + 1 < mtl.size() && mtl[end] == '\r' && mtl[end + 1] == '\n') ? 2 : 1);
-    const auto last = line.find_last_not_of(" \t");
-    line = last == std::string_view::npos ? std::string_view{} : line.substr(0, last + 1);
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string_view::npos) continue;
-    line.remove_prefix(first);
-    const auto blank_at = [&](std::size_t i) { return i < line.size() && (line[i] == ' ' || line[i] == '\t'); };
-    if (line.starts_with("newmtl") && blank_at(6)) {
+    if (line.empty()) continue;
+    const auto is = [&](std::string_view keyword) {
+      return line.starts_with(keyword) && line.size() > keyword.size() &&
+             (line[keyword.size()] == ' ' || line[keyword.size()] == '\t');
+    };
+    // As tinyobj, a statement that names no file leaves the one before.
+    const auto texture = [&](std::optional<std::string>& statement, std::size_t keyword_size) {
+      const std::string_view rest = line.substr(keyword_size);
+      if (!bundle_paths::texture_names(rest).empty()) statement = std::string(rest);
+    };
+    if (is("newmtl")) {
       current = std::string(line.substr(7));
-    } else if (line.starts_with("Kd") && blank_at(2)) {
+    } else if (is("Kd")) {
       given[current].kd = true;
-    } else if (line.starts_with("Ns") && blank_at(2)) {
+    } else if (is("Ns")) {
       given[current].ns = true;
+    } else if (is("map_Kd")) {
+      texture(given[current].map_kd, 6);
+    } else if (is("map_Bump") || is("map_bump")) {
+      texture(given[current].bump, 8);
+    } else if (is("bump")) {
+      texture(given[current].bump, 4);
+    } else if (is("norm")) {
+      texture(given[current].norm, 4);
     }
   }
   return given;
@@ -71,16 +91,42 @@ class BundleMaterialReader : public tinyobj::MaterialReader {
   BundleMaterialReader(const Bundle& bundle, std::string obj_path, ImportWarnings& warnings)
       : bundle_(bundle), obj_path_(std::move(obj_path)), warnings_(warnings) {}
 
-  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+  // `line` is a whole mtllib line (prepare_obj_text keeps tinyobj from
+  // cutting it), read as toon reads it.
+  bool operator()(const std::string& line, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* material_map, std::string*, std::string*) override {
-    const std::string reference(text::trim(name));
+    const auto in_bundle = [&](const std::string& name) { return bundle_.resolve(obj_path_, name).has_value(); };
+    for (const std::string& reference : bundle_paths::mtllib_names(line, in_bundle)) {
+      load(reference, materials, material_map);
+    }
+    // Missing libraries are said by load, precisely: answering "found" keeps
+    // tinyobj from adding a warning of its own.
+    return true;
+  }
+
+  // What the MTL set for material `id`: tinyobj fills in its own defaults
+  // (Kd 0 without a texture and 0.6 with one, Ns 1) that cannot be told
+  // apart from values written in the file.
+  GivenStatements given(int id) const {
+    return id >= 0 && static_cast<std::size_t>(id) < given_.size() ? given_[static_cast<std::size_t>(id)]
+                                                                    : GivenStatements{};
+  }
+
+  // The MTL that defined material `id` (the OBJ itself when unknown).
+  const std::string& source_of(int id) const {
+    return id >= 0 && static_cast<std::size_t>(id) < sources_.size() ? sources_[static_cast<std::size_t>(id)]
+                                                                      : obj_path_;
+  }
+
+ private:
+  // The materials of library `reference`, added to tinyobj's lists.
+  void load(const std::string& reference, std::vector<tinyobj::material_t>* materials,
+            std::map<std::string, int>* material_map) {
     const auto path = bundle_.resolve(obj_path_, reference);
     if (!path) {
       warnings_.add(obj_path_ + ": material library " + quoted(reference) +
                     " is not in the bundle; its materials fall back to the default colour");
-      // Said here, precisely: answering "found, and empty" keeps tinyobj
-      // from adding a warning of its own.
-      return true;
+      return;
     }
     std::istringstream in(*bundle_.find(*path));
     std::string warn;
@@ -102,24 +148,8 @@ class BundleMaterialReader : public tinyobj::MaterialReader {
       // prepare_obj_text turned usemtl names with blanks into this alias.
       material_map->emplace(material_alias(material), static_cast<int>(i));
     }
-    return true;
   }
 
-  // What the MTL set for material `id`: tinyobj fills in its own defaults
-  // (Kd 0 without a texture and 0.6 with one, Ns 1) that cannot be told
-  // apart from values written in the file.
-  GivenStatements given(int id) const {
-    return id >= 0 && static_cast<std::size_t>(id) < given_.size() ? given_[static_cast<std::size_t>(id)]
-                                                                    : GivenStatements{};
-  }
-
-  // The MTL that defined material `id` (the OBJ itself when unknown).
-  const std::string& source_of(int id) const {
-    return id >= 0 && static_cast<std::size_t>(id) < sources_.size() ? sources_[static_cast<std::size_t>(id)]
-                                                                      : obj_path_;
-  }
-
- private:
   const Bundle& bundle_;
   std::string obj_path_;
   ImportWarnings& warnings_;
@@ -159,20 +189,6 @@ bool is_greyscale(const Texture& texture) {
     if (texture.rgba[i] != texture.rgba[i + 1] || texture.rgba[i] != texture.rgba[i + 2]) return false;
   }
   return true;
-}
-
-// MTL texture statements may carry quotes or trailing options that tinyobj
-// leaves in the name; try the plausible readings in turn.
-std::vector<std::string> texture_name_candidates(const std::string& raw) {
-  std::vector<std::string> names;
-  std::string name(text::trim(raw));
-  if (name.size() >= 2 && (name.front() == '"' || name.front() == '\'') && name.back() == name.front()) {
-    name = name.substr(1, name.size() - 2);
-  }
-  if (!name.empty()) names.push_back(name);
-  const auto space = name.find_first_of(" \t");
-  if (space != std::string::npos) names.push_back(name.substr(0, space));
-  return names;
 }
 
 class Importer {
@@ -297,29 +313,21 @@ class Importer {
     const std::string kind = colour_map ? "texture" : "normal map";
     const std::string fallback =
         colour_map ? "the material colour is used instead" : "the material is shaded without it";
-    const auto candidates = texture_name_candidates(raw_name);
+    const std::vector<bundle_paths::TextureName> candidates = bundle_paths::texture_names(raw_name);
     if (candidates.empty()) return -1;
+    const std::string& written = candidates.front().name;
     std::optional<std::string> path;
-    for (const auto& name : candidates) {
-      if ((path = bundle_.resolve(mtl_path, name))) break;
-    }
-    if (!path) {
-      // Exporters often write the artist's absolute path; the file itself
-      // usually travels beside the MTL.
-      std::string base = candidates.front();
-      std::replace(base.begin(), base.end(), '\\', '/');
-      base = base.substr(base.find_last_of('/') == std::string::npos ? 0 : base.find_last_of('/') + 1);
-      if (!base.empty() && base != candidates.front()) {
-        path = bundle_.resolve(mtl_path, base);
-        if (path) {
-          warnings_.add(mtl_path + ": " + kind + " " + quoted(candidates.front()) + " of material " +
-                        quoted(material_name) + " was found by its file name alone, as " + quoted(*path));
-        }
+    for (const bundle_paths::TextureName& candidate : candidates) {
+      if (!(path = bundle_.resolve(mtl_path, candidate.name))) continue;
+      if (candidate.file_name_only) {
+        warnings_.add(mtl_path + ": " + kind + " " + quoted(written) + " of material " + quoted(material_name) +
+                      " was found by its file name alone, as " + quoted(*path));
       }
+      break;
     }
     if (!path) {
-      warnings_.add(mtl_path + ": " + kind + " " + quoted(candidates.front()) + " of material " +
-                    quoted(material_name) + " is not in the bundle; " + fallback);
+      warnings_.add(mtl_path + ": " + kind + " " + quoted(written) + " of material " + quoted(material_name) +
+                    " is not in the bundle; " + fallback);
       return -1;
     }
     const auto key = std::make_pair(*path, space);
@@ -368,8 +376,9 @@ class Importer {
       Material material;
       material.name = source.name;
       material.diffuse = sanitize_colour(source.diffuse, 0.8f);
-      if (!source.diffuse_texname.empty()) {
-        material.diffuse_texture = texture_for(source.diffuse_texname, source.name, mtl_path, ColorSpace::Srgb);
+      const std::string diffuse_name = given.map_kd.value_or(source.diffuse_texname);
+      if (!diffuse_name.empty()) {
+        material.diffuse_texture = texture_for(diffuse_name, source.name, mtl_path, ColorSpace::Srgb);
       }
       if (!given.kd) {
         // Without Kd a texture or the vertex colours show as painted
@@ -380,7 +389,8 @@ class Importer {
       // `norm` names a normal map outright; tinyobj files map_Bump, map_bump
       // and bump under bump_texname, which Blender and most exporters use
       // for tangent-space normal maps (windmill does).
-      const std::string& normal_name = !source.normal_texname.empty() ? source.normal_texname : source.bump_texname;
+      const std::string normal_name = given.norm.value_or(
+          given.bump.value_or(!source.normal_texname.empty() ? source.normal_texname : source.bump_texname));
       if (!normal_name.empty()) {
         material.normal_texture = texture_for(normal_name, source.name, mtl_path, ColorSpace::Linear);
       }

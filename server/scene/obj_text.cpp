@@ -89,18 +89,16 @@ bool needs_corner_fix(std::string_view rest) {
   return false;
 }
 
-// tinyobj splits mtllib names at blanks and reads '\' as an escape ("a\ b"
-// is one name with a space). A Windows separator ("maps\a.mtl") would
-// vanish, so every '\' not escaping a blank becomes '/'.
-std::string fix_mtllib_separators(std::string_view rest) {
-  std::string out(rest);
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    if (out[i] != '\\') continue;
-    if (i + 1 < out.size() && (out[i + 1] == ' ' || out[i + 1] == '\t')) {
-      ++i;
-    } else {
-      out[i] = '/';
-    }
+// tinyobj splits mtllib lines at blanks, reads '\' as an escape, and offers
+// the pieces to the material reader one at a time until one is accepted, so
+// "maps\a.mtl" lost its separator and "my model.mtl" was looked up as "my".
+// With every blank and '\' escaped, the line reaches the reader whole, to be
+// read by bundle_paths::mtllib_names as toon reads it.
+std::string mtllib_line_in_one_piece(std::string_view rest) {
+  std::string out = "mtllib ";
+  for (const char c : text::trim(rest)) {
+    if (c == ' ' || c == '\\') out += '\\';
+    out += c;
   }
   return out;
 }
@@ -213,9 +211,8 @@ std::string prepare_obj_text(std::string_view text, ObjTextFindings* findings) {
         out += fan_of(std::string_view(fixed).substr(fixed.find('f') + 1));
       } else if ((keyword == "f" || keyword == "l" || keyword == "p") && needs_corner_fix(rest)) {
         out += fix_corners(keyword, rest);
-      } else if (keyword == "mtllib" && rest.find('\\') != std::string_view::npos) {
-        out += "mtllib";
-        out += fix_mtllib_separators(rest);
+      } else if (keyword == "mtllib" && text::trim(rest).find_first_of(" \t\\") != std::string_view::npos) {
+        out += mtllib_line_in_one_piece(rest);
       } else if (keyword == "usemtl" && material_alias(rest) != text::trim(rest)) {
         out += "usemtl ";
         out += material_alias(rest);

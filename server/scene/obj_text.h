@@ -11,8 +11,9 @@ namespace toond::scene {
 //   so); the pieces are joined and blank lines keep the numbering.
 // - Empty index slots in f/l/p corners ("1//", "2/2/") are dropped; tinyobj
 //   would read them as index 0 and reject the file.
-// - '\' in `mtllib` names becomes '/' unless it escapes a blank, because
-//   tinyobj reads every '\' there as an escape character.
+// - An `mtllib` line with blanks or '\' in it has them escaped, so that
+//   tinyobj hands it to the material reader as one name instead of cutting
+//   it (see mtllib_line_in_one_piece).
 // - `usemtl` names containing blanks become material_alias(name), since
 //   tinyobj keeps only the first word of a usemtl name but the whole line of
 //   a newmtl name.

@@ -1,7 +1,7 @@
 #pragma once
-// The one rule for trimming text the daemon reads (OBJ/MTL lines, driver
-// logs, HTTP header lists): spaces, tabs, carriage returns and newlines at
-// either end go.
+// The one rule for trimming text toond and toon read (OBJ, MTL and .m
+// lines, driver logs, HTTP header lists, error answers): spaces, tabs,
+// carriage returns and newlines at either end go.
 #include <string_view>
 
 namespace toond::text {

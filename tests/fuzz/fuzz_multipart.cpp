@@ -10,6 +10,7 @@
 
 #include <httplib.h>
 
+#include "bundle_paths/bundle_path.h"
 #include "fuzz_input.h"
 #include "http/bundle_upload.h"
 #include "request_error.h"
@@ -71,7 +72,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!valid_utf8(path)) finding(path, "not UTF-8");
     const bool letter = !path.empty() && ((path[0] >= 'A' && path[0] <= 'Z') || (path[0] >= 'a' && path[0] <= 'z'));
     if (letter && path.size() >= 2 && path[1] == ':') finding(path, "drive letter");
-    if (toond::scene::normalize_path(path) != path) finding(path, "not normalised");
+    if (toond::bundle_paths::normalize_path(path) != path) finding(path, "not normalised");
     const fs::path target = (root / path).lexically_normal();
     const auto rel = target.lexically_relative(root);
     if (rel.empty() || *rel.begin() == "..") finding(path, "leaves the bundle folder");

@@ -33,6 +33,7 @@ Options parse(const Args& args, std::optional<std::string> env = std::nullopt) {
 }
 
 using cli_test::contains;
+using cli_test::TempDir;
 using cli_test::usage_error;
 
 // ---------------------------------------------------------------- --server
@@ -267,34 +268,6 @@ TEST(RenderParams, ModelIdIsSetAndChecked) {
   EXPECT_TRUE(contains(usage_error([&] { build_render_params(bad, schema()); }), "/model"));
 }
 
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("toon-cli-test-" + std::to_string(::getpid()) + "-" + info->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  const fs::path& path() const { return path_; }
-  fs::path write(const std::string& relative, const std::string& content) const {
-    const fs::path p = path_ / relative;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << content;
-    return p;
-  }
-
- private:
-  fs::path path_;
-};
-
 TEST(RenderParams, ParamsFileIsTheBaseAndSetsOverrideIt) {
   TempDir dir;
   const fs::path file =
@@ -459,18 +432,35 @@ TEST(BundleScan, MissingObjIsAUsageError) {
   EXPECT_FALSE(usage_error([&] { scan_obj_bundle(dir.path()); }).empty());
 }
 
-TEST(BundleScan, TextureStatementParsing) {
-  using V = std::vector<std::string>;
-  EXPECT_EQ(texture_name_candidates("diffuse.jpg"), V{"diffuse.jpg"});
-  EXPECT_EQ(texture_name_candidates("-o 0.1 0.2 diffuse.jpg"), V{"diffuse.jpg"});
-  EXPECT_EQ(texture_name_candidates("-s 1 2 3 -clamp on a.png"), V{"a.png"});
-  EXPECT_EQ(texture_name_candidates("-colorspace sRGB -o 0.1 diffuse.jpg"), V{"diffuse.jpg"});
-  EXPECT_EQ(texture_name_candidates("-imfchan r bumpmap2.jpg -bm 1.5"), V{"bumpmap2.jpg"});
-  EXPECT_EQ(texture_name_candidates("-mm 0.1 0.3 spec.jpg"), V{"spec.jpg"});
-  EXPECT_EQ(texture_name_candidates("-bm 2 bump 01.png"), (V{"bump 01.png", "01.png"}));
-  EXPECT_EQ(texture_name_candidates("my\\ tex.png"), V{"my tex.png"});
-  EXPECT_EQ(texture_name_candidates(""), V{});
-  EXPECT_EQ(mtllib_names("a.mtl  b\\ c.mtl"), (V{"a.mtl", "b c.mtl"}));
+// The scan of an OBJ whose one library, m.mtl, holds `mtl`.
+BundleScan scan_with_library(const TempDir& dir, const std::string& mtl) {
+  dir.write("m.obj", "mtllib m.mtl\n");
+  dir.write("m.mtl", mtl);
+  return scan_obj_bundle(dir.path() / "m.obj");
+}
+
+TEST(BundleScan, OtherCaseIsMatchedOverTheWholePathAsTheDaemonDoes) {
+  TempDir dir;
+  // "tex" exists as written but holds only "A.png"; of the spellings of
+  // "tex/a.png" on disk, the daemon's rule picks the least, "Tex/a.png", so
+  // that is the one file both statements need.
+  dir.write("tex/A.png", "lower folder");
+  dir.write("Tex/a.png", "upper folder");
+  const BundleScan scan = scan_with_library(dir, "newmtl a\nmap_Kd tex/a.png\nnewmtl b\nmap_Kd Tex/a.png\n");
+  EXPECT_EQ(names(scan), (std::vector<std::string>{"m.obj", "m.mtl", "Tex/a.png"}));
+  EXPECT_TRUE(scan.warnings.empty());
+}
+
+TEST(BundleScan, ForeignAbsolutePathsFallBackToTheFileNameBesideTheMtl) {
+  TempDir dir;
+  dir.write("skin.png", "png");
+  const BundleScan scan =
+      scan_with_library(dir, "newmtl a\nmap_Kd C:\\Users\\artist\\skin.png\nmap_Ks /etc/passwd\n");
+  EXPECT_EQ(names(scan), (std::vector<std::string>{"m.obj", "m.mtl", "skin.png"}));
+  EXPECT_TRUE(has_warning(scan, "'/etc/passwd' refused: absolute path"));
+}
+
+TEST(BundleScan, TextureKeywords) {
   EXPECT_TRUE(is_texture_keyword("map_bump"));
   EXPECT_TRUE(is_texture_keyword("norm"));
   EXPECT_FALSE(is_texture_keyword("map_Ka"));
@@ -518,6 +508,7 @@ TEST(Reply, ForeignBodiesAreSummarised) {
   EXPECT_EQ(describe_error_reply(502, "<html>Bad Gateway</html>\n<body>...", ""),
             "error 502: <html>Bad Gateway</html>");
   EXPECT_EQ(describe_error_reply(500, "", ""), "error 500 (empty answer)");
+  EXPECT_EQ(describe_error_reply(502, " \tBad Gateway \r\nmore", ""), "error 502: Bad Gateway");
 }
 
 TEST(Reply, PngSizeAndHelpers) {

@@ -201,6 +201,28 @@ TEST(ObjImport, TextureFoundByFileNameWhenThePathIsForeign) {
   EXPECT_TRUE(has_warning(m, "file name")) << warnings_of(m);
 }
 
+TEST(ObjImport, MtllibLinesAreReadAsToonReadsThem) {
+  const std::string tail = "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 2 4 3\n";
+  const auto diffuse_of = [](const Model& m, const std::string& name) {
+    for (const Material& material : m.materials) {
+      if (material.name == name) return material.diffuse;
+    }
+    return glm::vec3(-1);
+  };
+  // Every library of a line, not just the first; a missing one is said.
+  const Model several = import_obj_bundle(make_bundle({{"m.obj", "mtllib gone.mtl mats\\a.mtl my\\ b.mtl" + tail},
+                                                       {"mats/a.mtl", "newmtl a\nKd 1 0 0\n"},
+                                                       {"my b.mtl", "newmtl b\nKd 0 0 1\n"}}));
+  EXPECT_EQ(diffuse_of(several, "a"), glm::vec3(1, 0, 0));
+  EXPECT_EQ(diffuse_of(several, "b"), glm::vec3(0, 0, 1));
+  EXPECT_TRUE(has_warning(several, "gone.mtl")) << warnings_of(several);
+  // An unescaped blank inside one library's name.
+  const Model spaced = import_obj_bundle(
+      make_bundle({{"m.obj", "mtllib my model.mtl" + tail}, {"my model.mtl", "newmtl a\nKd 0 1 0\nnewmtl b\n"}}));
+  EXPECT_EQ(diffuse_of(spaced, "a"), glm::vec3(0, 1, 0));
+  EXPECT_TRUE(spaced.warnings.empty()) << warnings_of(spaced);
+}
+
 TEST(ObjImport, MissingMtlIsAWarning) {
   const std::string obj = "mtllib nothere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl skin\nf 1 2 3\n";
   const Model m = import_obj_bundle(make_bundle({{"m.obj", obj}}));
@@ -453,7 +475,10 @@ TEST(ObjText, PreparationKeepsLineNumbersAndMeaning) {
   EXPECT_EQ(prepare_obj_text("f 1/1/ 2/2/ \\\n  3/3/\nv 0 0 0"), "f 1/1 2/2 3/3\n\nv 0 0 0\n");
   EXPECT_EQ(prepare_obj_text("usemtl  a b\tc  \n"), "usemtl a\x1f" "b\x1f" "c\n");
   EXPECT_EQ(prepare_obj_text("usemtl plain\nf 1/2/3 4//5\n"), "usemtl plain\nf 1/2/3 4//5\n");
-  EXPECT_EQ(prepare_obj_text("mtllib mats\\a.mtl my\\ file.mtl\n"), "mtllib mats/a.mtl my\\ file.mtl\n");
+  // An mtllib line reaches the material reader in one piece.
+  EXPECT_EQ(prepare_obj_text("mtllib  mats\\a.mtl my\\ file.mtl \n"),
+            "mtllib mats\\\\a.mtl\\ my\\\\\\ file.mtl\n");
+  EXPECT_EQ(prepare_obj_text("mtllib plain.mtl\n"), "mtllib plain.mtl\n");
   EXPECT_EQ(material_alias(" a  b "), "a\x1f" "b");
 }
 
