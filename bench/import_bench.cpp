@@ -156,14 +156,14 @@ int main(int argc, char** argv) {
   }
   const double obj_mb = static_cast<double>(obj.total_bytes()) / 1e6;
   const double glb_mb = static_cast<double>(glb.total_bytes()) / 1e6;
-  std::printf("median of %d (quartiles)   bytes   importer alone          import_bundle (with LODs)\n",
-              options.repeats);
-  std::printf("OBJ              %10zu   %-22s  %s\n", obj.total_bytes(), obj_only.summary().c_str(),
+  std::printf("median of %d (quartiles)        bytes  %-28s  %s\n", options.repeats, "importer alone",
+              "import_bundle (with LODs)");
+  std::printf("%-22s %12zu  %-28s  %s\n", "OBJ", obj.total_bytes(), obj_only.summary().c_str(),
               obj_full.summary().c_str());
-  std::printf("GLB              %10zu   %-22s  %s\n", glb.total_bytes(), glb_only.summary().c_str(),
+  std::printf("%-22s %12zu  %-28s  %s\n", "GLB", glb.total_bytes(), glb_only.summary().c_str(),
               glb_full.summary().c_str());
-  std::printf("GLB / OBJ        %10.2f   %7.2f                 %7.2f\n", glb_mb / obj_mb,
-              glb_only.median() / obj_only.median(), glb_full.median() / obj_full.median());
+  std::printf("%-22s %12.2f  %8.2f%-20s  %8.2f\n", "GLB / OBJ", glb_mb / obj_mb, glb_only.median() / obj_only.median(),
+              "", glb_full.median() / obj_full.median());
   std::printf("MB/s, importer alone: OBJ %.1f, GLB %.1f\n", obj_mb / obj_only.median(), glb_mb / glb_only.median());
   return 0;
 }
