@@ -3,10 +3,13 @@
 // model is large enough for a 10 MB GLB), or an OBJ file given with --obj;
 // the GLB is its twin written by the tests' glTF writer. Each import runs
 // `--repeats` times, the four kinds interleaved so that the machine's drift
-// falls on all of them alike, and the medians are printed with the files'
-// sizes: the format's own importer alone, and import_bundle (what an upload
-// runs) with the levels of detail and enclosure every upload also gets.
+// falls on all of them alike, and the medians (wall-clock and CPU time) are
+// printed with the files' sizes: the format's own importer alone, and
+// import_bundle (what an upload runs) with the levels of detail and
+// enclosure every upload also gets.
 // `--write DIR` leaves the two files there for bench/upload_cost.sh.
+#include <time.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -38,9 +41,9 @@ constexpr const char* kUsage = R"(usage: toond_import_bench [options]
   --repeats N    imports of each kind, interleaved; default 7
   --write DIR    also write the OBJ and the GLB into DIR (for
                  bench/upload_cost.sh, which uploads them to a toond)
-Prints, for the OBJ and the GLB, the bytes and the median, first and third
-quartile of the wall-clock time of each importer alone and of import_bundle,
-and the GLB / OBJ ratios.
+Prints, for the OBJ and the GLB, the bytes, and for each importer alone and
+for import_bundle the median, first and third quartile of the wall-clock
+time and the median CPU time of the process; then the GLB / OBJ ratios.
 )";
 
 struct Options {
@@ -85,21 +88,42 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
+// CPU time of the whole process: an import runs on the calling thread, and
+// what else a busy machine runs does not count here, as it does in the
+// wall-clock time.
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) / 1e9;
+}
+
 struct Timings {
-  std::vector<double> seconds;
+  std::vector<double> wall, cpu;
   void add(const std::function<void()>& work) {
     const auto start = Clock::now();
+    const double cpu_start = process_cpu_seconds();
     work();
-    seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    cpu.push_back(process_cpu_seconds() - cpu_start);
+    wall.push_back(std::chrono::duration<double>(Clock::now() - start).count());
   }
-  double median() const { return bench::median(seconds); }
+  // "wall median (quartiles)  CPU median", milliseconds.
   std::string summary() const {
-    char text[64];
-    std::snprintf(text, sizeof text, "%8.1f ms (%.1f-%.1f)", median() * 1e3, bench::percentile(seconds, 0.25) * 1e3,
-                  bench::percentile(seconds, 0.75) * 1e3);
+    char quartiles[48], text[96];
+    std::snprintf(quartiles, sizeof quartiles, "(%.1f-%.1f)", bench::percentile(wall, 0.25) * 1e3,
+                  bench::percentile(wall, 0.75) * 1e3);
+    std::snprintf(text, sizeof text, "%8.1f %-18s %8.1f", bench::median(wall) * 1e3, quartiles,
+                  bench::median(cpu) * 1e3);
     return text;
   }
 };
+
+// "wall ratio  CPU ratio" of the medians.
+std::string ratios(const Timings& glb, const Timings& obj) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%8.2f %-18s %8.2f", bench::median(glb.wall) / bench::median(obj.wall), "",
+                bench::median(glb.cpu) / bench::median(obj.cpu));
+  return text;
+}
 
 std::string read_whole(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -156,14 +180,17 @@ int main(int argc, char** argv) {
   }
   const double obj_mb = static_cast<double>(obj.total_bytes()) / 1e6;
   const double glb_mb = static_cast<double>(glb.total_bytes()) / 1e6;
-  std::printf("median of %d (quartiles)        bytes  %-28s  %s\n", options.repeats, "importer alone",
+  std::printf("medians of %d, ms          bytes  %-36s  %s\n", options.repeats, "importer alone",
               "import_bundle (with LODs)");
-  std::printf("%-22s %12zu  %-28s  %s\n", "OBJ", obj.total_bytes(), obj_only.summary().c_str(),
+  std::printf("%-18s %12s  %-36s  %s\n", "", "", "    wall (quartiles)              CPU",
+              "    wall (quartiles)              CPU");
+  std::printf("%-18s %12zu  %-36s  %s\n", "OBJ", obj.total_bytes(), obj_only.summary().c_str(),
               obj_full.summary().c_str());
-  std::printf("%-22s %12zu  %-28s  %s\n", "GLB", glb.total_bytes(), glb_only.summary().c_str(),
+  std::printf("%-18s %12zu  %-36s  %s\n", "GLB", glb.total_bytes(), glb_only.summary().c_str(),
               glb_full.summary().c_str());
-  std::printf("%-22s %12.2f  %8.2f%-20s  %8.2f\n", "GLB / OBJ", glb_mb / obj_mb, glb_only.median() / obj_only.median(),
-              "", glb_full.median() / obj_full.median());
-  std::printf("MB/s, importer alone: OBJ %.1f, GLB %.1f\n", obj_mb / obj_only.median(), glb_mb / glb_only.median());
+  std::printf("%-18s %12.2f  %-36s  %s\n", "GLB / OBJ", glb_mb / obj_mb, ratios(glb_only, obj_only).c_str(),
+              ratios(glb_full, obj_full).c_str());
+  std::printf("MB/s, importer alone, wall: OBJ %.1f, GLB %.1f\n", obj_mb / bench::median(obj_only.wall),
+              glb_mb / bench::median(glb_only.wall));
   return 0;
 }
