@@ -443,15 +443,17 @@ writes OUTDIR/<model>/<look>.png, OUTDIR/contact-sheet.png (rows are models,
 columns are looks) and OUTDIR/index.html, which shows every image with its
 exact parameters and the `toon render` command that repeats it.
 A model is a folder of DIR with exactly one .obj directly inside; its MTL
-files and textures are found as `toon upload` finds them. Progress goes to
+files and textures are found as `toon upload` finds them. NAME.glb stands
+for folder NAME's model sent as a .glb that toon writes from its OBJ (kept
+as OUTDIR/NAME.glb/<obj name>.glb), so glTF is shown too. Progress goes to
 stderr. A failed render is reported and the rest still run and are written;
 the exit status is then 1.
 
 Options:
   --models DIR        the folder of model folders (default: ../shared/models)
-  --all               every model folder in DIR (default: spot,
-                      kenney-cube-pet-dog, kenney-space-craft, windmill,
-                      stanford-bunny, utah-teapot)
+  --all               every model folder in DIR, then bob.glb (default:
+                      spot, kenney-cube-pet-dog, kenney-space-craft,
+                      windmill, stanford-bunny, utah-teapot, bob.glb)
   --only NAME[,NAME]  just these model folders, in this order; may be repeated
   --size N            width and height of each render in pixels (default 256)
   -o, --output DIR    the folder to write (created if missing; required)

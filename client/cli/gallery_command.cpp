@@ -14,6 +14,7 @@
 #include "gallery_looks.h"
 #include "gallery_page.h"
 #include "gallery_sheet.h"
+#include "glb_from_obj.h"
 #include "image/png_codec.h"
 #include "param_schema.h"
 #include "reply.h"
@@ -154,18 +155,30 @@ int run_gallery(const Options& options) {
   std::size_t done = 0, failures = 0;
 
   for (const gallery::ModelFolder& model : selection.models) {
-    const std::string obj_text_path = (fs::path(options.models_dir) / model.name / model.obj_path.filename())
-                                          .generic_string();
-    gallery::PageModel page_model{model.name, obj_text_path, {}, {}};
+    const fs::path model_dir = out_dir / model.name;
+    // A .glb made here is kept beside its renders, so the page's commands
+    // render what was uploaded.
+    const std::string model_text_path =
+        model.as_glb ? (model_dir / model.obj_path.filename().replace_extension(".glb")).generic_string()
+                     : (fs::path(options.models_dir) / model.folder / model.obj_path.filename()).generic_string();
+    gallery::PageModel page_model{model.name, model_text_path, {}, {}};
     auto& row = thumbs.emplace_back(looks.size());
 
     std::string model_id;
     gallery::ModelFrame frame;
     try {
-      const BundleScan scan = scan_obj_bundle(model.obj_path);
+      BundleScan scan = scan_obj_bundle(model.obj_path);
       for (const std::string& w : scan.warnings) std::cerr << "toon: " << model.name << ": warning: " << w << "\n";
       frame = gallery::frame_from_obj(scan.files.front().content);
-      model_id = upload_model(conn, model, scan, page_model.error);
+      if (model.as_glb) {
+        BundleFile glb{fs::path(model_text_path).filename().string(), model_text_path, glb_from_obj(scan)};
+        std::error_code ec;
+        fs::create_directories(model_dir, ec);
+        page_model.error = ec ? "cannot create " + model_dir.string() + ": " + ec.message()
+                              : write_file(glb.disk_path, glb.content);
+        scan.files = {std::move(glb)};
+      }
+      if (page_model.error.empty()) model_id = upload_model(conn, model, scan, page_model.error);
     } catch (const std::exception& e) {
       page_model.error = e.what();
     }
@@ -183,8 +196,7 @@ int run_gallery(const Options& options) {
       continue;
     }
 
-    const gallery::ModelView view = gallery::view_for_model(model.name, schema);
-    const fs::path model_dir = out_dir / model.name;
+    const gallery::ModelView view = gallery::view_for_model(model.folder, schema);
     std::error_code mkdir_ec;
     fs::create_directories(model_dir, mkdir_ec);
 
@@ -199,7 +211,7 @@ int run_gallery(const Options& options) {
           gallery::render_params(look, preset_params, view, frame, options.size, model_id, schema);
       const std::string file_name = look.name + ".png";
       gallery::PageRender render{look.name, look.description, {}, params,
-                                 gallery::render_command(obj_text_path, params, file_name), {}};
+                                 gallery::render_command(model_text_path, params, file_name), {}};
 
       std::string error = look_problem[li];
       if (error.empty() && mkdir_ec) error = "cannot create " + model_dir.string() + ": " + mkdir_ec.message();

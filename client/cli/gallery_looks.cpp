@@ -96,9 +96,14 @@ constexpr ViewEntry kViewTable[] = {
     {"windmill", 65, 8},
 };
 
-// The space craft is the hard-edged one: its default look shows crease lines.
-const std::vector<std::string> kDefaultModels = {"spot", "kenney-cube-pet-dog", "kenney-space-craft", "windmill",
-                                                 "stanford-bunny", "utah-teapot"};
+// The space craft is the hard-edged one: its default look shows crease
+// lines. Bob comes as glTF: textured, with normals and UVs, it takes the
+// glTF path through the daemon's importer the way a downloaded .glb does.
+const std::vector<std::string> kDefaultModels = {"spot",           "kenney-cube-pet-dog", "kenney-space-craft",
+                                                 "windmill",       "stanford-bunny",      "utah-teapot",
+                                                 "bob.glb"};
+
+constexpr std::string_view kGlbSuffix = ".glb";
 
 double schema_default(const proto::ParamSchema& schema, const char* field, double fallback) {
   const json& d = schema.document();
@@ -217,6 +222,29 @@ std::vector<fs::path> obj_files_in(const fs::path& dir) {
 std::string why_not_one_obj(const std::vector<fs::path>& objs) {
   if (objs.empty()) return "no .obj directly inside";
   return std::to_string(objs.size()) + " .obj files (the gallery needs exactly one)";
+}
+
+// The model `name` stands for in `dir`: its folder, or for FOLDER.glb with
+// no folder of that name, FOLDER's OBJ as a .glb. Empty `why` when found.
+ModelFolder find_model(const fs::path& dir, const std::string& name, std::string& why) {
+  std::error_code ec;
+  ModelFolder model{name, {}, name, false};
+  if (!fs::is_directory(dir / name, ec) && name.size() > kGlbSuffix.size() && name.ends_with(kGlbSuffix)) {
+    model.folder = name.substr(0, name.size() - kGlbSuffix.size());
+    model.as_glb = true;
+  }
+  if (!fs::is_directory(dir / model.folder, ec)) {
+    why = "not found in " + dir.string();
+    return model;
+  }
+  const auto objs = obj_files_in(dir / model.folder);
+  if (objs.size() != 1) {
+    why = why_not_one_obj(objs);
+    return model;
+  }
+  model.obj_path = objs.front();
+  why.clear();
+  return model;
 }
 
 }  // namespace
@@ -400,17 +428,14 @@ ModelSelection select_models(const fs::path& dir, bool all, const std::vector<st
     throw UsageError("--models " + dir.string() + ": not a folder (give the folder of model folders)");
   }
   ModelSelection selection;
+  std::string why;
   if (!only.empty()) {
     std::set<std::string> seen;
     for (const std::string& name : only) {
       if (!seen.insert(name).second) throw UsageError("--only names " + name + " twice");
-      const fs::path folder = dir / name;
-      if (!fs::is_directory(folder, ec)) {
-        throw UsageError("--only " + name + ": no such model folder in " + dir.string());
-      }
-      const auto objs = obj_files_in(folder);
-      if (objs.size() != 1) throw UsageError("--only " + name + ": " + why_not_one_obj(objs));
-      selection.models.push_back({name, objs.front()});
+      ModelFolder model = find_model(dir, name, why);
+      if (!why.empty()) throw UsageError("--only " + name + ": " + why);
+      selection.models.push_back(std::move(model));
     }
     return selection;
   }
@@ -422,21 +447,23 @@ ModelSelection select_models(const fs::path& dir, bool all, const std::vector<st
       if (it->is_directory(type_ec)) names.push_back(it->path().filename().string());
     }
     std::sort(names.begin(), names.end());
+    // The glTF model too, where its folder is here (one more row, not a note).
+    for (const std::string& name : kDefaultModels) {
+      const bool folder_here =
+          name.ends_with(kGlbSuffix) &&
+          std::find(names.begin(), names.end(), name.substr(0, name.size() - kGlbSuffix.size())) != names.end();
+      if (folder_here && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
   } else {
     names = kDefaultModels;
   }
   for (const std::string& name : names) {
-    const fs::path folder = dir / name;
-    if (!fs::is_directory(folder, ec)) {
-      selection.notes.push_back("skipping " + name + ": not found in " + dir.string());
+    ModelFolder model = find_model(dir, name, why);
+    if (!why.empty()) {
+      selection.notes.push_back("skipping " + name + ": " + why);
       continue;
     }
-    const auto objs = obj_files_in(folder);
-    if (objs.size() != 1) {
-      selection.notes.push_back("skipping " + name + ": " + why_not_one_obj(objs));
-      continue;
-    }
-    selection.models.push_back({name, objs.front()});
+    selection.models.push_back(std::move(model));
   }
   if (selection.models.empty()) {
     throw UsageError("no model folder to render in " + dir.string() +

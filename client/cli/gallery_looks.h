@@ -80,10 +80,15 @@ std::vector<std::pair<std::string, std::string>> set_arguments(const nlohmann::j
 // letters, digits and _ . , / : = + @ % -.
 std::string shell_quote(std::string_view text);
 
-// Model folders for the gallery.
+// Model folders for the gallery. A name FOLDER.glb, where no folder has
+// that name, is FOLDER's OBJ sent as the .glb toon writes from it
+// (glb_from_obj.h): the shared models are all OBJ, and the gallery shows a
+// glTF model too.
 struct ModelFolder {
-  std::string name;                // the folder's name
-  std::filesystem::path obj_path;  // the one .obj directly inside it
+  std::string name;                // the folder's name, or FOLDER.glb
+  std::filesystem::path obj_path;  // the one .obj directly inside the folder
+  std::string folder;              // the folder's name (its view: view_for_model)
+  bool as_glb = false;             // sent as the .glb written from obj_path
 };
 struct ModelSelection {
   std::vector<ModelFolder> models;
@@ -91,11 +96,12 @@ struct ModelSelection {
 };
 // The folders the gallery renders when neither --all nor --only is given.
 const std::vector<std::string>& default_model_names();
-// `only` non-empty: exactly those folders, in that order (a missing one, or
-// one without exactly one .obj, is a UsageError). `all`: every folder of
-// `dir` with exactly one .obj directly inside, by name; the rest are noted.
-// Neither: the default names that are present. Throws UsageError when `dir`
-// is not a folder or nothing is left to render.
+// `only` non-empty: exactly those names, in that order (a missing folder,
+// or one without exactly one .obj, is a UsageError). `all`: every folder of
+// `dir` with exactly one .obj directly inside, by name, then the default
+// FOLDER.glb names whose folder is there; the rest are noted. Neither: the
+// default names that are present. Throws UsageError when `dir` is not a
+// folder or nothing is left to render.
 ModelSelection select_models(const std::filesystem::path& dir, bool all,
                              const std::vector<std::string>& only);
 

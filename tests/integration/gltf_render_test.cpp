@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 
 #include "scene/obj_import.h"
@@ -21,20 +20,6 @@ namespace {
 using nlohmann::json;
 
 class GltfRender : public SharedDaemonTest, public ::testing::WithParamInterface<const char*> {};
-
-// Share of pixels whose colour differs by more than `levels` in a channel.
-double differing_share(const image::Image& a, const image::Image& b, int levels) {
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
-    for (std::size_t c = 0; c < 3; ++c) {
-      if (std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])) > levels) {
-        ++differing;
-        break;
-      }
-    }
-  }
-  return static_cast<double>(differing) / static_cast<double>(a.rgba.size() / 4);
-}
 
 TEST_P(GltfRender, GlbTwinRendersLikeTheObj) {
   TOOND_REQUIRE_SHARED_MODELS();

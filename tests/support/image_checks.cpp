@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace toond::test {
 
@@ -31,6 +32,19 @@ std::size_t count(const std::vector<bool>& mask) {
 
 double coverage(const std::vector<bool>& mask) {
   return mask.empty() ? 0.0 : static_cast<double>(count(mask)) / static_cast<double>(mask.size());
+}
+
+double differing_share(const Image& a, const Image& b, int levels) {
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i + 3 < a.rgba.size() && i + 3 < b.rgba.size(); i += 4) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      if (std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])) > levels) {
+        ++differing;
+        break;
+      }
+    }
+  }
+  return a.rgba.empty() ? 0.0 : static_cast<double>(differing) / static_cast<double>(a.rgba.size() / 4);
 }
 
 std::map<Rgb, std::size_t> colour_histogram(const Image& img, const std::vector<bool>& mask) {

@@ -26,6 +26,10 @@ std::vector<bool> foreground_mask(const Image& img);
 double coverage(const std::vector<bool>& mask);
 std::size_t count(const std::vector<bool>& mask);
 
+// Share of the pixels of two same-sized images whose colour differs by more
+// than `levels` in some channel (alpha not compared).
+double differing_share(const Image& a, const Image& b, int levels);
+
 // Colours inside `mask` and how many pixels have each.
 std::map<Rgb, std::size_t> colour_histogram(const Image& img, const std::vector<bool>& mask);
 // Colours holding at least `min_fraction` of the masked pixels.

@@ -299,6 +299,42 @@ TEST_F(GalleryModels, OnlyKeepsItsOrderAndRejectsWhatItCannotRender) {
   EXPECT_TRUE(contains(usage_error([&] { select_models(dir_ / "absent", false, {}); }), "not a folder"));
 }
 
+// One default model comes as glTF: a folder's OBJ that toon writes as a .glb.
+TEST_F(GalleryModels, TheDefaultsIncludeOneGltfModel) {
+  const auto& defaults = default_model_names();
+  ASSERT_EQ(std::count_if(defaults.begin(), defaults.end(), [](const std::string& n) { return n.ends_with(".glb"); }),
+            1);
+  fs::create_directories(dir_ / "bob");
+  touch("bob/bob_tri.obj");
+  const ModelSelection s = select_models(dir_, false, {});
+  EXPECT_EQ(names(s), (std::vector<std::string>{"spot", "utah-teapot", "bob.glb"}));
+  const ModelFolder& glb = s.models.back();
+  EXPECT_TRUE(glb.as_glb);
+  EXPECT_EQ(glb.folder, "bob");
+  EXPECT_EQ(glb.obj_path, dir_ / "bob" / "bob_tri.obj");
+  EXPECT_FALSE(s.models.front().as_glb);
+  EXPECT_EQ(s.models.front().folder, "spot");
+  // --all: every folder, then the glTF model again.
+  EXPECT_EQ(names(select_models(dir_, true, {})), (std::vector<std::string>{"bob", "spot", "utah-teapot", "bob.glb"}));
+}
+
+TEST_F(GalleryModels, FolderDotGlbIsThatFoldersObjAsGltfUnlessAFolderHasTheName) {
+  ModelSelection s = select_models(dir_, false, {"spot.glb", "spot"});
+  EXPECT_EQ(names(s), (std::vector<std::string>{"spot.glb", "spot"}));
+  EXPECT_TRUE(s.models[0].as_glb);
+  EXPECT_EQ(s.models[0].obj_path, dir_ / "spot" / "spot.obj");
+  EXPECT_FALSE(s.models[1].as_glb);
+  EXPECT_TRUE(contains(usage_error([&] { select_models(dir_, false, {"two.glb"}); }), "2 .obj"));
+  EXPECT_TRUE(contains(usage_error([&] { select_models(dir_, false, {"missing.glb"}); }), "not found"));
+  EXPECT_TRUE(contains(usage_error([&] { select_models(dir_, false, {".glb"}); }), "not found"));
+
+  fs::create_directories(dir_ / "odd.glb");
+  touch("odd.glb/model.obj");
+  s = select_models(dir_, false, {"odd.glb"});
+  EXPECT_FALSE(s.models[0].as_glb);
+  EXPECT_EQ(s.models[0].folder, "odd.glb");
+}
+
 // ---------------------------------------------------------------- arguments
 
 TEST(GalleryArgs, DefaultsAndFlags) {
