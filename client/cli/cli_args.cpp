@@ -9,6 +9,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "cli_flags.h"
 #include "param_schema.h"
 #include "request_error.h"
 
@@ -62,18 +63,43 @@ class ArgCursor {
   std::size_t i_ = 0;
 };
 
-void set_once(std::optional<std::string>& slot, std::string value, std::string_view flag) {
-  if (slot) throw UsageError(std::string(flag) + " given twice");
-  slot = std::move(value);
+// "health, upload, render, gallery", the last joined by `last`.
+std::string verb_names(std::string_view last) {
+  std::string names;
+  const auto all = verbs();
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (i > 0) names += i + 1 == all.size() ? last : ", ";
+    names += all[i].name;
+  }
+  return names;
 }
 
 Verb verb_from_name(std::string_view name) {
-  if (name == "health") return Verb::health;
-  if (name == "upload") return Verb::upload;
-  if (name == "render") return Verb::render;
-  if (name == "gallery") return Verb::gallery;
-  throw UsageError("unknown command '" + std::string(name) +
-                   "' (commands: health, upload, render, gallery; see toon --help)");
+  for (const VerbInfo& v : verbs()) {
+    if (v.name == name) return v.verb;
+  }
+  throw UsageError("unknown command '" + std::string(name) + "' (commands: " + verb_names(", ") +
+                   "; see toon --help)");
+}
+
+// The row that the current argument names, its value read into `value`:
+// `--name value` or `--name=value` for a flag that takes one, the bare name
+// for a switch. Null when it names none.
+const Flag* take_flag(ArgCursor& c, std::string& value) {
+  for (const Flag& flag : flags()) {
+    for (const std::string_view name : {flag.help.alias, flag.help.name}) {
+      if (name.empty()) continue;
+      if (flag.help.value.empty() ? c.current() == name : c.take(name, value)) return &flag;
+    }
+  }
+  return nullptr;
+}
+
+// Whether any row of the flag called `name` belongs to `verb`.
+bool flag_allowed(std::string_view name, Verb verb) {
+  return std::any_of(flags().begin(), flags().end(), [&](const Flag& flag) {
+    return flag.help.name == name && (flag.verbs & verb_set(verb)) != 0;
+  });
 }
 
 std::string read_params_text(const std::string& file) {
@@ -97,49 +123,11 @@ std::string plain_json_error(const std::string& what) {
   return what;
 }
 
-// Which verbs take a verb-specific flag.
-bool flag_allowed(std::string_view flag, Verb verb) {
-  if (flag == "--quiet") return verb == Verb::upload;
-  if (flag == "-o") return verb == Verb::render || verb == Verb::gallery;
-  if (flag == "--models" || flag == "--size" || flag == "--all" || flag == "--only") {
-    return verb == Verb::gallery;
-  }
-  return verb == Verb::render;  // --model, --params, --set
-}
-
-int parse_size(const std::string& text) {
-  const bool digits = is_index(text) && text.size() <= 5;
-  const long value = digits ? std::strtol(text.c_str(), nullptr, 10) : 0;
-  if (!digits || value < 16 || value > 4096) {
-    throw UsageError("--size '" + text + "': expected a whole number of pixels from 16 to 4096");
-  }
-  return static_cast<int>(value);
-}
-
-std::vector<std::string> split_names(const std::string& text) {
-  std::vector<std::string> names;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    std::string name = text.substr(start, comma - start);
-    if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos) {
-      throw UsageError("--only '" + text + "': expected model folder names separated by commas");
-    }
-    names.push_back(std::move(name));
-    start = comma + 1;
-  }
-  return names;
-}
-
 }  // namespace
 
 std::string_view verb_name(Verb verb) {
-  switch (verb) {
-    case Verb::health: return "health";
-    case Verb::upload: return "upload";
-    case Verb::render: return "render";
-    case Verb::gallery: return "gallery";
-    case Verb::none: break;
+  for (const VerbInfo& v : verbs()) {
+    if (v.verb == verb) return v.name;
   }
   return "";
 }
@@ -198,9 +186,9 @@ std::optional<std::string> server_from_environment() {
 Options parse_args(const std::vector<std::string>& args,
                    const std::optional<std::string>& env_server) {
   Options o;
-  std::optional<std::string> server, model, params, output, models_dir, size;
+  FlagTarget target{o, std::nullopt};
   std::vector<std::string> positionals;
-  std::vector<std::string> seen_flags;  // verb-specific ones, to check against the verb later
+  std::vector<const Flag*> seen;  // to check against the verb once it is known
   bool verb_seen = false;
   bool help_verb = false;  // `toon help render`
   bool options_ended = false;
@@ -224,67 +212,25 @@ Options parse_args(const std::vector<std::string>& args,
       }
       continue;
     }
-    std::string value;
     if (a == "--") {
       options_ended = true;
-    } else if (a == "-h" || a == "--help") {
-      o.help = true;
-    } else if (a == "--version") {
-      o.version = true;
-    } else if (c.take("--server", value)) {
-      set_once(server, value, "--server");
-    } else if (a == "-q" || a == "--quiet") {
-      o.quiet = true;
-      seen_flags.push_back("--quiet");
-    } else if (c.take("--model", value)) {
-      if (value.empty()) throw UsageError("--model needs a model id");
-      set_once(model, value, "--model");
-      seen_flags.push_back("--model");
-    } else if (c.take("--params", value)) {
-      if (value.empty()) throw UsageError("--params needs a file name");
-      set_once(params, value, "--params");
-      seen_flags.push_back("--params");
-    } else if (c.take("--set", value)) {
-      const std::size_t eq = value.find('=');
-      if (eq == std::string::npos || eq == 0) {
-        throw UsageError("--set '" + value +
-                         "': expected key.sub=value, e.g. --set outline.width=3");
-      }
-      o.sets.emplace_back(value.substr(0, eq), value.substr(eq + 1));
-      seen_flags.push_back("--set");
-    } else if (c.take("-o", value) || c.take("--output", value)) {
-      if (value.empty()) throw UsageError("-o needs a file name (or - for standard output)");
-      set_once(output, value, "-o");
-      seen_flags.push_back("-o");
-    } else if (c.take("--models", value)) {
-      if (value.empty()) throw UsageError("--models needs a folder");
-      set_once(models_dir, value, "--models");
-      seen_flags.push_back("--models");
-    } else if (c.take("--size", value)) {
-      set_once(size, value, "--size");
-      seen_flags.push_back("--size");
-    } else if (a == "--all") {
-      o.all_models = true;
-      seen_flags.push_back("--all");
-    } else if (c.take("--only", value)) {
-      for (std::string& name : split_names(value)) o.only.push_back(std::move(name));
-      seen_flags.push_back("--only");
-    } else {
-      throw UsageError("unknown option '" + a + "' (see toon --help)");
+      continue;
     }
+    std::string value;
+    const Flag* flag = take_flag(c, value);
+    if (!flag) throw UsageError("unknown option '" + a + "' (see toon --help)");
+    const bool again =
+        std::any_of(seen.begin(), seen.end(), [&](const Flag* f) { return f->help.name == flag->help.name; });
+    if (again && !flag->repeatable) throw UsageError(flag_display(flag->help) + " given twice");
+    flag->apply(target, value);
+    seen.push_back(flag);
   }
-
-  if (model) o.model_id = *model;
-  if (params) o.params_file = *params;
-  if (output) o.output = *output;
-  if (models_dir) o.models_dir = *models_dir;
-  if (size) o.size = parse_size(*size);
 
   // Help and version answer without a server, so a bad URL must not stop them.
   if (o.help || o.version) return o;
 
-  if (server) {
-    o.server = *server;
+  if (target.server) {
+    o.server = *target.server;
   } else if (env_server && !env_server->empty()) {
     o.server = *env_server;
   } else {
@@ -293,14 +239,13 @@ Options parse_args(const std::vector<std::string>& args,
   parse_server_url(o.server);
   while (o.server.size() > 1 && o.server.back() == '/') o.server.pop_back();
 
-  if (o.verb == Verb::none) {
-    throw UsageError("no command given (health, upload, render or gallery)");
-  }
+  if (o.verb == Verb::none) throw UsageError("no command given (" + verb_names(" or ") + ")");
 
   const std::string verb(verb_name(o.verb));
-  for (const std::string& flag : seen_flags) {
-    if (!flag_allowed(flag, o.verb))
-      throw UsageError(verb + " does not take " + flag + " (see toon " + verb + " --help)");
+  for (const Flag* flag : seen) {
+    if (!flag_allowed(flag->help.name, o.verb)) {
+      throw UsageError(verb + " does not take " + flag_display(flag->help) + " (see toon " + verb + " --help)");
+    }
   }
 
   switch (o.verb) {
@@ -387,105 +332,6 @@ nlohmann::json build_render_params(const Options& options, const proto::ParamSch
     throw UsageError(message);
   }
   return params;
-}
-
-std::string usage_text(Verb verb) {
-  switch (verb) {
-    case Verb::health:
-      return R"(Usage: toon [--server URL] health
-
-Asks the daemon for GET /healthz and prints its answer: status and the
-OpenGL vendor, renderer and version it renders with.
-Exit status 0 when the status is "ok", 1 otherwise or when it cannot be reached.
-)";
-    case Verb::upload:
-      return R"(Usage: toon [--server URL] upload PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q]
-
-Sends an OBJ model to the daemon's store (POST /models) together with the
-MTL files its mtllib lines name and the textures those MTL files reference
-(map_Kd, map_Ks, map_Ns, map_d, map_Bump, bump, norm, disp). Files are sent
-with their path relative to the OBJ's folder; references that leave that
-folder are refused, missing files are reported and skipped. A .m mesh
-(`Vertex i x y z {normal=(...)}` / `Face i a b c` lines) and a .glb are
-sent alone; a .gltf brings the .bin and image files its URIs name (inside its
-folder). A folder stands for its one model file (.obj, .m, .gltf or .glb).
-Prints the daemon's answer (id, triangles, materials, textures, warnings).
-
-Options:
-  -q, --quiet   print only the model id
-)";
-    case Verb::render:
-      return R"(Usage: toon [--server URL] render [PATH.obj|PATH.m | --model ID] [--params FILE.json]
-                           [--set key.sub=value ...] -o OUT.png
-
-Renders a PNG (POST /render). With PATH.obj (or a .m, .gltf or .glb model) the model and
-its MTL files and textures are uploaded with the request; with --model a stored model is used;
-with neither the daemon's built-in demo model renders.
-
-Options:
-  --model ID          render a model stored earlier with `toon upload`
-  --params FILE.json  start from this JSON of render parameters (- reads stdin)
-  --set key.sub=value set one parameter, checked against the schema before
-                      anything is sent; may be repeated, later ones win.
-                      Arrays and objects are written as JSON:
-                        --set outline.width=3 --set shading.steps=4
-                        --set background=[1,1,1] --set lights.0.intensity=1.5
-  -o, --output FILE   where to write the PNG (required; - for standard output)
-)";
-    case Verb::gallery:
-      return R"(Usage: toon [--server URL] gallery [--models DIR] [--all | --only NAME[,NAME...]]
-                            [--size N] -o OUTDIR
-
-Renders every preset the daemon offers (GET /presets) and one look per
-effect (specular, rim, halftone, contours, shadows, two-tone, a colour ramp,
-outline colours, antialiasing, coloured and point lights) on each model, and
-writes OUTDIR/<model>/<look>.png, OUTDIR/contact-sheet.png (rows are models,
-columns are looks) and OUTDIR/index.html, which shows every image with its
-exact parameters and the `toon render` command that repeats it.
-A model is a folder of DIR with exactly one .obj directly inside; its MTL
-files and textures are found as `toon upload` finds them. NAME.glb stands
-for folder NAME's model sent as a .glb that toon writes from its OBJ (kept
-as OUTDIR/NAME.glb/<obj name>.glb), so glTF is shown too. Progress goes to
-stderr. A failed render is reported and the rest still run and are written;
-the exit status is then 1.
-
-Options:
-  --models DIR        the folder of model folders (default: ../shared/models)
-  --all               every model folder in DIR, then bob.glb (default:
-                      spot, kenney-cube-pet-dog, kenney-space-craft,
-                      windmill, stanford-bunny, utah-teapot, bob.glb)
-  --only NAME[,NAME]  just these model folders, in this order; may be repeated
-  --size N            width and height of each render in pixels (default 256)
-  -o, --output DIR    the folder to write (created if missing; required)
-)";
-    case Verb::none: break;
-  }
-  return R"(toon - command-line client for toond, the toon-rendering daemon
-
-Usage:
-  toon [--server URL] health
-  toon [--server URL] upload PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q]
-  toon [--server URL] render [PATH.obj|PATH.m | --model ID] [--params FILE.json]
-                             [--set key.sub=value ...] -o OUT.png
-  toon [--server URL] gallery [--models DIR] [--all | --only NAME,...] [--size N]
-                              -o OUTDIR
-
-Commands:
-  health    show the daemon's status and the OpenGL renderer it uses
-  upload    store an OBJ with its MTL files and textures (or a .m mesh);
-            prints the model id
-  render    render a PNG of a local OBJ, a stored model or the demo model
-  gallery   render every preset and effect on a folder of models into PNGs,
-            a contact sheet and an HTML index
-  help CMD  show the options of one command (same as toon CMD --help)
-
-Global options (before or after the command):
-  --server URL   toond's address (default: $TOOND_URL, else http://127.0.0.1:8080)
-  -h, --help     show this help
-  --version      print toon's version
-
-Exit status: 0 success, 1 server or network error, 2 usage or parameter error.
-)";
 }
 
 }  // namespace toond::cli

@@ -13,6 +13,7 @@
 
 #include <httplib.h>
 
+#include "app/limit_options.h"
 #include "app/options.h"
 #include "gpu/egl_context.h"
 #include "http/access_control.h"

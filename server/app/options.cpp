@@ -1,72 +1,134 @@
 #include "app/options.h"
 
-#include <cstdlib>
+#include <span>
 #include <stdexcept>
+
+#include "app/flag_values.h"
+#include "app/limit_options.h"
 
 namespace toond::app {
 namespace {
 
-long long parse_int(const std::string& flag, const std::string& text, long long min, long long max) {
-  std::size_t used = 0;
-  long long v = 0;
-  try {
-    v = std::stoll(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
+// Megabytes given, bytes kept.
+std::size_t megabytes(const std::string& flag, const std::string& text, unsigned long long min) {
+  return static_cast<std::size_t>(parse_count(flag, text, min, 1 << 20)) << 20;
+}
+
+using Value = const std::string&;
+
+const Flag kGeneralFlags[] = {
+    {{"", "--listen", "HOST:PORT",
+      "address to serve on (default 127.0.0.1:8080; port 0 picks\n"
+      "a free port). Prints \"listening on http://HOST:PORT\" when ready."},
+     [](Options& o, Value, Value v) {
+       const auto colon = v.rfind(':');
+       if (colon == std::string::npos || colon == 0) {
+         throw std::invalid_argument("--listen expects HOST:PORT, got '" + v + "'");
+       }
+       o.host = v.substr(0, colon);
+       o.port = static_cast<int>(parse_count("--listen port", v.substr(colon + 1), 0, 65535));
+     }},
+    {{"", "--data-dir", "DIR", "where uploaded models are stored (default ./toond-data)"},
+     [](Options& o, Value, Value v) { o.data_dir = v; }},
+    {{"", "--gpu", "N",
+      "use EGL device N (see --list-gpus); default: the first\n"
+      "hardware device, else Mesa's surfaceless platform"},
+     [](Options& o, Value flag, Value v) { o.gpu = static_cast<int>(parse_count(flag, v, 0, 1024)); }},
+    {{"", "--list-gpus", "", "print the EGL devices and exit"}, [](Options& o, Value, Value) { o.list_gpus = true; }},
+    {{"", "--queue", "N", "render jobs allowed to wait (default 32); beyond: 503"},
+     [](Options& o, Value flag, Value v) { o.queue = static_cast<std::size_t>(parse_count(flag, v, 1, 100000)); }},
+    {{"", "--render-threads", "N",
+      "render threads, each with its own GL context and its\n"
+      "own GPU copies of the models (default 1)"},
+     [](Options& o, Value flag, Value v) { o.render_threads = static_cast<std::size_t>(parse_count(flag, v, 1, 64)); }},
+    {{"", "--max-upload-bytes", "N", "largest request body accepted (default 268435456)"},
+     [](Options& o, Value flag, Value v) {
+       o.max_upload_bytes = static_cast<std::size_t>(parse_count(flag, v, 1024, 1ull << 40));
+     }},
+    {{"", "--threads", "N", "HTTP worker threads (default 8)"},
+     [](Options& o, Value flag, Value v) { o.threads = static_cast<int>(parse_count(flag, v, 1, 1024)); }},
+    {{"", "--result-cache-mb", "N",
+      "memory for finished PNGs answering identical requests\n"
+      "(same model and parameters) without rendering; least\n"
+      "recently used out first (default 64; 0: off; always\n"
+      "off with --shader-dir)"},
+     [](Options& o, Value flag, Value v) { o.result_cache_bytes = megabytes(flag, v, 0); }},
+    {{"", "--gpu-cache-mb", "N",
+      "GPU memory for models kept uploaded between renders\n"
+      "(default 1024; at most 8 models); least recently used\n"
+      "out first"},
+     [](Options& o, Value flag, Value v) { o.gpu_cache_bytes = megabytes(flag, v, 1); }},
+    {{"", "--render-timeout", "S",
+      "seconds a request waits for its render (default 60;\n"
+      "fractions allowed). Past it: 503 \"deadline_exceeded\"\n"
+      "with Retry-After, and a job not yet started is dropped"},
+     [](Options& o, Value flag, Value v) { o.render_timeout_s = parse_seconds(flag, v, 0.001, 86400); }},
+    {{"", "--shader-dir", "DIR",
+      "read the GLSL files (the names in shaders/) from DIR\n"
+      "instead of the embedded copies, and recompile before a\n"
+      "render when one changed. A file missing in DIR is an\n"
+      "error (no fallback to the embedded copy). A file that\n"
+      "does not compile fails that render (500 \"shader_error\"\n"
+      "naming the file and line); the previous shaders keep\n"
+      "serving until the file is fixed."},
+     [](Options& o, Value flag, Value v) { o.shader_dir = non_empty(flag, v, "a directory"); }},
+    {{"", "--simulate-gpu-reset", "N",
+      "testing aid: every Nth render acts as if the GL context\n"
+      "had been lost (a GPU reset), to exercise the recovery\n"
+      "a real loss takes: that request gets 503 \"gpu_reset\"\n"
+      "with Retry-After, the render thread makes a new\n"
+      "context and uploads models again as they are used.\n"
+      "Real losses are detected on robust contexts (EGL 1.5\n"
+      "or EGL_KHR_create_context / EGL_EXT_create_context_\n"
+      "robustness), which toond asks for where it can."},
+     [](Options& o, Value flag, Value v) {
+       o.simulate_gpu_reset = static_cast<std::size_t>(parse_count(flag, v, 1, 1'000'000'000));
+     }},
+    {{"", "--version", "", "print the version and exit"}, [](Options& o, Value, Value) { o.version = true; }},
+    {{"-h", "--help", "", "this text"}, [](Options& o, Value, Value) { o.help = true; }},
+};
+
+// --help's sections in order: a heading (none for the first) and its flags.
+struct Section {
+  const char* heading;
+  std::span<const Flag> flags;
+};
+
+std::vector<Section> sections() {
+  return {{"", kGeneralFlags},
+          {"Limits (over one: 413 for bytes, 422 for counts, {\"error\":{\"code\":\"limit_exceeded\",\n"
+           "\"limit\":\"--max-...\",...}}):\n",
+           limit_flags()},
+          {"Access:\n", access_flags()}};
+}
+
+const Flag* find_flag(const std::string& arg) {
+  for (const Section& section : sections()) {
+    for (const Flag& flag : section.flags) {
+      if (arg == flag.help.name || (!flag.help.alias.empty() && arg == flag.help.alias)) return &flag;
+    }
   }
-  if (used != text.size() || text.empty() || v < min || v > max) {
-    throw std::invalid_argument(flag + " expects an integer in " + std::to_string(min) + ".." +
-                                std::to_string(max) + ", got '" + text + "'");
-  }
-  return v;
+  return nullptr;
 }
 
 }  // namespace
 
+std::vector<text::OptionHelp> flag_list() {
+  std::vector<text::OptionHelp> flags;
+  for (const Section& section : sections()) {
+    for (const Flag& flag : section.flags) flags.push_back(flag.help);
+  }
+  return flags;
+}
+
 std::string usage() {
-  return R"(toond - headless toon-rendering service
-
-Usage: toond [options]
-
-  --listen HOST:PORT     address to serve on (default 127.0.0.1:8080; port 0 picks
-                         a free port). Prints "listening on http://HOST:PORT" when ready.
-  --data-dir DIR         where uploaded models are stored (default ./toond-data)
-  --gpu N                use EGL device N (see --list-gpus); default: the first
-                         hardware device, else Mesa's surfaceless platform
-  --list-gpus            print the EGL devices and exit
-  --queue N              render jobs allowed to wait (default 32); beyond: 503
-  --render-threads N     render threads, each with its own GL context and its
-                         own GPU copies of the models (default 1)
-  --max-upload-bytes N   largest request body accepted (default 268435456)
-  --threads N            HTTP worker threads (default 8)
-  --result-cache-mb N    memory for finished PNGs answering identical requests
-                         (same model and parameters) without rendering; least
-                         recently used out first (default 64; 0: off; always
-                         off with --shader-dir)
-  --gpu-cache-mb N       GPU memory for models kept uploaded between renders
-                         (default 1024; at most 8 models); least recently used
-                         out first
-  --render-timeout S     seconds a request waits for its render (default 60;
-                         fractions allowed). Past it: 503 "deadline_exceeded"
-                         with Retry-After, and a job not yet started is dropped
-  --shader-dir DIR       read the GLSL files (the names in shaders/) from DIR
-                         instead of the embedded copies, and recompile before a
-                         render when one changed. A file missing in DIR is an
-                         error (no fallback to the embedded copy). A file that
-                         does not compile fails that render (500 "shader_error"
-                         naming the file and line); the previous shaders keep
-                         serving until the file is fixed.
-  --simulate-gpu-reset N testing aid: every Nth render acts as if the GL context
-                         had been lost (a GPU reset), to exercise the recovery
-                         a real loss takes: that request gets 503 "gpu_reset"
-                         with Retry-After, the render thread makes a new
-                         context and uploads models again as they are used.
-                         Real losses are detected on robust contexts (EGL 1.5
-                         or EGL_KHR_create_context / EGL_EXT_create_context_
-                         robustness), which toond asks for where it can.
-  --version              print the version and exit
-  -h, --help             this text
-)" + limit_usage() + R"(
+  const std::size_t column = text::help_column(flag_list(), 2);
+  std::string text = "toond - headless toon-rendering service\n\nUsage: toond [options]\n\n";
+  for (const Section& section : sections()) {
+    text += section.heading;
+    for (const Flag& flag : section.flags) text += text::option_lines(flag.help, 2, column);
+  }
+  return text + R"(
 Routes: GET /healthz, GET/POST /models, GET/DELETE /models/{id}, POST /render,
 GET /schema, GET / (web page). See proto/openapi.yaml.
 )";
@@ -76,57 +138,14 @@ Options parse_options(const std::vector<std::string>& args) {
   Options o;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
+    const Flag* flag = find_flag(a);
+    if (!flag) throw std::invalid_argument("unknown option '" + a + "' (see --help)");
+    std::string value;
+    if (!flag->help.value.empty()) {
       if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
-      return args[++i];
-    };
-    if (a == "-h" || a == "--help") {
-      o.help = true;
-    } else if (a == "--version") {
-      o.version = true;
-    } else if (a == "--list-gpus") {
-      o.list_gpus = true;
-    } else if (a == "--listen") {
-      const std::string& v = value();
-      const auto colon = v.rfind(':');
-      if (colon == std::string::npos || colon == 0) {
-        throw std::invalid_argument("--listen expects HOST:PORT, got '" + v + "'");
-      }
-      o.host = v.substr(0, colon);
-      o.port = static_cast<int>(parse_int("--listen port", v.substr(colon + 1), 0, 65535));
-    } else if (a == "--data-dir") {
-      o.data_dir = value();
-    } else if (a == "--gpu") {
-      o.gpu = static_cast<int>(parse_int(a, value(), 0, 1024));
-    } else if (a == "--queue") {
-      o.queue = static_cast<std::size_t>(parse_int(a, value(), 1, 100000));
-    } else if (a == "--render-threads") {
-      o.render_threads = static_cast<std::size_t>(parse_int(a, value(), 1, 64));
-    } else if (a == "--max-upload-bytes") {
-      o.max_upload_bytes = static_cast<std::size_t>(parse_int(a, value(), 1024, 1LL << 40));
-    } else if (a == "--gpu-cache-mb") {
-      o.gpu_cache_bytes = static_cast<std::size_t>(parse_int(a, value(), 1, 1 << 20)) << 20;
-    } else if (a == "--result-cache-mb") {
-      o.result_cache_bytes = static_cast<std::size_t>(parse_int(a, value(), 0, 1 << 20)) << 20;
-    } else if (a == "--threads") {
-      o.threads = static_cast<int>(parse_int(a, value(), 1, 1024));
-    } else if (a == "--shader-dir") {
-      o.shader_dir = value();
-      if (o.shader_dir.empty()) throw std::invalid_argument("--shader-dir needs a directory");
-    } else if (a == "--simulate-gpu-reset") {
-      o.simulate_gpu_reset = static_cast<std::size_t>(parse_int(a, value(), 1, 1'000'000'000));
-    } else if (a == "--render-timeout") {
-      const std::string& v = value();
-      char* end = nullptr;
-      const double seconds = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end != '\0' || !(seconds >= 0.001 && seconds <= 86400)) {
-        throw std::invalid_argument("--render-timeout expects seconds in 0.001..86400, got '" + v + "'");
-      }
-      o.render_timeout_s = seconds;
-    } else if (parse_limit_option(args, i, o.limits, o.access)) {
-    } else {
-      throw std::invalid_argument("unknown option '" + a + "' (see --help)");
+      value = args[++i];
     }
+    flag->apply(o, a, value);
   }
   return o;
 }

@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "app/limit_options.h"
+#include "http/access_control.h"
+#include "http/request_limits.h"
+#include "text/option_help.h"
 
 namespace toond::app {
 
@@ -39,6 +41,9 @@ struct Options {
 
 // Parses argv. Throws std::invalid_argument with a message naming the flag.
 Options parse_options(const std::vector<std::string>& args);
+// --help: every flag of flag_list() with its help, by section.
 std::string usage();
+// Every flag parse_options() reads, in --help's order.
+std::vector<text::OptionHelp> flag_list();
 
 }  // namespace toond::app

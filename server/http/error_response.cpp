@@ -7,6 +7,7 @@
 #include "gpu/gpu_error.h"
 #include "gpu/shader_compile_error.h"
 #include "gpu/shader_log.h"
+#include "http/import_limit_flag.h"
 #include "render/render_service.h"
 #include "limit_error.h"
 #include "request_error.h"
@@ -41,15 +42,17 @@ void write_exception(httplib::Response& res, std::exception_ptr ep) {
   } catch (const LimitError& e) {
     write_limit_error(res, e.status(), e.code(), e.limit(), e.what(), e.path());
   } catch (const scene::ImportLimitError& e) {
-    write_limit_error(res, 422, "limit_exceeded", e.limit(), e.what(), e.file());
+    const std::string_view flag = import_limit_flag(e.limit());
+    write_limit_error(res, 422, "limit_exceeded", std::string(flag), e.message_naming(flag), e.file());
   } catch (const RequestError& e) {
     if (e.status() == 503) res.set_header("Retry-After", "5");
     write_error(res, e.status(), e.code(), e.what(), e.path());
   } catch (const scene::ImportError& e) {
     write_error(res, 422, "bad_bundle", e.what(), e.file());
-  } catch (const render::DeadlineExceeded& e) {
+  } catch (const render::DeadlineExceeded&) {
     res.set_header("Retry-After", "5");
-    write_error(res, 503, "deadline_exceeded", e.what());
+    write_error(res, 503, "deadline_exceeded",
+                "the render's deadline (--render-timeout) passed while it waited in the queue");
   } catch (const render::QueueFull& e) {
     res.set_header("Retry-After", "1");
     write_error(res, 503, "busy", std::string(e.what()) + "; retry shortly");

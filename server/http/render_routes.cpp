@@ -9,6 +9,7 @@
 
 #include "http/bundle_upload.h"
 #include "http/render_answer.h"
+#include "http/render_params_wire.h"
 #include "http/render_wait.h"
 #include "http/sheet_render.h"
 #include "http/request_limits.h"
@@ -154,7 +155,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     }
     render::RenderJob job;
     const nlohmann::json completed = schema.validate_and_complete(proto::Presets::builtin().expand(request));
-    job.params = render::RenderParams::from_json(completed);
+    job.params = render_params_from_wire(completed);
     check_render_budget(job.params, context.limits.render);
     if (!job.params.objects.empty()) {
       for (std::size_t i = 0; i < job.params.objects.size(); ++i) {

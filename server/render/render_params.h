@@ -1,8 +1,10 @@
 #pragma once
-// Render parameters as the renderer uses them. Built only from a request
-// that ParamSchema::validate_and_complete() has checked and filled with the
-// schema's defaults, so every field is present and in range here; names and
-// defaults live in proto/render-params.schema.json, not in this file.
+// Render parameters as the renderer uses them: resolved and typed. The HTTP
+// layer builds them from a request that ParamSchema::validate_and_complete()
+// has checked and filled with the schema's defaults
+// (http/render_params_wire.h), so every field is present and in range here;
+// names and defaults live in proto/render-params.schema.json, not in this
+// file.
 #include <map>
 #include <memory>
 #include <optional>
@@ -10,7 +12,6 @@
 #include <vector>
 
 #include <glm/glm.hpp>
-#include <nlohmann/json.hpp>
 
 #include "scene/model.h"
 
@@ -199,8 +200,6 @@ struct RenderParams {
   double lod_error_px = 0.5;  // the most a level's error may project to, output pixels
   int png_compression = 3;    // zlib level of the answer
   std::optional<SheetParams> sheet;  // unset: one image
-
-  static RenderParams from_json(const nlohmann::json& completed);
 };
 
 }  // namespace toond::render

@@ -40,10 +40,10 @@ struct RenderJob {
 };
 
 // Set on a job's future when its deadline passed before it was started.
+// Whoever set the deadline words the answer (the daemon names its flag).
 class DeadlineExceeded : public std::runtime_error {
  public:
-  DeadlineExceeded()
-      : std::runtime_error("the render's deadline (--render-timeout) passed while it waited in the queue") {}
+  DeadlineExceeded() : std::runtime_error("the render's deadline passed while it waited in the queue") {}
 };
 
 // Thrown by submit() when the queue is full.

@@ -1,16 +1,57 @@
 #include "scene/import_limits.h"
 
 #include <cstdio>
+#include <limits>
 
 namespace toond::scene {
+namespace {
+
+// A count as a whole number; seconds as typed ("0.001 s"), without the
+// trailing zeros std::to_string would add.
+std::string allowed_text(ImportLimit limit, double allowed) {
+  char text[40];
+  if (limit == ImportLimit::Seconds) {
+    std::snprintf(text, sizeof text, "%g s", allowed);
+  } else {
+    std::snprintf(text, sizeof text, "%.0f", allowed);
+  }
+  return text;
+}
+
+// Only for the flag-naming constructor; the daemon's own table of these
+// names is in http/import_limit_flag.cpp.
+ImportLimit limit_of_flag(std::string_view flag) {
+  if (flag == "--max-triangles") return ImportLimit::Triangles;
+  if (flag == "--max-texture-pixels") return ImportLimit::TexturePixels;
+  if (flag == "--max-import-seconds") return ImportLimit::Seconds;
+  return ImportLimit::Vertices;
+}
+
+}  // namespace
+
+ImportLimitError::ImportLimitError(std::string file, ImportLimit limit, double allowed, std::string excess,
+                                   std::string after)
+    : ImportError(std::move(file), excess + " the limit of " + allowed_text(limit, allowed) + after),
+      limit_(limit),
+      allowed_(allowed),
+      excess_(std::move(excess)),
+      after_(std::move(after)) {}
+
+ImportLimitError::ImportLimitError(std::string file, std::string_view flag, const std::string& message)
+    : ImportError(std::move(file), message),
+      limit_(limit_of_flag(flag)),
+      allowed_(std::numeric_limits<double>::quiet_NaN()),
+      worded_(true) {}
+
+std::string ImportLimitError::message_naming(std::string_view name) const {
+  if (worded_) return what();
+  return excess_ + " the limit " + std::string(name) + " = " + allowed_text(limit_, allowed_) + after_;
+}
 
 void check_import_time(const ImportLimits& limits, std::string_view stage) {
   if (std::chrono::steady_clock::now() < limits.deadline) return;
-  char seconds[32];
-  std::snprintf(seconds, sizeof seconds, "%g", limits.max_seconds);
-  throw ImportLimitError("", "--max-import-seconds",
-                         "the import took longer than the limit --max-import-seconds = " + std::string(seconds) +
-                             " s and was abandoned while " + std::string(stage) + "; nothing was stored");
+  throw ImportLimitError("", ImportLimit::Seconds, limits.max_seconds, "the import took longer than",
+                         " and was abandoned while " + std::string(stage) + "; nothing was stored");
 }
 
 }  // namespace toond::scene

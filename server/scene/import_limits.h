@@ -1,6 +1,6 @@
 #pragma once
 // How much one uploaded bundle may make the importer build. The daemon sets
-// these from its --max-* flags for uploads; models already in the store are
+// these from its flags for uploads; models already in the store are
 // re-imported with the defaults of this struct (no count limits), so a later
 // restart with lower limits never makes a stored model unreadable.
 #include <chrono>
@@ -26,20 +26,42 @@ struct ImportLimits {
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
 
-// Throws ImportLimitError naming --max-import-seconds when `limits.deadline`
-// has passed; `stage` says what the import was doing ("simplifying").
+// Throws ImportLimitError (ImportLimit::Seconds) when `limits.deadline` has
+// passed; `stage` says what the import was doing ("simplifying").
 void check_import_time(const ImportLimits& limits, std::string_view stage);
 
-// An upload over one of the daemon's limits. `limit` is the flag that sets it
-// ("--max-triangles"), so the answer can name it (422 "limit_exceeded").
+// Which of ImportLimits an import went over. What sets each one (the
+// daemon's flags) is the caller's business, so an error names the limit by
+// this and never by a flag.
+enum class ImportLimit { Vertices, Triangles, TexturePixels, Seconds };
+
+// An upload over one of its ImportLimits (the daemon answers 422
+// "limit_exceeded"). The message is kept in its parts so that a caller can
+// name the limit in its own words: `excess` says what went over and how far
+// ("m.obj has 5001 triangles, more than"), `allowed` is the limit's value
+// (seconds for ImportLimit::Seconds, else a count), `after` is what follows
+// ("; nothing was stored"). what() reads "<excess> the limit of
+// <allowed><after>".
 class ImportLimitError : public ImportError {
  public:
-  ImportLimitError(std::string file, std::string limit, const std::string& message)
-      : ImportError(std::move(file), message), limit_(std::move(limit)) {}
-  const std::string& limit() const { return limit_; }
+  ImportLimitError(std::string file, ImportLimit limit, double allowed, std::string excess, std::string after = {});
+  // For the glTF importers (gltf_import.cpp, gltf_meshopt.cpp) until they
+  // pass an ImportLimit: `flag` names the daemon's flag and `message`
+  // already does. Remove it when they no longer call it.
+  ImportLimitError(std::string file, std::string_view flag, const std::string& message);
+
+  ImportLimit limit() const { return limit_; }
+  double allowed() const { return allowed_; }
+  // The message with the limit called `name`: "<excess> the limit <name> =
+  // <allowed><after>".
+  std::string message_naming(std::string_view name) const;
 
  private:
-  std::string limit_;
+  ImportLimit limit_;
+  double allowed_;
+  std::string excess_;
+  std::string after_;
+  bool worded_ = false;  // from the flag-naming constructor: what() is the whole message
 };
 
 }  // namespace toond::scene

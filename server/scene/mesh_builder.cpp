@@ -134,16 +134,13 @@ class Builder {
 
   void check_limits() const {
     if (src_.positions.size() > src_.limits.max_vertices) {
-      throw ImportLimitError(src_.file, "--max-vertices",
+      throw ImportLimitError(src_.file, ImportLimit::Vertices, static_cast<double>(src_.limits.max_vertices),
                              src_.file + " has " + std::to_string(src_.positions.size()) +
-                                 " vertex positions, more than the limit --max-vertices = " +
-                                 std::to_string(src_.limits.max_vertices));
+                                 " vertex positions, more than");
     }
     if (src_.triangles.size() > src_.limits.max_triangles) {
-      throw ImportLimitError(src_.file, "--max-triangles",
-                             src_.file + " has " + std::to_string(src_.triangles.size()) +
-                                 " triangles, more than the limit --max-triangles = " +
-                                 std::to_string(src_.limits.max_triangles));
+      throw ImportLimitError(src_.file, ImportLimit::Triangles, static_cast<double>(src_.limits.max_triangles),
+                             src_.file + " has " + std::to_string(src_.triangles.size()) + " triangles, more than");
     }
   }
 

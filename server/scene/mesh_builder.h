@@ -79,7 +79,7 @@ struct MeshSource {
 
 // Builds the mesh of `source` (whose triangles it consumes):
 // - more positions or triangles than source.limits allow is an
-//   ImportLimitError naming the flag;
+//   ImportLimitError saying which;
 // - every position must be finite, every corner's position index in range
 //   (ImportError naming the file, and the vertex or triangle); normal and
 //   texcoord indices out of range are dropped with a warning;

@@ -119,11 +119,9 @@ Texture decode_model_texture(std::string_view bytes, const std::string& path, st
     // client learns which file to shrink. Over what is left of the model's
     // total, the caller leaves the texture out.
     if (e.pixels() > max_texture_pixels) {
-      throw ImportLimitError(path, "--max-texture-pixels",
+      throw ImportLimitError(path, ImportLimit::TexturePixels, static_cast<double>(max_texture_pixels),
                              path + ": the image is " + std::to_string(e.width()) + "x" + std::to_string(e.height()) +
-                                 " = " + std::to_string(e.pixels()) +
-                                 " pixels, more than the limit --max-texture-pixels = " +
-                                 std::to_string(max_texture_pixels));
+                                 " = " + std::to_string(e.pixels()) + " pixels, more than");
     }
     throw;
   }

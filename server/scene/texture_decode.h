@@ -45,10 +45,11 @@ Texture decode_texture(std::string_view bytes, const std::string& path, const Te
 inline constexpr std::uint64_t kModelTexturePixels = 256ull * 1024 * 1024;
 
 // decode_texture for one of a model's textures: an image over
-// `max_texture_pixels` (ImportLimits) is an ImportLimitError naming the
-// flag; one over `pixels_left` (what the model's earlier textures left of
-// kModelTexturePixels) throws TextureTooLarge, so the importer can leave it
-// out with a warning. On success its pixels are taken from `pixels_left`.
+// `max_texture_pixels` (ImportLimits) is an ImportLimitError
+// (ImportLimit::TexturePixels); one over `pixels_left` (what the model's
+// earlier textures left of kModelTexturePixels) throws TextureTooLarge, so
+// the importer can leave it out with a warning. On success its pixels are
+// taken from `pixels_left`.
 Texture decode_model_texture(std::string_view bytes, const std::string& path, std::uint64_t max_texture_pixels,
                              std::uint64_t& pixels_left);
 

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "http/render_params_wire.h"
 #include "http/request_limits.h"
 #include "param_schema.h"
 #include "presets.h"
@@ -22,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     toond::http::check_request_counts(request, limits);
     const auto& schema = toond::proto::ParamSchema::render_params();
     schema.validate(request);
-    const auto params = toond::render::RenderParams::from_json(
+    const auto params = toond::http::render_params_from_wire(
         schema.validate_and_complete(toond::proto::Presets::builtin().expand(request)));
     toond::http::check_render_budget(params, limits.render);
   } catch (const toond::RequestError&) {

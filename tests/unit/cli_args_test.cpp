@@ -15,6 +15,9 @@
 #include <vector>
 
 #include "bundle_scan.h"
+#include "cli_flags.h"
+#include "gallery_looks.h"
+#include "help_checks.h"
 #include "param_schema.h"
 #include "reply.h"
 #include "support/shared_models.h"
@@ -204,6 +207,57 @@ TEST(CliArgs, UsageTextListsVerbsAndFlags) {
     EXPECT_TRUE(contains(render, word)) << word;
   }
   EXPECT_TRUE(contains(usage_text(Verb::upload), "--quiet"));
+}
+
+// Whether `toon VERB NAME [x]` gets past NAME: the parser knows the flag and
+// lets VERB take it. Other complaints (no path, a bad value) are not its.
+bool verb_takes(Verb verb, const std::string& name) {
+  Args args;
+  if (verb != Verb::none) args.emplace_back(verb_name(verb));
+  args.push_back(name);
+  std::string error = usage_error([&] { parse(args); });
+  if (contains(error, "needs a value")) {
+    args.push_back("x");
+    error = usage_error([&] { parse(args); });
+  }
+  return !contains(error, "unknown option") && !contains(error, "does not take");
+}
+
+// --help and the parser read one table (cli_flags.h); this checks that what
+// they make of it agrees. Every flag the parser takes with a verb is in that
+// verb's option list (a global one in the overview's), and every option a
+// help text names, in its lists, synopses or prose, is one the parser takes
+// there.
+TEST(CliArgs, HelpNamesExactlyTheFlagsTheParserTakes) {
+  std::vector<Verb> all_verbs = {Verb::none};
+  for (const VerbInfo& v : verbs()) all_verbs.push_back(v.verb);
+  for (const Flag& flag : flags()) {
+    for (const Verb verb : all_verbs) {
+      const bool listed_here = flag.verbs == kGlobal ? verb == Verb::none
+                                                     : verb != Verb::none && (flag.verbs & verb_set(verb)) != 0;
+      if (!listed_here) continue;
+      EXPECT_TRUE(contains(usage_text(verb), "\n  " + flag.help.written() + " "))
+          << verb_name(verb) << " --help lacks " << flag.help.written();
+      for (const std::string_view name : {flag.help.alias, flag.help.name}) {
+        if (!name.empty()) {
+          EXPECT_TRUE(verb_takes(verb, std::string(name))) << verb_name(verb) << " " << name;
+        }
+      }
+    }
+  }
+  for (const Verb verb : all_verbs) {
+    for (const std::string& name : help_checks::options_named_in(usage_text(verb))) {
+      EXPECT_TRUE(verb_takes(verb, name)) << "toon " << verb_name(verb) << " --help names " << name;
+    }
+  }
+}
+
+TEST(CliArgs, HelpStatesTheDefaultsInForce) {
+  EXPECT_TRUE(contains(usage_text(Verb::none), std::string(kDefaultServer)));
+  const std::string gallery = usage_text(Verb::gallery);
+  EXPECT_TRUE(contains(gallery, std::string(kDefaultModelsDir)));
+  EXPECT_TRUE(contains(gallery, "(default " + std::to_string(kDefaultGallerySize) + ")"));
+  for (const std::string& name : gallery::default_model_names()) EXPECT_TRUE(contains(gallery, name)) << name;
 }
 
 // ---------------------------------------------------------------- render parameters

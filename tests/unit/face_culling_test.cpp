@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
 #include "render/camera.h"
@@ -78,7 +79,7 @@ TEST(FaceCulling, NothingIsSkippedWhenTheNearPlaneCutsTheObject) {
 class FaceCullingRender : public test::GlContextTest {
  protected:
   static RenderParams params(const nlohmann::json& request) {
-    return RenderParams::from_json(proto::ParamSchema::render_params().validate_and_complete(request));
+    return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
   }
   struct Pair {
     image::Image culled;

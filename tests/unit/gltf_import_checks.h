@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "http/import_limit_flag.h"
 #include "model_checks.h"
 #include "scene/bundle_import.h"
 #include "scene/import_error.h"
@@ -22,12 +23,14 @@ inline Model import_files(const test::GltfFiles& files, const ImportLimits& limi
   return import_bundle(make_bundle(files), limits);
 }
 
-// The message of the ImportError that importing `files` throws.
+// The message of the ImportError that importing `files` throws; one over a
+// limit is worded as the daemon's answer words it, after "limit <flag>: ".
 inline std::string import_error(const test::GltfFiles& files, const ImportLimits& limits = {}) {
   try {
     import_files(files, limits);
   } catch (const ImportLimitError& e) {
-    return std::string("limit ") + e.limit() + ": " + e.what();
+    const std::string_view flag = http::import_limit_flag(e.limit());
+    return "limit " + std::string(flag) + ": " + e.message_naming(flag);
   } catch (const ImportError& e) {
     return e.what();
   }

@@ -18,6 +18,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "http/render_params_wire.h"
 #include "image/png_codec.h"
 #include "param_schema.h"
 #include "presets.h"
@@ -123,7 +124,7 @@ class GoldenImage : public test::GlContextTest {
     request["height"] = kSize;
     const json completed =
         proto::ParamSchema::render_params().validate_and_complete(proto::Presets::builtin().expand(request));
-    return RenderParams::from_json(completed);
+    return http::render_params_from_wire(completed);
   }
 
   static const scene::Model& model(Subject subject) {

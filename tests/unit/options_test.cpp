@@ -1,8 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <set>
 #include <stdexcept>
+#include <string>
 
 #include "app/options.h"
+#include "help_checks.h"
 
 namespace toond::app {
 namespace {
@@ -56,10 +59,26 @@ TEST(DaemonOptions, RenderThreadsDefaultToOne) {
   EXPECT_THROW(parse_options({"--render-threads", "two"}), std::invalid_argument);
 }
 
-TEST(DaemonOptions, UsageMentionsEveryFlag) {
-  for (const char* flag : {"--listen", "--data-dir", "--gpu", "--list-gpus", "--queue", "--render-threads",
-                           "--max-upload-bytes", "--threads", "--render-timeout"}) {
-    EXPECT_NE(usage().find(flag), std::string::npos) << flag;
+// --help and the parser read one table; this checks that what they make of
+// it agrees: every flag the parser reads opens a line of --help, and every
+// option --help names anywhere is one the parser reads.
+TEST(DaemonOptions, HelpNamesExactlyTheFlagsTheParserReads) {
+  const std::string help = usage();
+  const std::set<std::string> named = help_checks::options_named_in(help);
+  for (const text::OptionHelp& flag : flag_list()) {
+    EXPECT_NE(help.find("\n  " + flag.written() + " "), std::string::npos) << flag.written();
+    for (const std::string_view name : {flag.alias, flag.name}) {
+      if (!name.empty()) {
+        EXPECT_TRUE(named.count(std::string(name))) << name;
+      }
+    }
+  }
+  for (const std::string& name : named) {
+    try {
+      parse_options({name});
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).find("unknown option"), std::string::npos) << e.what();
+    }
   }
 }
 

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "http/render_params_wire.h"
 #include "param_schema.h"
 #include "render/render_params.h"
 
@@ -115,7 +116,7 @@ TEST(ParamSchema, SetFromTextRejectsUnknownKeysAndBadText) {
 TEST(RenderParams, ColoursBecomeLinearAndLightsCarryIntensity) {
   json request = {{"background", {0.5, 0.5, 0.5}},
                   {"lights", {{{"type", "directional"}, {"color", {1, 1, 1}}, {"intensity", 2}}}}};
-  const auto p = render::RenderParams::from_json(schema().validate_and_complete(request));
+  const auto p = http::render_params_from_wire(schema().validate_and_complete(request));
   EXPECT_NEAR(p.background.r, 0.2140, 1e-3);  // sRGB 0.5 in linear light
   EXPECT_FLOAT_EQ(p.background.a, 1.0f);
   ASSERT_EQ(p.lights.size(), 1u);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "http/render_params_wire.h"
 #include "param_schema.h"
 #include "render/pass_plan.h"
 
@@ -12,7 +13,7 @@ namespace {
 using nlohmann::json;
 
 RenderParams params(const json& request) {
-  return RenderParams::from_json(proto::ParamSchema::render_params().validate_and_complete(request));
+  return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
 }
 
 // Whether the main pass's programs get #define d.

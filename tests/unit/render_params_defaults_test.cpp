@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "http/render_params_wire.h"
 #include "param_schema.h"
 #include "render/render_params.h"
 
@@ -24,7 +25,7 @@ struct Mismatch {
 
 TEST(RenderParamsDefaults, EveryInitialValueIsTheSchemasDefault) {
   const RenderParams schema =
-      RenderParams::from_json(proto::ParamSchema::render_params().validate_and_complete(nlohmann::json::object()));
+      http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(nlohmann::json::object()));
   const RenderParams initial;
   Mismatch m;
   m.check("width", schema.width, initial.width);

@@ -11,6 +11,7 @@
 #include "presets.h"
 #include "render/camera.h"
 #include "http/render_budget.h"
+#include "http/render_params_wire.h"
 #include "render/sheet_atlas.h"
 #include "render/sheet_layout.h"
 
@@ -21,7 +22,7 @@ using nlohmann::json;
 
 RenderParams params_of(const json& request) {
   const json expanded = proto::Presets::builtin().expand(request);
-  return RenderParams::from_json(proto::ParamSchema::render_params().validate_and_complete(expanded));
+  return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(expanded));
 }
 
 TEST(SheetLayout, AbsentFieldsComeFromTheCameraAndAFullTurn) {

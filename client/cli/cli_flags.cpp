@@ -1,0 +1,152 @@
+#include "cli_flags.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace toond::cli {
+namespace {
+
+using Value = const std::string&;
+
+bool is_index(std::string_view s) {
+  return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
+}
+
+int parse_size(const std::string& text) {
+  const bool digits = is_index(text) && text.size() <= 5;
+  const long value = digits ? std::strtol(text.c_str(), nullptr, 10) : 0;
+  if (!digits || value < 16 || value > 4096) {
+    throw UsageError("--size '" + text + "': expected a whole number of pixels from 16 to 4096");
+  }
+  return static_cast<int>(value);
+}
+
+std::vector<std::string> split_names(const std::string& text) {
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    std::string name = text.substr(start, comma - start);
+    if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos) {
+      throw UsageError("--only '" + text + "': expected model folder names separated by commas");
+    }
+    names.push_back(std::move(name));
+    start = comma + 1;
+  }
+  return names;
+}
+
+// `v` itself, which must not be empty: `complaint` otherwise.
+const std::string& required(Value v, const char* complaint) {
+  if (v.empty()) throw UsageError(complaint);
+  return v;
+}
+
+void set_output(FlagTarget& t, Value v) {
+  t.options.output = required(v, "-o needs a file name (or - for standard output)");
+}
+
+constexpr VerbSet kUpload = verb_set(Verb::upload);
+constexpr VerbSet kRender = verb_set(Verb::render);
+constexpr VerbSet kGallery = verb_set(Verb::gallery);
+
+const Flag kFlags[] = {
+    {{"", "--server", "URL", "toond's address (default: $TOOND_URL, else\nhttp://127.0.0.1:8080)"}, kGlobal, false,
+     [](FlagTarget& t, Value v) { t.server = v; }},
+    {{"-h", "--help", "", "show this help"}, kGlobal, true, [](FlagTarget& t, Value) { t.options.help = true; }},
+    {{"", "--version", "", "print toon's version"}, kGlobal, true,
+     [](FlagTarget& t, Value) { t.options.version = true; }},
+
+    {{"-q", "--quiet", "", "print only the model id"}, kUpload, true,
+     [](FlagTarget& t, Value) { t.options.quiet = true; }},
+
+    {{"", "--model", "ID", "render a model stored earlier with `toon upload`"}, kRender, false,
+     [](FlagTarget& t, Value v) { t.options.model_id = required(v, "--model needs a model id"); }},
+    {{"", "--params", "FILE.json", "start from this JSON of render parameters (- reads stdin)"}, kRender, false,
+     [](FlagTarget& t, Value v) { t.options.params_file = required(v, "--params needs a file name"); }},
+    {{"", "--set", "key.sub=value",
+      "set one parameter, checked against the schema before\n"
+      "anything is sent; may be repeated, later ones win.\n"
+      "Arrays and objects are written as JSON:\n"
+      "  --set outline.width=3 --set shading.steps=4\n"
+      "  --set background=[1,1,1] --set lights.0.intensity=1.5"},
+     kRender, true,
+     [](FlagTarget& t, Value v) {
+       const std::size_t eq = v.find('=');
+       if (eq == std::string::npos || eq == 0) {
+         throw UsageError("--set '" + v + "': expected key.sub=value, e.g. --set outline.width=3");
+       }
+       t.options.sets.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+     }},
+    {{"-o", "--output", "FILE", "where to write the PNG (required; - for standard output)"}, kRender, false,
+     set_output},
+
+    {{"", "--models", "DIR", "the folder of model folders (default: ../shared/models)"}, kGallery, false,
+     [](FlagTarget& t, Value v) { t.options.models_dir = required(v, "--models needs a folder"); }},
+    {{"", "--all", "",
+      "every model folder in DIR, then bob.glb (default:\n"
+      "spot, kenney-cube-pet-dog, kenney-space-craft,\n"
+      "windmill, stanford-bunny, utah-teapot, bob.glb)"},
+     kGallery, true, [](FlagTarget& t, Value) { t.options.all_models = true; }},
+    {{"", "--only", "NAME[,NAME]", "just these model folders, in this order; may be repeated"}, kGallery, true,
+     [](FlagTarget& t, Value v) {
+       for (std::string& name : split_names(v)) t.options.only.push_back(std::move(name));
+     }},
+    {{"", "--size", "N", "width and height of each render in pixels (default 256)"}, kGallery, false,
+     [](FlagTarget& t, Value v) { t.options.size = parse_size(v); }},
+    {{"-o", "--output", "DIR", "the folder to write (created if missing; required)"}, kGallery, false, set_output},
+};
+
+const VerbInfo kVerbs[] = {
+    {Verb::health, "health", "", "show the daemon's status and the OpenGL renderer it uses",
+     R"(Asks the daemon for GET /healthz and prints its answer: status and the
+OpenGL vendor, renderer and version it renders with.
+Exit status 0 when the status is "ok", 1 otherwise or when it cannot be reached.
+)"},
+    {Verb::upload, "upload", "PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q]",
+     "store an OBJ with its MTL files and textures (or a .m mesh);\nprints the model id",
+     R"(Sends an OBJ model to the daemon's store (POST /models) together with the
+MTL files its mtllib lines name and the textures those MTL files reference
+(map_Kd, map_Ks, map_Ns, map_d, map_Bump, bump, norm, disp). Files are sent
+with their path relative to the OBJ's folder; references that leave that
+folder are refused, missing files are reported and skipped. A .m mesh
+(`Vertex i x y z {normal=(...)}` / `Face i a b c` lines) and a .glb are
+sent alone; a .gltf brings the .bin and image files its URIs name (inside its
+folder). A folder stands for its one model file (.obj, .m, .gltf or .glb).
+Prints the daemon's answer (id, triangles, materials, textures, warnings).
+)"},
+    {Verb::render, "render",
+     "[PATH.obj|PATH.m | --model ID] [--params FILE.json]\n[--set key.sub=value ...] -o OUT.png",
+     "render a PNG of a local OBJ, a stored model or the demo model",
+     R"(Renders a PNG (POST /render). With PATH.obj (or a .m, .gltf or .glb model) the model and
+its MTL files and textures are uploaded with the request; with --model a stored model is used;
+with neither the daemon's built-in demo model renders.
+)"},
+    {Verb::gallery, "gallery", "[--models DIR] [--all | --only NAME[,NAME...]]\n[--size N] -o OUTDIR",
+     "render every preset and effect on a folder of models into PNGs,\na contact sheet and an HTML index",
+     R"(Renders every preset the daemon offers (GET /presets) and one look per
+effect (specular, rim, halftone, contours, shadows, two-tone, a colour ramp,
+outline colours, antialiasing, coloured and point lights) on each model, and
+writes OUTDIR/<model>/<look>.png, OUTDIR/contact-sheet.png (rows are models,
+columns are looks) and OUTDIR/index.html, which shows every image with its
+exact parameters and the `toon render` command that repeats it.
+A model is a folder of DIR with exactly one .obj directly inside; its MTL
+files and textures are found as `toon upload` finds them. NAME.glb stands
+for folder NAME's model sent as a .glb that toon writes from its OBJ (kept
+as OUTDIR/NAME.glb/<obj name>.glb), so glTF is shown too. Progress goes to
+stderr. A failed render is reported and the rest still run and are written;
+the exit status is then 1.
+)"},
+};
+
+}  // namespace
+
+std::span<const Flag> flags() { return kFlags; }
+
+std::string flag_display(const text::OptionHelp& flag) {
+  return flag.alias.empty() ? std::string(flag.name) : std::string(flag.alias) + "/" + std::string(flag.name);
+}
+
+std::span<const VerbInfo> verbs() { return kVerbs; }
+
+}  // namespace toond::cli

@@ -1,0 +1,192 @@
+#include "http/render_params_wire.h"
+
+#include <algorithm>
+#include <string>
+
+namespace toond::http {
+
+// Every type built here is the renderer's; spelling render:: on each would
+// hide the mapping.
+using namespace render;
+
+namespace {
+
+using nlohmann::json;
+
+glm::vec3 vec3_of(const json& a) {
+  return {a.at(0).get<float>(), a.at(1).get<float>(), a.at(2).get<float>()};
+}
+
+glm::dvec3 dvec3_of(const json& a) {
+  return {a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>()};
+}
+
+// The `sheet` block with its absent fields taken from the camera: a sheet
+// turns the view the request already has.
+SheetParams sheet_of(const json& s, const CameraParams& camera) {
+  SheetParams sheet;
+  sheet.frames = s.at("frames").get<int>();
+  sheet.columns = s.contains("columns") ? s.at("columns").get<int>() : sheet.frames;
+  sheet.yaw_start_deg = s.contains("yaw_start") ? s.at("yaw_start").get<double>() : camera.yaw_deg;
+  sheet.yaw_step_deg = s.contains("yaw_step") ? s.at("yaw_step").get<double>() : 360.0 / sheet.frames;
+  if (s.contains("pitches")) {
+    for (const json& pitch : s.at("pitches")) sheet.pitches_deg.push_back(pitch.get<double>());
+  } else {
+    sheet.pitches_deg.push_back(camera.pitch_deg);
+  }
+  sheet.padding = s.at("padding").get<int>();
+  return sheet;
+}
+
+}  // namespace
+
+RenderParams render_params_from_wire(const json& j) {
+  RenderParams p;
+  p.model = j.value("model", "");
+  if (const auto objects = j.find("objects"); objects != j.end()) {
+    for (const json& o : *objects) {
+      SceneObject object;
+      object.model = o.at("model").get<std::string>();
+      const json& t = o.at("transform");
+      object.translate = dvec3_of(t.at("translate"));
+      object.rotate_deg = dvec3_of(t.at("rotate"));
+      const json& s = t.at("scale");
+      object.scale = s.is_array() ? dvec3_of(s) : glm::dvec3(s.get<double>());
+      p.objects.push_back(object);
+    }
+  }
+  p.width = j.at("width").get<int>();
+  p.height = j.at("height").get<int>();
+  const json& bg = j.at("background");
+  p.background = glm::vec4(srgb_to_linear(vec3_of(bg)), bg.size() > 3 ? bg[3].get<float>() : 1.0f);
+
+  const json& cam = j.at("camera");
+  p.camera.projection = cam.at("projection") == "orthographic" ? Projection::Orthographic
+                                                               : Projection::Perspective;
+  p.camera.yaw_deg = cam.at("yaw").get<double>();
+  p.camera.pitch_deg = cam.at("pitch").get<double>();
+  p.camera.fov_deg = cam.at("fov").get<double>();
+  p.camera.distance = cam.at("distance").get<double>();
+  p.camera.zoom = cam.at("zoom").get<double>();
+  p.camera.shift = glm::dvec2(cam.at("shift")[0].get<double>(), cam.at("shift")[1].get<double>());
+
+  for (const json& l : j.at("lights")) {
+    Light light;
+    light.kind = l.at("type") == "point" ? LightKind::Point : LightKind::Directional;
+    light.direction = dvec3_of(l.at("direction"));
+    if (l.contains("position")) light.position = dvec3_of(l.at("position"));
+    light.radius = l.at("radius").get<double>();
+    light.color = srgb_to_linear(vec3_of(l.at("color"))) * l.at("intensity").get<float>();
+    p.lights.push_back(light);
+  }
+  p.light_combine = j.at("light_combine") == "sum" ? LightCombine::Sum : LightCombine::Max;
+  p.ambient = j.at("ambient").get<float>();
+
+  const json& shading = j.at("shading");
+  const std::string mode = shading.at("mode");
+  p.mode = mode == "phong" ? ShadingMode::Phong : mode == "flat" ? ShadingMode::Flat : ShadingMode::Cel;
+  p.base = shading.at("base") == "white" ? BaseColor::White : BaseColor::Material;
+  p.steps = shading.at("steps").get<int>();
+  const std::string rounding = shading.at("rounding");
+  p.band_aa = shading.at("band_aa").get<bool>();
+  const json& two_tone = shading.at("two_tone");
+  p.two_tone.enabled = two_tone.at("enabled").get<bool>();
+  p.two_tone.threshold = two_tone.at("threshold").get<float>();
+  p.two_tone.shadow_factor = two_tone.at("shadow_factor").get<float>();
+  for (const json& stop : shading.at("ramp")) {
+    RampStop r;
+    r.at = stop.at("at").get<float>();
+    // A grey value is a level of light, linear already; a colour is sRGB
+    // like every colour on the wire.
+    r.color = stop.contains("color") ? srgb_to_linear(vec3_of(stop.at("color")))
+                                     : glm::vec3(stop.at("value").get<float>());
+    p.ramp.push_back(r);
+  }
+  p.ramp_image = shading.at("ramp_image").get<std::string>();
+  for (const auto& [name, colour] : shading.at("shade_colors").items()) {
+    p.shade_colors[name] = srgb_to_linear(vec3_of(colour));
+  }
+  std::stable_sort(p.ramp.begin(), p.ramp.end(), [](const RampStop& a, const RampStop& b) { return a.at < b.at; });
+  p.rounding = rounding == "floor" ? Rounding::Floor
+               : rounding == "round" ? Rounding::Round
+                                     : Rounding::Ceil;
+
+  const json& specular = j.at("specular");
+  p.specular.enabled = specular.at("enabled").get<bool>();
+  p.specular.color = srgb_to_linear(vec3_of(specular.at("color")));
+  p.specular.shininess = specular.at("shininess").get<float>();
+  p.specular.threshold = specular.at("threshold").get<float>();
+  p.specular.strength = specular.at("strength").get<float>();
+
+  const json& rim = j.at("rim");
+  p.rim.enabled = rim.at("enabled").get<bool>();
+  p.rim.color = srgb_to_linear(vec3_of(rim.at("color")));
+  p.rim.power = rim.at("power").get<float>();
+  p.rim.strength = rim.at("strength").get<float>();
+  p.rim.threshold = rim.at("threshold").get<float>();
+  const std::string mask = rim.at("mask");
+  p.rim.mask = mask == "shadow" ? RimMask::Shadow : mask == "both" ? RimMask::Both : RimMask::Lit;
+
+  const json& halftone = j.at("halftone");
+  p.halftone.enabled = halftone.at("enabled").get<bool>();
+  p.halftone.style = halftone.at("style") == "checker" ? HalftoneStyle::Checker : HalftoneStyle::Dots;
+  p.halftone.cell_px = halftone.at("cell").get<float>();
+  p.halftone.angle_deg = halftone.at("angle").get<float>();
+  p.halftone.ink = srgb_to_linear(vec3_of(halftone.at("ink")));
+  p.halftone.ink_mix = halftone.at("ink_mix").get<float>();
+
+  const json& contour = j.at("contour");
+  p.contour.enabled = contour.at("enabled").get<bool>();
+  p.contour.style = contour.at("style") == "fresnel" ? ContourStyle::Fresnel : ContourStyle::Even;
+  p.contour.width_px = contour.at("width").get<float>();
+  p.contour.threshold = contour.at("threshold").get<float>();
+  p.contour.color = srgb_to_linear(vec3_of(contour.at("color")));
+
+  const json& shadows = j.at("shadows");
+  p.shadows.enabled = shadows.at("enabled").get<bool>();
+  p.shadows.map_size = shadows.at("map_size").get<int>();
+  p.shadows.pcf = shadows.at("pcf").get<int>();
+  p.shadows.bias_texels = shadows.at("bias").get<float>();
+
+  const json& floor = j.at("floor");
+  p.floor.enabled = floor.at("enabled").get<bool>();
+  p.floor.color = srgb_to_linear(vec3_of(floor.at("color")));
+  p.floor.size = floor.at("size").get<float>();
+  p.floor.texture = floor.at("texture").get<std::string>();
+  p.floor.texture_repeat = floor.at("texture_repeat").get<float>();
+
+  const json& outline = j.at("outline");
+  p.outline.enabled = outline.at("enabled").get<bool>();
+  p.outline.width = outline.at("width").get<float>();
+  p.outline.units = outline.at("units") == "world" ? OutlineUnits::World : OutlineUnits::Pixels;
+  const json& method = outline.at("method");
+  const json methods = method.is_array() ? method : json::array({method});
+  p.outline.hull = p.outline.wireframe = p.outline.edges = false;
+  for (const json& m : methods) {
+    p.outline.hull |= m == "hull";
+    p.outline.wireframe |= m == "wireframe";
+    p.outline.edges |= m == "edges";
+  }
+  const std::string creases = outline.at("creases");
+  p.outline.creases = creases == "always" ? OutlineCreases::Always
+                      : creases == "never" ? OutlineCreases::Never
+                                           : OutlineCreases::Auto;
+  p.outline.crease_angle_deg = outline.at("crease_angle").get<float>();
+  p.outline.depth_threshold = outline.at("depth_threshold").get<float>();
+  p.outline.color = srgb_to_linear(vec3_of(outline.at("color")));
+  const std::string color_mode = outline.at("color_mode");
+  p.outline.color_mode = color_mode == "texture"    ? OutlineColorMode::Texture
+                         : color_mode == "material" ? OutlineColorMode::Material
+                                                    : OutlineColorMode::Fixed;
+  p.outline.darken = outline.at("darken").get<float>();
+
+  p.msaa = j.at("msaa").get<int>();
+  p.supersample = j.at("supersample").get<int>();
+  p.lod_auto = j.at("lod") == "auto";
+  p.lod_error_px = j.at("lod_error_px").get<double>();
+  p.png_compression = j.at("png_compression").get<int>();
+  if (j.contains("sheet")) p.sheet = sheet_of(j.at("sheet"), p.camera);
+  return p;
+}
+
+}  // namespace toond::http

@@ -1,0 +1,18 @@
+#pragma once
+// The wire form of render parameters turned into the renderer's resolved,
+// typed values. Parsing JSON is the HTTP layer's business: render/ sees only
+// RenderParams, never the request text.
+#include <nlohmann/json.hpp>
+
+#include "render/render_params.h"
+
+namespace toond::http {
+
+// `completed` is a request that ParamSchema::validate_and_complete() has
+// checked and filled with the schema's defaults (presets already expanded),
+// so every field is present and in range. Colours become linear, a light's
+// intensity is folded into its colour, ramp stops are sorted, and a sheet's
+// absent fields are taken from the camera.
+render::RenderParams render_params_from_wire(const nlohmann::json& completed);
+
+}  // namespace toond::http
