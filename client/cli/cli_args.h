@@ -39,6 +39,7 @@ struct Options {
   std::string obj_path;
   // upload
   bool quiet = false;
+  std::string scene;  // a glTF scene's index (POST /models?scene=N); empty: the file's default
   // render
   std::string model_id;
   std::string params_file;                                // "-" reads standard input

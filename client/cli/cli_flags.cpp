@@ -59,6 +59,11 @@ const Flag kFlags[] = {
 
     {{"-q", "--quiet", "", "print only the model id"}, kUpload, true,
      [](FlagTarget& t, Value) { t.options.quiet = true; }},
+    {{"", "--scene", "N", "glTF: draw scene N instead of the file's default"}, kUpload, false,
+     [](FlagTarget& t, Value v) {
+       if (!is_index(v) || v.size() > 9) throw UsageError("--scene '" + v + "': expected a scene's index, 0 or more");
+       t.options.scene = v;
+     }},
 
     {{"", "--model", "ID", "render a model stored earlier with `toon upload`"}, kRender, false,
      [](FlagTarget& t, Value v) { t.options.model_id = required(v, "--model needs a model id"); }},
@@ -103,7 +108,7 @@ const VerbInfo kVerbs[] = {
 OpenGL vendor, renderer and version it renders with.
 Exit status 0 when the status is "ok", 1 otherwise or when it cannot be reached.
 )"},
-    {Verb::upload, "upload", "PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q]",
+    {Verb::upload, "upload", "PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q] [--scene N]",
      "store an OBJ with its MTL files and textures (or a .m mesh);\nprints the model id",
      R"(Sends an OBJ model to the daemon's store (POST /models) together with the
 MTL files its mtllib lines name and the textures those MTL files reference
@@ -113,6 +118,8 @@ folder are refused, missing files are reported and skipped. A .m mesh
 (`Vertex i x y z {normal=(...)}` / `Face i a b c` lines) and a .glb are
 sent alone; a .gltf brings the .bin and image files its URIs name (inside its
 folder). A folder stands for its one model file (.obj, .m, .gltf or .glb).
+A glTF file's default scene is drawn; --scene N picks another (another model,
+with its own id).
 Prints the daemon's answer (id, triangles, materials, textures, warnings).
 )"},
     {Verb::render, "render",

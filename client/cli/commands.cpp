@@ -42,7 +42,8 @@ int upload(const Options& options) {
   if (!options.quiet) std::cerr << "toon: uploading " << bundle_summary(scan) << "\n";
 
   Connection conn(options.server);
-  httplib::Result result = conn.post_multipart("/models", bundle_parts(scan));
+  const std::string path = options.scene.empty() ? "/models" : "/models?scene=" + options.scene;
+  httplib::Result result = conn.post_multipart(path, bundle_parts(scan));
   if (!result) return conn.network_failure(result);
   if (result->status != 200 && result->status != 201) return error_reply(*result);
 

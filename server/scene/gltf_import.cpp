@@ -475,16 +475,12 @@ class GltfImporter {
       }
     }
     if (vertices > limits_.max_vertices) {
-      throw ImportLimitError(path_, "--max-vertices",
-                             path_ + " has " + std::to_string(vertices) +
-                                 " vertices in its drawn primitives, more than the limit --max-vertices = " +
-                                 std::to_string(limits_.max_vertices));
+      throw ImportLimitError(path_, ImportLimit::Vertices, static_cast<double>(limits_.max_vertices),
+                             path_ + " has " + std::to_string(vertices) + " vertices in its drawn primitives, more than");
     }
     if (triangles > limits_.max_triangles) {
-      throw ImportLimitError(path_, "--max-triangles",
-                             path_ + " has " + std::to_string(triangles) +
-                                 " triangles in its drawn primitives, more than the limit --max-triangles = " +
-                                 std::to_string(limits_.max_triangles));
+      throw ImportLimitError(path_, ImportLimit::Triangles, static_cast<double>(limits_.max_triangles),
+                             path_ + " has " + std::to_string(triangles) + " triangles in its drawn primitives, more than");
     }
   }
 

@@ -71,10 +71,9 @@ std::string stride_problem(const MeshoptStream& s) {
 void check_count_limit(const MeshoptStream& s, int view, const ImportLimits& limits, const std::string& file) {
   if (s.mode == MeshoptMode::Attributes) {
     if (s.count > limits.max_vertices) {
-      throw ImportLimitError(file, "--max-vertices",
+      throw ImportLimitError(file, ImportLimit::Vertices, static_cast<double>(limits.max_vertices),
                              file + ": " + view_name(view) + " decompresses to " + std::to_string(s.count) +
-                                 " vertices, more than the limit --max-vertices = " +
-                                 std::to_string(limits.max_vertices));
+                                 " vertices, more than");
     }
     return;
   }
@@ -84,10 +83,10 @@ void check_count_limit(const MeshoptStream& s, int view, const ImportLimits& lim
                                         ? std::numeric_limits<std::uint64_t>::max()
                                         : max_triangles * 3 + 2;
   if (s.count > max_corners) {
-    throw ImportLimitError(file, "--max-triangles",
+    throw ImportLimitError(file, ImportLimit::Triangles, static_cast<double>(limits.max_triangles),
                            file + ": " + view_name(view) + " decompresses to " + std::to_string(s.count) +
-                               " indices, more than the limit --max-triangles = " +
-                               std::to_string(limits.max_triangles) + " allows");
+                               " indices, more than",
+                           " allows");
   }
 }
 

@@ -18,15 +18,6 @@ std::string allowed_text(ImportLimit limit, double allowed) {
   return text;
 }
 
-// Only for the flag-naming constructor; the daemon's own table of these
-// names is in http/import_limit_flag.cpp.
-ImportLimit limit_of_flag(std::string_view flag) {
-  if (flag == "--max-triangles") return ImportLimit::Triangles;
-  if (flag == "--max-texture-pixels") return ImportLimit::TexturePixels;
-  if (flag == "--max-import-seconds") return ImportLimit::Seconds;
-  return ImportLimit::Vertices;
-}
-
 }  // namespace
 
 ImportLimitError::ImportLimitError(std::string file, ImportLimit limit, double allowed, std::string excess,
@@ -37,14 +28,7 @@ ImportLimitError::ImportLimitError(std::string file, ImportLimit limit, double a
       excess_(std::move(excess)),
       after_(std::move(after)) {}
 
-ImportLimitError::ImportLimitError(std::string file, std::string_view flag, const std::string& message)
-    : ImportError(std::move(file), message),
-      limit_(limit_of_flag(flag)),
-      allowed_(std::numeric_limits<double>::quiet_NaN()),
-      worded_(true) {}
-
 std::string ImportLimitError::message_naming(std::string_view name) const {
-  if (worded_) return what();
   return excess_ + " the limit " + std::string(name) + " = " + allowed_text(limit_, allowed_) + after_;
 }
 

@@ -45,10 +45,6 @@ enum class ImportLimit { Vertices, Triangles, TexturePixels, Seconds };
 class ImportLimitError : public ImportError {
  public:
   ImportLimitError(std::string file, ImportLimit limit, double allowed, std::string excess, std::string after = {});
-  // For the glTF importers (gltf_import.cpp, gltf_meshopt.cpp) until they
-  // pass an ImportLimit: `flag` names the daemon's flag and `message`
-  // already does. Remove it when they no longer call it.
-  ImportLimitError(std::string file, std::string_view flag, const std::string& message);
 
   ImportLimit limit() const { return limit_; }
   double allowed() const { return allowed_; }
@@ -61,7 +57,6 @@ class ImportLimitError : public ImportError {
   double allowed_;
   std::string excess_;
   std::string after_;
-  bool worded_ = false;  // from the flag-naming constructor: what() is the whole message
 };
 
 }  // namespace toond::scene

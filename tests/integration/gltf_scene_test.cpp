@@ -3,6 +3,8 @@
 // so a restarted daemon draws the same scene.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "image/png_codec.h"
 #include "support/daemon.h"
 #include "support/gltf_writer.h"
@@ -97,6 +99,20 @@ TEST(GltfScene, AnUploadPicksASceneByIndexAndARestartDrawsTheSameOne) {
   EXPECT_EQ(differing_pixels(render_ok(client, params), second_image), 0u);
   restarted.stop();
   std::filesystem::remove_all(data);
+}
+
+TEST(GltfScene, TheCliUploadsWithTheSceneItIsGiven) {
+  Daemon daemon;
+  const std::filesystem::path dir = make_temp_dir("toond-cli-scene");
+  std::ofstream(dir / "two.glb", std::ios::binary) << two_scene_glb();
+  const ProcessResult cli =
+      run_process({TOON_BINARY, "--server", daemon.url(), "upload", "--scene", "1", (dir / "two.glb").string()});
+  EXPECT_EQ(cli.status, 0) << cli.err;
+  const json answer = json::parse(cli.out, nullptr, false);
+  ASSERT_TRUE(answer.is_object()) << cli.out;
+  EXPECT_EQ(answer.value("scene", -1), 1) << cli.out;
+  EXPECT_EQ(answer.value("triangles", 0), 24) << cli.out;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(GltfScene, ASceneThatIsNotThereOrNotAnIndexOrNotGltfIsRefused) {

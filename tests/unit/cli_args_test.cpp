@@ -136,6 +136,15 @@ TEST(CliArgs, UploadTakesExactlyOnePath) {
   EXPECT_FALSE(usage_error([] { parse({"upload", "a.obj", "b.obj"}); }).empty());
 }
 
+TEST(CliArgs, UploadPicksAGltfSceneByIndex) {
+  EXPECT_EQ(parse({"upload", "--scene", "2", "m.glb"}).scene, "2");
+  EXPECT_TRUE(parse({"upload", "m.glb"}).scene.empty());
+  for (const char* bad : {"-1", "x", "", "1.5"}) {
+    EXPECT_TRUE(contains(usage_error([bad] { parse({"upload", "--scene", bad, "m.glb"}); }), "--scene")) << bad;
+  }
+  EXPECT_TRUE(contains(usage_error([] { parse({"render", "--scene", "1", "-o", "x.png"}); }), "--scene"));
+}
+
 TEST(CliArgs, RenderRequiresOutput) {
   EXPECT_TRUE(contains(usage_error([] { parse({"render", "spot.obj"}); }), "-o"));
   EXPECT_TRUE(contains(usage_error([] { parse({"render", "-o"}); }), "needs a value"));

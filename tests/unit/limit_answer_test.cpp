@@ -59,13 +59,15 @@ TEST(ImportLimitAnswer, NamesTheFlagOfEachLimit) {
   }
 }
 
-TEST(ImportLimitAnswer, AMessageThatAlreadyNamesItsFlagIsKept) {
-  const scene::ImportLimitError e("m.glb", "--max-triangles",
-                                  "m.glb has 9 triangles, more than the limit --max-triangles = 8");
+TEST(ImportLimitAnswer, TheGltfImportersLimitsAreNamedByHttpToo) {
+  const scene::ImportLimitError e("m.glb", scene::ImportLimit::Triangles, 8,
+                                  "m.glb: buffer view 2 decompresses to 27 indices, more than", " allows");
+  EXPECT_EQ(std::string(e.what()).find("--"), std::string::npos) << e.what();
   httplib::Response res;
   const json error = error_of(e, res);
   EXPECT_EQ(error.at("limit"), "--max-triangles");
-  EXPECT_EQ(error.at("message"), e.what());
+  EXPECT_EQ(error.at("message"),
+            "m.glb: buffer view 2 decompresses to 27 indices, more than the limit --max-triangles = 8 allows");
 }
 
 TEST(DeadlineAnswer, NamesTheFlagTheRenderLayerDoesNotKnow) {
