@@ -1,7 +1,8 @@
 #pragma once
 // Every pass that draws, one function each, in the order a plan may run
-// them (pass_plan.h). A new pass is a function here, its own file, a line
-// in `drawing_pass` and a line in plan_passes.
+// them (pass_plan.h). A new pass is a function here in its own file, a
+// Pass value and its name (pass_plan), a line in `drawing_pass` and a line
+// in plan_passes.
 #include "render/pass_plan.h"
 #include "render/passes/pass_context.h"
 
