@@ -4,6 +4,8 @@
 
 #include <openssl/evp.h>
 
+#include "glb_from_obj.h"
+
 namespace toond::test {
 namespace {
 
@@ -125,25 +127,12 @@ GltfParts build_gltf(const GltfDocument& document) {
   return {doc, writer.bin};
 }
 
-std::string glb_container(const std::string& json_text, const std::string& bin) {
-  std::string text = json_text;
-  while (text.size() % 4 != 0) text.push_back(' ');
-  const auto u32 = [](std::uint32_t v) {
-    std::string s(4, '\0');
-    for (int i = 0; i < 4; ++i) s[static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xff);
-    return s;
-  };
-  std::string chunks = u32(static_cast<std::uint32_t>(text.size())) + "JSON" + text;
-  if (!bin.empty()) chunks += u32(static_cast<std::uint32_t>(bin.size())) + std::string("BIN\0", 4) + bin;
-  return "glTF" + u32(2) + u32(static_cast<std::uint32_t>(12 + chunks.size())) + chunks;
-}
-
 GltfFiles pack_gltf(const GltfParts& parts, GltfForm form, const std::string& stem,
                     const std::vector<GltfImage>& images) {
   json doc = parts.json;
   switch (form) {
     case GltfForm::Glb:
-      return {{stem + ".glb", glb_container(doc.dump(), parts.bin)}};
+      return {{stem + ".glb", cli::glb_container(doc.dump(), parts.bin)}};
     case GltfForm::DataUris:
       doc["buffers"][0]["uri"] = data_uri(parts.bin, "application/octet-stream");
       return {{stem + ".gltf", doc.dump(1)}};

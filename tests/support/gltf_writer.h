@@ -77,8 +77,5 @@ GltfFiles write_gltf(const GltfDocument& document, GltfForm form, const std::str
 // `bytes` as a base64 data: URI of `media_type`.
 std::string data_uri(const std::string& bytes, const std::string& media_type);
 
-// A .glb of the JSON text and binary chunk as given (no checks, so tests
-// can make broken ones).
-std::string glb_container(const std::string& json_text, const std::string& bin);
 
 }  // namespace toond::test
