@@ -108,7 +108,7 @@ GpuModel::GpuModel(const scene::Model& model)
 
   for (const scene::Texture& tex : model.textures) textures_.push_back(upload_texture(tex, gpu_bytes_));
   for (const scene::Material& m : model.materials) {
-    materials_.push_back({m.name, m.diffuse, m.diffuse_texture, m.normal_texture, m.opacity, m.alpha_cutoff, m.unlit});
+    materials_.push_back({m.name, m.diffuse_texture, m.normal_texture, m.alpha_cutoff, m.unlit});
     MaterialBlock block;
     block.base_color = m.diffuse;
     block.opacity = m.opacity;

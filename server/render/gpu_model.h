@@ -13,12 +13,12 @@
 
 namespace toond::render {
 
+// What the passes choose variants and textures by; the colours a shader
+// reads are in the material's uniform block (bind_material).
 struct GpuMaterial {
   std::string name;  // as in the MTL, for per-material request parameters
-  glm::vec3 diffuse{0.8f};
   int texture = -1;         // index into GpuModel::textures()
   int normal_texture = -1;  // tangent-space normal map, linear
-  float opacity = 1.0f;
   float alpha_cutoff = -1.0f;  // scene::Material::alpha_cutoff; negative: opaque
   bool unlit = false;
 };
