@@ -6,8 +6,9 @@
 // besides those, MODE_FLAT shows the surface colour unlit, and ALPHA_MASK
 // (glTF alphaMode MASK) draws nothing below the material's alpha cutoff.
 // An unlit material (glTF KHR_materials_unlit) is drawn with MODE_FLAT in
-// place of the request's mode, its other variants kept. Everything is
-// linear; the sRGB framebuffer encodes on write.
+// place of the request's mode, its other variants kept. LINES_ONLY (the
+// lines layer) writes the contour alone; the shading left unused is not
+// compiled in. Everything is linear; the sRGB framebuffer encodes on write.
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_texcoord;
@@ -39,5 +40,9 @@ void main() {
   color = apply_halftone(color, albedo, lit.level);
   float n_dot_v = dot(n, v);
 #endif
+#ifdef LINES_ONLY
+  o_color = contour_alone(n_dot_v);
+#else
   o_color = vec4(apply_contour(color, n_dot_v), 1.0);
+#endif
 }

@@ -4,14 +4,25 @@
 // Variants: CONTOUR_EVEN | CONTOUR_FRESNEL
 #include "frame_shading.glsl"
 
-vec3 apply_contour(vec3 color, float n_dot_v) {
+bool on_contour(float n_dot_v) {
 #if defined(CONTOUR_EVEN)
   // N·V divided by how fast it changes per pixel is the distance to the
   // N·V = 0 line in pixels: a line of even width however steeply the
   // surface turns.
-  if (n_dot_v < u_contour_width * fwidth(n_dot_v)) color = u_contour_color;
+  return n_dot_v < u_contour_width * fwidth(n_dot_v);
 #elif defined(CONTOUR_FRESNEL)
-  if (n_dot_v < u_contour_threshold) color = u_contour_color;
+  return n_dot_v < u_contour_threshold;
+#else
+  return false;
 #endif
-  return color;
+}
+
+vec3 apply_contour(vec3 color, float n_dot_v) {
+  return on_contour(n_dot_v) ? u_contour_color : color;
+}
+
+// The lines layer's share of the main pass (LINES_ONLY): the contour
+// alone, premultiplied by its coverage, over transparent.
+vec4 contour_alone(float n_dot_v) {
+  return on_contour(n_dot_v) ? vec4(u_contour_color, 1.0) : vec4(0.0);
 }

@@ -74,6 +74,23 @@ void NormalDepthTarget::bind_for_drawing() const {
   glClearNamedFramebufferfi(draw_fbo_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
 }
 
+image::FloatImage NormalDepthTarget::read_pixels() const {
+  image::FloatImage out;
+  out.width = width_;
+  out.height = height_;
+  const std::size_t row = static_cast<std::size_t>(width_) * 4;
+  std::vector<float> gl_rows(row * height_);
+  glGetTextureImage(pixel_texture_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(gl_rows.size() * sizeof(float)),
+                    gl_rows.data());
+  out.values.resize(gl_rows.size());
+  // GL's rows run bottom to top; images run top to bottom.
+  for (int y = 0; y < height_; ++y) {
+    std::copy_n(gl_rows.data() + static_cast<std::size_t>(height_ - 1 - y) * row, row,
+                out.values.data() + static_cast<std::size_t>(y) * row);
+  }
+  return out;
+}
+
 void NormalDepthTarget::bind_for_resolve() const {
   glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_.id());
   glViewport(0, 0, width_, height_);

@@ -6,6 +6,7 @@
 // (normal_depth_resolve.frag) turns the samples into those two values per
 // pixel; the coverage then places a silhouette to a fraction of a pixel.
 #include "gpu/gl_object.h"
+#include "image/float_image.h"
 
 namespace toond::gpu {
 
@@ -29,6 +30,10 @@ class NormalDepthTarget {
   void bind_for_drawing() const;
   // Binds the per-pixel texture for the resolve pass to write.
   void bind_for_resolve() const;
+  // The per-pixel values, rows top to bottom, with the coverage as the
+  // fourth value (the data layers' readback: they draw one sample a pixel
+  // and keep their own fourth channel 0 or 1, the same as the coverage).
+  image::FloatImage read_pixels() const;
 
  private:
   int width_;

@@ -10,6 +10,7 @@ void answer_render(const httplib::Request& req, httplib::Response& res, const Ca
   res.set_header("X-Toond-Passes", render.passes);
   if (!render.lod.empty()) res.set_header("X-Toond-Lod", render.lod);
   res.set_header("X-Toond-Samples", std::to_string(render.samples));
+  for (const auto& [name, value] : render.headers) res.set_header(name, value);
   // The same parameters always give the same bytes, so a client may reuse
   // its copy, but should ask again (the model may have been replaced).
   res.set_header("Cache-Control", "no-cache");

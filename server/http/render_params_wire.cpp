@@ -38,6 +38,14 @@ SheetParams sheet_of(const json& s, const CameraParams& camera) {
   return sheet;
 }
 
+Output output_of(const std::string& name) {
+  if (name == "lines") return Output::Lines;
+  if (name == "depth") return Output::Depth;
+  if (name == "normal") return Output::Normal;
+  if (name == "id") return Output::Id;
+  return Output::Color;
+}
+
 }  // namespace
 
 RenderParams render_params_from_wire(const json& j) {
@@ -186,6 +194,7 @@ RenderParams render_params_from_wire(const json& j) {
   p.lod_error_px = j.at("lod_error_px").get<double>();
   p.png_compression = j.at("png_compression").get<int>();
   if (j.contains("sheet")) p.sheet = sheet_of(j.at("sheet"), p.camera);
+  p.output = output_of(j.at("output").get<std::string>());
   return p;
 }
 

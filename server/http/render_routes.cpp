@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "http/bundle_upload.h"
+#include "http/output_png.h"
 #include "http/render_answer.h"
 #include "http/render_params_wire.h"
 #include "http/render_wait.h"
@@ -183,6 +184,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
       job.objects.push_back(std::move(o));
     }
 
+    check_output_fits(job);
     load_bundle_images(context, job);
     const bool atlas_only = wants_atlas_only(req, job.params);
     image::PngOptions png_options;
@@ -211,7 +213,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
       out = render_sheet(context, job, *layout, deadline);
     } else {
       job.deadline = deadline;
-      auto future = context.renderer.submit(std::move(job));
+      auto future = context.renderer.submit(job);
       out = await_render(future, deadline, context.render_deadline);
     }
     const double render_ms = render_thread_ms(out);
@@ -219,13 +221,14 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
         std::chrono::duration<double, std::milli>(Clock::now() - submitted).count() - render_ms;
 
     const auto png_start = Clock::now();
-    std::string png = image::encode_png(out.image, png_options);
+    OutputPng encoded = encode_output(out, job, png_options);
     const double png_ms = std::chrono::duration<double, std::milli>(Clock::now() - png_start).count();
 
     res.set_header("Server-Timing", server_timing(out, queue_ms < 0 ? 0 : queue_ms, png_ms));
     auto answer = std::make_shared<CachedRender>();
-    answer->etag = etag_of(png);
-    answer->png = std::move(png);
+    answer->etag = etag_of(encoded.png);
+    answer->png = std::move(encoded.png);
+    answer->headers = std::move(encoded.headers);
     answer->passes = out.plan;
     answer->lod = lod_header(out.lods);
     answer->samples = out.samples;

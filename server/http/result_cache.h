@@ -10,6 +10,8 @@
 #include <mutex>
 #include <string>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace toond::http {
 
@@ -19,6 +21,8 @@ struct CachedRender {
   std::string passes;  // X-Toond-Passes of the render that made it
   std::string lod;     // X-Toond-Lod of the render that made it
   int samples = 1;     // X-Toond-Samples: MSAA samples the render had
+  // Headers that belong to this output alone (a depth layer's range).
+  std::vector<std::pair<std::string, std::string>> headers{};
 };
 
 // A strong ETag for a body: its 64-bit FNV-1a hash, quoted. The same bytes

@@ -5,12 +5,15 @@
 #include <vector>
 
 #include "http/render_wait.h"
+#include "render/pass_plan.h"
 
 namespace toond::http {
 namespace {
 
-void copy_tile(const image::Image& tile, const render::SheetFrame& frame, image::Image& sheet) {
-  const std::size_t row_bytes = static_cast<std::size_t>(tile.width) * 4;
+// Image or FloatImage: four values a pixel, rows top to bottom.
+template <class Pixels>
+void copy_tile(const Pixels& tile, const render::SheetFrame& frame, Pixels& sheet) {
+  const std::size_t row_bytes = static_cast<std::size_t>(tile.width) * 4 * sizeof(*tile.pixel(0, 0));
   for (int y = 0; y < tile.height; ++y) {
     std::memcpy(sheet.pixel(frame.x, frame.y + y), tile.pixel(0, y), row_bytes);
   }
@@ -67,14 +70,20 @@ render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJ
   std::vector<std::future<render::RenderOutput>> futures = context.renderer.submit_all(std::move(frames));
 
   render::RenderOutput sheet;
-  sheet.image.width = layout.width;
-  sheet.image.height = layout.height;
-  sheet.image.rgba.assign(static_cast<std::size_t>(layout.width) * layout.height * 4, 0);
+  const std::size_t values = static_cast<std::size_t>(layout.width) * layout.height * 4;
+  // A data layer's sheet stays in floats until it is encoded, so that a
+  // depth sheet has one range over every frame.
+  if (render::is_data_layer(job.params.output)) {
+    sheet.layer = {layout.width, layout.height, std::vector<float>(values, 0.0f)};
+  } else {
+    sheet.image = {layout.width, layout.height, std::vector<std::uint8_t>(values, 0)};
+  }
   for (std::size_t i = 0; i < futures.size(); ++i) {
     // Each tile goes into place as soon as it is done, and its own image
     // is let go while the next frame renders.
     const render::RenderOutput frame = await_render(futures[i], deadline, context.render_deadline);
-    copy_tile(frame.image, layout.frames[i], sheet.image);
+    if (render::is_data_layer(job.params.output)) copy_tile(frame.layer, layout.frames[i], sheet.layer);
+    else copy_tile(frame.image, layout.frames[i], sheet.image);
     add_timings(frame.timings, sheet.timings);
     merge_lods(frame.lods, sheet.lods);
     sheet.plan = frame.plan;

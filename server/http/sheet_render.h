@@ -15,8 +15,8 @@ namespace toond::http {
 // thread does: the atlas reports that framing without rendering.
 render::SceneFrame scene_of(const render::RenderJob& job);
 
-// The sheet as one render's output: `image` is the whole sheet, padding and
-// empty tiles transparent; `timings` add up each pass over the frames;
+// The sheet as one render's output: `image` (or, for a data layer,
+// `layer`) is the whole sheet, padding and empty tiles transparent; `timings` add up each pass over the frames;
 // `lods` give per object the finest level any frame drew (and "both" faces
 // when any frame drew both), `plan` and `samples` are the frames' own.
 render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJob& job,

@@ -10,22 +10,11 @@
 #include "image/deflate_strips.h"
 #include "image/palette.h"
 #include "image/parallel_tasks.h"
+#include "image/png_writer.h"
 #include "image/sub_filter.h"
 
 namespace toond::image {
 namespace {
-
-// libpng reports errors through longjmp by default; a C++ exception thrown
-// from the error callback unwinds cleanly instead (libpng is built to allow it).
-[[noreturn]] void throw_png_error(png_structp, png_const_charp message) {
-  throw std::runtime_error(std::string("png: ") + message);
-}
-void ignore_png_warning(png_structp, png_const_charp) {}
-
-void append_to_string(png_structp png, png_bytep data, png_size_t length) {
-  auto* out = static_cast<std::string*>(png_get_io_ptr(png));
-  out->append(reinterpret_cast<const char*>(data), length);
-}
 
 struct ReadCursor {
   std::string_view bytes;
@@ -37,22 +26,6 @@ void read_from_view(png_structp png, png_bytep data, png_size_t length) {
   if (cursor->bytes.size() - cursor->offset < length) throw_png_error(png, "truncated data");
   std::memcpy(data, cursor->bytes.data() + cursor->offset, length);
   cursor->offset += length;
-}
-
-// libpng copies the text when it is set, so the pointers need only live
-// through this call.
-void set_text_chunks(png_structp png, png_infop info,
-                     const std::vector<std::pair<std::string, std::string>>& text) {
-  std::vector<png_text> chunks;
-  for (const auto& [key, value] : text) {
-    png_text chunk{};
-    chunk.compression = PNG_TEXT_COMPRESSION_NONE;
-    chunk.key = const_cast<png_charp>(key.c_str());
-    chunk.text = const_cast<png_charp>(value.c_str());
-    chunk.text_length = value.size();
-    chunks.push_back(chunk);
-  }
-  if (!chunks.empty()) png_set_text(png, info, chunks.data(), static_cast<int>(chunks.size()));
 }
 
 // Level 0 stores. Levels 1 to 3 take the fastest search that suits the
@@ -103,32 +76,20 @@ void set_palette(png_structp png, png_infop info, const Palette& palette) {
 // libpng writes the container: signature, header, palette, colour space
 // chunks, the IDAT holding the zlib stream made here, and the end.
 std::string write_png(const Image& image, int colour_type, const Palette* palette, const std::string& idat,
-                      const std::vector<std::pair<std::string, std::string>>& text) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, throw_png_error,
-                                            ignore_png_warning);
-  if (!png) throw std::runtime_error("png: cannot create write struct");
-  png_infop info = png_create_info_struct(png);
-  std::string out;
-  out.reserve(idat.size() + 256 + (palette ? 4 * palette->colours().size() : 0));
-  try {
-    if (!info) throw std::runtime_error("png: cannot create info struct");
-    png_set_write_fn(png, &out, append_to_string, nullptr);
-    png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
-                 static_cast<png_uint_32>(image.height), 8, colour_type,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    if (palette) set_palette(png, info, *palette);
-    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-    set_text_chunks(png, info, text);
-    png_write_info(png, info);
-    png_write_chunk(png, reinterpret_cast<png_const_bytep>("IDAT"),
-                    reinterpret_cast<png_const_bytep>(idat.data()), idat.size());
-    png_write_chunk(png, reinterpret_cast<png_const_bytep>("IEND"), nullptr, 0);
-  } catch (...) {
-    png_destroy_write_struct(&png, &info);
-    throw;
-  }
-  png_destroy_write_struct(&png, &info);
-  return out;
+                      const TextChunks& text) {
+  PngWriter writer;
+  writer.bytes().reserve(idat.size() + 256 + (palette ? 4 * palette->colours().size() : 0));
+  png_set_IHDR(writer.png(), writer.info(), static_cast<png_uint_32>(image.width),
+               static_cast<png_uint_32>(image.height), 8, colour_type, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  if (palette) set_palette(writer.png(), writer.info(), *palette);
+  png_set_sRGB_gAMA_and_cHRM(writer.png(), writer.info(), PNG_sRGB_INTENT_PERCEPTUAL);
+  writer.set_text(text);
+  png_write_info(writer.png(), writer.info());
+  png_write_chunk(writer.png(), reinterpret_cast<png_const_bytep>("IDAT"),
+                  reinterpret_cast<png_const_bytep>(idat.data()), idat.size());
+  png_write_chunk(writer.png(), reinterpret_cast<png_const_bytep>("IEND"), nullptr, 0);
+  return std::move(writer.bytes());
 }
 
 }  // namespace

@@ -13,8 +13,10 @@ const char* pass_name(Pass pass) {
     case Pass::Wireframe: return "wireframe";
     case Pass::EdgePrepass: return "edge_prepass";
     case Pass::Edges: return "edges";
+    case Pass::Layer: return "layer";
     case Pass::Resolve: return "resolve";
     case Pass::Readback: return "readback";
+    case Pass::Unpremultiply: return "unpremultiply";
     case Pass::Downsample: return "downsample";
   }
   return "?";
@@ -34,12 +36,38 @@ std::string PassPlan::describe() const {
   return out;
 }
 
-PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
+bool is_data_layer(Output output) {
+  return output == Output::Depth || output == Output::Normal || output == Output::Id;
+}
+
+namespace {
+
+// A depth, normal or id layer: no shading, no outline, no floor, one
+// sample a pixel (a depth or an id averaged across an edge would be a
+// value no surface has).
+PassPlan plan_data_layer(const RenderParams& params, const ModelTraits& model) {
   PassPlan plan;
+  plan.output = params.output;
+  plan.passes = {Pass::Layer, Pass::Readback};
+  plan.layer.set(params.output == Output::Depth    ? LayerFeature::Depth
+                 : params.output == Output::Normal ? LayerFeature::Normal
+                                                   : LayerFeature::Id);
+  plan.layer.set(LayerFeature::AlphaMask, model.has_masked_materials);
+  plan.ids_by = params.objects.empty() ? IdSource::Material : IdSource::Object;
+  return plan;
+}
+
+}  // namespace
+
+PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
+  if (is_data_layer(params.output)) return plan_data_layer(params, model);
+  PassPlan plan;
+  plan.output = params.output;
+  const bool lines_only = params.output == Output::Lines;
   plan.samples = params.msaa;
   // Shadows need a light that casts them (the first directional one) and a
-  // lit shading mode to darken.
-  if (params.shadows.enabled && params.mode != ShadingMode::Flat) {
+  // lit shading mode to darken; the lines layer shows no shading.
+  if (params.shadows.enabled && params.mode != ShadingMode::Flat && !lines_only) {
     for (std::size_t i = 0; i < params.lights.size(); ++i) {
       if (params.lights[i].kind == LightKind::Directional) {
         plan.shadow_light = static_cast<int>(i);
@@ -133,8 +161,13 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
         break;
     }
   }
+  // The contour is the main pass's part of the lines; the shading it
+  // would have drawn under them is left to the color render.
+  plan.shading.set(ToonFeature::LinesOnly, lines_only);
   if (plan.samples > 1) plan.passes.push_back(Pass::Resolve);
   plan.passes.push_back(Pass::Readback);
+  // Before averaging: the downsample weighs straight colour by alpha.
+  if (lines_only) plan.passes.push_back(Pass::Unpremultiply);
   plan.supersample = params.supersample;
   if (plan.supersample > 1) plan.passes.push_back(Pass::Downsample);
   return plan;

@@ -19,8 +19,10 @@ enum class Pass {
   Wireframe,    // back-face edges widened into lines
   EdgePrepass,  // normals and eye distances for the edge pass
   Edges,        // screen-space depth/normal discontinuities (or creases only)
+  Layer,        // a data layer (depth, normal or id) in place of the colour
   Resolve,      // multisample resolve
   Readback,     // pixels back to the CPU
+  Unpremultiply,  // the lines layer's colour divided by its alpha
   Downsample,   // supersampled image averaged to the output size
 };
 const char* pass_name(Pass pass);
@@ -34,8 +36,18 @@ struct ModelTraits {
   bool has_masked_materials = false;  // glTF alphaMode MASK
 };
 
+// What an id layer numbers.
+enum class IdSource { Object, Material };
+
 struct PassPlan {
   std::vector<Pass> passes;
+  // Output::Lines runs the colour passes, but the main pass writes only
+  // the contour (premultiplied, over transparent), the floor only depth,
+  // and the outline passes blend over that. The data layers run the Layer
+  // pass alone.
+  Output output = Output::Color;
+  LayerVariant layer;
+  IdSource ids_by = IdSource::Material;
   // The features every main-pass program of this render shares (a material
   // may add its own).
   ToonVariant shading;
@@ -61,5 +73,9 @@ struct PassPlan {
 };
 
 PassPlan plan_passes(const RenderParams& params, const ModelTraits& model);
+
+// Whether `output` is a data layer (depth, normal, id): drawn by the Layer
+// pass, one sample a pixel, read back as floats.
+bool is_data_layer(Output output);
 
 }  // namespace toond::render

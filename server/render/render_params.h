@@ -25,6 +25,9 @@ glm::vec3 srgb_to_linear(const glm::vec3& c);
 // schema writes them, made linear); RenderParamsDefaults checks each.
 enum class ShadingMode { Cel, Phong, Flat };
 enum class BaseColor { Material, White };
+// What the answer holds: the finished colour, the lines alone, or one of
+// the data layers a compositor uses (proto schema `output`).
+enum class Output { Color, Lines, Depth, Normal, Id };
 enum class Rounding { Ceil, Floor, Round };
 enum class Projection { Perspective, Orthographic };
 
@@ -200,6 +203,7 @@ struct RenderParams {
   double lod_error_px = 0.5;  // the most a level's error may project to, output pixels
   int png_compression = 3;    // zlib level of the answer
   std::optional<SheetParams> sheet;  // unset: one image
+  Output output = Output::Color;
 };
 
 }  // namespace toond::render

@@ -3,6 +3,7 @@
 #include "gpu/egl_context.h"
 #include "gpu/gpu_error.h"
 #include "image/downsample.h"
+#include "image/unpremultiply.h"
 #include "render/pass_timer.h"
 #include "render/passes/passes.h"
 
@@ -66,10 +67,15 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   glDisable(GL_STENCIL_TEST);
   // The multisample resolve is a blit inside read_back(); its time is part
   // of the readback figure, since the readback waits for it anyway.
-  out.image = target.read_back();
+  if (frame.plan.has(Pass::Layer)) out.layer = resources_.normal_depth().read_pixels();
+  else out.image = target.read_back();
   report_cap_checks(context.main_cap_checks, out.lods);
   check_gl("readback");
   timer.mark(Pass::Readback);
+  if (frame.plan.has(Pass::Unpremultiply)) {
+    image::unpremultiply_linear(out.image);
+    timer.mark(Pass::Unpremultiply);
+  }
   if (frame.plan.has(Pass::Downsample)) {
     out.image = image::downsample_box(out.image, frame.supersample);
     timer.mark(Pass::Downsample);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gpu/program_cache.h"
+#include "image/float_image.h"
 #include "image/image.h"
 #include "render/frame_context.h"
 #include "render/frame_resources.h"
@@ -16,7 +17,10 @@
 namespace toond::render {
 
 struct RenderOutput {
-  image::Image image;
+  image::Image image;  // empty for a data layer
+  // A data layer's values (output depth, normal or id), turned into its
+  // PNG by the caller, who knows what the ids stand for.
+  image::FloatImage layer;
   std::vector<PassTiming> timings;
   std::string plan;  // PassPlan::describe()
   std::vector<LodUse> lods;  // one per object, in order

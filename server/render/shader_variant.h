@@ -39,6 +39,7 @@ enum class ToonFeature : std::size_t {
   HalftoneChecker,
   Shadows,
   AlphaMask,
+  LinesOnly,
   Count
 };
 const char* define_name(ToonFeature feature);
@@ -107,5 +108,11 @@ using DepthVariant = FeatureSet<DepthFeature>;
 enum class EdgeFeature : std::size_t { CreasesOnly, Count };
 const char* define_name(EdgeFeature feature);
 using EdgeVariant = FeatureSet<EdgeFeature>;
+
+// layer.frag's: which data layer it writes (one of the first three), and
+// the alpha test of masked materials.
+enum class LayerFeature : std::size_t { Depth, Normal, Id, AlphaMask, Count };
+const char* define_name(LayerFeature feature);
+using LayerVariant = FeatureSet<LayerFeature>;
 
 }  // namespace toond::render

@@ -4,7 +4,8 @@
 namespace toond::render {
 
 // Same shading as the model, but no stencil mark: the floor is never
-// outlined, and the model's outline may cross it.
+// outlined, and the model's outline may cross it. In the lines layer it
+// writes depth alone: it hides the lines behind it, as in the color render.
 void draw_floor_pass(PassContext& context) {
   const FrameContext& frame = context.frame;
   const FloorParams& params = frame.params.floor;
@@ -20,7 +21,10 @@ void draw_floor_pass(PassContext& context) {
   bind_material(floor, 0);
   if (frame.shadow) glBindTextureUnit(texture_unit::kShadowMap, context.resources.shadow_map().texture());
   floor.bind();
+  const bool depth_only = frame.plan.output == Output::Lines;
+  if (depth_only) glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   floor.draw_all();
+  if (depth_only) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 }  // namespace toond::render

@@ -59,7 +59,10 @@ void draw_main_pass(PassContext& context) {
   glDisable(GL_BLEND);
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xff);
-  glClearColor(params.background.r, params.background.g, params.background.b, params.background.a);
+  // The lines layer holds nothing but lines: the background is for the
+  // color render they are laid over.
+  const glm::vec4 clear = frame.plan.output == Output::Lines ? glm::vec4(0.0f) : params.background;
+  glClearColor(clear.r, clear.g, clear.b, clear.a);
   glClearDepth(1.0);
   glClearStencil(0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);

@@ -11,8 +11,10 @@ DrawPass drawing_pass(Pass pass) {
     case Pass::Wireframe: return draw_wireframe_pass;
     case Pass::EdgePrepass: return draw_edge_prepass;
     case Pass::Edges: return draw_edge_pass;
+    case Pass::Layer: return draw_layer_pass;
     case Pass::Resolve:
     case Pass::Readback:
+    case Pass::Unpremultiply:
     case Pass::Downsample: return nullptr;
   }
   return nullptr;

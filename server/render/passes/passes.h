@@ -15,11 +15,13 @@ void draw_hull_outline_pass(PassContext& context);
 void draw_wireframe_pass(PassContext& context);
 void draw_edge_prepass(PassContext& context);     // normals, distances and coverage per pixel
 void draw_edge_pass(PassContext& context);
+void draw_layer_pass(PassContext& context);      // depth, normal or id in place of the colour
 
 using DrawPass = void (*)(PassContext&);
 
 // The function that draws `pass`; nullptr for the passes after drawing
-// (resolve, readback, downsample), which the renderer runs itself.
+// (resolve, readback, unpremultiply, downsample), which the renderer runs
+// itself.
 DrawPass drawing_pass(Pass pass);
 
 }  // namespace toond::render

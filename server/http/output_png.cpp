@@ -1,0 +1,83 @@
+#include "http/output_png.h"
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "image/layer_png.h"
+#include "render/pass_plan.h"
+#include "request_error.h"
+
+namespace toond::http {
+namespace {
+
+bool ids_by_object(const render::RenderJob& job) { return !job.params.objects.empty(); }
+
+int id_count(const render::RenderJob& job) {
+  if (ids_by_object(job)) return static_cast<int>(job.objects.size());
+  return static_cast<int>(job.objects.front().model->materials.size());
+}
+
+// What each index of an id layer stands for, in index order from 1.
+nlohmann::json id_mapping(const render::RenderJob& job) {
+  nlohmann::json ids = nlohmann::json::array();
+  if (ids_by_object(job)) {
+    for (std::size_t i = 0; i < job.objects.size(); ++i) {
+      ids.push_back({{"id", i + 1}, {"object", i}, {"model", job.params.objects[i].model}});
+    }
+  } else {
+    const auto& materials = job.objects.front().model->materials;
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+      ids.push_back({{"id", m + 1}, {"material", materials[m].name}});
+    }
+  }
+  return {{"background", 0}, {"by", ids_by_object(job) ? "object" : "material"}, {"ids", ids}};
+}
+
+std::string depth_range_header(const image::DepthRange& range) {
+  char text[96];
+  std::snprintf(text, sizeof text, "near=%.9g; far=%.9g", range.near_depth, range.far_depth);
+  return text;
+}
+
+nlohmann::json depth_description(const image::DepthRange& range) {
+  return {{"near", range.near_depth}, {"far", range.far_depth}, {"units", "scene"},
+          {"encoding", "linear: near 0, far 65534"}, {"background", 65535}};
+}
+
+}  // namespace
+
+void check_output_fits(const render::RenderJob& job) {
+  if (job.params.output != render::Output::Id || job.objects.empty()) return;
+  const int count = id_count(job);
+  if (count > image::kMaxLayerIds) {
+    throw RequestError(422, "too_many_ids",
+                       "/output: an id layer numbers at most 255 " +
+                           std::string(ids_by_object(job) ? "objects" : "materials") + "; this one has " +
+                           std::to_string(count),
+                       "/output");
+  }
+}
+
+OutputPng encode_output(const render::RenderOutput& out, const render::RenderJob& job,
+                        const image::PngOptions& options) {
+  image::TextChunks text = options.text;
+  switch (job.params.output) {
+    case render::Output::Color:
+    case render::Output::Lines: return {image::encode_png(out.image, options), {}};
+    case render::Output::Depth: {
+      const image::DepthRange range = image::visible_depth_range(out.layer);
+      text.emplace_back("toond:depth", depth_description(range).dump());
+      return {image::encode_depth_png(out.layer, range, options.compression_level, text),
+              {{"X-Toond-Depth-Range", depth_range_header(range)}}};
+    }
+    case render::Output::Normal:
+      return {image::encode_normal_png(out.layer, options.compression_level, text), {}};
+    case render::Output::Id:
+      text.emplace_back("toond:ids", id_mapping(job).dump());
+      return {image::encode_id_png(out.layer, id_count(job), options.compression_level, text), {}};
+  }
+  return {};
+}
+
+}  // namespace toond::http
