@@ -38,6 +38,20 @@ TEST_F(Render, DemoModelRendersAtTheRequestedSize) {
   EXPECT_LT(cover, 0.85);
 }
 
+// With one sample a pixel the wireframe's line coverage cannot pick
+// samples: it is blended over the image, which stays as opaque as its
+// background (it once wrote the coverage into the image's alpha).
+TEST_F(Render, AWireframeWithoutMultisamplingLeavesTheImageOpaque) {
+  auto client = daemon().client();
+  for (int msaa : {1, 4}) {
+    const auto img = render_ok(client, {{"width", 160}, {"height", 128}, {"msaa", msaa},
+                                        {"outline", {{"method", "wireframe"}, {"width", 2.5}}}});
+    std::size_t translucent = 0;
+    for (std::size_t i = 3; i < img.rgba.size(); i += 4) translucent += img.rgba[i] != 255;
+    EXPECT_EQ(translucent, 0u) << "msaa " << msaa;
+  }
+}
+
 TEST_F(Render, DefaultsGiveA512SquareImage) {
   auto client = daemon().client();
   const auto img = render_ok(client, json::object());

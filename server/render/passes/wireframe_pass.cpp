@@ -15,12 +15,22 @@ void draw_wireframe_pass(PassContext& context) {
   gpu::Program& program =
       context.programs.get(std::vector<std::string>{"wire.vert", "wire.geom", "hull.frag"}, variant.defines());
   program.use();
-  // The line's coverage picks the samples it writes, each written opaque.
-  glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-  glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  // Multisampled, the line's coverage picks the samples it writes, each
+  // written opaque. With one sample a pixel alpha to coverage does nothing
+  // and the coverage would land in the image's alpha: the line is blended
+  // over what is there by its coverage instead.
+  const bool multisampled = context.target.samples() > 1;
+  if (multisampled) {
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  } else {
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
   draw_outline_objects(context, [](std::size_t) { return FaceSkip{}; });
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+  glDisable(GL_BLEND);
 }
 
 }  // namespace toond::render
