@@ -52,6 +52,7 @@ std::vector<Dimension> dimensions() {
       {nothing(), features({F::Rim}), features({F::Rim, F::RimMaskLit}), features({F::Rim, F::RimMaskShadow})},
       {nothing(), features({F::ContourEven}), features({F::ContourFresnel})},
       {nothing(), features({F::HalftoneDots}), features({F::HalftoneChecker})},
+      {nothing(), features({F::LinesOnly})},
       {nothing(), features({F::Shadows}),
        [](ToonVariant& v) {
          v.set(F::Shadows);

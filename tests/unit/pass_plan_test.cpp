@@ -210,5 +210,60 @@ TEST(PassPlan, MaskedMaterialsAlphaTestTheOutlines) {
   EXPECT_FALSE(plan_passes(params({{"outline", {{"enabled", false}}}}), masked).alpha_tested_outlines);
 }
 
+// A data layer draws the Layer pass alone: no shading, shadow, floor,
+// outline, resolve or downsample, whatever else the request asks for.
+TEST(PassPlan, ADataLayerRunsTheLayerPassAlone) {
+  const json busy = {{"shadows", {{"enabled", true}}}, {"floor", {{"enabled", true}}},
+                     {"outline", {{"method", {"hull", "wireframe", "edges"}}}}, {"contour", {{"enabled", true}}},
+                     {"msaa", 8}, {"supersample", 2}};
+  ModelTraits hard;
+  hard.hard_edged = true;
+  for (const auto& [name, feature] : {std::pair{"depth", LayerFeature::Depth}, std::pair{"normal", LayerFeature::Normal},
+                                      std::pair{"id", LayerFeature::Id}}) {
+    json request = busy;
+    request["output"] = name;
+    const PassPlan plan = plan_passes(params(request), hard);
+    EXPECT_EQ(plan.describe(), "layer,readback") << name;
+    EXPECT_EQ(plan.samples, 1) << name;
+    EXPECT_EQ(plan.supersample, 1) << name;
+    EXPECT_EQ(plan.layer, LayerVariant{}.set(feature)) << name;
+    EXPECT_EQ(plan.shadow_light, -1) << name;
+  }
+}
+
+TEST(PassPlan, ALayerTestsTheAlphaOfMaskedMaterials) {
+  ModelTraits masked;
+  masked.has_masked_materials = true;
+  EXPECT_TRUE(plan_passes(params({{"output", "normal"}}), masked).layer.has(LayerFeature::AlphaMask));
+  EXPECT_FALSE(plan_passes(params({{"output", "normal"}}), {}).layer.has(LayerFeature::AlphaMask));
+}
+
+TEST(PassPlan, IdsNumberTheObjectsOfASceneOrTheMaterialsOfAModel) {
+  EXPECT_EQ(plan_passes(params({{"output", "id"}}), {}).ids_by, IdSource::Material);
+  const json scene = {{"output", "id"}, {"objects", {{{"model", "0123456789abcdef"}}, {{"model", "0123456789abcdef"}}}}};
+  EXPECT_EQ(plan_passes(params(scene), {}).ids_by, IdSource::Object);
+}
+
+// The lines layer keeps every line pass and the floor (its depth hides
+// lines), drops the shadow pass (no shading shows), writes the contour
+// alone and divides by alpha before any downsample averages it.
+TEST(PassPlan, TheLinesLayerKeepsTheLinePassesAndDropsTheShading) {
+  ModelTraits hard;
+  hard.hard_edged = true;
+  const json request = {{"output", "lines"}, {"shadows", {{"enabled", true}}}, {"floor", {{"enabled", true}}},
+                        {"supersample", 2}};
+  const PassPlan plan = plan_passes(params(request), hard);
+  EXPECT_EQ(plan.describe(),
+            "main,floor,hull_outline,edge_prepass,edges(creases),resolve,readback,unpremultiply,downsample");
+  EXPECT_TRUE(has_define(plan, "LINES_ONLY"));
+  EXPECT_FALSE(has_define(plan, "SHADOWS"));
+  json colour = request;
+  colour.erase("output");
+  const PassPlan full = plan_passes(params(colour), hard);
+  EXPECT_TRUE(full.has(Pass::Shadow));
+  EXPECT_FALSE(full.has(Pass::Unpremultiply));
+  EXPECT_FALSE(has_define(full, "LINES_ONLY"));
+}
+
 }  // namespace
 }  // namespace toond::render
