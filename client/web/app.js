@@ -7,6 +7,7 @@ import {
   clone, effectiveParams, getPointer, paramsFromHash, paramsToHash, schemaDefaults, setPointer, withPreset,
 } from './params.js';
 import { ApiError, LostServer, RenderLoop } from './render_loop.js';
+import { SheetPreview } from './sheet_preview.js';
 import { bundlePaths, filesFromDrop, filesFromInput, uploadBundle } from './upload.js';
 
 const $ = (id) => document.getElementById(id);
@@ -29,7 +30,11 @@ const studio = {
   defaults: {},
   params: paramsFromHash(location.hash),
   panel: null,
+  sheetPanel: null,
   loop: null,
+  sheet: null,
+  sheetUrl: null,
+  atlasUrl: null,
   renders: 0,
   errors: 0,
   imageUrl: null,
@@ -66,6 +71,8 @@ function sync() {
   const view = $('view');
   view.style.aspectRatio = `${shown.width} / ${shown.height}`;
   view.style.maxWidth = `${shown.width}px`;
+  for (const radio of document.querySelectorAll('#layers input')) radio.checked = radio.value === shown.output;
+  syncSheet(shown);
 }
 
 function change(pointer, value, final) {
@@ -76,6 +83,8 @@ function change(pointer, value, final) {
 
 function bodyFor(kind) {
   const body = clone(studio.params);
+  // The live loop renders one image; the sheet section asks for the sheet.
+  delete body.sheet;
   if (kind === 'quick') {
     const shown = effective();
     const scale = Math.min(1, QUICK_SIDE / Math.max(shown.width, shown.height));
@@ -103,7 +112,9 @@ function showImage({ blob, kind, ms, timing, passes }) {
     studio.downloadUrl = url;
     const link = $('download');
     link.href = url;
+    link.download = `toond-${effective().output ?? 'color'}.png`;
     link.removeAttribute('aria-disabled');
+    if (studio.params.sheet && !studio.loop.next) studio.sheet.schedule();
   }
   // The server's own `total` (GPU-timed passes may overlap the thread's
   // time, so they need not add up to it); older daemons: the sum.
@@ -338,6 +349,131 @@ function toggleHelp() {
   else help.showModal();
 }
 
+// ---- layers ---------------------------------------------------------------------
+
+// One button per value of the schema's `output` (a daemon without it shows none).
+function installLayers() {
+  const schema = studio.schema.properties.output;
+  if (!Array.isArray(schema?.enum)) return;
+  const box = $('layers');
+  box.title = schema.description ?? '';
+  for (const value of schema.enum) {
+    const id = `layer-${value}`;
+    const radio = Object.assign(document.createElement('input'), { type: 'radio', name: 'layer', id, value });
+    const label = Object.assign(document.createElement('label'), { htmlFor: id, textContent: value });
+    radio.addEventListener('change', () => {
+      if (radio.checked) change('/output', value === schema.default ? undefined : value, true);
+    });
+    box.append(radio, label);
+  }
+  box.hidden = false;
+}
+
+// ---- sprite sheet ---------------------------------------------------------------
+
+function sheetOn() {
+  return studio.params.sheet !== undefined;
+}
+
+function syncSheet(shown) {
+  if (!studio.sheetPanel) return;
+  $('sheet-toggle').checked = sheetOn();
+  $('sheet-controls').hidden = !sheetOn();
+  $('sheet-frame').hidden = !sheetOn() || !studio.sheetUrl;
+  if (!sheetOn()) {
+    $('sheet-status').textContent = '';
+    $('sheet-error').textContent = '';
+    for (const id of ['sheet-download', 'atlas-download']) $(id).hidden = true;
+  }
+  studio.sheetPanel.render(shown);
+}
+
+function replaceUrl(key, url) {
+  if (studio[key]) URL.revokeObjectURL(studio[key]);
+  studio[key] = url;
+  return url;
+}
+
+// The atlas's frames as boxes over the sheet, in percent of its size so
+// they follow the image however wide it is shown.
+function showTiles(atlas) {
+  const size = atlas.meta?.size ?? { w: 1, h: 1 };
+  const layer = $('sheet-tiles');
+  layer.replaceChildren();
+  const frames = Object.entries(atlas.frames ?? {});
+  for (const [name, f] of frames) {
+    const tile = document.createElement('div');
+    tile.className = 'tile';
+    tile.dataset.frame = name;
+    Object.assign(tile.style, {
+      left: `${(f.frame.x / size.w) * 100}%`, top: `${(f.frame.y / size.h) * 100}%`,
+      width: `${(f.frame.w / size.w) * 100}%`, height: `${(f.frame.h / size.h) * 100}%`,
+    });
+    const label = `${name} · yaw ${+f.yaw.toFixed(2)}° · pitch ${+f.pitch.toFixed(2)}°`;
+    tile.title = label;
+    const tag = document.createElement('span');
+    tag.textContent = label;
+    tile.append(tag);
+    layer.append(tile);
+  }
+  return frames.length;
+}
+
+function showSheet({ blob, atlas, ms }) {
+  const view = $('sheet-view');
+  view.src = replaceUrl('sheetUrl', URL.createObjectURL(blob));
+  const count = showTiles(atlas);
+  const size = atlas.meta?.size;
+  view.dataset.frames = String(count);
+  view.dataset.sheets = String(Number(view.dataset.sheets || 0) + 1);
+  $('sheet-frame').hidden = false;
+  $('sheet-error').textContent = '';
+  $('sheet-status').textContent = `${count} frames · ${size?.w}×${size?.h} px · ${Math.round(ms)} ms`;
+  const png = $('sheet-download');
+  png.href = studio.sheetUrl;
+  png.hidden = false;
+  const json = $('atlas-download');
+  json.href = replaceUrl('atlasUrl', URL.createObjectURL(new Blob([JSON.stringify(atlas, null, 2)],
+    { type: 'application/json' })));
+  json.hidden = false;
+}
+
+function showSheetError(error) {
+  if (error instanceof LostServer) {
+    lostServer(error.retryAfter);
+    return;
+  }
+  const where = error.path ? ` at ${error.path}` : '';
+  $('sheet-error').textContent = `${error.status} ${error.code ?? ''}${where}: ${error.message}`;
+  if (error.path) studio.sheetPanel.showError(error.path, error.message);
+}
+
+function installSheet() {
+  if (!studio.schema.properties.sheet?.properties) return;
+  studio.sheetPanel = new ControlPanel($('sheet-controls'), studio.schema, {
+    change,
+    addItem: () => {},
+    removeItem: () => {},
+  }, { only: ['sheet'] });
+  studio.sheet = new SheetPreview({
+    bodyFor: () => (sheetOn() ? clone(studio.params) : null),
+    onSheet: showSheet,
+    onError: showSheetError,
+    onBusy: (busy) => { $('sheet').classList.toggle('busy', busy); },
+  });
+  $('sheet-toggle').addEventListener('change', (e) => {
+    if (e.target.checked) studio.params.sheet = {};
+    else {
+      delete studio.params.sheet;
+      studio.sheet.cancel();
+    }
+    sync();
+    // The single image is already current: the sheet need not wait for it.
+    if (sheetOn()) studio.sheet.schedule(0);
+  });
+  $('sheet').hidden = false;
+}
+
 // ---- output -------------------------------------------------------------------
 
 function installOutput() {
@@ -397,6 +533,8 @@ async function start() {
     removeItem: (pointer) => change(pointer, undefined, true),
   });
   studio.loop = new RenderLoop({ bodyFor, onImage: showImage, onError: showRenderError });
+  installLayers();
+  installSheet();
   installUpload();
   installOrbit();
   installOutput();

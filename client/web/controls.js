@@ -2,12 +2,14 @@
 // a group per block, a slider and number box per number, a colour picker per
 // colour, a toggle per boolean, a select per enum. Nothing here names a
 // parameter, so a parameter added to proto/ appears with no page change.
+// A control whose field the render would ignore (the schema's
+// x-applies-when) is hidden until it matters again.
+import { applies } from './applies.js';
 import { getPointer, isPlainObject } from './params.js';
 
-// Chosen elsewhere on the page: the model list, the preset menu, scenes.
-// `sheet` turns the preview into a sprite sheet, which the page does not
-// show yet: it is asked for with curl or the CLI.
-const HANDLED_ELSEWHERE = new Set(['model', 'preset', 'objects', 'sheet']);
+// Chosen elsewhere on the page: the model list, the preset menu, scenes
+// (curl or the CLI only), the layer switcher and the sprite-sheet section.
+const HANDLED_ELSEWHERE = new Set(['model', 'preset', 'objects', 'output', 'sheet']);
 // Top-level scalars that belong with a block rather than with the output.
 const GROUP_OF_SCALAR = { ambient: 'lights', light_combine: 'lights' };
 // Ranges this wide (model units up to 1e12) make a useless slider; such a
@@ -20,9 +22,26 @@ const AXIS_NAMES = ['x', 'y', 'z', 'w'];
 const GROUP_ORDER = ['camera', 'lights', 'shading', 'specular', 'rim', 'halftone', 'outline', 'contour', 'shadows',
   'floor'];
 
-// Within a block the switch comes first, the rest by name.
+// The fields a block's other fields depend on (x-applies-when names them:
+// `enabled`, a light's `type`, the shading `mode`), when they are a toggle
+// or a choice.
+function switchesOf(schema) {
+  const named = new Set();
+  for (const sub of Object.values(schema.properties)) {
+    for (const key of Object.keys(sub['x-applies-when'] ?? {})) {
+      const target = schema.properties[key];
+      if (target && (target.type === 'boolean' || Array.isArray(target.enum))) named.add(key);
+    }
+  }
+  return named;
+}
+
+// Within a block `enabled` comes first, then the other switches, so what
+// they show or hide follows them; the rest by name.
 function orderedProperties(schema) {
-  return Object.entries(schema.properties).sort(([a], [b]) => (a === 'enabled' ? -1 : b === 'enabled' ? 1 : a < b ? -1 : 1));
+  const switches = switchesOf(schema);
+  const rank = (name) => (name === 'enabled' ? 0 : switches.has(name) ? 1 : 2);
+  return Object.entries(schema.properties).sort(([a], [b]) => rank(a) - rank(b) || (a < b ? -1 : 1));
 }
 
 function labelText(name) {
@@ -93,10 +112,13 @@ function el(tag, attrs = {}, ...children) {
 export class ControlPanel {
   // handlers.change(pointer, value, final): a control moved (final: released).
   // handlers.addItem(pointer, item) / handlers.removeItem(pointer).
-  constructor(root, schema, handlers) {
+  // options.only: build just these top-level blocks, without their group
+  // boxes (the sprite-sheet section's own controls).
+  constructor(root, schema, handlers, options = {}) {
     this.root = root;
     this.schema = schema;
     this.handlers = handlers;
+    this.only = options.only ?? null;
     this.updaters = [];
     this.shape = null;
     this.openGroups = new Set(['camera', 'lights', 'outline']);
@@ -105,6 +127,7 @@ export class ControlPanel {
   // Redraws when the number of lights or ramp stops changed, else only
   // refreshes values (so a focused control keeps its focus while dragging).
   render(effective) {
+    this.effective = effective;
     const shape = this.shapeOf(this.schema, effective, '');
     if (shape !== this.shape) {
       this.shape = shape;
@@ -135,6 +158,10 @@ export class ControlPanel {
     this.root.replaceChildren();
     const groups = new Map();
     const groupBody = (name) => {
+      if (this.only && !groups.has(name)) {
+        const body = el('div', { class: 'group-body', 'data-group': name });
+        groups.set(name, { details: body, body });
+      }
       if (!groups.has(name)) {
         const body = el('div', { class: 'group-body' });
         const details = el('details', { 'data-group': name, open: this.openGroups.has(name) },
@@ -145,12 +172,13 @@ export class ControlPanel {
     };
     const props = this.schema.properties;
     for (const [name, sub] of Object.entries(props)) {
-      if (HANDLED_ELSEWHERE.has(name)) continue;
+      if (this.only ? !this.only.includes(name) : HANDLED_ELSEWHERE.has(name)) continue;
       const pointer = '/' + name;
       if (sub.type === 'object' && sub.properties) {
         const body = groupBody(name);
-        if (sub.description) body.append(el('p', { class: 'hint', text: sub.description }));
+        if (sub.description && !this.only) body.append(el('p', { class: 'hint', text: sub.description }));
         this.buildProperties(body, sub, pointer, effective);
+        this.hideUnlessApplies(groups.get(name).details, sub, pointer);
       } else {
         this.buildField(groupBody(GROUP_OF_SCALAR[name] ?? (sub.type === 'array' && sub.items?.type === 'object' ? name : 'output')),
           name, sub, pointer, effective);
@@ -168,7 +196,25 @@ export class ControlPanel {
     }
   }
 
+  // Shows `node` only while the schema's conditions for `pointer` hold.
+  hideUnlessApplies(node, schema, pointer) {
+    const conditions = schema['x-applies-when'];
+    if (!conditions) return;
+    this.updaters.push((effective) => {
+      const on = applies(conditions, pointer, effective);
+      node.hidden = !on;
+      node.dataset.applies = on ? 'yes' : 'no';
+    });
+  }
+
+  // Every builder below appends exactly one element: the one hidden when
+  // the field does not apply.
   buildField(parent, name, schema, pointer, effective) {
+    this.buildControl(parent, name, schema, pointer, effective);
+    this.hideUnlessApplies(parent.lastElementChild, schema, pointer);
+  }
+
+  buildControl(parent, name, schema, pointer, effective) {
     const multi = multiEnumOf(schema);
     const values = enumOf(schema);
     if (schema.type === 'object' && schema.properties) {
@@ -182,9 +228,21 @@ export class ControlPanel {
     } else if (schema.type === 'array' && ['number', 'integer'].includes(schema.items?.type)
                && schema.maxItems && schema.maxItems <= 4) {
       const box = el('fieldset', { class: 'sub vector', 'data-path': pointer }, el('legend', { text: labelText(name) }));
+      // A vector with no value yet (a point light's position, which has no
+      // default) starts as zeros around the component typed, so the request
+      // holds a whole vector rather than one number.
+      const send = (at, value, final) => {
+        if (Array.isArray(getPointer(this.effective, pointer)) || value === undefined) {
+          this.handlers.change(at, value, final);
+        } else {
+          const vector = new Array(schema.minItems ?? schema.maxItems).fill(0);
+          vector[Number(at.slice(at.lastIndexOf('/') + 1))] = value;
+          this.handlers.change(pointer, vector, final);
+        }
+      };
       for (let i = 0; i < schema.maxItems; i++) {
         this.numberField(box, AXIS_NAMES[i], { ...schema.items, 'x-slider': schema['x-slider'] }, pointer + '/' + i,
-          labelText(name) + ' ' + AXIS_NAMES[i]);
+          labelText(name) + ' ' + AXIS_NAMES[i], send);
       }
       parent.append(box);
     } else if (schema.type === 'number' || schema.type === 'integer') {
@@ -207,7 +265,7 @@ export class ControlPanel {
     return box;
   }
 
-  numberField(parent, name, schema, pointer, accessibleName) {
+  numberField(parent, name, schema, pointer, accessibleName, send = this.handlers.change) {
     const id = fieldId(pointer);
     const range = sliderRange(schema);
     const number = el('input', {
@@ -219,14 +277,14 @@ export class ControlPanel {
     if (slider) {
       slider.addEventListener('input', () => {
         number.value = slider.value;
-        this.handlers.change(pointer, Number(slider.value), false);
+        send(pointer, Number(slider.value), false);
       });
-      slider.addEventListener('change', () => this.handlers.change(pointer, Number(slider.value), true));
+      slider.addEventListener('change', () => send(pointer, Number(slider.value), true));
     }
     number.addEventListener('change', () => {
       const text = number.value.trim();
       // An empty box gives the parameter back to the preset or default.
-      this.handlers.change(pointer, text === '' ? undefined : Number(text), true);
+      send(pointer, text === '' ? undefined : Number(text), true);
     });
     const label = el('label', { for: id, text: name });
     if (accessibleName !== name) label.setAttribute('aria-label', accessibleName);
@@ -370,7 +428,8 @@ export class ControlPanel {
     let path = pointer;
     while (path) {
       const field = [...this.root.querySelectorAll('[data-path]')].find((f) => f.dataset.path === path);
-      if (field) {
+      // A hidden control cannot show the message; the nearest shown one above it does.
+      if (field && !field.closest('[hidden]')) {
         const box = field.closest('.field, fieldset') ?? field;
         box.classList.add('invalid');
         for (const input of box.querySelectorAll('input, select')) input.setAttribute('aria-invalid', 'true');

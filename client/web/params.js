@@ -77,16 +77,20 @@ export function setPointer(params, effective, pointer, value) {
   } else {
     node[last] = value;
   }
-  pruneEmpty(params);
+  pruneEmpty(params, true);
 }
+
+// Blocks whose presence is itself a request, even with nothing in them:
+// `"sheet": {}` asks for the default sprite sheet.
+const MEANS_SOMETHING_EMPTY = new Set(['sheet']);
 
 // Empty objects left after removing overrides say nothing; drop them so the
 // URL and the copied JSON stay short.
-function pruneEmpty(node) {
+function pruneEmpty(node, top = false) {
   for (const [key, value] of Object.entries(node)) {
     if (isPlainObject(value)) {
       pruneEmpty(value);
-      if (Object.keys(value).length === 0) delete node[key];
+      if (Object.keys(value).length === 0 && !(top && MEANS_SOMETHING_EMPTY.has(key))) delete node[key];
     }
   }
 }
@@ -97,9 +101,10 @@ export function effectiveParams(defaults, presets, params) {
   return deepMerge(deepMerge(defaults, preset), params);
 }
 
-// Choosing a look keeps the view (model, camera, image size) and drops the
-// other overrides, so the preset is seen as it was designed.
-export const VIEW_KEYS = ['model', 'camera', 'width', 'height'];
+// Choosing a look keeps the view (model, camera, image size, the layer
+// shown, the sprite sheet) and drops the other overrides, so the preset is
+// seen as it was designed.
+export const VIEW_KEYS = ['model', 'camera', 'width', 'height', 'output', 'sheet'];
 
 export function withPreset(params, preset) {
   const out = {};

@@ -1,5 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
+#include <string>
+#include <vector>
+
 #include "http/render_params_wire.h"
 #include "param_schema.h"
 #include "render/render_params.h"
@@ -55,6 +60,105 @@ TEST(ParamSchema, ErrorPathsPointAtTheField) {
   EXPECT_EQ(error_path({{"lights", {{{"direction", {0, 0, -1}}}}}}), "/lights/0") << "type is required";
   EXPECT_EQ(error_path({{"outline", {{"color", {0, 0}}}}}), "/outline/color");
   EXPECT_EQ(error_path({{"msaa", 4}}), "(accepted)");
+}
+
+// x-applies-when is read by the page alone, so nothing else would notice a
+// condition naming a field that does not exist, a value the field cannot
+// take, or a keyword the page does not evaluate (see the schema's $comment
+// and client/web/applies.js).
+const json* field_at_pointer(const json& root, const std::string& pointer) {
+  const json* s = &root;
+  std::size_t start = 1;
+  while (start <= pointer.size()) {
+    std::size_t slash = pointer.find('/', start);
+    if (slash == std::string::npos) slash = pointer.size();
+    const std::string seg = pointer.substr(start, slash - start);
+    if (s->contains("properties") && (*s)["properties"].contains(seg)) s = &(*s)["properties"][seg];
+    else if (s->contains("items") && seg.find_first_not_of("0123456789") == std::string::npos) s = &(*s)["items"];
+    else return nullptr;
+    start = slash + 1;
+  }
+  return s;
+}
+
+void check_condition(const json& condition, const json& field, const std::string& where,
+                     std::vector<std::string>& problems) {
+  static const std::set<std::string> known = {"const", "enum", "not", "anyOf", "allOf", "type", "properties",
+                                              "contains", "minItems", "maxItems", "minLength", "maxLength"};
+  if (!condition.is_object()) {
+    problems.push_back(where + ": not a schema");
+    return;
+  }
+  for (const auto& [keyword, value] : condition.items()) {
+    if (!known.contains(keyword)) problems.push_back(where + ": keyword " + keyword + " is not evaluated by the page");
+  }
+  // A value the field cannot take (a misspelt enum name) would hide a control for good.
+  auto allowed = [&](const json& v) {
+    if (!field.contains("enum")) return;
+    const auto& e = field["enum"];
+    if (std::find(e.begin(), e.end(), v) == e.end()) problems.push_back(where + ": " + v.dump() + " is not in its enum");
+  };
+  if (condition.contains("const")) allowed(condition["const"]);
+  if (condition.contains("enum")) for (const auto& v : condition["enum"]) allowed(v);
+  for (const char* sub : {"anyOf", "allOf"}) {
+    if (condition.contains(sub)) for (const auto& s : condition[sub]) check_condition(s, field, where, problems);
+  }
+  if (condition.contains("not")) check_condition(condition["not"], field, where, problems);
+  if (condition.contains("contains")) {
+    const json* items = field.contains("items") ? &field["items"] : nullptr;
+    // outline.method: a name or a list of names; its list form holds the items.
+    if (!items && field.contains("oneOf")) {
+      for (const auto& alt : field["oneOf"]) if (alt.contains("items")) items = &alt["items"];
+    }
+    if (items) check_condition(condition["contains"], *items, where + " contains", problems);
+    else problems.push_back(where + ": contains on a field without items");
+  }
+  if (condition.contains("properties")) {
+    for (const auto& [key, sub] : condition["properties"].items()) {
+      const json* child = field.contains("properties") && field["properties"].contains(key) ? &field["properties"][key]
+                                                                                           : nullptr;
+      if (!child) problems.push_back(where + ": no property " + key);
+      else check_condition(sub, *child, where + "/" + key, problems);
+    }
+  }
+}
+
+void check_applies_when(const json& root, const json& node, const std::string& pointer, int& count,
+                        std::vector<std::string>& problems) {
+  if (!node.is_object()) return;
+  if (node.contains("properties")) {
+    for (const auto& [name, sub] : node["properties"].items()) {
+      const std::string here = pointer + "/" + name;
+      if (sub.contains("x-applies-when")) {
+        for (const auto& [key, condition] : sub["x-applies-when"].items()) {
+          ++count;
+          const json* field = key.starts_with("/") ? field_at_pointer(root, key)
+                              : node["properties"].contains(key) ? &node["properties"][key]
+                                                                 : nullptr;
+          if (!field) problems.push_back(here + ": names no field " + key);
+          else check_condition(condition, *field, here + " when " + key, problems);
+        }
+      }
+      check_applies_when(root, sub, here, count, problems);
+    }
+  }
+  if (node.contains("items")) check_applies_when(root, node["items"], pointer + "/0", count, problems);
+}
+
+TEST(ParamSchema, AppliesWhenNamesRealFieldsAndValues) {
+  const json& doc = schema().document();
+  int count = 0;
+  std::vector<std::string> problems;
+  check_applies_when(doc, doc, "", count, problems);
+  EXPECT_GT(count, 40) << "the conditions were not found";
+  for (const auto& p : problems) ADD_FAILURE() << p;
+}
+
+TEST(ParamSchema, AppliesWhenIsIgnoredByValidation) {
+  // Conditions hide controls; they never refuse a request. A directional
+  // light with a position, or a disabled rim with a power, stays valid.
+  EXPECT_EQ(error_path({{"lights", {{{"type", "directional"}, {"position", {1, 2, 3}}}}}}), "(accepted)");
+  EXPECT_EQ(error_path({{"rim", {{"enabled", false}, {"power", 8}}}, {"shading", {{"mode", "flat"}}}}), "(accepted)");
 }
 
 TEST(ParamSchema, UnknownFieldErrorCode) {

@@ -1,0 +1,331 @@
+// The page's output tools in a real browser (Debian's chromium through
+// playwright-core, a real toond on 127.0.0.1:0): controls shown only where
+// the schema's x-applies-when says they matter, the layer switcher
+// (`output`), and the sprite-sheet preview with its atlas.
+//   node layers.test.mjs --toond PATH --artifacts DIR
+// Exit 0: every check passed; 1: a check failed; 77 (CTest SKIP_RETURN_CODE):
+// the rest passed but this toond renders colour whatever `output` says, so
+// the lines layer's pixels could not be checked. Screenshots go to --artifacts.
+import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { startDaemon } from './daemon.mjs';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const { chromium } = await import(path.join(here, 'node_modules/playwright-core/index.mjs')).catch(() => {
+  console.error('playwright-core is not installed: run tests/browser/install.sh');
+  process.exit(1);
+});
+
+const SKIP = 77;
+const STEP_TIMEOUT_MS = Number(process.env.TOOND_BROWSER_STEP_TIMEOUT_MS || 45000);
+
+function argument(name) {
+  const i = process.argv.indexOf(name);
+  if (i < 0 || i + 1 >= process.argv.length) throw new Error(`missing ${name}`);
+  return process.argv[i + 1];
+}
+
+const toondBinary = argument('--toond');
+const artifacts = argument('--artifacts');
+mkdirSync(artifacts, { recursive: true });
+
+let failures = 0;
+const skipped = [];
+function check(condition, what, detail = '') {
+  console.log(`${condition ? 'ok  ' : 'FAIL'} ${what}${detail ? ` (${detail})` : ''}`);
+  if (!condition) failures += 1;
+}
+
+async function shot(page, name) {
+  const file = path.join(artifacts, name);
+  await page.screenshot({ path: file, fullPage: true });
+  console.log(`     screenshot ${file}`);
+}
+
+async function rendersShown(page) {
+  return Number((await page.getAttribute('#view', 'data-renders')) || 0);
+}
+
+async function waitForFullRender(page, after) {
+  await page.waitForFunction((n) => {
+    const v = document.getElementById('view');
+    return Number(v.dataset.renders || 0) > n && v.dataset.kind === 'full' && v.dataset.settled === 'yes';
+  }, after, { timeout: STEP_TIMEOUT_MS });
+}
+
+async function waitForRenderError(page, after) {
+  await page.waitForFunction((n) => Number(document.getElementById('view').dataset.errors || 0) > n, after,
+    { timeout: STEP_TIMEOUT_MS });
+}
+
+// Shown: neither the control nor anything above it is hidden.
+function shown(page, pointer) {
+  return page.locator(`[data-path="${pointer}"]`).first().isVisible();
+}
+
+// Decodes an image on the page: size, pixels with alpha below 255, a hash.
+function imageStats(page, selector) {
+  return page.evaluate(async (sel) => {
+    const blob = await (await fetch(document.querySelector(sel).src)).blob();
+    const bitmap = await createImageBitmap(blob, { premultiplyAlpha: 'none' });
+    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+    const g = canvas.getContext('2d');
+    g.drawImage(bitmap, 0, 0);
+    const d = g.getImageData(0, 0, bitmap.width, bitmap.height).data;
+    let transparent = 0;
+    let hash = 2166136261;
+    for (let i = 0; i < d.length; i += 4) {
+      if (d[i + 3] < 255) transparent += 1;
+      hash = Math.imul(hash ^ (d[i] | (d[i + 1] << 8) | (d[i + 2] << 16) | (d[i + 3] << 24)), 16777619) >>> 0;
+    }
+    return { width: bitmap.width, height: bitmap.height, transparent, hash };
+  }, selector);
+}
+
+async function dragSlider(page, pointer, to) {
+  const slider = page.locator(`[data-path="${pointer}"] input[type=range]`);
+  await slider.scrollIntoViewIfNeeded();
+  const box = await slider.boundingBox();
+  const [min, max, value] = await slider.evaluate((s) => [Number(s.min), Number(s.max), Number(s.value)]);
+  const xOf = (v) => box.x + 8 + ((v - min) / (max - min)) * (box.width - 16);
+  const y = box.y + box.height / 2;
+  await page.mouse.move(xOf(value), y);
+  await page.mouse.down();
+  for (let i = 1; i <= 8; i++) await page.mouse.move(xOf(value + ((to - value) * i) / 8), y);
+  await page.mouse.up();
+}
+
+// ---- the checks -----------------------------------------------------------------
+
+async function checkLightType(page) {
+  check(await shown(page, '/lights/0/direction') && !(await shown(page, '/lights/0/position'))
+        && !(await shown(page, '/lights/0/radius')),
+  'a directional light shows its direction, not a position or radius');
+  const errors = Number((await page.getAttribute('#view', 'data-errors')) || 0);
+  await page.selectOption('#f-lights-0-type', 'point');
+  check(await shown(page, '/lights/0/position') && await shown(page, '/lights/0/radius')
+        && !(await shown(page, '/lights/0/direction')),
+  'switching to a point light shows position and radius and hides direction');
+  // A point light needs a position: the server's 400 lands on the box now shown.
+  await waitForRenderError(page, errors);
+  const light = page.locator('fieldset[data-path="/lights/0"]');
+  check(await light.evaluate((f) => f.classList.contains('invalid'))
+        && /position/.test(await light.locator('.field-error').first().textContent()),
+  'the missing position is named at the light');
+  await shot(page, '11-point-light.png');
+  for (const [i, v] of [2, 3, 4].entries()) {
+    const box = page.locator(`[data-path="/lights/0/position/${i}"] input[type=number]`);
+    await box.fill(String(v));
+    await box.press('Enter');
+  }
+  const rendered = await rendersShown(page);
+  await page.selectOption('#f-lights-0-type', 'directional');
+  await waitForFullRender(page, rendered);
+  check(!(await shown(page, '/lights/0/position')) && await shown(page, '/lights/0/direction'),
+    'back to directional hides the position again');
+}
+
+async function checkGroupSwitches(page) {
+  check(!(await shown(page, '/rim/power')) && !(await shown(page, '/rim/color')),
+    'rim is off by default: its power and colour are hidden');
+  await page.check('#f-rim-enabled');
+  check(await shown(page, '/rim/power') && await shown(page, '/rim/mask'), 'switching rim on shows its controls');
+  await page.uncheck('#f-rim-enabled');
+  check(!(await shown(page, '/rim/power')), 'switching rim off hides them again');
+  check(await shown(page, '/outline/width'), 'outline is on by default: its width is shown');
+  await page.uncheck('#f-outline-enabled');
+  check(!(await shown(page, '/outline/width')) && !(await shown(page, '/outline/method'))
+        && await shown(page, '/outline/enabled'), 'switching the outline off hides all but its switch');
+  await page.check('#f-outline-enabled');
+  check(!(await shown(page, '/outline/darken')), 'the darkening of material-coloured lines hides with a fixed colour');
+  await page.selectOption('#f-outline-color-mode', 'material');
+  check(await shown(page, '/outline/darken') && !(await shown(page, '/outline/color')),
+    'material-coloured lines show darken, not the fixed colour');
+  await page.selectOption('#f-outline-color-mode', 'fixed');
+  check(!(await shown(page, '/floor/size')), 'floor sub-controls hidden while the floor is off');
+  check(!(await shown(page, '/shadows/map_size')) && await shown(page, '/shadows/enabled'),
+    'shadow sub-controls hidden while shadows are off');
+
+  check(await shown(page, '/shading/steps') && await shown(page, '/shading/two_tone'), 'cel mode shows the bands');
+  await page.selectOption('#f-shading-mode', 'phong');
+  check(!(await shown(page, '/shading/steps')) && !(await shown(page, '/shading/rounding'))
+        && !(await shown(page, '/shading/band_aa')) && !(await shown(page, '/shading/two_tone'))
+        && !(await shown(page, '/shading/ramp')),
+  'phong hides the cel-only controls');
+  check(await page.locator('details[data-group=specular]').isVisible(), 'phong keeps the specular group');
+  await page.selectOption('#f-shading-mode', 'flat');
+  check(!(await page.locator('details[data-group=specular]').isVisible())
+        && !(await page.locator('details[data-group=rim]').isVisible()),
+  'flat (unlit) hides the lighting effects');
+  await shot(page, '12-flat-mode-controls.png');
+  const rendered = await rendersShown(page);
+  await page.selectOption('#f-shading-mode', 'cel');
+  await waitForFullRender(page, rendered);
+  check(await shown(page, '/shading/steps'), 'cel again shows the bands');
+}
+
+async function checkLayers(page, requests) {
+  const buttons = await page.locator('#layers input[type=radio]').evaluateAll((r) => r.map((e) => e.value));
+  check(JSON.stringify(buttons) === JSON.stringify(['color', 'lines', 'depth', 'normal', 'id']),
+    'a layer button per value of the schema\'s output', buttons.join(' '));
+  check(await page.isChecked('#layer-color'), 'colour is the layer shown first');
+  const colour = await imageStats(page, '#view');
+  const background = await page.locator('#view').evaluate((v) => getComputedStyle(v).backgroundImage);
+  check(/conic-gradient/.test(background), 'the image lies on a checkerboard', background.slice(0, 40));
+
+  requests.length = 0;
+  let rendered = await rendersShown(page);
+  await page.click('label[for=layer-lines]');
+  await waitForFullRender(page, rendered);
+  const last = requests[requests.length - 1];
+  check(last?.output === 'lines', 'the lines button renders with output "lines"', JSON.stringify(last));
+  check(decodeURIComponent(page.url()).includes('"output":"lines"'), 'the URL keeps the layer');
+  check(await page.getAttribute('#download', 'download') === 'toond-lines.png', 'the download is named for the layer');
+  const lines = await imageStats(page, '#view');
+  if (lines.transparent > 0) {
+    check(lines.hash !== colour.hash, 'the lines layer is another image than the colour one');
+    check(lines.transparent > lines.width * lines.height * 0.5, 'the lines layer is mostly transparent',
+      `${lines.transparent} of ${lines.width * lines.height} pixels`);
+  } else if (lines.hash === colour.hash) {
+    skipped.push('this toond renders colour for output "lines" (the layers are not in this daemon)');
+    console.log('SKIP the lines layer\'s pixels: this toond answers the colour image for output "lines"');
+  } else {
+    check(false, 'the lines layer has transparent pixels', `${lines.transparent} transparent`);
+  }
+  await shot(page, '13-lines-layer.png');
+
+  for (const layer of ['depth', 'normal', 'id']) {
+    rendered = await rendersShown(page);
+    await page.click(`label[for=layer-${layer}]`);
+    await waitForFullRender(page, rendered);
+    check(requests[requests.length - 1]?.output === layer, `the ${layer} button renders with output "${layer}"`);
+  }
+  rendered = await rendersShown(page);
+  await page.click('label[for=layer-color]');
+  await waitForFullRender(page, rendered);
+  const back = requests[requests.length - 1];
+  check(back && (back.output ?? 'color') === 'color', 'colour again leaves output to its default', JSON.stringify(back));
+  check((await imageStats(page, '#view')).hash === colour.hash, 'and shows the colour image again');
+}
+
+async function checkSheet(page, requests) {
+  check(await page.locator('#sheet-toggle').isVisible() && !(await shown(page, '/sheet/frames')),
+    'a sprite-sheet switch, its controls hidden while off');
+  requests.length = 0;
+  await page.check('#sheet-toggle');
+  check(await shown(page, '/sheet/frames') && await shown(page, '/sheet/columns'),
+    'switching the sheet on shows its controls from the schema');
+  for (const [field, value] of [['frames', 6], ['columns', 3]]) {
+    const box = page.locator(`[data-path="/sheet/${field}"] input[type=number]`);
+    await box.fill(String(value));
+    await box.press('Enter');
+  }
+  await page.waitForFunction(() => document.getElementById('sheet-view').dataset.frames === '6'
+    && !document.getElementById('sheet').classList.contains('busy'), null, { timeout: STEP_TIMEOUT_MS });
+  const tiles = await page.locator('#sheet-tiles .tile').count();
+  check(tiles === 6, 'the sheet preview outlines as many tiles as frames', `${tiles} tiles`);
+  const sheetBodies = requests.filter((r) => r.body.sheet);
+  const atlas = sheetBodies.filter((r) => r.url.endsWith('?atlas=json'));
+  const last = atlas[atlas.length - 1];
+  check(last && last.body.sheet.frames === 6 && last.body.sheet.columns === 3,
+    'the atlas is asked for with ?atlas=json and the sheet', JSON.stringify(last?.body.sheet));
+  check(sheetBodies.some((r) => !r.url.includes('?') && JSON.stringify(r.body) === JSON.stringify(last?.body)),
+    'the sheet image is asked for with the same body');
+  const sheet = await imageStats(page, '#sheet-view');
+  const single = await imageStats(page, '#view');
+  check(sheet.width === 3 * single.width && sheet.height === 2 * single.height,
+    'the sheet is 3 tiles across and 2 down', `${sheet.width}×${sheet.height}, tile ${single.width}×${single.height}`);
+  check(/6 frames/.test(await page.textContent('#sheet-status')), 'the frame count is shown',
+    await page.textContent('#sheet-status'));
+  const tile = page.locator('#sheet-tiles .tile').nth(4);
+  await tile.hover();
+  const label = tile.locator('span');
+  check(await label.isVisible() && /frame_004 · yaw/.test(await label.textContent()),
+    'hovering a tile outlines it and names its frame and yaw', await label.textContent());
+  await shot(page, '14-sprite-sheet.png');
+
+  // Dragging a slider with the sheet on: the live loop's quick renders go
+  // on alone, and the sheet follows once, when the drag has ended.
+  const sheets = Number(await page.getAttribute('#sheet-view', 'data-sheets'));
+  const rendered = await rendersShown(page);
+  requests.length = 0;
+  await dragSlider(page, '/outline/width', 6);
+  await waitForFullRender(page, rendered);
+  await page.waitForFunction((n) => Number(document.getElementById('sheet-view').dataset.sheets) > n
+    && !document.getElementById('sheet').classList.contains('busy'), sheets, { timeout: STEP_TIMEOUT_MS });
+  const quick = requests.filter((r) => !r.body.sheet && r.body.msaa === 1).length;
+  const sheetRenders = requests.filter((r) => r.body.sheet && !r.url.includes('?')).length;
+  check(quick >= 2 && sheetRenders === 1, 'a drag renders quick single images and one sheet at its end',
+    `${quick} quick renders, ${sheetRenders} sheet renders`);
+  check(requests.filter((r) => r.body.sheet).every((r) => r.body.outline?.width === requests.at(-1).body.outline?.width),
+    'the sheet shows the released value');
+  check(decodeURIComponent(page.url()).includes('"sheet":{'), 'the URL keeps the sheet');
+  await page.uncheck('#sheet-toggle');
+  check(await page.locator('#sheet-frame').isHidden() && !decodeURIComponent(page.url()).includes('"sheet"'),
+    'switching the sheet off hides it and drops it from the state');
+}
+
+// ---- main -------------------------------------------------------------------------
+
+const dataDir = mkdtempSync(path.join(tmpdir(), 'toond-layers-'));
+let daemon = null;
+let browser = null;
+const started = Date.now();
+try {
+  daemon = await startDaemon(toondBinary, '127.0.0.1:0', dataDir, STEP_TIMEOUT_MS);
+  console.log(`toond at ${daemon.url}`);
+  browser = await chromium.launch({
+    executablePath: '/usr/bin/chromium',
+    headless: true,
+    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update',
+      '--disable-default-apps', '--disable-sync', '--no-first-run'],
+  });
+  const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
+  const page = await context.newPage();
+  const pageErrors = [];
+  page.on('pageerror', (e) => pageErrors.push(e.message));
+  const requests = [];
+  page.on('request', (r) => {
+    if (!/\/render(\?|$)/.test(r.url())) return;
+    try { requests.push({ url: r.url(), body: JSON.parse(r.postData() || '{}') }); } catch { /* not JSON */ }
+  });
+  // Small tiles keep the sheet quick on llvmpipe. Each part starts from a
+  // fresh page, so one that fails does not hide what the others find.
+  const start = encodeURIComponent(JSON.stringify({ width: 192, height: 192 }));
+  const bodies = [];
+  page.on('request', (r) => {
+    if (/\/render$/.test(r.url())) try { bodies.push(JSON.parse(r.postData() || '{}')); } catch { /* not JSON */ }
+  });
+  for (const [name, part] of [['light type', checkLightType], ['group switches', checkGroupSwitches],
+    ['layers', (p) => checkLayers(p, bodies)], ['sprite sheet', (p) => checkSheet(p, requests)]]) {
+    try {
+      await page.goto('about:blank');
+      await page.goto(`${daemon.url}/#${start}`);
+      await waitForFullRender(page, 0);
+      // Closed groups would hide every control alike.
+      await page.evaluate(() => { for (const d of document.querySelectorAll('#panel details')) d.open = true; });
+      await part(page);
+    } catch (e) {
+      check(false, `the ${name} checks ran to the end`, e.stack || String(e));
+    }
+  }
+  check(pageErrors.length === 0, 'no uncaught errors in the page', pageErrors.join(' | '));
+} catch (e) {
+  check(false, 'the browser test ran to the end', e.stack || String(e));
+} finally {
+  if (browser) await browser.close();
+  if (daemon) {
+    daemon.child.kill('SIGKILL');
+  }
+  rmSync(dataDir, { recursive: true, force: true });
+}
+
+console.log(`layers test: ${failures} failed, ${((Date.now() - started) / 1000).toFixed(1)} s; screenshots in ${artifacts}`);
+if (failures > 0) process.exit(1);
+if (skipped.length > 0) {
+  console.log(`skipped: ${skipped.join('; ')}`);
+  process.exit(SKIP);
+}
+process.exit(0);
