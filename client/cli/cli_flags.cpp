@@ -46,6 +46,16 @@ void set_output(FlagTarget& t, Value v) {
   t.options.output = required(v, "-o needs a file name (or - for standard output)");
 }
 
+// --output names the layer (the schema's `output`, checked with the other
+// parameters); a file name there is the old spelling of -o.
+void set_output_layer(FlagTarget& t, Value v) {
+  if (v.empty() || v == "-" || v.find_first_of("./") != std::string::npos) {
+    throw UsageError("--output '" + v + "': --output names the layer (color, lines, depth, normal or id); " +
+                     "the file is -o FILE or --out FILE");
+  }
+  t.options.sets.emplace_back("output", v);
+}
+
 constexpr VerbSet kUpload = verb_set(Verb::upload);
 constexpr VerbSet kRender = verb_set(Verb::render);
 constexpr VerbSet kGallery = verb_set(Verb::gallery);
@@ -83,7 +93,11 @@ const Flag kFlags[] = {
        }
        t.options.sets.emplace_back(v.substr(0, eq), v.substr(eq + 1));
      }},
-    {{"-o", "--output", "FILE", "where to write the PNG (required; - for standard output)"}, kRender, false,
+    {{"", "--output", "LAYER",
+      "the layer to render: color (default), lines, depth,\n"
+      "normal or id; the same as --set output=LAYER"},
+     kRender, false, set_output_layer},
+    {{"-o", "--out", "FILE", "where to write the PNG (required; - for standard output)"}, kRender, false,
      set_output},
 
     {{"", "--models", "DIR", "the folder of model folders (default: ../shared/models)"}, kGallery, false,
@@ -99,7 +113,7 @@ const Flag kFlags[] = {
      }},
     {{"", "--size", "N", "width and height of each render in pixels (default 256)"}, kGallery, false,
      [](FlagTarget& t, Value v) { t.options.size = parse_size(v); }},
-    {{"-o", "--output", "DIR", "the folder to write (created if missing; required)"}, kGallery, false, set_output},
+    {{"-o", "--out", "DIR", "the folder to write (created if missing; required)"}, kGallery, false, set_output},
 };
 
 const VerbInfo kVerbs[] = {

@@ -37,7 +37,7 @@ struct Flag {
 // has a row for each.
 std::span<const Flag> flags();
 
-// How an error names a flag: "-o/--output", "--set".
+// How an error names a flag: "-o/--out", "--set".
 std::string flag_display(const text::OptionHelp& flag);
 
 struct VerbInfo {

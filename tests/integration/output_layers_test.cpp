@@ -15,6 +15,7 @@
 #include "image/png_codec.h"
 #include "image/srgb.h"
 #include "support/generated_models.h"
+#include "support/shared_models.h"
 #include "support/golden_compare.h"
 #include "test_client.h"
 
@@ -322,6 +323,19 @@ TEST_F(OutputLayers, TheDataLayersRunNoShadingAndNoOutline) {
     EXPECT_EQ(res->get_header_value("X-Toond-Passes"), "layer,readback") << output;
     EXPECT_EQ(res->get_header_value("X-Toond-Samples"), "1") << output;
   }
+}
+
+TEST_F(OutputLayers, TheCliAsksForALayerWithOutput) {
+  const auto png = make_temp_dir("toon-layer") / "lines.png";
+  const auto r = run_process({TOON_BINARY, "render", "--output", "lines", "--set", "width=48", "--set", "height=48",
+                              "-o", png.string(), "--server", daemon().url()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const image::Image lines = image::decode_png(read_file(png));
+  EXPECT_EQ(lines.pixel(0, 0)[3], 0) << "the lines layer is clear where there is no line";
+  const auto bad = run_process({TOON_BINARY, "render", "--output", "albedo", "-o", png.string(), "--server",
+                                daemon().url()});
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.err.find("output"), std::string::npos) << bad.err;
 }
 
 TEST_F(OutputLayers, BadOutputsAreRefused) {

@@ -165,7 +165,7 @@ TEST(CliArgs, RenderForms) {
   EXPECT_EQ(demo.output, "demo.png");
 
   const Options local =
-      parse({"render", "spot/spot.obj", "--output=spot.png", "--params", "p.json"});
+      parse({"render", "spot/spot.obj", "--out=spot.png", "--params", "p.json"});
   EXPECT_EQ(local.obj_path, "spot/spot.obj");
   EXPECT_EQ(local.output, "spot.png");
   EXPECT_EQ(local.params_file, "p.json");
@@ -176,6 +176,18 @@ TEST(CliArgs, RenderForms) {
 
   // After `--` a name that starts with '-' is a path, not an option.
   EXPECT_EQ(parse({"render", "-o", "x.png", "--", "-odd.obj"}).obj_path, "-odd.obj");
+}
+
+// --output names the layer, as --set output=LAYER does; a file name there
+// (the flag's old meaning) is pointed at -o.
+TEST(CliArgs, OutputNamesTheLayer) {
+  const Options lines = parse({"render", "--output", "lines", "-o", "lines.png"});
+  ASSERT_EQ(lines.sets.size(), 1u);
+  EXPECT_EQ(lines.sets[0], (std::pair<std::string, std::string>{"output", "lines"}));
+  EXPECT_EQ(lines.output, "lines.png");
+  for (const char* file : {"x.png", "-", "out/x"}) {
+    EXPECT_TRUE(contains(usage_error([&] { parse({"render", "--output", file}); }), "-o FILE")) << file;
+  }
 }
 
 TEST(CliArgs, SetNeedsKeyEqualsValue) {
