@@ -147,7 +147,8 @@ with neither the daemon's built-in demo model renders.
      "render every preset and effect on a folder of models into PNGs,\na contact sheet and an HTML index",
      R"(Renders every preset the daemon offers (GET /presets) and one look per
 effect (specular, rim, halftone, contours, shadows, two-tone, a colour ramp,
-outline colours, antialiasing, coloured and point lights) on each model, and
+outline colours, antialiasing, coloured and point lights, the lines layer and
+an 8-direction sprite sheet) on each model, and
 writes OUTDIR/<model>/<look>.png, OUTDIR/contact-sheet.png (rows are models,
 columns are looks) and OUTDIR/index.html, which shows every image with its
 exact parameters and the `toon render` command that repeats it.

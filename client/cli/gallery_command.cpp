@@ -235,7 +235,9 @@ int run_gallery(const Options& options) {
             const image::Image img = image::decode_png(result->body);
             error = write_file(model_dir / file_name, result->body);
             if (error.empty()) {
-              row[li] = gallery::make_thumbnail(img, factor);
+              // A sprite sheet is several cells' worth: shrunk further to fit one.
+              const int tiles = std::max(1, std::max(img.width, img.height) / options.size);
+              row[li] = gallery::make_thumbnail(img, factor * tiles);
               render.image = model.name + "/" + file_name;
             }
           } catch (const std::exception& e) {

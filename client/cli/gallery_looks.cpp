@@ -78,6 +78,14 @@ constexpr LookEntry kEffectTable[] = {
                      "color": [0.3, 0.55, 1], "intensity": 0.8}]})"},
     {"point_light", "One point light close to the front left, fading out with distance.",
      R"({"lights": [{"type": "point", "position": [-0.6, 0.9, 1.1], "radius": 3}]})"},
+    {"lines_layer",
+     "The lines alone on transparent (output lines): outline, crease lines and an even contour, to ink over or "
+     "recolour.",
+     R"({"output": "lines", "contour": {"enabled": true, "style": "even", "width": 1.5}})"},
+    {"sprite_sheet",
+     "An 8-direction sprite sheet, 4 tiles across, one framing for every frame; the atlas is in the PNG's tEXt "
+     "chunk toond:atlas.",
+     R"({"sheet": {"frames": 8, "columns": 4}})"},
 };
 
 // Views by model folder (the shared models' names); every other folder gets

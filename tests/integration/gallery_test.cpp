@@ -74,23 +74,28 @@ TEST_F(Gallery, OneSharedModelEveryLookASheetAndAPage) {
   EXPECT_GE(looks - presets, 15);
   // Progress: one line per render, the last "[N/N] model/look".
   EXPECT_NE(r.err.find("[1/" + std::to_string(looks) + "] " + model + "/"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("[" + std::to_string(looks) + "/" + std::to_string(looks) + "] " + model + "/point_light"),
+  EXPECT_NE(r.err.find("[" + std::to_string(looks) + "/" + std::to_string(looks) + "] " + model + "/sprite_sheet"),
             std::string::npos)
       << r.err;
 
-  // One PNG per look, each a 64×64 render.
+  // One PNG per look, each a 64×64 render but the sprite sheet's 4 × 2
+  // tiles of 64×64.
   const auto pngs = pngs_in(out / model);
   ASSERT_EQ(pngs.size(), static_cast<std::size_t>(looks));
   std::set<std::string> names;
   for (const fs::path& png : pngs) {
     names.insert(png.stem().string());
     const auto img = image::decode_png(read_file(png));
-    EXPECT_EQ(img.width, 64) << png;
-    EXPECT_EQ(img.height, 64) << png;
+    const bool sheet = png.stem() == "sprite_sheet";
+    EXPECT_EQ(img.width, sheet ? 4 * 64 : 64) << png;
+    EXPECT_EQ(img.height, sheet ? 2 * 64 : 64) << png;
   }
-  for (const char* look : {"bw_comic", "noir", "default", "halftone_dots", "shadows_floor", "msaa_8", "point_light"}) {
+  for (const char* look : {"bw_comic", "noir", "default", "halftone_dots", "shadows_floor", "msaa_8", "point_light",
+                           "lines_layer", "sprite_sheet"}) {
     EXPECT_TRUE(names.count(look)) << look;
   }
+  // The lines layer is the lines alone: its corner is clear.
+  EXPECT_EQ(image::decode_png(read_file(out / model / "lines_layer.png")).pixel(0, 0)[3], 0);
 
   // The contact sheet: one row of 64-pixel thumbnails with 2-pixel gaps and border.
   const auto sheet = image::decode_png(read_file(out / "contact-sheet.png"));
