@@ -265,6 +265,18 @@ TEST(PixelArtParams, BadInputsAreRefusedWithTheirPath) {
   EXPECT_EQ(path_of({{"dither", "yes"}}), "/sheet/pixel_art/dither");
   EXPECT_EQ(path_of({{"shades", 4}}), "/sheet/pixel_art/shades");
   EXPECT_EQ(path_of({{"scale", 6}, {"palette", {"#123456"}}, {"dither", true}}), "(accepted)");
+  auto layer_path = [&](const std::string& output, const json& sheet) {
+    try {
+      http::check_sheet_params(http::render_params_from_wire(
+          schema.validate_and_complete({{"width", 48}, {"height", 48}, {"output", output}, {"sheet", sheet}})));
+    } catch (const RequestError& e) {
+      return e.path();
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(layer_path("depth", {{"pixel_art", json::object()}}), "/sheet/pixel_art");
+  EXPECT_EQ(layer_path("id", {{"animate", true}}), "/sheet/animate");
+  EXPECT_EQ(layer_path("lines", {{"animate", true}, {"pixel_art", json::object()}}), "(accepted)");
   EXPECT_EQ(path_of(json::object()), "(accepted)");
 }
 
