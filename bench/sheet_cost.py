@@ -7,6 +7,11 @@ FRAMES single renders of the same views under the same framing, over one
 kept-alive connection, and reports the medians and their ratio.
 
     bench/sheet_cost.py http://127.0.0.1:8080 [--frames 8] [--size 256] [--rounds 15] [--model ID]
+                        [--sheet '{"pixel_art": {"scale": 4}}']
+
+--sheet adds fields to the sheet block (pixel_art, animate, ...); the
+single renders stay the plain full-size ones, the yardstick for every
+kind of sheet.
 """
 import argparse
 import http.client
@@ -34,6 +39,7 @@ def main():
     parser.add_argument("--size", type=int, default=256)
     parser.add_argument("--rounds", type=int, default=15)
     parser.add_argument("--model", help="a stored model's id (default: the demo model)")
+    parser.add_argument("--sheet", default="{}", help="JSON object of more sheet fields, e.g. {\"animate\": true}")
     args = parser.parse_args()
 
     url = urllib.parse.urlparse(args.url)
@@ -41,7 +47,7 @@ def main():
     base = {"width": args.size, "height": args.size}
     if args.model:
         base["model"] = args.model
-    sheet = dict(base, sheet={"frames": args.frames})
+    sheet = dict(base, sheet=dict(json.loads(args.sheet), frames=args.frames))
     _, atlas_bytes = post(conn, "/render?atlas=json", sheet)
     atlas = json.loads(atlas_bytes)
     singles = [
@@ -59,6 +65,7 @@ def main():
     print(json.dumps({
         "frames": args.frames,
         "size": args.size,
+        "sheet": json.loads(args.sheet),
         "rounds": args.rounds,
         "sheet_ms": round(sheet_ms, 2),
         "singles_ms": round(singles_ms, 2),

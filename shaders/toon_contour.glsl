@@ -18,7 +18,8 @@ bool on_contour(float n_dot_v) {
 }
 
 vec3 apply_contour(vec3 color, float n_dot_v) {
-  return on_contour(n_dot_v) ? u_contour_color : color;
+  if (on_contour(n_dot_v)) color = u_contour_color;
+  return color;
 }
 
 // The lines layer's share of the main pass (LINES_ONLY): the contour

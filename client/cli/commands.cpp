@@ -157,9 +157,12 @@ int render(const Options& options) {
   if (!result) return conn.network_failure(result);
   if (result->status != 200) return error_reply(*result);
 
+  // A PNG, or with sheet.animate an animated WebP: written as it came,
+  // whatever -o is called (the caller names the file).
   const std::string type = result->get_header_value("Content-Type");
-  if (type.rfind("image/png", 0) != 0) {
-    std::cerr << "toon: expected image/png from toond, got '" << type << "'\n";
+  const bool webp = type.rfind("image/webp", 0) == 0;
+  if (type.rfind("image/png", 0) != 0 && !webp) {
+    std::cerr << "toon: expected image/png or image/webp from toond, got '" << type << "'\n";
     return 1;
   }
   if (std::string problem = output.commit(result->body); !problem.empty()) {
@@ -168,7 +171,9 @@ int render(const Options& options) {
   }
 
   std::cerr << "toon: wrote " << (options.output == "-" ? "standard output" : options.output);
-  if (auto size = png_size(result->body))
+  if (webp)
+    std::cerr << " (animated WebP";
+  else if (auto size = png_size(result->body))
     std::cerr << " (" << size->first << "x" << size->second;
   else
     std::cerr << " (not a PNG?";
@@ -177,6 +182,9 @@ int render(const Options& options) {
     std::cerr << "; server timing: " << timing;
   }
   std::cerr << "\n";
+  if (webp && options.output.size() >= 4 && options.output.compare(options.output.size() - 4, 4, ".png") == 0) {
+    std::cerr << "toon: note: " << options.output << " holds a WebP (sheet.animate), not a PNG; name it .webp\n";
+  }
   return 0;
 }
 

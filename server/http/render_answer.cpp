@@ -18,7 +18,7 @@ void answer_render(const httplib::Request& req, httplib::Response& res, const Ca
     res.status = 304;
     return;
   }
-  res.set_content(render.png, "image/png");
+  res.set_content(render.body, render.content_type);
 }
 
 bool answer_from_cache(ResultCache* cache, const std::string& key, const httplib::Request& req,

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "limit_error.h"
+#include "render/pixel_art_frame.h"
 #include "render/sheet_layout.h"
 
 namespace toond::http {
@@ -18,19 +19,25 @@ std::string count(double n) { return std::to_string(static_cast<unsigned long lo
 // the sample budget, so a sheet asks no more of the daemon than one render
 // may. Its frames are drawn one at a time, each within the per-render
 // checks that follow.
-void check_sheet_budget(const RenderParams& p, const RenderLimits& limits) {
+// An animation (sheet.animate) holds every frame whole, so its frames'
+// pixels count instead of the sheet's (the same but for padding); a
+// pixel-art sheet's frames are drawn as `drawn` says.
+void check_sheet_budget(const RenderParams& p, const RenderParams& drawn, const RenderLimits& limits) {
   const SheetLayout layout = layout_sheet(*p.sheet, p.width, p.height);
-  const double pixels = static_cast<double>(layout.width) * layout.height;
+  const double pixels = p.sheet->animate ? static_cast<double>(layout.frames.size()) * p.width * p.height
+                                         : static_cast<double>(layout.width) * layout.height;
   if (pixels > static_cast<double>(limits.max_output_pixels)) {
+    const std::string what = p.sheet->animate ? "the animation of " + std::to_string(layout.frames.size()) + " frames"
+                                              : "the sheet of " + std::to_string(layout.columns) + " × " +
+                                                    std::to_string(layout.rows) + " tiles";
     throw LimitError(422, "--max-output-pixels",
-                     "the sheet of " + std::to_string(layout.columns) + " × " + std::to_string(layout.rows) +
-                         " tiles is " + count(pixels) + " pixels, more than the limit --max-output-pixels = " +
+                     what + " is " + count(pixels) + " pixels, more than the limit --max-output-pixels = " +
                          count(static_cast<double>(limits.max_output_pixels)) +
                          "; lower sheet.frames, the pitches, or width and height",
                      "/sheet/frames");
   }
-  const double samples = static_cast<double>(layout.frames.size()) * p.width * p.supersample * p.height *
-                         p.supersample * p.msaa;
+  const double samples = static_cast<double>(layout.frames.size()) * drawn.width * drawn.supersample *
+                         drawn.height * drawn.supersample * drawn.msaa;
   if (samples > static_cast<double>(limits.max_samples)) {
     throw LimitError(422, "--max-samples",
                      std::to_string(layout.frames.size()) + " frames × width × height × supersample² × msaa = " +
@@ -41,10 +48,9 @@ void check_sheet_budget(const RenderParams& p, const RenderLimits& limits) {
   }
 }
 
-}  // namespace
-
-void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
-  if (p.sheet) check_sheet_budget(p, limits);
+// The checks every single render must pass, on the parameters it is
+// drawn with.
+void check_drawn_render(const RenderParams& p, const RenderLimits& limits) {
   const double pixels = static_cast<double>(p.width) * p.height;
   if (pixels > static_cast<double>(limits.max_output_pixels)) {
     throw LimitError(422, "--max-output-pixels",
@@ -80,6 +86,17 @@ void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
                          count(static_cast<double>(limits.max_samples)) + "; lower msaa or supersample",
                      p.msaa > 1 ? "/msaa" : "/supersample");
   }
+}
+
+}  // namespace
+
+void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
+  // A pixel-art sheet draws each frame at 1/scale, one sample a pixel: that
+  // is what the framebuffer and sample checks weigh, not the tile's size.
+  const bool pixel_art = p.sheet && p.sheet->pixel_art;
+  const RenderParams drawn = pixel_art ? render::pixel_art_frame_params(p, p.sheet->pixel_art->scale) : p;
+  if (p.sheet) check_sheet_budget(p, drawn, limits);
+  check_drawn_render(drawn, limits);
 }
 
 }  // namespace toond::http

@@ -21,6 +21,23 @@ glm::dvec3 dvec3_of(const json& a) {
   return {a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>()};
 }
 
+// `sheet.pixel_art`; the schema has checked each palette entry is #rrggbb.
+SheetParams::PixelArt pixel_art_of(const json& a) {
+  SheetParams::PixelArt art;
+  art.scale = a.at("scale").get<int>();
+  art.colors = a.at("colors").get<int>();
+  if (a.contains("palette")) {
+    for (const json& entry : a.at("palette")) {
+      const std::string hex = entry.get<std::string>();
+      const unsigned long rgb = std::stoul(hex.substr(1), nullptr, 16);
+      art.palette.push_back({static_cast<std::uint8_t>(rgb >> 16), static_cast<std::uint8_t>(rgb >> 8),
+                             static_cast<std::uint8_t>(rgb)});
+    }
+  }
+  art.dither = a.at("dither").get<bool>();
+  return art;
+}
+
 // The `sheet` block with its absent fields taken from the camera: a sheet
 // turns the view the request already has.
 SheetParams sheet_of(const json& s, const CameraParams& camera) {
@@ -35,6 +52,9 @@ SheetParams sheet_of(const json& s, const CameraParams& camera) {
     sheet.pitches_deg.push_back(camera.pitch_deg);
   }
   sheet.padding = s.at("padding").get<int>();
+  if (s.contains("pixel_art")) sheet.pixel_art = pixel_art_of(s.at("pixel_art"));
+  sheet.animate = s.at("animate").get<bool>();
+  sheet.frame_ms = s.at("frame_ms").get<int>();
   return sheet;
 }
 

@@ -1,6 +1,7 @@
 // POST /render: JSON parameters → PNG; or multipart (bundle files + a
 // `params` part) to upload and render in one call. With `sheet`: a sprite
-// sheet with its atlas in a tEXt chunk, or (?atlas=json) the atlas alone.
+// sheet with its atlas in a tEXt chunk, or (?atlas=json) the atlas alone, or
+// (sheet.animate) its frames as an animated WebP.
 #include <chrono>
 #include <optional>
 #include <sstream>
@@ -12,11 +13,13 @@
 #include "http/render_answer.h"
 #include "http/render_params_wire.h"
 #include "http/render_wait.h"
+#include "http/sheet_checks.h"
 #include "http/sheet_render.h"
 #include "http/request_limits.h"
 #include "http/routes.h"
 #include "http/store_upload.h"
 #include "image/png_codec.h"
+#include "image/webp_animation.h"
 #include "render/ramp_image.h"
 #include "http/render_budget.h"
 #include "render/sheet_atlas.h"
@@ -37,7 +40,8 @@ double render_thread_ms(const render::RenderOutput& out) {
   return ms;
 }
 
-std::string server_timing(const render::RenderOutput& out, double queue_ms, double png_ms) {
+std::string server_timing(const render::RenderOutput& out, double queue_ms, const std::string& encode_stage,
+                          double encode_ms) {
   std::ostringstream s;
   s.precision(3);
   s << std::fixed << "queue;dur=" << queue_ms;
@@ -47,11 +51,11 @@ std::string server_timing(const render::RenderOutput& out, double queue_ms, doub
     // its timer queries do not count: the thread's own time goes alongside.
     if (t.gpu) s << ";desc=gpu;cpu=" << t.cpu_ms;
   }
-  s << ", png;dur=" << png_ms;
+  s << ", " << encode_stage << ";dur=" << encode_ms;
   // The request's own work from the render thread's first pass to the last
-  // PNG byte, without the queue: GPU-timed passes may overlap the thread's
-  // time, so the entries above need not add up to it.
-  s << ", total;dur=" << render_thread_ms(out) + png_ms;
+  // encoded byte, without the queue: GPU-timed passes may overlap the
+  // thread's time, so the entries above need not add up to it.
+  s << ", total;dur=" << render_thread_ms(out) + encode_ms;
   return s.str();
 }
 
@@ -157,6 +161,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     render::RenderJob job;
     const nlohmann::json completed = schema.validate_and_complete(proto::Presets::builtin().expand(request));
     job.params = render_params_from_wire(completed);
+    check_sheet_params(job.params);
     check_render_budget(job.params, context.limits.render);
     if (!job.params.objects.empty()) {
       for (std::size_t i = 0; i < job.params.objects.size(); ++i) {
@@ -192,12 +197,19 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     std::optional<render::SheetLayout> layout;
     if (job.params.sheet) {
       layout = render::layout_sheet(*job.params.sheet, job.params.width, job.params.height);
-      const nlohmann::json atlas = render::sheet_atlas(*layout, job.params, scene_of(job), "sheet.png");
+      const nlohmann::json atlas = render::sheet_atlas(*layout, job.params, scene_of(job),
+                                                       job.params.sheet->animate ? "sheet.webp" : "sheet.png");
       if (atlas_only) {
         res.set_content(atlas.dump(2), "application/json");
         return;
       }
       png_options.text.emplace_back("toond:atlas", atlas.dump());
+    }
+    // With `sheet.animate` the frames go out as an animated WebP instead.
+    std::optional<image::WebpAnimationOptions> animation;
+    if (job.params.sheet && job.params.sheet->animate) {
+      animation.emplace();
+      animation->frame_ms = job.params.sheet->frame_ms;
     }
     // Completed parameters name content-addressed models (and bundle files
     // inside them): they decide every byte of the PNG.
@@ -220,22 +232,28 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     const double queue_ms =
         std::chrono::duration<double, std::milli>(Clock::now() - submitted).count() - render_ms;
 
-    const auto png_start = Clock::now();
-    OutputPng encoded = encode_output(out, job, png_options);
-    const double png_ms = std::chrono::duration<double, std::milli>(Clock::now() - png_start).count();
-
-    res.set_header("Server-Timing", server_timing(out, queue_ms < 0 ? 0 : queue_ms, png_ms));
+    const auto encode_start = Clock::now();
     auto answer = std::make_shared<CachedRender>();
-    answer->etag = etag_of(encoded.png);
-    answer->png = std::move(encoded.png);
-    answer->headers = std::move(encoded.headers);
+    const std::string encode_stage = animation ? "webp" : "png";
+    if (animation) {
+      answer->body = image::encode_webp_animation(sheet_tiles(out.image, *layout), *animation);
+      answer->content_type = "image/webp";
+    } else {
+      OutputPng encoded = encode_output(out, job, png_options);
+      answer->body = std::move(encoded.png);
+      answer->headers = std::move(encoded.headers);
+    }
+    const double encode_ms = std::chrono::duration<double, std::milli>(Clock::now() - encode_start).count();
+
+    res.set_header("Server-Timing", server_timing(out, queue_ms < 0 ? 0 : queue_ms, encode_stage, encode_ms));
+    answer->etag = etag_of(answer->body);
     answer->passes = out.plan;
     answer->lod = lod_header(out.lods);
     answer->samples = out.samples;
     answer_render(req, res, *answer);
     if (context.results) context.results->put(cache_key, std::move(answer));
     context.metrics.observe_render(std::chrono::duration<double>(Clock::now() - started).count(), out.timings,
-                                   queue_ms < 0 ? 0 : queue_ms, png_ms);
+                                   queue_ms < 0 ? 0 : queue_ms, encode_ms, encode_stage);
   };
   server.Post("/render", render);
   server.Post("/models/([0-9a-f]{16,64})/render", render);

@@ -40,7 +40,7 @@ bool etag_matches(const std::string& if_none_match, const std::string& etag) {
 
 std::size_t ResultCache::cost(const std::string& key, const CachedRender& r) {
   // The strings' contents dominate; a fixed allowance covers the nodes.
-  return key.size() + r.png.size() + r.etag.size() + r.passes.size() + r.lod.size() + 256;
+  return key.size() + r.body.size() + r.etag.size() + r.passes.size() + r.lod.size() + 256;
 }
 
 std::shared_ptr<const CachedRender> ResultCache::find(const std::string& key) {

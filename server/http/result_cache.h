@@ -16,8 +16,9 @@
 namespace toond::http {
 
 struct CachedRender {
-  std::string png;
-  std::string etag;    // strong validator of `png`, quoted: "\"…\""
+  std::string body;  // the image: a PNG, or what content_type says
+  std::string content_type = "image/png";
+  std::string etag;    // strong validator of `body`, quoted: "\"…\""
   std::string passes;  // X-Toond-Passes of the render that made it
   std::string lod;     // X-Toond-Lod of the render that made it
   int samples = 1;     // X-Toond-Samples: MSAA samples the render had

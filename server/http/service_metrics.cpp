@@ -37,11 +37,11 @@ void ServiceMetrics::count_request(const std::string& method, const std::string&
 }
 
 void ServiceMetrics::observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms,
-                                    double png_ms) {
+                                    double encode_ms, const std::string& encode_stage) {
   render_seconds_.observe({}, seconds);
   pass_seconds_.observe({"queue"}, queue_ms / 1000.0);
   for (const render::PassTiming& p : passes) pass_seconds_.observe({p.pass}, p.ms / 1000.0);
-  pass_seconds_.observe({"png"}, png_ms / 1000.0);
+  pass_seconds_.observe({encode_stage}, encode_ms / 1000.0);
 }
 
 void ServiceMetrics::observe_import(double seconds, std::size_t bytes) {

@@ -21,9 +21,10 @@ class ServiceMetrics {
   // (route_label), never the raw path, so ids do not multiply series.
   void count_request(const std::string& method, const std::string& route, int status);
   // One finished render: whole request (parse to PNG), and the stages of
-  // its Server-Timing header: queue wait, each pass, PNG encoding.
+  // its Server-Timing header: queue wait, each pass, encoding (stage
+  // `encode_stage`: "png", or "webp" for an animated sheet).
   void observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms,
-                      double png_ms);
+                      double encode_ms, const std::string& encode_stage = "png");
   // One upload imported as a new model: how long the import took (parse,
   // mesh processing, levels of detail, storing) and the bundle's bytes.
   void observe_import(double seconds, std::size_t bytes);

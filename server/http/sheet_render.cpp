@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <vector>
 
 #include "http/render_wait.h"
+#include "image/block_upscale.h"
+#include "image/palette_quantise.h"
 #include "render/pass_plan.h"
+#include "render/pixel_art_frame.h"
 
 namespace toond::http {
 namespace {
@@ -46,6 +50,31 @@ void merge_lods(const std::vector<render::LodUse>& frame, std::vector<render::Lo
   }
 }
 
+// The palette a pixel-art sheet is quantised to: the one asked for, or one
+// computed over every tile at once, so a colour is the same entry in every
+// frame and nothing flickers as the model turns.
+std::vector<image::Rgb8> sheet_palette(const std::vector<image::Image>& tiles,
+                                       const render::SheetParams::PixelArt& pixel_art) {
+  std::vector<image::Rgb8> palette;
+  for (const auto& [r, g, b] : pixel_art.palette) palette.push_back({r, g, b});
+  if (!palette.empty()) return palette;
+  std::vector<const image::Image*> all;
+  for (const image::Image& tile : tiles) all.push_back(&tile);
+  return image::median_cut_palette(all, pixel_art.colors);
+}
+
+// Quantises the small tiles to the sheet's palette (in place) and puts each,
+// blown up by the scale, into its place in the sheet.
+void finish_pixel_art(std::vector<image::Image>& tiles, const render::SheetParams::PixelArt& pixel_art,
+                      const render::SheetLayout& layout, image::Image& sheet) {
+  const std::vector<image::Rgb8> palette = sheet_palette(tiles, pixel_art);
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    // No palette only when no tile has a visible pixel: nothing to change.
+    if (!palette.empty()) image::quantise_to_palette(tiles[i], palette, pixel_art.dither);
+    image::blit_upscaled(tiles[i], pixel_art.scale, sheet, layout.frames[i].x, layout.frames[i].y);
+  }
+}
+
 }  // namespace
 
 render::SceneFrame scene_of(const render::RenderJob& job) {
@@ -59,11 +88,13 @@ render::SceneFrame scene_of(const render::RenderJob& job) {
 
 render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJob& job,
                                   const render::SheetLayout& layout, std::chrono::steady_clock::time_point deadline) {
+  const std::optional<render::SheetParams::PixelArt>& pixel_art = job.params.sheet->pixel_art;
   std::vector<render::RenderJob> frames;
   for (const render::SheetFrame& frame : layout.frames) {
     render::RenderJob one;
     one.objects = job.objects;
     one.params = render::frame_params(job.params, layout, frame);
+    if (pixel_art) one.params = render::pixel_art_frame_params(std::move(one.params), pixel_art->scale);
     one.deadline = deadline;
     frames.push_back(std::move(one));
   }
@@ -78,18 +109,45 @@ render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJ
   } else {
     sheet.image = {layout.width, layout.height, std::vector<std::uint8_t>(values, 0)};
   }
+  std::vector<image::Image> art_tiles;  // pixel art: the small frames, until all are in
   for (std::size_t i = 0; i < futures.size(); ++i) {
     // Each tile goes into place as soon as it is done, and its own image
     // is let go while the next frame renders.
-    const render::RenderOutput frame = await_render(futures[i], deadline, context.render_deadline);
-    if (render::is_data_layer(job.params.output)) copy_tile(frame.layer, layout.frames[i], sheet.layer);
-    else copy_tile(frame.image, layout.frames[i], sheet.image);
+    render::RenderOutput frame = await_render(futures[i], deadline, context.render_deadline);
+    if (pixel_art) {
+      art_tiles.push_back(std::move(frame.image));
+    } else if (render::is_data_layer(job.params.output)) {
+      copy_tile(frame.layer, layout.frames[i], sheet.layer);
+    } else {
+      copy_tile(frame.image, layout.frames[i], sheet.image);
+    }
     add_timings(frame.timings, sheet.timings);
     merge_lods(frame.lods, sheet.lods);
     sheet.plan = frame.plan;
     sheet.samples = frame.samples;
   }
+  if (pixel_art) {
+    // After the last frame: one palette needs every frame's colours.
+    const auto start = std::chrono::steady_clock::now();
+    finish_pixel_art(art_tiles, *pixel_art, layout, sheet.image);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    sheet.timings.push_back({"pixel_art", ms, false, ms});
+  }
   return sheet;
+}
+
+std::vector<image::Image> sheet_tiles(const image::Image& sheet, const render::SheetLayout& layout) {
+  std::vector<image::Image> tiles;
+  const std::size_t row_bytes = static_cast<std::size_t>(layout.tile_width) * 4;
+  for (const render::SheetFrame& frame : layout.frames) {
+    image::Image tile;
+    tile.width = layout.tile_width;
+    tile.height = layout.tile_height;
+    tile.rgba.resize(row_bytes * tile.height);
+    for (int y = 0; y < tile.height; ++y) std::memcpy(tile.pixel(0, y), sheet.pixel(frame.x, frame.y + y), row_bytes);
+    tiles.push_back(std::move(tile));
+  }
+  return tiles;
 }
 
 }  // namespace toond::http

@@ -3,6 +3,7 @@
 // queued together (RenderService::submit_all), each a render of its own
 // view under the framing shared by all (render/sheet_layout.h).
 #include <chrono>
+#include <vector>
 
 #include "http/service_context.h"
 #include "render/camera.h"
@@ -19,7 +20,14 @@ render::SceneFrame scene_of(const render::RenderJob& job);
 // `layer`) is the whole sheet, padding and empty tiles transparent; `timings` add up each pass over the frames;
 // `lods` give per object the finest level any frame drew (and "both" faces
 // when any frame drew both), `plan` and `samples` are the frames' own.
+// With `sheet.pixel_art` each frame is drawn at 1/scale, all are quantised to
+// one palette (the given one, or one computed over every frame), then blown
+// up into their tiles; the time that takes is the timing `pixel_art`.
 render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJob& job,
                                   const render::SheetLayout& layout, std::chrono::steady_clock::time_point deadline);
+
+// The sheet's tiles cut out again, in frame order: the frames of an
+// animation.
+std::vector<image::Image> sheet_tiles(const image::Image& sheet, const render::SheetLayout& layout);
 
 }  // namespace toond::http

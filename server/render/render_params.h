@@ -5,6 +5,8 @@
 // (http/render_params_wire.h), so every field is present and in range here;
 // names and defaults live in proto/render-params.schema.json, not in this
 // file.
+#include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -55,6 +57,17 @@ struct SheetParams {
   double yaw_step_deg = 45;  // absent: 360 / frames
   std::vector<double> pitches_deg;  // absent: the camera's pitch alone
   int padding = 0;  // pixels between neighbouring tiles
+  // Pixel art (`sheet.pixel_art`): tiles drawn at 1/scale, quantised to one
+  // palette for the whole sheet, blown up by `scale`. Unset: tiles as drawn.
+  struct PixelArt {
+    int scale = 4;      // width and height are multiples of it (checked by the HTTP layer)
+    int colors = 16;    // size of the computed palette when `palette` is empty
+    std::vector<std::array<std::uint8_t, 3>> palette;  // sRGB; empty: computed over the sheet
+    bool dither = false;  // ordered 4×4 Bayer dithering
+  };
+  std::optional<PixelArt> pixel_art;
+  bool animate = false;  // answer an animated WebP of the frames instead of the sheet's PNG
+  int frame_ms = 100;    // how long each animation frame shows
 };
 
 enum class LightKind { Directional, Point };

@@ -121,7 +121,7 @@ TEST_F(ShaderReload, AModuleEditRendersAndABrokenOneIsReportedAtItsOwnLine) {
   const image::Image before = render_ok(client, params_);
   ASSERT_GT(before.width, 0);
 
-  // The module's last function inverts every colour before it returns.
+  // apply_contour inverts every colour before it returns.
   const std::size_t at = original.rfind("return color;");
   ASSERT_NE(at, std::string::npos);
   auto with_line = [&](const std::string& text, const std::string& line) {

@@ -8,8 +8,8 @@ namespace {
 
 std::shared_ptr<const CachedRender> png_of(std::size_t bytes, char fill = 'x') {
   auto r = std::make_shared<CachedRender>();
-  r->png.assign(bytes, fill);
-  r->etag = etag_of(r->png);
+  r->body.assign(bytes, fill);
+  r->etag = etag_of(r->body);
   return r;
 }
 
@@ -42,7 +42,7 @@ TEST(ResultCache, ReplacingAKeyDoesNotCountItTwice) {
   const std::size_t once = cache.bytes();
   cache.put("a", png_of(1000, 'y'));
   EXPECT_EQ(cache.bytes(), once);
-  EXPECT_EQ(cache.find("a")->png[0], 'y');
+  EXPECT_EQ(cache.find("a")->body[0], 'y');
   EXPECT_EQ(cache.hits(), 1u);
 }
 

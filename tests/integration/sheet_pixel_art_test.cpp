@@ -1,0 +1,294 @@
+// Pixel-art sheets and animated sheets over HTTP: tiles made of scale×scale
+// blocks on one palette shared by every frame (the given one, or at most
+// `colors` computed), each block the palette colour nearest the small
+// render's pixel; bad values and limits refused before rendering; and
+// `animate` answering a lossless WebP whose frames, read by libwebp's own
+// decoder and by Pillow, are the sheet's tiles.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <fstream>
+#include <set>
+
+#include "image/png_codec.h"
+#include "support/shared_models.h"
+#include "support/webp_frames.h"
+#include "test_client.h"
+
+namespace toond::test {
+namespace {
+
+using nlohmann::json;
+
+image::Image tile_of(const image::Image& sheet, const json& rect) {
+  image::Image tile;
+  tile.width = rect["w"];
+  tile.height = rect["h"];
+  tile.rgba.resize(static_cast<std::size_t>(tile.width) * tile.height * 4);
+  for (int y = 0; y < tile.height; ++y) {
+    std::copy_n(sheet.pixel(rect["x"].get<int>(), rect["y"].get<int>() + y), tile.width * 4, tile.pixel(0, y));
+  }
+  return tile;
+}
+
+std::uint32_t rgb_of(const std::uint8_t* p) { return (std::uint32_t{p[0]} << 16) | (std::uint32_t{p[1]} << 8) | p[2]; }
+
+// The RGB of every pixel that is not fully transparent.
+std::set<std::uint32_t> visible_colours(const image::Image& img) {
+  std::set<std::uint32_t> colours;
+  for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
+    if (img.rgba[i + 3] != 0) colours.insert(rgb_of(&img.rgba[i]));
+  }
+  return colours;
+}
+
+// Whether `tile` is made of k×k blocks of one pixel each, from its corner.
+bool whole_blocks(const image::Image& tile, int k) {
+  for (int y = 0; y < tile.height; ++y) {
+    for (int x = 0; x < tile.width; ++x) {
+      if (!std::equal(tile.pixel(x, y), tile.pixel(x, y) + 4, tile.pixel(x - x % k, y - y % k))) return false;
+    }
+  }
+  return true;
+}
+
+// Alpha equal everywhere, RGB equal where alpha > 0: what "the same
+// pixels" means for an image whose transparent RGB is nobody's concern.
+bool same_visible_pixels(const image::Image& a, const image::Image& b) {
+  if (a.width != b.width || a.height != b.height) return false;
+  for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+    if (a.rgba[i + 3] != b.rgba[i + 3]) return false;
+    if (a.rgba[i + 3] != 0 && !std::equal(&a.rgba[i], &a.rgba[i] + 3, &b.rgba[i])) return false;
+  }
+  return true;
+}
+
+class PixelArtSheet : public SharedDaemonTest {
+ protected:
+  // A request that must succeed, with the content type it must have.
+  static std::string body_of(const json& params, const std::string& type, const std::string& path = "/render") {
+    auto client = daemon().client();
+    auto res = post_json(client, path, params);
+    if (!res || res->status != 200) {
+      ADD_FAILURE() << path << " answered " << (res ? std::to_string(res->status) + ": " + res->body : "nothing");
+      return {};
+    }
+    EXPECT_EQ(res->get_header_value("Content-Type"), type);
+    return res->body;
+  }
+  static json atlas_of(const json& params) {
+    const std::string text = body_of(params, "application/json", "/render?atlas=json");
+    return text.empty() ? json::object() : json::parse(text);
+  }
+};
+
+const json kTransparent = {0, 0, 0, 0};
+
+TEST_F(PixelArtSheet, TilesAreScaleBlocksOnOnePaletteSharedByEveryFrame) {
+  const int k = 4, n = 6;
+  const json plain = {{"width", 64},
+                      {"height", 48},
+                      {"background", kTransparent},
+                      {"sheet", {{"frames", 8}, {"columns", 4}, {"padding", 2}}}};
+  json params = plain;
+  params["sheet"]["pixel_art"] = {{"scale", k}, {"colors", n}};
+  const std::string png = body_of(params, "image/png");
+  ASSERT_FALSE(png.empty());
+  const image::Image sheet = image::decode_png(png);
+  const json atlas = atlas_of(params);
+  EXPECT_EQ(atlas, atlas_of(plain)) << "pixel art leaves the atlas as it is";
+  EXPECT_EQ(atlas["meta"]["size"], (json{{"w", sheet.width}, {"h", sheet.height}}));
+
+  std::set<std::uint32_t> every_frame;
+  for (const auto& [name, frame] : atlas["frames"].items()) {
+    const image::Image tile = tile_of(sheet, frame["frame"]);
+    EXPECT_TRUE(whole_blocks(tile, k)) << name << " is not made of " << k << "×" << k << " blocks";
+    const std::set<std::uint32_t> colours = visible_colours(tile);
+    EXPECT_GE(colours.size(), 2u) << name << " shows the model";
+    every_frame.insert(colours.begin(), colours.end());
+    EXPECT_EQ(tile.pixel(0, 0)[3], 0) << name << ": the transparent background stays transparent";
+  }
+  EXPECT_LE(every_frame.size(), static_cast<std::size_t>(n)) << "the frames together use one palette of " << n;
+  EXPECT_EQ(sheet.pixel(64, 0)[3], 0) << "padding stays transparent";
+}
+
+// Without dithering a block is the palette colour nearest the pixel the
+// small render drew: checked against single renders of each view at
+// 1/scale, one sample a pixel, band edges hard, under the sheet's framing.
+TEST_F(PixelArtSheet, AGivenPaletteIsAllThereIsAndEachBlockItsNearestColour) {
+  const int k = 4;
+  const std::vector<std::array<int, 3>> palette = {
+      {0x20, 0x20, 0x28}, {0xf0, 0xe8, 0xd8}, {0x90, 0x60, 0x40}, {0x50, 0x80, 0xc0}, {0xc0, 0x40, 0x40}};
+  json hex = json::array();
+  std::set<std::uint32_t> allowed;
+  for (const auto& [r, g, b] : palette) {
+    char text[8];
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", r, g, b);
+    hex.push_back(text);
+    allowed.insert((std::uint32_t(r) << 16) | (std::uint32_t(g) << 8) | std::uint32_t(b));
+  }
+  const json params = {{"width", 64},
+                       {"height", 64},
+                       {"background", kTransparent},
+                       {"sheet", {{"frames", 4}, {"pixel_art", {{"scale", k}, {"palette", hex}}}}}};
+  const std::string png = body_of(params, "image/png");
+  ASSERT_FALSE(png.empty());
+  const image::Image sheet = image::decode_png(png);
+  for (std::uint32_t c : visible_colours(sheet)) EXPECT_TRUE(allowed.count(c)) << std::hex << c << " is not in the palette";
+
+  auto nearest = [&](const std::uint8_t* p) {
+    std::uint32_t best = 0;
+    int best_d = 1 << 30;
+    for (const auto& [r, g, b] : palette) {
+      const int d = (p[0] - r) * (p[0] - r) + (p[1] - g) * (p[1] - g) + (p[2] - b) * (p[2] - b);
+      if (d < best_d) best_d = d, best = (std::uint32_t(r) << 16) | (std::uint32_t(g) << 8) | std::uint32_t(b);
+    }
+    return best;
+  };
+  const json atlas = atlas_of(params);
+  const double distance = atlas["meta"]["camera"]["distance"];
+  auto client = daemon().client();
+  std::size_t visible = 0, mismatched = 0;
+  for (const auto& [name, frame] : atlas["frames"].items()) {
+    const image::Image small = render_ok(
+        client, {{"width", 64 / k},
+                 {"height", 64 / k},
+                 {"background", kTransparent},
+                 {"msaa", 1},
+                 {"shading", {{"band_aa", false}}},
+                 {"camera", {{"yaw", frame["yaw"]}, {"pitch", frame["pitch"]}, {"distance", distance}}}});
+    const image::Image tile = tile_of(sheet, frame["frame"]);
+    for (int y = 0; y < small.height; ++y) {
+      for (int x = 0; x < small.width; ++x) {
+        const std::uint8_t* want = small.pixel(x, y);
+        const std::uint8_t* got = tile.pixel(x * k, y * k);
+        if (want[3] == 0 && got[3] == 0) continue;
+        ++visible;
+        if (want[3] != got[3] || rgb_of(got) != nearest(want)) ++mismatched;
+      }
+    }
+  }
+  ASSERT_GT(visible, 50u);
+  EXPECT_EQ(mismatched, 0u) << "of " << visible << " visible art pixels";
+}
+
+TEST_F(PixelArtSheet, BadValuesAndLimitsAreRefusedBeforeRendering) {
+  auto client = daemon().client();
+  struct Case {
+    json params;
+    int status;
+    std::string path;
+  };
+  const json palette_art = {{"pixel_art", {{"palette", json::array()}}}};
+  const json bad_colour_art = {{"pixel_art", {{"palette", {"#12345g"}}}}};
+  const json many_pitches = {-60, -40, -20, 0, 20, 40, 60, 80};
+  const std::vector<Case> cases = {
+      {json{{"width", 50}, {"height", 48}, {"sheet", {{"pixel_art", {{"scale", 4}}}}}}, 400, "/sheet/pixel_art/scale"},
+      {json{{"width", 48}, {"height", 50}, {"sheet", {{"pixel_art", {{"scale", 4}}}}}}, 400, "/sheet/pixel_art/scale"},
+      {json{{"width", 48}, {"height", 48}, {"sheet", palette_art}}, 400, "/sheet/pixel_art/palette"},
+      {json{{"width", 48}, {"height", 48}, {"sheet", bad_colour_art}}, 400, "/sheet/pixel_art/palette/0"},
+      {json{{"width", 48}, {"height", 48}, {"sheet", {{"frame_ms", 0}}}}, 400, "/sheet/frame_ms"},
+      // 64 frames × 8 pitches of 512² is over the default --max-output-pixels
+      // (4096²), as pixel art and as an animation alike.
+      {json{{"sheet", {{"frames", 64}, {"pitches", many_pitches}, {"pixel_art", json::object()}}}}, 422, "/sheet/frames"},
+      {json{{"sheet", {{"frames", 64}, {"pitches", many_pitches}, {"animate", true}}}}, 422, "/sheet/frames"},
+  };
+
+  for (const Case& c : cases) {
+    auto res = post_json(client, "/render", c.params);
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, c.status) << c.params.dump() << ": " << res->body;
+    EXPECT_EQ(error_of(res)["path"], c.path) << c.params.dump();
+  }
+}
+
+TEST_F(PixelArtSheet, AnimateAnswersALosslessWebpOfTheSheetsTiles) {
+  const json sheet_params = {{"width", 48},
+                             {"height", 40},
+                             {"background", kTransparent},
+                             {"sheet", {{"frames", 6}, {"columns", 3}, {"pitches", {10, 40}}, {"padding", 1}}}};
+  json params = sheet_params;
+  params["sheet"]["animate"] = true;
+  params["sheet"]["frame_ms"] = 80;
+  const std::string webp = body_of(params, "image/webp");
+  ASSERT_FALSE(webp.empty());
+  const image::Image sheet = image::decode_png(body_of(sheet_params, "image/png"));
+  const json atlas = atlas_of(params);
+  EXPECT_EQ(atlas["meta"]["image"], "sheet.webp");
+
+  const WebpFrames decoded = decode_webp_frames(webp);
+  EXPECT_EQ(decoded.loop_count, 0) << "loops forever";
+  ASSERT_EQ(decoded.frames.size(), 12u) << "6 frames × 2 pitches";
+  for (std::size_t i = 0; i < decoded.frames.size(); ++i) {
+    // Pitch by pitch: frame_000 .. frame_005 at pitch 10, then pitch 40.
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%03zu", i);
+    const json& frame = atlas["frames"][name];
+    EXPECT_EQ(frame["pitch"].get<double>(), i < 6 ? 10 : 40) << name;
+    EXPECT_TRUE(same_visible_pixels(decoded.frames[i], tile_of(sheet, frame["frame"])))
+        << "animation frame " << i << " differs from the sheet's " << name;
+    EXPECT_EQ(decoded.end_ms[i], static_cast<int>(i + 1) * 80);
+  }
+
+  // Answered again (from the result cache where it is on): still WebP.
+  auto client = daemon().client();
+  auto again = post_json(client, "/render", params);
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->get_header_value("Content-Type"), "image/webp");
+  EXPECT_EQ(again->body, webp);
+}
+
+TEST_F(PixelArtSheet, AnimatedPixelArtIsBlocksOnOnePaletteInEveryFrame) {
+  const json params = {{"width", 64},
+                       {"height", 64},
+                       {"background", kTransparent},
+                       {"sheet", {{"frames", 8}, {"animate", true}, {"pixel_art", {{"scale", 8}, {"colors", 4}}}}}};
+  const std::string webp = body_of(params, "image/webp");
+  ASSERT_FALSE(webp.empty());
+  const WebpFrames decoded = decode_webp_frames(webp);
+  ASSERT_EQ(decoded.frames.size(), 8u);
+  std::set<std::uint32_t> every_frame;
+  for (const image::Image& frame : decoded.frames) {
+    EXPECT_TRUE(whole_blocks(frame, 8));
+    const std::set<std::uint32_t> colours = visible_colours(frame);
+    every_frame.insert(colours.begin(), colours.end());
+  }
+  EXPECT_LE(every_frame.size(), 4u);
+}
+
+// Pillow, not libwebp through our own test code, opens the animation.
+TEST_F(PixelArtSheet, PillowOpensTheAnimationWithEveryFrame) {
+  const auto probe = run_process({"/usr/bin/python3", "-c", "from PIL import features; assert features.check('webp_anim')"});
+  if (probe.status != 0) GTEST_SKIP() << "/usr/bin/python3 with Pillow's animated WebP is absent (Debian: python3-pil)";
+  const std::string webp = body_of({{"width", 32}, {"height", 32}, {"sheet", {{"frames", 5}, {"animate", true}}}}, "image/webp");
+  ASSERT_FALSE(webp.empty());
+  const auto file = make_temp_dir("toond-anim") / "turntable.webp";
+  std::ofstream(file, std::ios::binary) << webp;
+  const auto r = run_process({"/usr/bin/python3", "-c",
+                              "import sys, json\n"
+                              "from PIL import Image\n"
+                              "im = Image.open(sys.argv[1])\n"
+                              "print(json.dumps({'format': im.format, 'size': list(im.size), 'frames': im.n_frames,"
+                              " 'animated': im.is_animated, 'loop': im.info.get('loop')}))\n",
+                              file.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out), (json{{"format", "WEBP"}, {"size", {32, 32}}, {"frames", 5}, {"animated", true}, {"loop", 0}}));
+}
+
+TEST_F(PixelArtSheet, TheCliWritesTheWebpItIsAnswered) {
+  const auto out = make_temp_dir("toon-anim") / "turntable.webp";
+  const auto r = run_process({TOON_BINARY, "render", "--set", "sheet.frames=4", "--set", "sheet.animate=true", "--set",
+                              "sheet.pixel_art.scale=2", "--set", "width=32", "--set", "height=32", "-o", out.string(),
+                              "--server", daemon().url()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string bytes = read_file(out);
+  ASSERT_GE(bytes.size(), 12u);
+  EXPECT_EQ(bytes.substr(0, 4), "RIFF");
+  EXPECT_EQ(bytes.substr(8, 4), "WEBP");
+  EXPECT_EQ(decode_webp_frames(bytes).frames.size(), 4u);
+}
+
+}  // namespace
+}  // namespace toond::test
