@@ -1,8 +1,10 @@
-// Starts the toond under test for a browser test and waits for its
-// "listening on <url>" line; resolves to { child, url }.
+// What the page tests share: the toond under test and the headless
+// chromium that drives the page.
 import { spawn } from 'node:child_process';
 import { createInterface } from 'node:readline';
 
+// Starts toond and waits for its "listening on <url>" line; resolves to
+// { child, url }.
 export function startDaemon(toondBinary, listen, dataDir, timeoutMs) {
   const child = spawn(toondBinary, ['--listen', listen, '--data-dir', dataDir], { stdio: ['ignore', 'pipe', 'pipe'] });
   child.stderr.on('data', (d) => process.stderr.write(`[toond] ${d}`));
@@ -16,5 +18,16 @@ export function startDaemon(toondBinary, listen, dataDir, timeoutMs) {
         resolve({ child, url: m[1] });
       }
     });
+  });
+}
+
+// Debian's chromium, headless, with the background services that would
+// make requests of their own switched off.
+export function launchChromium(chromium) {
+  return chromium.launch({
+    executablePath: '/usr/bin/chromium',
+    headless: true,
+    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update',
+      '--disable-default-apps', '--disable-sync', '--no-first-run'],
   });
 }

@@ -8,7 +8,7 @@ import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { startDaemon } from './daemon.mjs';
+import { launchChromium, startDaemon } from './daemon.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const { chromium } = await import(path.join(here, 'node_modules/playwright-core/index.mjs')).catch(() => {
@@ -265,12 +265,7 @@ const started = Date.now();
 try {
   daemon = await startDaemon(toondBinary, '127.0.0.1:0', dataDir, STEP_TIMEOUT_MS);
   console.log(`toond at ${daemon.url}`);
-  browser = await chromium.launch({
-    executablePath: '/usr/bin/chromium',
-    headless: true,
-    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update',
-      '--disable-default-apps', '--disable-sync', '--no-first-run'],
-  });
+  browser = await launchChromium(chromium);
   const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
   const page = await context.newPage();
   const pageErrors = [];

@@ -22,17 +22,6 @@ namespace {
 
 using nlohmann::json;
 
-image::Image tile_of(const image::Image& sheet, const json& rect) {
-  image::Image tile;
-  tile.width = rect["w"];
-  tile.height = rect["h"];
-  tile.rgba.resize(static_cast<std::size_t>(tile.width) * tile.height * 4);
-  for (int y = 0; y < tile.height; ++y) {
-    std::copy_n(sheet.pixel(rect["x"].get<int>(), rect["y"].get<int>() + y), tile.width * 4, tile.pixel(0, y));
-  }
-  return tile;
-}
-
 std::uint32_t rgb_of(const std::uint8_t* p) { return (std::uint32_t{p[0]} << 16) | (std::uint32_t{p[1]} << 8) | p[2]; }
 
 // The RGB of every pixel that is not fully transparent.

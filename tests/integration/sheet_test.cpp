@@ -46,17 +46,6 @@ std::optional<std::string> text_chunk(const std::string& png, const std::string&
   return std::nullopt;
 }
 
-image::Image tile_of(const image::Image& sheet, const json& rect) {
-  image::Image tile;
-  tile.width = rect["w"];
-  tile.height = rect["h"];
-  tile.rgba.resize(static_cast<std::size_t>(tile.width) * tile.height * 4);
-  for (int y = 0; y < tile.height; ++y) {
-    std::copy_n(sheet.pixel(rect["x"].get<int>(), rect["y"].get<int>() + y), tile.width * 4, tile.pixel(0, y));
-  }
-  return tile;
-}
-
 // Rows from the model's top to its bottom: the pixels unlike the corner.
 int silhouette_height(const image::Image& img) {
   const std::vector<bool> mask = foreground_mask(img);

@@ -70,4 +70,15 @@ nlohmann::json error_of(const httplib::Result& res) {
   return body["error"];
 }
 
+image::Image tile_of(const image::Image& sheet, const nlohmann::json& rect) {
+  image::Image tile;
+  tile.width = rect["w"];
+  tile.height = rect["h"];
+  tile.rgba.resize(static_cast<std::size_t>(tile.width) * tile.height * 4);
+  for (int y = 0; y < tile.height; ++y) {
+    std::copy_n(sheet.pixel(rect["x"].get<int>(), rect["y"].get<int>() + y), tile.width * 4, tile.pixel(0, y));
+  }
+  return tile;
+}
+
 }  // namespace toond::test

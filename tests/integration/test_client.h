@@ -42,6 +42,10 @@ httplib::Result post_json(httplib::Client& client, const std::string& path, cons
 // POST /render that must succeed; returns the decoded PNG.
 image::Image render_ok(httplib::Client& client, const nlohmann::json& params);
 
+// One frame of a sprite sheet: the atlas rectangle `rect` ({x, y, w, h})
+// cut out of `sheet`.
+image::Image tile_of(const image::Image& sheet, const nlohmann::json& rect);
+
 // The "error" object of a JSON error answer.
 nlohmann::json error_of(const httplib::Result& res);
 
