@@ -8,7 +8,8 @@ import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { launchChromium, startDaemon } from './daemon.mjs';
+import { argument, launchChromium, startDaemon } from './harness.mjs';
+import { dragSlider, imageStats, rendersShown, waitForFullRender } from './page_actions.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const { chromium } = await import(path.join(here, 'node_modules/playwright-core/index.mjs')).catch(() => {
@@ -17,12 +18,6 @@ const { chromium } = await import(path.join(here, 'node_modules/playwright-core/
 });
 
 const STEP_TIMEOUT_MS = Number(process.env.TOOND_BROWSER_STEP_TIMEOUT_MS || 45000);
-
-function argument(name) {
-  const i = process.argv.indexOf(name);
-  if (i < 0 || i + 1 >= process.argv.length) throw new Error(`missing ${name}`);
-  return process.argv[i + 1];
-}
 
 const toondBinary = argument('--toond');
 const artifacts = argument('--artifacts');
@@ -40,17 +35,6 @@ async function shot(page, name) {
   console.log(`     screenshot ${file}`);
 }
 
-async function rendersShown(page) {
-  return Number((await page.getAttribute('#view', 'data-renders')) || 0);
-}
-
-async function waitForFullRender(page, after) {
-  await page.waitForFunction((n) => {
-    const v = document.getElementById('view');
-    return Number(v.dataset.renders || 0) > n && v.dataset.kind === 'full' && v.dataset.settled === 'yes';
-  }, after, { timeout: STEP_TIMEOUT_MS });
-}
-
 async function waitForRenderError(page, after) {
   await page.waitForFunction((n) => Number(document.getElementById('view').dataset.errors || 0) > n, after,
     { timeout: STEP_TIMEOUT_MS });
@@ -59,38 +43,6 @@ async function waitForRenderError(page, after) {
 // Shown: neither the control nor anything above it is hidden.
 function shown(page, pointer) {
   return page.locator(`[data-path="${pointer}"]`).first().isVisible();
-}
-
-// Decodes an image on the page: size, pixels with alpha below 255, a hash.
-function imageStats(page, selector) {
-  return page.evaluate(async (sel) => {
-    const blob = await (await fetch(document.querySelector(sel).src)).blob();
-    const bitmap = await createImageBitmap(blob, { premultiplyAlpha: 'none' });
-    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-    const g = canvas.getContext('2d');
-    g.drawImage(bitmap, 0, 0);
-    const d = g.getImageData(0, 0, bitmap.width, bitmap.height).data;
-    let transparent = 0;
-    let hash = 2166136261;
-    for (let i = 0; i < d.length; i += 4) {
-      if (d[i + 3] < 255) transparent += 1;
-      hash = Math.imul(hash ^ (d[i] | (d[i + 1] << 8) | (d[i + 2] << 16) | (d[i + 3] << 24)), 16777619) >>> 0;
-    }
-    return { width: bitmap.width, height: bitmap.height, transparent, hash };
-  }, selector);
-}
-
-async function dragSlider(page, pointer, to) {
-  const slider = page.locator(`[data-path="${pointer}"] input[type=range]`);
-  await slider.scrollIntoViewIfNeeded();
-  const box = await slider.boundingBox();
-  const [min, max, value] = await slider.evaluate((s) => [Number(s.min), Number(s.max), Number(s.value)]);
-  const xOf = (v) => box.x + 8 + ((v - min) / (max - min)) * (box.width - 16);
-  const y = box.y + box.height / 2;
-  await page.mouse.move(xOf(value), y);
-  await page.mouse.down();
-  for (let i = 1; i <= 8; i++) await page.mouse.move(xOf(value + ((to - value) * i) / 8), y);
-  await page.mouse.up();
 }
 
 // ---- the checks -----------------------------------------------------------------
@@ -118,7 +70,7 @@ async function checkLightType(page) {
   }
   const rendered = await rendersShown(page);
   await page.selectOption('#f-lights-0-type', 'directional');
-  await waitForFullRender(page, rendered);
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
   check(!(await shown(page, '/lights/0/position')) && await shown(page, '/lights/0/direction'),
     'back to directional hides the position again');
 }
@@ -158,7 +110,7 @@ async function checkGroupSwitches(page) {
   await shot(page, '12-flat-mode-controls.png');
   const rendered = await rendersShown(page);
   await page.selectOption('#f-shading-mode', 'cel');
-  await waitForFullRender(page, rendered);
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
   check(await shown(page, '/shading/steps'), 'cel again shows the bands');
 }
 
@@ -174,7 +126,7 @@ async function checkLayers(page, requests) {
   requests.length = 0;
   let rendered = await rendersShown(page);
   await page.click('label[for=layer-lines]');
-  await waitForFullRender(page, rendered);
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
   const last = requests[requests.length - 1];
   check(last?.output === 'lines', 'the lines button renders with output "lines"', JSON.stringify(last));
   check(decodeURIComponent(page.url()).includes('"output":"lines"'), 'the URL keeps the layer');
@@ -188,12 +140,12 @@ async function checkLayers(page, requests) {
   for (const layer of ['depth', 'normal', 'id']) {
     rendered = await rendersShown(page);
     await page.click(`label[for=layer-${layer}]`);
-    await waitForFullRender(page, rendered);
+    await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
     check(requests[requests.length - 1]?.output === layer, `the ${layer} button renders with output "${layer}"`);
   }
   rendered = await rendersShown(page);
   await page.click('label[for=layer-color]');
-  await waitForFullRender(page, rendered);
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
   const back = requests[requests.length - 1];
   check(back && (back.output ?? 'color') === 'color', 'colour again leaves output to its default', JSON.stringify(back));
   check((await imageStats(page, '#view')).hash === colour.hash, 'and shows the colour image again');
@@ -241,7 +193,7 @@ async function checkSheet(page, requests) {
   const rendered = await rendersShown(page);
   requests.length = 0;
   await dragSlider(page, '/outline/width', 6);
-  await waitForFullRender(page, rendered);
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
   await page.waitForFunction((n) => Number(document.getElementById('sheet-view').dataset.sheets) > n
     && !document.getElementById('sheet').classList.contains('busy'), sheets, { timeout: STEP_TIMEOUT_MS });
   const quick = requests.filter((r) => !r.body.sheet && r.body.msaa === 1).length;
@@ -287,7 +239,7 @@ try {
     try {
       await page.goto('about:blank');
       await page.goto(`${daemon.url}/#${start}`);
-      await waitForFullRender(page, 0);
+      await waitForFullRender(page, 0, STEP_TIMEOUT_MS);
       // Closed groups would hide every control alike.
       await page.evaluate(() => { for (const d of document.querySelectorAll('#panel details')) d.open = true; });
       await part(page);

@@ -11,7 +11,7 @@
 import { spawnSync } from 'node:child_process';
 import { mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { startDaemon } from './daemon.mjs';
+import { argument, startDaemon } from './harness.mjs';
 import { fileURLToPath } from 'node:url';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -20,11 +20,6 @@ const { chromium } = await import(path.join(here, 'node_modules/playwright-core/
   process.exit(1);
 });
 
-function argument(name) {
-  const i = process.argv.indexOf(name);
-  if (i < 0 || i + 1 >= process.argv.length) throw new Error(`missing ${name}`);
-  return process.argv[i + 1];
-}
 const toondBinary = argument('--toond');
 const samplesWriter = argument('--samples-writer');
 const work = argument('--work');

@@ -7,7 +7,8 @@
 import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { launchChromium, startDaemon } from './daemon.mjs';
+import { argument, launchChromium, startDaemon } from './harness.mjs';
+import { dragSlider, imageStats, rendersShown, waitForFullRender } from './page_actions.mjs';
 import { fileURLToPath } from 'node:url';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -19,12 +20,6 @@ const { chromium } = await import(path.join(here, 'node_modules/playwright-core/
 const SKIP = 77;
 // Every wait is bounded; the ASan build's daemon is several times slower.
 const STEP_TIMEOUT_MS = Number(process.env.TOOND_BROWSER_STEP_TIMEOUT_MS || 45000);
-
-function argument(name) {
-  const i = process.argv.indexOf(name);
-  if (i < 0 || i + 1 >= process.argv.length) throw new Error(`missing ${name}`);
-  return process.argv[i + 1];
-}
 
 const toondBinary = argument('--toond');
 const modelsDir = argument('--models');
@@ -53,37 +48,6 @@ function stopDaemon(daemon) {
 }
 
 // ---- page helpers -------------------------------------------------------------
-
-async function rendersShown(page) {
-  return Number((await page.getAttribute('#view', 'data-renders')) || 0);
-}
-
-// Waits for a full-quality image newer than `after` that answers the latest state.
-async function waitForFullRender(page, after) {
-  await page.waitForFunction((n) => {
-    const v = document.getElementById('view');
-    return Number(v.dataset.renders || 0) > n && v.dataset.kind === 'full' && v.dataset.settled === 'yes';
-  }, after, { timeout: STEP_TIMEOUT_MS });
-}
-
-// Decodes the image on screen: size, dark-pixel count and a hash of the pixels.
-function imageStats(page) {
-  return page.evaluate(async () => {
-    const blob = await (await fetch(document.getElementById('view').src)).blob();
-    const bitmap = await createImageBitmap(blob);
-    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-    const g = canvas.getContext('2d');
-    g.drawImage(bitmap, 0, 0);
-    const d = g.getImageData(0, 0, bitmap.width, bitmap.height).data;
-    let dark = 0;
-    let hash = 2166136261;
-    for (let i = 0; i < d.length; i += 4) {
-      if (d[i] + d[i + 1] + d[i + 2] < 3 * 48) dark += 1;
-      hash = Math.imul(hash ^ (d[i] | (d[i + 1] << 8) | (d[i + 2] << 16)), 16777619) >>> 0;
-    }
-    return { width: bitmap.width, height: bitmap.height, dark, hash };
-  });
-}
 
 async function shot(page, name) {
   const file = path.join(artifacts, name);
@@ -162,7 +126,7 @@ async function uploadSpot(page) {
   const before = await rendersShown(page);
   await page.setInputFiles('#folder-input', spot);
   await page.waitForFunction(() => document.getElementById('model-select').value !== '', null, { timeout: STEP_TIMEOUT_MS });
-  await waitForFullRender(page, before);
+  await waitForFullRender(page, before, STEP_TIMEOUT_MS);
   const status = await page.textContent('#upload-status');
   check(/spot\.obj · 5856 triangles/.test(status) && /1 textures/.test(status), 'spot uploaded through the folder input', status);
   const options = await page.locator('#model-select option').allTextContents();
@@ -171,27 +135,12 @@ async function uploadSpot(page) {
   return true;
 }
 
-// Drags the outline-width slider's thumb from its value to `to`.
-async function dragSlider(page, pointer, to) {
-  const slider = page.locator(`[data-path="${pointer}"] input[type=range]`);
-  await slider.scrollIntoViewIfNeeded();
-  const box = await slider.boundingBox();
-  const [min, max, value] = await slider.evaluate((s) => [Number(s.min), Number(s.max), Number(s.value)]);
-  // The thumb's centre runs from half a thumb inside either end; 8 px covers Chromium's.
-  const xOf = (v) => box.x + 8 + ((v - min) / (max - min)) * (box.width - 16);
-  const y = box.y + box.height / 2;
-  await page.mouse.move(xOf(value), y);
-  await page.mouse.down();
-  for (let i = 1; i <= 8; i++) await page.mouse.move(xOf(value + ((to - value) * i) / 8), y);
-  await page.mouse.up();
-}
-
 async function checkOutlineSlider(page, requests) {
   const before = await imageStats(page);
   const shown = await rendersShown(page);
   requests.length = 0;
   await dragSlider(page, '/outline/width', 8);
-  await waitForFullRender(page, shown);
+  await waitForFullRender(page, shown, STEP_TIMEOUT_MS);
   const after = await imageStats(page);
   const width = Number(await page.inputValue('[data-path="/outline/width"] input[type=number]'));
   check(width >= 7 && width <= 9, 'dragging the outline-width slider sets the width', `width ${width}`);
@@ -224,7 +173,7 @@ async function checkInlineError(page) {
   const shown = await rendersShown(page);
   await box.fill('4');
   await box.press('Enter');
-  await waitForFullRender(page, shown);
+  await waitForFullRender(page, shown, STEP_TIMEOUT_MS);
   check(await field.evaluate((f) => !f.classList.contains('invalid')), 'a good value clears the error');
 }
 
@@ -239,7 +188,7 @@ async function checkOrbit(page) {
   await page.mouse.down();
   for (let i = 1; i <= 10; i++) await page.mouse.move(cx + i * 12, cy + i * 3);
   await page.mouse.up();
-  await waitForFullRender(page, shown);
+  await waitForFullRender(page, shown, STEP_TIMEOUT_MS);
   const after = { yaw: await yaw(), image: await imageStats(page) };
   // 120 px right at 0.5°/px turns the camera 60° toward -X.
   check(Math.abs(after.yaw - (before.yaw - 60)) < 1.5, 'dragging the image orbits the camera',
@@ -265,20 +214,20 @@ async function checkKeyboard(page) {
   let shown = await rendersShown(page);
   await page.locator('#viewport').focus();
   await page.keyboard.press('3');
-  await waitForFullRender(page, shown);
+  await waitForFullRender(page, shown, STEP_TIMEOUT_MS);
   check(await page.inputValue('#preset-select') === 'bw_comic', 'key 3 picks the B&W comic mode');
   await shot(page, '06-key-3-bw-comic.png');
   const zoom = async () => Number(await page.inputValue('[data-path="/camera/zoom"] input[type=number]'));
   const z0 = await zoom();
   shown = await rendersShown(page);
   await page.keyboard.press('w');
-  await waitForFullRender(page, shown);
+  await waitForFullRender(page, shown, STEP_TIMEOUT_MS);
   check(await zoom() > z0, 'w zooms in', `${z0} → ${await zoom()}`);
   const light = async () => Number(await page.inputValue('[data-path="/lights/0/direction/0"] input[type=number]'));
   const x0 = await light();
   shown = await rendersShown(page);
   await page.keyboard.press('l');
-  await waitForFullRender(page, shown);
+  await waitForFullRender(page, shown, STEP_TIMEOUT_MS);
   check(Math.abs(await light() - (x0 + 0.1)) < 1e-6, 'l moves the light along +x', `${x0} → ${await light()}`);
   await page.keyboard.press('?');
   check(await page.evaluate(() => document.getElementById('help').open), '? opens the key list');
@@ -289,7 +238,7 @@ async function checkKeyboard(page) {
   await page.keyboard.press('g');
   shown = await rendersShown(page);
   await page.keyboard.press('r');
-  await waitForFullRender(page, shown);
+  await waitForFullRender(page, shown, STEP_TIMEOUT_MS);
   check(!decodeURIComponent(page.url()).includes('"camera"'), 'r resets the view');
 }
 
@@ -311,7 +260,7 @@ async function checkDropUpload(page) {
   });
   await page.waitForFunction(() => /box\.obj/.test(document.getElementById('upload-status').textContent), null,
     { timeout: STEP_TIMEOUT_MS });
-  await waitForFullRender(page, before);
+  await waitForFullRender(page, before, STEP_TIMEOUT_MS);
   const status = await page.textContent('#upload-status');
   check(/box\.obj · 12 triangles/.test(status), 'a multi-file drop uploads the OBJ with its MTL', status);
   const selected = await page.evaluate(() => document.getElementById('model-select').selectedOptions[0]?.textContent);
@@ -349,7 +298,7 @@ async function checkLostServer(page, daemon, dataDir) {
   const shown = await rendersShown(page);
   const revived = await startToond(`127.0.0.1:${port}`, dataDir);
   await page.waitForSelector('#banner', { state: 'hidden', timeout: STEP_TIMEOUT_MS });
-  await waitForFullRender(page, shown);
+  await waitForFullRender(page, shown, STEP_TIMEOUT_MS);
   check(true, 'the page reconnects when the server is back');
   return revived;
 }
@@ -382,7 +331,7 @@ try {
   page.on('requestfailed', settle);
 
   await page.goto(daemon.url + '/');
-  await waitForFullRender(page, 0);
+  await waitForFullRender(page, 0, STEP_TIMEOUT_MS);
   check(await page.inputValue('#model-select') === '', 'the demo model is shown on first load');
   check(/passes: \S/.test(await page.textContent('#timing')), 'render time and passes are shown',
     await page.textContent('#timing'));
@@ -390,7 +339,7 @@ try {
 
   await checkControls(page, daemon.url);
   await page.goto(daemon.url + '/');  // drop the ramp stop the control check added
-  await waitForFullRender(page, 0);
+  await waitForFullRender(page, 0, STEP_TIMEOUT_MS);
   for (const type of ['javascript', 'css']) {
     const res = await fetch(`${daemon.url}/${type === 'css' ? 'style.css' : 'app.js'}`);
     check(res.headers.get('content-type').startsWith(`text/${type}`), `page files are served as text/${type}`);

@@ -1,5 +1,5 @@
-// What the page tests share: the toond under test and the headless
-// chromium that drives the page.
+// What the page tests share: their command line, the toond under test and
+// the headless chromium that drives the page.
 import { spawn } from 'node:child_process';
 import { createInterface } from 'node:readline';
 
@@ -30,4 +30,11 @@ export function launchChromium(chromium) {
     args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update',
       '--disable-default-apps', '--disable-sync', '--no-first-run'],
   });
+}
+
+// The value after `name` on the command line; throws when it is missing.
+export function argument(name) {
+  const i = process.argv.indexOf(name);
+  if (i < 0 || i + 1 >= process.argv.length) throw new Error(`missing ${name}`);
+  return process.argv[i + 1];
 }
