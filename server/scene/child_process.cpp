@@ -195,7 +195,9 @@ ChildResult run_child(const ChildRun& run) {
   // fills it exactly.
   const std::size_t output_cap = run.max_output + 1;
   while (out.ours.open() || err.ours.open()) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    // Rounded up, so that poll never wakes before the deadline and the run
+    // is stopped at the deadline, not up to a millisecond ahead of it.
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()).count();
     if (left <= 0) {
       result.end = ChildResult::End::TimedOut;
       child.kill_and_reap();

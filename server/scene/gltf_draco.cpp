@@ -45,11 +45,13 @@ int add_accessor(tinygltf::Model& gltf, const tinygltf::Accessor& accessor) {
 }
 
 // The time one decode may take: the helper's own limit, or what is left
-// of the import's.
+// of the import's, rounded up: a helper stopped for the import's time must
+// be stopped at or after the import's deadline, so that the deadline's
+// check afterwards reports the import's limit and not a slow decoder.
 std::chrono::milliseconds time_for_decode(const ImportLimits& limits) {
   const auto now = std::chrono::steady_clock::now();
   if (limits.deadline == std::chrono::steady_clock::time_point::max()) return kDracoTimeLimit;
-  return std::clamp(std::chrono::duration_cast<std::chrono::milliseconds>(limits.deadline - now),
+  return std::clamp(std::chrono::ceil<std::chrono::milliseconds>(limits.deadline - now),
                     std::chrono::milliseconds(1), kDracoTimeLimit);
 }
 
