@@ -107,11 +107,14 @@ async function checkGroupSwitches(page) {
   check(!(await page.locator('details[data-group=specular]').isVisible())
         && !(await page.locator('details[data-group=rim]').isVisible()),
   'flat (unlit) hides the lighting effects');
+  check(!(await shown(page, '/ambient')) && !(await shown(page, '/lights/0/direction')),
+    'flat (unlit) hides the ambient term and the lights');
   await shot(page, '12-flat-mode-controls.png');
   const rendered = await rendersShown(page);
   await page.selectOption('#f-shading-mode', 'cel');
   await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
   check(await shown(page, '/shading/steps'), 'cel again shows the bands');
+  check(await shown(page, '/ambient') && await shown(page, '/lights/0/direction'), 'and the lights');
 }
 
 async function checkLayers(page, requests) {
