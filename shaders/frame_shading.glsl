@@ -12,7 +12,7 @@ layout(std140, binding = 0) uniform FrameShading {
   vec3 u_rim_color;
   float u_halftone_cell;  // pixels
   vec3 u_contour_color;
-  float u_specular_threshold;
+  float u_specular_min_n_dot_h;  // cel: where (N·H)^shininess reaches the threshold
   vec3 u_halftone_ink;
   float u_specular_strength;
   float u_rim_strength;

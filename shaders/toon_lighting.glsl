@@ -110,11 +110,12 @@ vec3 toward_light(int i, out float reach) {
 float highlight_of(vec3 n, vec3 l, vec3 v, bool lit_here) {
 #ifdef SPECULAR
   if (lit_here) {
-    float s = pow(max(dot(n, normalize(l + v)), 0.0), u_shininess);
 #ifdef MODE_CEL
-    s = s >= u_specular_threshold ? 1.0 : 0.0;
+    // The highlight's threshold as an angle: no power in every pixel.
+    return dot(n, normalize(l + v)) >= u_specular_min_n_dot_h ? 1.0 : 0.0;
+#else
+    return pow(max(dot(n, normalize(l + v)), 0.0), u_shininess);
 #endif
-    return s;
   }
 #endif
   return 0.0;

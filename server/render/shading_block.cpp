@@ -1,6 +1,7 @@
 #include "render/shading_block.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace toond::render {
 
@@ -19,7 +20,7 @@ std::vector<std::pair<std::string_view, std::size_t>> shading_block_members() {
       {"u_contour_width", offsetof(ShadingBlock, contour_width)},
       {"u_halftone_ink", offsetof(ShadingBlock, halftone_ink)},
       {"u_halftone_cell", offsetof(ShadingBlock, halftone_cell)},
-      {"u_specular_threshold", offsetof(ShadingBlock, specular_threshold)},
+      {"u_specular_min_n_dot_h", offsetof(ShadingBlock, specular_min_n_dot_h)},
       {"u_specular_strength", offsetof(ShadingBlock, specular_strength)},
       {"u_rim_strength", offsetof(ShadingBlock, rim_strength)},
       {"u_rim_threshold", offsetof(ShadingBlock, rim_threshold)},
@@ -56,7 +57,10 @@ ShadingBlock shading_block_for(const FrameContext& frame) {
   }
   b.specular_color = params.specular.color;
   b.shininess = params.specular.shininess;
-  b.specular_threshold = params.specular.threshold;
+  // (N·H)^shininess ≥ threshold is N·H ≥ threshold^(1/shininess): the
+  // power taken once here instead of in every pixel (the schema keeps
+  // threshold > 0 and shininess ≥ 1).
+  b.specular_min_n_dot_h = std::pow(params.specular.threshold, 1.0f / params.specular.shininess);
   b.specular_strength = params.specular.strength;
   b.rim_color = params.rim.color;
   b.rim_power = params.rim.power;

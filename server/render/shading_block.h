@@ -31,7 +31,7 @@ struct ShadingBlock {
   glm::vec3 rim_color{0.0f};
   float halftone_cell = 0;
   glm::vec3 contour_color{0.0f};
-  float specular_threshold = 0;
+  float specular_min_n_dot_h = 0;
   glm::vec3 halftone_ink{0.0f};
   float specular_strength = 0;
   float rim_strength = 0;
