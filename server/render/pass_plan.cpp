@@ -141,6 +141,7 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
 
   if (params.outline.any()) {
     if (params.outline.hull) plan.passes.push_back(Pass::HullOutline);
+    plan.stencil_mark = params.outline.hull;
     if (params.outline.wireframe) plan.passes.push_back(Pass::Wireframe);
     const bool silhouette_drawn = params.outline.hull || params.outline.wireframe;
     const bool creases_wanted = params.outline.creases == OutlineCreases::Always ||

@@ -265,5 +265,15 @@ TEST(PassPlan, TheLinesLayerKeepsTheLinePassesAndDropsTheShading) {
   EXPECT_FALSE(has_define(full, "LINES_ONLY"));
 }
 
+// Only the hull outline reads the main pass's stencil mark.
+TEST(PassPlan, TheStencilIsMarkedOnlyForTheHull) {
+  EXPECT_TRUE(plan_passes(params(json::object()), {}).stencil_mark);
+  EXPECT_TRUE(plan_passes(params({{"outline", {{"method", {"hull", "edges"}}}}}), {}).stencil_mark);
+  EXPECT_FALSE(plan_passes(params({{"outline", {{"enabled", false}}}}), {}).stencil_mark);
+  EXPECT_FALSE(plan_passes(params({{"outline", {{"method", "edges"}}}}), {}).stencil_mark);
+  EXPECT_FALSE(plan_passes(params({{"outline", {{"method", "wireframe"}}}}), {}).stencil_mark);
+  EXPECT_FALSE(plan_passes(params({{"output", "depth"}}), {}).stencil_mark);
+}
+
 }  // namespace
 }  // namespace toond::render

@@ -27,6 +27,7 @@ double hull_reach(const FrameContext& frame, double world_per_px) {
 void draw_hull_outline_pass(PassContext& context) {
   const FrameContext& frame = context.frame;
   context.target.bind_for_drawing();
+  glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_NOTEQUAL, 1, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   gpu::Program& program = context.programs.get("hull.vert", "hull.frag", frame.plan.outline.defines());

@@ -45,8 +45,8 @@ void shade_object(PassContext& context, std::size_t i) {
 
 }  // namespace
 
-// Shades every object, and marks every covered sample in the stencil so the
-// hull outline can only land outside the model.
+// Shades every object, and (where the plan has a hull outline) marks every
+// covered sample in the stencil so the hull can only land outside the model.
 void draw_main_pass(PassContext& context) {
   const FrameContext& frame = context.frame;
   const RenderParams& params = frame.params;
@@ -57,7 +57,8 @@ void draw_main_pass(PassContext& context) {
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
-  glEnable(GL_STENCIL_TEST);
+  if (frame.plan.stencil_mark) glEnable(GL_STENCIL_TEST);
+  else glDisable(GL_STENCIL_TEST);
   glStencilMask(0xff);
   // The lines layer holds nothing but lines: the background is for the
   // color render they are laid over.
