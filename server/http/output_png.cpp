@@ -11,7 +11,7 @@
 namespace toond::http {
 namespace {
 
-bool ids_by_object(const render::RenderJob& job) { return !job.params.objects.empty(); }
+bool ids_by_object(const render::RenderJob& job) { return render::id_source(job.params) == render::IdSource::Object; }
 
 int id_count(const render::RenderJob& job) {
   if (ids_by_object(job)) return static_cast<int>(job.objects.size());
@@ -47,22 +47,26 @@ nlohmann::json depth_description(const image::DepthRange& range) {
 
 }  // namespace
 
-void check_output_fits(const render::RenderJob& job) {
-  if (job.params.output != render::Output::Id || job.objects.empty()) return;
-  const int count = id_count(job);
-  if (count > image::kMaxLayerIds) {
+OutputDescription describe_output(const render::RenderJob& job) {
+  OutputDescription description;
+  description.output = job.params.output;
+  if (job.params.output != render::Output::Id || job.objects.empty()) return description;
+  description.id_count = id_count(job);
+  if (description.id_count > image::kMaxLayerIds) {
     throw RequestError(422, "too_many_ids",
                        "/output: an id layer numbers at most 255 " +
                            std::string(ids_by_object(job) ? "objects" : "materials") + "; this one has " +
-                           std::to_string(count),
+                           std::to_string(description.id_count),
                        "/output");
   }
+  description.id_mapping = id_mapping(job).dump();
+  return description;
 }
 
-OutputPng encode_output(const render::RenderOutput& out, const render::RenderJob& job,
+OutputPng encode_output(const render::RenderOutput& out, const OutputDescription& output,
                         const image::PngOptions& options) {
   image::TextChunks text = options.text;
-  switch (job.params.output) {
+  switch (output.output) {
     case render::Output::Color:
     case render::Output::Lines: return {image::encode_png(out.image, options), {}};
     case render::Output::Depth: {
@@ -74,8 +78,8 @@ OutputPng encode_output(const render::RenderOutput& out, const render::RenderJob
     case render::Output::Normal:
       return {image::encode_normal_png(out.layer, options.compression_level, text), {}};
     case render::Output::Id:
-      text.emplace_back("toond:ids", id_mapping(job).dump());
-      return {image::encode_id_png(out.layer, id_count(job), options.compression_level, text), {}};
+      text.emplace_back("toond:ids", output.id_mapping);
+      return {image::encode_id_png(out.layer, output.id_count, options.compression_level, text), {}};
   }
   return {};
 }

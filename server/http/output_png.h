@@ -12,17 +12,26 @@
 
 namespace toond::http {
 
+// What encoding a render's image needs besides its pixels, worked out from
+// the request before it is queued: the kind of output, and for an id layer
+// how many ids there are and what each stands for.
+struct OutputDescription {
+  render::Output output = render::Output::Color;
+  int id_count = 0;
+  std::string id_mapping;  // JSON, for the tEXt chunk toond:ids
+};
+
+// Throws a 422 naming `output` when an id layer would number more than 255
+// objects or materials (one palette index each).
+OutputDescription describe_output(const render::RenderJob& job);
+
 struct OutputPng {
   std::string png;
   std::vector<std::pair<std::string, std::string>> headers;  // beside the answer's usual ones
 };
 
-// Before rendering: an id layer numbers at most 255 objects or materials
-// (one palette index each); more is a 422 naming `output`.
-void check_output_fits(const render::RenderJob& job);
-
 // `options.text` (a sheet's atlas) is kept; the layer's own chunks follow.
-OutputPng encode_output(const render::RenderOutput& out, const render::RenderJob& job,
+OutputPng encode_output(const render::RenderOutput& out, const OutputDescription& output,
                         const image::PngOptions& options);
 
 }  // namespace toond::http

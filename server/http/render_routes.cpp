@@ -189,7 +189,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
       job.objects.push_back(std::move(o));
     }
 
-    check_output_fits(job);
+    const OutputDescription output = describe_output(job);
     load_bundle_images(context, job);
     const bool atlas_only = wants_atlas_only(req, job.params);
     image::PngOptions png_options;
@@ -225,7 +225,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
       out = render_sheet(context, job, *layout, deadline);
     } else {
       job.deadline = deadline;
-      auto future = context.renderer.submit(job);
+      auto future = context.renderer.submit(std::move(job));
       out = await_render(future, deadline, context.render_deadline);
     }
     const double render_ms = render_thread_ms(out);
@@ -239,7 +239,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
       answer->body = image::encode_webp_animation(sheet_tiles(out.image, *layout), *animation);
       answer->content_type = "image/webp";
     } else {
-      OutputPng encoded = encode_output(out, job, png_options);
+      OutputPng encoded = encode_output(out, output, png_options);
       answer->body = std::move(encoded.png);
       answer->headers = std::move(encoded.headers);
     }

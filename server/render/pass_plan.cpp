@@ -40,6 +40,10 @@ bool is_data_layer(Output output) {
   return output == Output::Depth || output == Output::Normal || output == Output::Id;
 }
 
+IdSource id_source(const RenderParams& params) {
+  return params.objects.empty() ? IdSource::Material : IdSource::Object;
+}
+
 namespace {
 
 // A depth, normal or id layer: no shading, no outline, no floor, one
@@ -53,7 +57,7 @@ PassPlan plan_data_layer(const RenderParams& params, const ModelTraits& model) {
                  : params.output == Output::Normal ? LayerFeature::Normal
                                                    : LayerFeature::Id);
   plan.layer.set(LayerFeature::AlphaMask, model.has_masked_materials);
-  plan.ids_by = params.objects.empty() ? IdSource::Material : IdSource::Object;
+  plan.ids_by = id_source(params);
   return plan;
 }
 

@@ -82,4 +82,8 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model);
 // pass, one sample a pixel, read back as floats.
 bool is_data_layer(Output output);
 
+// What an id layer numbers: the objects of a scene, or the materials of a
+// lone model.
+IdSource id_source(const RenderParams& params);
+
 }  // namespace toond::render
