@@ -135,6 +135,31 @@ TEST_F(GltfMaterials, MaskCutsTheShapeOutOfTheTexture) {
   EXPECT_LT(opaque_right, 0.01);
 }
 
+// The data layers test a masked material's alpha like the main pass: where
+// it is cut away they hold background (depth 65535, read here as 255 in 8
+// bits; normal and id transparent), beside it the quad.
+TEST_F(GltfMaterials, DataLayersFollowWhatTheMaskLeaves) {
+  auto client = daemon().client();
+  const std::string masked = upload_glb(client, quad_glb(half_transparent_png(), {{"alphaMode", "MASK"}}));
+  for (const char* output : {"depth", "normal", "id"}) {
+    const json params = {{"model", masked}, {"width", 128}, {"height", 128}, {"output", output},
+                         {"camera", {{"yaw", 0}, {"pitch", 0}}}};
+    const image::Image layer = render_ok(client, params);
+    const bool depth = std::string(output) == "depth";
+    auto background = [&](int x, int y) {
+      const std::uint8_t* p = layer.pixel(x, y);
+      return depth ? p[0] == 255 : p[3] == 0;
+    };
+    std::size_t cut_shown = 0, kept_shown = 0;
+    for (int y = 48; y < 80; ++y) {
+      for (int x = 20; x < 40; ++x) cut_shown += !background(x, y);
+      for (int x = 88; x < 108; ++x) kept_shown += !background(x, y);
+    }
+    EXPECT_EQ(cut_shown, 0u) << output << ": the cut-away half";
+    EXPECT_EQ(kept_shown, 32u * 20u) << output << ": the half the mask keeps";
+  }
+}
+
 // Outline-coloured pixels in the half of the image (less a margin at the
 // middle) where the half transparent quad is cut away: the left half seen
 // from the front, the right half seen from behind.

@@ -28,9 +28,16 @@ void draw_layer_pass(PassContext& context) {
   program.use();
   program.set("u_view_rotation", glm::mat3(frame.camera.view));
   const bool numbered = variant.has(LayerFeature::Id);
+  // Submesh by submesh only where the material matters: an id per
+  // material, or its alpha test.
+  const bool by_material = numbered || variant.has(LayerFeature::AlphaMask);
   draw_objects(frame, context.blocks,
                {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
                 .draw = [&](std::size_t i) {
+                  if (!by_material) {
+                    draw_whole_object(frame, i);
+                    return;
+                  }
                   const GpuModel& model = frame.objects[i].model;
                   for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
                     bind_material(model, sub.material);
