@@ -25,8 +25,9 @@ namespace {
 using nlohmann::json;
 
 // What PIL decodes: the image's size, mode and tEXt chunks, and its
-// samples (16-bit grey as integers, palette images as indices, anything
-// else made RGBA).
+// samples (16-bit grey as integers; palette images as their indices when
+// `indices`, else made RGBA like everything else: a lines or normal layer
+// of few colours is written with a palette too).
 struct PilImage {
   int width = 0;
   int height = 0;
@@ -41,7 +42,7 @@ struct PilImage {
 
 bool pil_available() { return run_process({"/usr/bin/python3", "-c", "import PIL"}).status == 0; }
 
-PilImage decode_with_pil(const std::string& png) {
+PilImage decode_with_pil(const std::string& png, bool indices = false) {
   const auto dir = make_temp_dir("toond-layer");
   std::ofstream(dir / "layer.png", std::ios::binary) << png;
   const auto r = run_process({"/usr/bin/python3", "-c",
@@ -49,11 +50,12 @@ PilImage decode_with_pil(const std::string& png) {
                               "from PIL import Image\n"
                               "im = Image.open(sys.argv[1]); im.load()\n"
                               "mode = im.mode\n"
-                              "data = list(im.getdata()) if mode in ('P', 'I', 'I;16', 'L') else\\\n"
+                              "raw = ('P', 'I', 'I;16', 'L') if sys.argv[2] == 'indices' else ('I', 'I;16', 'L')\n"
+                              "data = list(im.getdata()) if mode in raw else\\\n"
                               "  [c for p in im.convert('RGBA').getdata() for c in p]\n"
                               "print(json.dumps({'size': list(im.size), 'mode': mode,"
                               " 'text': dict(im.text), 'samples': data}))\n",
-                              (dir / "layer.png").string()});
+                              (dir / "layer.png").string(), indices ? "indices" : "rgba"});
   EXPECT_EQ(r.status, 0) << r.err;
   if (r.status != 0) return {};
   const json seen = json::parse(r.out);
@@ -266,7 +268,7 @@ TEST_F(OutputLayers, ATwoObjectSceneNumbersItsObjects) {
                        {"camera", {{"yaw", 0}, {"pitch", 0}}},
                        {"objects", {{{"model", sphere}, {"transform", {{"translate", {-1.5, 0, 0}}}}},
                                     {{"model", cube}, {"transform", {{"translate", {1.5, 0, 0}}}}}}}};
-  const PilImage ids = decode_with_pil(png_of(params));
+  const PilImage ids = decode_with_pil(png_of(params), true);
   ASSERT_EQ(ids.width, 128);
   EXPECT_EQ(ids.mode, "P");
   EXPECT_EQ(std::set<int>(ids.samples.begin(), ids.samples.end()), (std::set<int>{0, 1, 2}));
@@ -283,7 +285,7 @@ TEST_F(OutputLayers, ATwoObjectSceneNumbersItsObjects) {
 TEST_F(OutputLayers, ALoneModelIsNumberedByMaterial) {
   if (!pil_available()) GTEST_SKIP() << "/usr/bin/python3 with PIL is absent (Debian: python3-pil)";
   // The demo model: a ball of one material on a base of another.
-  const PilImage ids = decode_with_pil(png_of({{"width", 96}, {"height", 96}, {"output", "id"}}));
+  const PilImage ids = decode_with_pil(png_of({{"width", 96}, {"height", 96}, {"output", "id"}}), true);
   EXPECT_EQ(std::set<int>(ids.samples.begin(), ids.samples.end()), (std::set<int>{0, 1, 2}));
   const json mapping = json::parse(ids.text["toond:ids"].get<std::string>());
   EXPECT_EQ(mapping["by"], "material");
@@ -295,21 +297,31 @@ TEST_F(OutputLayers, EachLayerWorksWithASheet) {
   if (!pil_available()) GTEST_SKIP() << "/usr/bin/python3 with PIL is absent (Debian: python3-pil)";
   for (const char* output : {"lines", "depth", "normal", "id"}) {
     const json params = {{"width", 48}, {"height", 40}, {"output", output}, {"sheet", {{"frames", 4}, {"columns", 2}}}};
-    const PilImage sheet = decode_with_pil(png_of(params));
+    const PilImage sheet = decode_with_pil(png_of(params), std::string(output) == "id");
     ASSERT_EQ(sheet.width, 96) << output;
     ASSERT_EQ(sheet.height, 80) << output;
     EXPECT_TRUE(sheet.text.contains("toond:atlas")) << output;
-    // Every tile shows the model: its centre pixel is not background.
+    // Every tile shows the model: its centre pixel is not background; the
+    // lines layer has lines in every tile and is clear in its corners.
+    const std::string kind = output;
     for (int tile = 0; tile < 4; ++tile) {
-      const int cx = (tile % 2) * 48 + 24;
-      const int cy = (tile / 2) * 40 + 20;
-      const std::string kind = output;
+      const int x0 = (tile % 2) * 48;
+      const int y0 = (tile / 2) * 40;
+      if (kind == "lines") {
+        int lines = 0;
+        for (int y = y0; y < y0 + 40; ++y) {
+          for (int x = x0; x < x0 + 48; ++x) lines += sheet.at(x, y, 3) > 0;
+        }
+        EXPECT_GT(lines, 40) << "tile " << tile;
+        EXPECT_EQ(sheet.at(x0, y0, 3), 0) << "tile " << tile;
+        continue;
+      }
+      const int cx = x0 + 24;
+      const int cy = y0 + 20;
       const bool shown = kind == "depth" ? sheet.at(cx, cy) < 65535
                          : kind == "id"  ? sheet.at(cx, cy) > 0
                                          : sheet.at(cx, cy, 3) > 0;
-      if (kind != "lines") {
-        EXPECT_TRUE(shown) << output << " tile " << tile;
-      }
+      EXPECT_TRUE(shown) << output << " tile " << tile;
     }
   }
   // One depth range over the whole sheet: the nearest pixel of all frames
