@@ -17,8 +17,8 @@ namespace toond::http {
 render::SceneFrame scene_of(const render::RenderJob& job);
 
 // The sheet as one render's output: `image` (or, for a data layer,
-// `layer`) is the whole sheet, padding and empty tiles transparent; `timings` add up each pass over the frames;
-// `lods` give per object the finest level any frame drew (and "both" faces
+// `layer`) is the whole sheet, padding and empty tiles transparent;
+// `timings` add up each pass over the frames; `lods` give per object the finest level any frame drew (and "both" faces
 // when any frame drew both), `plan` and `samples` are the frames' own.
 // With `sheet.pixel_art` each frame is drawn at 1/scale, all are quantised to
 // one palette (the given one, or one computed over every frame), then blown
