@@ -13,7 +13,7 @@ namespace toond::render {
 
 enum class Pass {
   Shadow,       // depth from the shadow-casting light
-  Main,         // cel/phong/flat shading of the model, marks the stencil
+  Main,         // cel/phong/flat shading of the model; marks the stencil for the hull
   Floor,        // the ground plane (no stencil mark: it gets no outline)
   HullOutline,  // inverted hull outside the stencil mark
   Wireframe,    // back-face edges widened into lines
