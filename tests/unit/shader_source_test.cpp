@@ -310,10 +310,16 @@ TEST_F(ShaderReload, EditsToBothStagesAreTakenTogether) {
 TEST_F(ShaderReload, AFixInTheOtherStageCompletesAnEarlierEdit) {
   ProgramCache cache(std::make_unique<ShaderDirectory>(dir_));
   const GLuint good = cache.get("t.vert", "t.frag", {}).id();
-  write(dir_ / "t.frag", "#version 430 core\nin vec3 v_col;\nout vec4 o_color;\nvoid main() { o_color = vec4(v_col, 1.0); }\n");
-  EXPECT_THROW(cache.refresh(), ShaderCompileError);  // link: v_col has no output
+  // The fragment stage alone compiles but no longer links: v_tint is
+  // integer here and float in the vertex stage. (Drivers differ on milder
+  // mismatches: some link a fragment input no vertex output writes, or a
+  // vec3 output read as a vec4, and read what is missing as undefined.)
+  write(dir_ / "t.frag",
+        "#version 430 core\nflat in ivec3 v_tint;\nout vec4 o_color;\nvoid main() { o_color = vec4(v_tint, 1.0); }\n");
+  EXPECT_THROW(cache.refresh(), ShaderCompileError);
   EXPECT_EQ(cache.get("t.vert", "t.frag", {}).id(), good);
-  write(dir_ / "t.vert", "#version 430 core\nout vec3 v_col;\nvoid main() { v_col = vec3(1.0); gl_Position = vec4(0.0); }\n");
+  write(dir_ / "t.vert",
+        "#version 430 core\nflat out ivec3 v_tint;\nvoid main() { v_tint = ivec3(1); gl_Position = vec4(0.0); }\n");
   const auto reload = cache.refresh();
   EXPECT_EQ(reload.files, (std::vector<std::string>{"t.frag", "t.vert"}));
   EXPECT_NE(cache.get("t.vert", "t.frag", {}).id(), good);
