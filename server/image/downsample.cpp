@@ -1,7 +1,9 @@
 #include "image/downsample.h"
 
 #include <cmath>
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 #include "image/srgb.h"
 
@@ -18,25 +20,30 @@ Image downsample_box(const Image& source, int factor) {
   out.height = source.height / factor;
   out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
   const float samples = static_cast<float>(factor * factor);
+  // One output row at a time: its sums fill from `factor` source rows read
+  // front to back, then are encoded.
+  std::vector<float> sums(static_cast<std::size_t>(out.width) * 4);
   for (int y = 0; y < out.height; ++y) {
-    for (int x = 0; x < out.width; ++x) {
-      float r = 0, g = 0, b = 0, a = 0;
-      for (int dy = 0; dy < factor; ++dy) {
-        for (int dx = 0; dx < factor; ++dx) {
-          const std::uint8_t* p = source.pixel(x * factor + dx, y * factor + dy);
+    std::fill(sums.begin(), sums.end(), 0.0f);
+    for (int dy = 0; dy < factor; ++dy) {
+      const std::uint8_t* p = source.pixel(0, y * factor + dy);
+      for (float* sum = sums.data(); sum != sums.data() + sums.size(); sum += 4) {
+        for (int dx = 0; dx < factor; ++dx, p += 4) {
           const float alpha = static_cast<float>(p[3]) / 255.0f;
-          r += to_linear[p[0]] * alpha;
-          g += to_linear[p[1]] * alpha;
-          b += to_linear[p[2]] * alpha;
-          a += alpha;
+          sum[0] += to_linear[p[0]] * alpha;
+          sum[1] += to_linear[p[1]] * alpha;
+          sum[2] += to_linear[p[2]] * alpha;
+          sum[3] += alpha;
         }
       }
-      std::uint8_t* q = out.pixel(x, y);
-      const float inv = a > 0 ? 1.0f / a : 0.0f;
-      q[0] = linear_to_srgb_byte(r * inv);
-      q[1] = linear_to_srgb_byte(g * inv);
-      q[2] = linear_to_srgb_byte(b * inv);
-      q[3] = static_cast<std::uint8_t>(std::lround(a / samples * 255.0f));
+    }
+    std::uint8_t* q = out.pixel(0, y);
+    for (const float* sum = sums.data(); sum != sums.data() + sums.size(); sum += 4, q += 4) {
+      const float inv = sum[3] > 0 ? 1.0f / sum[3] : 0.0f;
+      q[0] = linear_to_srgb_byte(sum[0] * inv);
+      q[1] = linear_to_srgb_byte(sum[1] * inv);
+      q[2] = linear_to_srgb_byte(sum[2] * inv);
+      q[3] = static_cast<std::uint8_t>(std::lround(sum[3] / samples * 255.0f));
     }
   }
   return out;
