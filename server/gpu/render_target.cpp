@@ -27,19 +27,37 @@ Renderbuffer make_storage(GLenum format, int width, int height, int samples) {
   return rb;
 }
 
+Texture single_sample_texture(int width, int height) {
+  Texture texture = Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.id(), 1, GL_SRGB8_ALPHA8, width, height);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return texture;
+}
+
 }  // namespace
 
-RenderTarget::RenderTarget(int width, int height, int samples, ReadbackPath readback)
+RenderTarget::RenderTarget(int width, int height, int samples, ReadbackPath readback, int shrink)
     : width_(width),
       height_(height),
       requested_samples_(samples),
-      samples_(samples) {
-  if (readback == ReadbackPath::PixelBuffer) pixel_buffer_.emplace(width, height);
+      samples_(samples),
+      shrink_(shrink) {
+  if (shrink_ < 1 || width % shrink_ != 0 || height % shrink_ != 0) {
+    throw GpuError("RenderTarget: " + std::to_string(width) + "x" + std::to_string(height) +
+                   " is not a multiple of the shrink factor " + std::to_string(shrink_));
+  }
+  if (readback == ReadbackPath::PixelBuffer) pixel_buffer_.emplace(width / shrink_, height / shrink_);
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   if (samples_ > max_samples) samples_ = max_samples;
+  if (samples_ < 1) samples_ = 1;
 
-  color_ = make_storage(GL_SRGB8_ALPHA8, width, height, samples_);
+  draw_fbo_ = Framebuffer::create();
+  if (samples_ > 1 || shrink_ == 1) {
+    color_ = make_storage(GL_SRGB8_ALPHA8, width, height, samples_);
+    glNamedFramebufferRenderbuffer(draw_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
+  }
   if (samples_ > 1) {
     // A driver may give more samples than asked for (llvmpipe has no 2×
     // mode and gives 4): report, and match, what it gave.
@@ -47,19 +65,31 @@ RenderTarget::RenderTarget(int width, int height, int samples, ReadbackPath read
     glGetNamedRenderbufferParameteriv(color_.id(), GL_RENDERBUFFER_SAMPLES, &given);
     samples_ = std::max(samples_, static_cast<int>(given));
   }
+  if (shrink_ > 1) single_color_ = single_sample_texture(width, height);
+  // One sample and shrinking: the drawing goes straight into the texture
+  // the downsample pass reads.
+  if (samples_ == 1 && shrink_ > 1) glNamedFramebufferTexture(draw_fbo_.id(), GL_COLOR_ATTACHMENT0, single_color_.id(), 0);
   depth_stencil_ = make_storage(GL_DEPTH24_STENCIL8, width, height, samples_);
-  draw_fbo_ = Framebuffer::create();
-  glNamedFramebufferRenderbuffer(draw_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
   glNamedFramebufferRenderbuffer(draw_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                                  depth_stencil_.id());
   check_complete(draw_fbo_.id(), "draw");
 
   if (samples_ > 1) {
-    resolved_color_ = make_storage(GL_SRGB8_ALPHA8, width, height, 1);
     resolve_fbo_ = Framebuffer::create();
-    glNamedFramebufferRenderbuffer(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                                   resolved_color_.id());
+    if (shrink_ > 1) {
+      glNamedFramebufferTexture(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, single_color_.id(), 0);
+    } else {
+      resolved_color_ = make_storage(GL_SRGB8_ALPHA8, width, height, 1);
+      glNamedFramebufferRenderbuffer(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                     resolved_color_.id());
+    }
     check_complete(resolve_fbo_.id(), "resolve");
+  }
+  if (shrink_ > 1) {
+    shrunk_color_ = make_storage(GL_SRGB8_ALPHA8, width / shrink_, height / shrink_, 1);
+    shrunk_fbo_ = Framebuffer::create();
+    glNamedFramebufferRenderbuffer(shrunk_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, shrunk_color_.id());
+    check_complete(shrunk_fbo_.id(), "shrunk");
   }
 }
 
@@ -68,31 +98,44 @@ void RenderTarget::bind_for_drawing() const {
   glViewport(0, 0, width_, height_);
 }
 
+GLuint RenderTarget::resolve() const {
+  if (samples_ == 1) return draw_fbo_.id();
+  // The resolve averages samples; with an sRGB source and destination and
+  // GL_FRAMEBUFFER_SRGB on, the average is taken on linear values.
+  glBlitNamedFramebuffer(draw_fbo_.id(), resolve_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
+                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  return resolve_fbo_.id();
+}
+
+GLuint RenderTarget::resolve_for_shrinking() const {
+  if (shrink_ == 1) throw GpuError("RenderTarget: resolve_for_shrinking on a target that does not shrink");
+  resolve();
+  return single_color_.id();
+}
+
+void RenderTarget::bind_for_shrinking() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, shrunk_fbo_.id());
+  glViewport(0, 0, width_ / shrink_, height_ / shrink_);
+}
+
 image::Image RenderTarget::read_back() const {
-  GLuint source = draw_fbo_.id();
-  if (samples_ > 1) {
-    // The resolve averages samples; with an sRGB source and destination and
-    // GL_FRAMEBUFFER_SRGB on, the average is taken on linear values.
-    glBlitNamedFramebuffer(draw_fbo_.id(), resolve_fbo_.id(), 0, 0, width_, height_, 0, 0, width_,
-                           height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    source = resolve_fbo_.id();
-  }
+  const GLuint source = shrink_ > 1 ? shrunk_fbo_.id() : resolve();
   if (pixel_buffer_) return pixel_buffer_->read(source);
 
   image::Image img;
-  img.width = width_;
-  img.height = height_;
-  img.rgba.resize(static_cast<std::size_t>(width_) * height_ * 4);
+  img.width = width_ / shrink_;
+  img.height = height_ / shrink_;
+  img.rgba.resize(static_cast<std::size_t>(img.width) * img.height * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   // GL's rows run bottom to top; images run top to bottom.
-  const std::size_t row = static_cast<std::size_t>(width_) * 4;
+  const std::size_t row = static_cast<std::size_t>(img.width) * 4;
   std::vector<std::uint8_t> tmp(row);
-  for (int y = 0; y < height_ / 2; ++y) {
+  for (int y = 0; y < img.height / 2; ++y) {
     auto* a = img.rgba.data() + static_cast<std::size_t>(y) * row;
-    auto* b = img.rgba.data() + static_cast<std::size_t>(height_ - 1 - y) * row;
+    auto* b = img.rgba.data() + static_cast<std::size_t>(img.height - 1 - y) * row;
     std::memcpy(tmp.data(), a, row);
     std::memcpy(a, b, row);
     std::memcpy(b, tmp.data(), row);

@@ -3,6 +3,9 @@
 // depth/stencil, multisampled when asked, resolved into a single-sample
 // framebuffer for readback. Blending and the MSAA resolve happen on linear
 // values because the colour format is sRGB and GL_FRAMEBUFFER_SRGB is on.
+// A supersampled target (`shrink` > 1) also holds the image shrunk by that
+// factor: its single-sample colour is a texture the downsample pass reads,
+// and only the shrunk image comes back.
 #include <optional>
 
 #include "gpu/gl_object.h"
@@ -20,7 +23,8 @@ enum class ReadbackPath { PixelBuffer, ClientMemory };
 
 class RenderTarget {
  public:
-  RenderTarget(int width, int height, int samples, ReadbackPath readback = ReadbackPath::PixelBuffer);
+  RenderTarget(int width, int height, int samples, ReadbackPath readback = ReadbackPath::PixelBuffer,
+               int shrink = 1);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -28,27 +32,43 @@ class RenderTarget {
   // GL_MAX_SAMPLES, or rounded up to a count it has.
   int samples() const { return samples_; }
   // Whether this target is what a request for these would get.
-  bool matches(int width, int height, int samples) const {
-    return width == width_ && height == height_ && samples == requested_samples_;
+  bool matches(int width, int height, int samples, int shrink = 1) const {
+    return width == width_ && height == height_ && samples == requested_samples_ && shrink == shrink_;
   }
+  int shrink() const { return shrink_; }
 
   // Binds the drawing framebuffer and sets the viewport.
   void bind_for_drawing() const;
 
-  // Resolves (when multisampled) and reads the pixels back, top row first,
-  // the way the target was made with.
+  // Shrinking targets only. Resolves the samples (when multisampled) into
+  // the single-sample colour texture and returns that texture.
+  GLuint resolve_for_shrinking() const;
+  // Binds the framebuffer of the shrunk image and sets its viewport.
+  void bind_for_shrinking() const;
+
+  // Reads the pixels back, top row first, the way the target was made
+  // with: the shrunk image of a shrinking target (the downsample pass has
+  // drawn it), else the drawn one, resolved when multisampled.
   image::Image read_back() const;
 
  private:
+  // The framebuffer holding one sample a pixel: the multisampled drawing
+  // resolved into it, or the drawing itself.
+  GLuint resolve() const;
+
   int width_;
   int height_;
   int requested_samples_;
   int samples_;
-  Renderbuffer color_;
+  int shrink_;
+  Renderbuffer color_;            // multisampled, or without shrinking
   Renderbuffer depth_stencil_;
   Framebuffer draw_fbo_;
-  Renderbuffer resolved_color_;   // only with samples > 1
+  Renderbuffer resolved_color_;   // only with samples > 1, without shrinking
   Framebuffer resolve_fbo_;       // only with samples > 1
+  Texture single_color_;          // shrinking only: the resolve's target, or the drawn colour
+  Renderbuffer shrunk_color_;     // shrinking only
+  Framebuffer shrunk_fbo_;        // shrinking only
   std::optional<ReadbackBuffer> pixel_buffer_;  // only for ReadbackPath::PixelBuffer
 };
 

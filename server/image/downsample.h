@@ -3,8 +3,9 @@
 
 namespace toond::image {
 
-// Averages each factor × factor block into one pixel (supersampling's
-// filter). The average is taken on linear light, not on the sRGB bytes,
+// Averages each factor × factor block into one pixel: supersampling's
+// filter on the CPU. The renderer runs it on the GPU (shaders/
+// downsample.frag); this is the yardstick its tests hold that pass to. The average is taken on linear light, not on the sRGB bytes,
 // so a half-covered edge pixel is half as bright, as MSAA's resolve makes
 // it. Colour is weighted by alpha, so transparent background does not
 // darken edges. Width and height must be multiples of `factor`.

@@ -34,10 +34,11 @@ scene::Model make_floor(const scene::Bounds& bounds, const FloorParams& params,
 
 }  // namespace
 
-gpu::RenderTarget& FrameResources::target_for(int width, int height, int samples, bool real_gpu) {
-  if (!target_ || !target_->matches(width, height, samples)) {
+gpu::RenderTarget& FrameResources::target_for(int width, int height, int samples, int shrink, bool real_gpu) {
+  if (!target_ || !target_->matches(width, height, samples, shrink)) {
     target_.reset();  // free the old storage before allocating the new
-    target_.emplace(width, height, samples, real_gpu ? gpu::ReadbackPath::PixelBuffer : gpu::ReadbackPath::ClientMemory);
+    target_.emplace(width, height, samples, real_gpu ? gpu::ReadbackPath::PixelBuffer : gpu::ReadbackPath::ClientMemory,
+                    shrink);
   }
   return *target_;
 }

@@ -18,10 +18,11 @@ namespace toond::render {
 
 class FrameResources {
  public:
-  // `real_gpu`: read back through a pixel buffer (on a CPU rasterizer the
-  // pack happens inside glReadPixels whatever the destination, and straight
-  // into memory measured faster there).
-  gpu::RenderTarget& target_for(int width, int height, int samples, bool real_gpu);
+  // The target drawn at width × height and read back shrunk by `shrink`
+  // (supersampling). `real_gpu`: read back through a pixel buffer (on a CPU
+  // rasterizer the pack happens inside glReadPixels whatever the
+  // destination, and straight into memory measured faster there).
+  gpu::RenderTarget& target_for(int width, int height, int samples, int shrink, bool real_gpu);
   gpu::ShadowMap& shadow_map_for(int size);
   gpu::NormalDepthTarget& normal_depth_for(int width, int height, int samples);
   // A square ground plane under `bounds`, rebuilt when they or the floor's

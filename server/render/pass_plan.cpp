@@ -170,11 +170,13 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   // would have drawn under them is left to the color render.
   plan.shading.set(ToonFeature::LinesOnly, lines_only);
   if (plan.samples > 1) plan.passes.push_back(Pass::Resolve);
-  plan.passes.push_back(Pass::Readback);
-  // Before averaging: the downsample weighs straight colour by alpha.
-  if (lines_only) plan.passes.push_back(Pass::Unpremultiply);
   plan.supersample = params.supersample;
+  // The downsample divides the lines layer's premultiplied colour by its
+  // alpha itself; without one, a CPU step after the readback does.
   if (plan.supersample > 1) plan.passes.push_back(Pass::Downsample);
+  plan.downsample.set(DownsampleFeature::Premultiplied, lines_only);
+  plan.passes.push_back(Pass::Readback);
+  if (lines_only && plan.supersample == 1) plan.passes.push_back(Pass::Unpremultiply);
   return plan;
 }
 

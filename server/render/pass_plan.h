@@ -21,9 +21,9 @@ enum class Pass {
   Edges,        // screen-space depth/normal discontinuities (or creases only)
   Layer,        // a data layer (depth, normal or id) in place of the colour
   Resolve,      // multisample resolve
+  Downsample,   // supersampled image averaged to the output size, on the GPU
   Readback,     // pixels back to the CPU
-  Unpremultiply,  // the lines layer's colour divided by its alpha
-  Downsample,   // supersampled image averaged to the output size
+  Unpremultiply,  // the lines layer's colour divided by its alpha (on the CPU, without supersampling)
 };
 const char* pass_name(Pass pass);
 
@@ -53,6 +53,7 @@ struct PassPlan {
   ToonVariant shading;
   // Where the hull's and the wireframe's colour comes from.
   OutlineVariant outline;
+  DownsampleVariant downsample;
   bool sample_textures = false;
   bool use_normal_maps = false;  // per material: NORMAL_MAP where it has one
   bool floor_textured = false;   // the floor pass samples floor.texture

@@ -2,7 +2,6 @@
 
 #include "gpu/egl_context.h"
 #include "gpu/gpu_error.h"
-#include "image/downsample.h"
 #include "image/unpremultiply.h"
 #include "render/pass_timer.h"
 #include "render/passes/passes.h"
@@ -49,7 +48,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   // image per query (toond_bench sweep shows it).
   PassTimer timer(out.timings, real_gpu());
   gpu::RenderTarget& target =
-      resources_.target_for(frame.draw_width, frame.draw_height, frame.plan.samples, real_gpu());
+      resources_.target_for(frame.draw_width, frame.draw_height, frame.plan.samples, frame.supersample, real_gpu());
   out.samples = target.samples();
   const FrameBlocks blocks(frame, resources_.frame_uniforms());
   PassContext context{frame, blocks, programs_, resources_, target, {}};
@@ -75,10 +74,6 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   if (frame.plan.has(Pass::Unpremultiply)) {
     image::unpremultiply_linear(out.image);
     timer.mark(Pass::Unpremultiply);
-  }
-  if (frame.plan.has(Pass::Downsample)) {
-    out.image = image::downsample_box(out.image, frame.supersample);
-    timer.mark(Pass::Downsample);
   }
   return out;
 }

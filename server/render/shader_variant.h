@@ -109,6 +109,11 @@ enum class EdgeFeature : std::size_t { CreasesOnly, Count };
 const char* define_name(EdgeFeature feature);
 using EdgeVariant = FeatureSet<EdgeFeature>;
 
+// downsample.frag's: the drawn colour is premultiplied (the lines layer).
+enum class DownsampleFeature : std::size_t { Premultiplied, Count };
+const char* define_name(DownsampleFeature feature);
+using DownsampleVariant = FeatureSet<DownsampleFeature>;
+
 // layer.frag's: which data layer it writes (one of the first three), and
 // the alpha test of masked materials.
 enum class LayerFeature : std::size_t { Depth, Normal, Id, AlphaMask, Count };

@@ -17,28 +17,21 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <map>
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "http/render_params_wire.h"
 #include "image/png_codec.h"
-#include "param_schema.h"
-#include "presets.h"
-#include "render/gpu_model.h"
-#include "render/render_params.h"
-#include "render/renderer.h"
 #include "scene/bundle_import.h"
 #include "scene/demo_model.h"
 #include "support/gl_context_test.h"
 #include "support/generated_models.h"
 #include "support/golden_compare.h"
+#include "support/in_process_render.h"
 #include "model_checks.h"
-#include "toond_shader_files.h"
+#include "presets.h"
 
 namespace toond::render {
 namespace {
@@ -149,14 +142,6 @@ class GoldenImage : public test::GlContextTest {
 
   fs::path set_;
 
-  static RenderParams params(json request) {
-    request["width"] = kSize;
-    request["height"] = kSize;
-    const json completed =
-        proto::ParamSchema::render_params().validate_and_complete(proto::Presets::builtin().expand(request));
-    return http::render_params_from_wire(completed);
-  }
-
   static const scene::Model& model(Subject subject) {
     static const scene::Model demo = scene::import_bundle(scene::make_demo_bundle());
     static const scene::Model sphere =
@@ -179,21 +164,13 @@ class GoldenImage : public test::GlContextTest {
   }
 
   static image::Image render(const GoldenCase& c) {
-    gpu::ProgramCache programs([](const std::string& name) { return std::string(shader_files::find(name)); });
-    Renderer renderer(programs);
-    std::vector<std::unique_ptr<GpuModel>> uploaded;
-    std::vector<RenderObject> objects;
-    auto add = [&](const scene::Model& m, const glm::dmat4& transform) {
-      uploaded.push_back(std::make_unique<GpuModel>(m));
-      objects.push_back({*uploaded.back(), transform});
-    };
-    if (c.subject == Subject::SphereAndCube) {
-      add(model(Subject::Sphere), glm::translate(glm::dmat4(1.0), glm::dvec3(-1.2, 0.0, 0.0)));
-      add(model(Subject::Cube), glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(1.2, 0.0, 0.0)), glm::dvec3(0.7)));
-    } else {
-      add(model(c.subject), glm::dmat4(1.0));
-    }
-    return renderer.render(objects, params(c.request)).image;
+    json request = c.request;
+    request["width"] = kSize;
+    request["height"] = kSize;
+    if (c.subject != Subject::SphereAndCube) return test::render_in_process(model(c.subject), request);
+    const glm::dmat4 left = glm::translate(glm::dmat4(1.0), glm::dvec3(-1.2, 0.0, 0.0));
+    const glm::dmat4 right = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(1.2, 0.0, 0.0)), glm::dvec3(0.7));
+    return test::render_in_process({{&model(Subject::Sphere), left}, {&model(Subject::Cube), right}}, request);
   }
 };
 

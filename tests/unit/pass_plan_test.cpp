@@ -245,24 +245,39 @@ TEST(PassPlan, IdsNumberTheObjectsOfASceneOrTheMaterialsOfAModel) {
 }
 
 // The lines layer keeps every line pass and the floor (its depth hides
-// lines), drops the shadow pass (no shading shows), writes the contour
-// alone and divides by alpha before any downsample averages it.
+// lines), drops the shadow pass (no shading shows) and writes the contour
+// alone. Its colour is premultiplied: the GPU downsample divides by alpha
+// when supersampling, a CPU step after the readback when not.
 TEST(PassPlan, TheLinesLayerKeepsTheLinePassesAndDropsTheShading) {
   ModelTraits hard;
   hard.hard_edged = true;
   const json request = {{"output", "lines"}, {"shadows", {{"enabled", true}}}, {"floor", {{"enabled", true}}},
                         {"supersample", 2}};
   const PassPlan plan = plan_passes(params(request), hard);
-  EXPECT_EQ(plan.describe(),
-            "main,floor,hull_outline,edge_prepass,edges(creases),resolve,readback,unpremultiply,downsample");
+  EXPECT_EQ(plan.describe(), "main,floor,hull_outline,edge_prepass,edges(creases),resolve,downsample,readback");
   EXPECT_TRUE(has_define(plan, "LINES_ONLY"));
   EXPECT_FALSE(has_define(plan, "SHADOWS"));
+  EXPECT_TRUE(plan.downsample.has(DownsampleFeature::Premultiplied));
+  json single = request;
+  single["supersample"] = 1;
+  EXPECT_EQ(plan_passes(params(single), hard).describe(),
+            "main,floor,hull_outline,edge_prepass,edges(creases),resolve,readback,unpremultiply");
   json colour = request;
   colour.erase("output");
   const PassPlan full = plan_passes(params(colour), hard);
   EXPECT_TRUE(full.has(Pass::Shadow));
   EXPECT_FALSE(full.has(Pass::Unpremultiply));
+  EXPECT_FALSE(full.downsample.has(DownsampleFeature::Premultiplied));
   EXPECT_FALSE(has_define(full, "LINES_ONLY"));
+}
+
+// Supersampling shrinks the image on the GPU before the readback, so only
+// output-sized pixels come back.
+TEST(PassPlan, TheDownsampleRunsBeforeTheReadback) {
+  const PassPlan plan = plan_passes(params({{"supersample", 3}, {"msaa", 1}, {"outline", {{"enabled", false}}}}), {});
+  EXPECT_EQ(plan.describe(), "main,downsample,readback");
+  EXPECT_EQ(plan.supersample, 3);
+  EXPECT_EQ(plan_passes(params({{"outline", {{"enabled", false}}}}), {}).describe(), "main,resolve,readback");
 }
 
 // Only the hull outline reads the main pass's stencil mark.

@@ -12,10 +12,10 @@ DrawPass drawing_pass(Pass pass) {
     case Pass::EdgePrepass: return draw_edge_prepass;
     case Pass::Edges: return draw_edge_pass;
     case Pass::Layer: return draw_layer_pass;
+    case Pass::Downsample: return draw_downsample_pass;
     case Pass::Resolve:
     case Pass::Readback:
-    case Pass::Unpremultiply:
-    case Pass::Downsample: return nullptr;
+    case Pass::Unpremultiply: return nullptr;
   }
   return nullptr;
 }

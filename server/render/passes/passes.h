@@ -16,12 +16,12 @@ void draw_wireframe_pass(PassContext& context);
 void draw_edge_prepass(PassContext& context);     // normals, distances and coverage per pixel
 void draw_edge_pass(PassContext& context);
 void draw_layer_pass(PassContext& context);      // depth, normal or id in place of the colour
+void draw_downsample_pass(PassContext& context);  // supersampling's box filter into the output size
 
 using DrawPass = void (*)(PassContext&);
 
-// The function that draws `pass`; nullptr for the passes after drawing
-// (resolve, readback, unpremultiply, downsample), which the renderer runs
-// itself.
+// The function that draws `pass`; nullptr for the steps the renderer runs
+// itself (resolve, readback, unpremultiply).
 DrawPass drawing_pass(Pass pass);
 
 }  // namespace toond::render

@@ -1,0 +1,38 @@
+#include "support/in_process_render.h"
+
+#include <memory>
+#include <string>
+
+#include "gpu/program_cache.h"
+#include "http/render_params_wire.h"
+#include "param_schema.h"
+#include "presets.h"
+#include "render/gpu_model.h"
+#include "render/renderer.h"
+#include "toond_shader_files.h"
+
+namespace toond::test {
+
+render::RenderParams complete_params(const nlohmann::json& request) {
+  const nlohmann::json completed =
+      proto::ParamSchema::render_params().validate_and_complete(proto::Presets::builtin().expand(request));
+  return http::render_params_from_wire(completed);
+}
+
+image::Image render_in_process(const PlacedModels& models, const nlohmann::json& request) {
+  gpu::ProgramCache programs([](const std::string& name) { return std::string(shader_files::find(name)); });
+  render::Renderer renderer(programs);
+  std::vector<std::unique_ptr<render::GpuModel>> uploaded;
+  std::vector<render::RenderObject> objects;
+  for (const auto& [model, transform] : models) {
+    uploaded.push_back(std::make_unique<render::GpuModel>(*model));
+    objects.push_back({*uploaded.back(), transform});
+  }
+  return renderer.render(objects, complete_params(request)).image;
+}
+
+image::Image render_in_process(const scene::Model& model, const nlohmann::json& request) {
+  return render_in_process(PlacedModels{{&model, glm::dmat4(1.0)}}, request);
+}
+
+}  // namespace toond::test
