@@ -50,13 +50,23 @@ RenderTarget::RenderTarget(int width, int height, int samples, ReadbackPath read
   if (readback == ReadbackPath::PixelBuffer) pixel_buffer_.emplace(width / shrink_, height / shrink_);
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  if (samples_ > max_samples) samples_ = max_samples;
-  if (samples_ < 1) samples_ = 1;
+  samples_ = std::clamp(samples_, 1, static_cast<int>(max_samples));
 
+  make_drawing_framebuffer();
+  if (samples_ > 1) make_resolve_framebuffer();
+  if (shrink_ > 1) make_shrunk_framebuffer();
+}
+
+void RenderTarget::make_drawing_framebuffer() {
   draw_fbo_ = Framebuffer::create();
+  if (shrink_ > 1) single_color_ = single_sample_texture(width_, height_);
   if (samples_ > 1 || shrink_ == 1) {
-    color_ = make_storage(GL_SRGB8_ALPHA8, width, height, samples_);
+    color_ = make_storage(GL_SRGB8_ALPHA8, width_, height_, samples_);
     glNamedFramebufferRenderbuffer(draw_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
+  } else {
+    // One sample and shrinking: the drawing goes straight into the texture
+    // the downsample pass reads.
+    glNamedFramebufferTexture(draw_fbo_.id(), GL_COLOR_ATTACHMENT0, single_color_.id(), 0);
   }
   if (samples_ > 1) {
     // A driver may give more samples than asked for (llvmpipe has no 2×
@@ -65,32 +75,31 @@ RenderTarget::RenderTarget(int width, int height, int samples, ReadbackPath read
     glGetNamedRenderbufferParameteriv(color_.id(), GL_RENDERBUFFER_SAMPLES, &given);
     samples_ = std::max(samples_, static_cast<int>(given));
   }
-  if (shrink_ > 1) single_color_ = single_sample_texture(width, height);
-  // One sample and shrinking: the drawing goes straight into the texture
-  // the downsample pass reads.
-  if (samples_ == 1 && shrink_ > 1) glNamedFramebufferTexture(draw_fbo_.id(), GL_COLOR_ATTACHMENT0, single_color_.id(), 0);
-  depth_stencil_ = make_storage(GL_DEPTH24_STENCIL8, width, height, samples_);
+  depth_stencil_ = make_storage(GL_DEPTH24_STENCIL8, width_, height_, samples_);
   glNamedFramebufferRenderbuffer(draw_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                                  depth_stencil_.id());
   check_complete(draw_fbo_.id(), "draw");
+}
 
-  if (samples_ > 1) {
-    resolve_fbo_ = Framebuffer::create();
-    if (shrink_ > 1) {
-      glNamedFramebufferTexture(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, single_color_.id(), 0);
-    } else {
-      resolved_color_ = make_storage(GL_SRGB8_ALPHA8, width, height, 1);
-      glNamedFramebufferRenderbuffer(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                                     resolved_color_.id());
-    }
-    check_complete(resolve_fbo_.id(), "resolve");
-  }
+// The samples resolve into what is read next: the texture the downsample
+// pass reads when shrinking, else a renderbuffer read back as it is.
+void RenderTarget::make_resolve_framebuffer() {
+  resolve_fbo_ = Framebuffer::create();
   if (shrink_ > 1) {
-    shrunk_color_ = make_storage(GL_SRGB8_ALPHA8, width / shrink_, height / shrink_, 1);
-    shrunk_fbo_ = Framebuffer::create();
-    glNamedFramebufferRenderbuffer(shrunk_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, shrunk_color_.id());
-    check_complete(shrunk_fbo_.id(), "shrunk");
+    glNamedFramebufferTexture(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, single_color_.id(), 0);
+  } else {
+    resolved_color_ = make_storage(GL_SRGB8_ALPHA8, width_, height_, 1);
+    glNamedFramebufferRenderbuffer(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                   resolved_color_.id());
   }
+  check_complete(resolve_fbo_.id(), "resolve");
+}
+
+void RenderTarget::make_shrunk_framebuffer() {
+  shrunk_color_ = make_storage(GL_SRGB8_ALPHA8, width_ / shrink_, height_ / shrink_, 1);
+  shrunk_fbo_ = Framebuffer::create();
+  glNamedFramebufferRenderbuffer(shrunk_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, shrunk_color_.id());
+  check_complete(shrunk_fbo_.id(), "shrunk");
 }
 
 void RenderTarget::bind_for_drawing() const {

@@ -52,6 +52,9 @@ class RenderTarget {
   image::Image read_back() const;
 
  private:
+  void make_drawing_framebuffer();
+  void make_resolve_framebuffer();
+  void make_shrunk_framebuffer();
   // The framebuffer holding one sample a pixel: the multisampled drawing
   // resolved into it, or the drawing itself.
   GLuint resolve() const;

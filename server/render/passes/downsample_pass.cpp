@@ -13,7 +13,8 @@ void draw_downsample_pass(PassContext& context) {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);
-  gpu::Program& downsample = context.programs.get("fullscreen.vert", "downsample.frag", frame.plan.downsample.defines());
+  gpu::Program& downsample =
+      context.programs.get("fullscreen.vert", "downsample.frag", frame.plan.downsample.defines());
   downsample.use();
   glBindTextureUnit(texture_unit::kDrawn, drawn);
   downsample.set("u_factor", frame.supersample);
