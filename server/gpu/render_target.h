@@ -35,7 +35,6 @@ class RenderTarget {
   bool matches(int width, int height, int samples, int shrink = 1) const {
     return width == width_ && height == height_ && samples == requested_samples_ && shrink == shrink_;
   }
-  int shrink() const { return shrink_; }
 
   // Binds the drawing framebuffer and sets the viewport.
   void bind_for_drawing() const;

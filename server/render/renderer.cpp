@@ -47,9 +47,14 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   // records a query into every screen tile, which costs a pass over the
   // image per query (toond_bench sweep shows it).
   PassTimer timer(out.timings, real_gpu());
-  gpu::RenderTarget& target =
-      resources_.target_for(frame.draw_width, frame.draw_height, frame.plan.samples, frame.supersample, real_gpu());
-  out.samples = target.samples();
+  const bool data_layer = frame.plan.has(Pass::Layer);
+  // A data layer leaves the colour target as it is: a compositor asking for
+  // colour and depth in turn would otherwise reallocate it every time.
+  gpu::RenderTarget* target =
+      data_layer ? nullptr
+                 : &resources_.target_for(frame.draw_width, frame.draw_height, frame.plan.samples,
+                                          frame.supersample, real_gpu());
+  out.samples = target ? target->samples() : 1;
   const FrameBlocks blocks(frame, resources_.frame_uniforms());
   PassContext context{frame, blocks, programs_, resources_, target, {}};
   for (Pass pass : frame.plan.passes) {
@@ -64,10 +69,11 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   }
   glBindVertexArray(0);
   glDisable(GL_STENCIL_TEST);
-  // The multisample resolve is a blit inside read_back(); its time is part
-  // of the readback figure, since the readback waits for it anyway.
-  if (frame.plan.has(Pass::Layer)) out.layer = resources_.normal_depth().read_pixels();
-  else out.image = target.read_back();
+  // Without supersampling the multisample resolve is a blit inside
+  // read_back(); its time is part of the readback figure, since the
+  // readback waits for it anyway (with it, the downsample pass resolves).
+  if (data_layer) out.layer = resources_.normal_depth().read_pixels();
+  else out.image = target->read_back();
   report_cap_checks(context.main_cap_checks, out.lods);
   check_gl("readback");
   timer.mark(Pass::Readback);

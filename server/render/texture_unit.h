@@ -2,8 +2,8 @@
 // The texture units the shaders' samplers are bound to by
 // layout(binding = N): shaders/material.glsl and toon_shadow.glsl for the
 // shading and outline programs, edges.frag and normal_depth_resolve.frag
-// for the edge pass's own, downsample.frag for supersampling's. The renderer binds textures to these and sets
-// no sampler uniforms.
+// for the edge pass's own, downsample.frag for supersampling's. The
+// renderer binds textures to these and sets no sampler uniforms.
 namespace toond::render::texture_unit {
 
 enum Shading : unsigned { kDiffuse = 0, kShadowMap = 1, kNormalMap = 2 };

@@ -8,8 +8,8 @@ namespace toond::render {
 // so only output-sized pixels are read back.
 void draw_downsample_pass(PassContext& context) {
   const FrameContext& frame = context.frame;
-  const GLuint drawn = context.target.resolve_for_shrinking();
-  context.target.bind_for_shrinking();
+  const GLuint drawn = context.target->resolve_for_shrinking();
+  context.target->bind_for_shrinking();
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);

@@ -11,7 +11,7 @@ void draw_edge_pass(PassContext& context) {
   const FrameContext& frame = context.frame;
   const OutlineParams& outline = frame.params.outline;
   const gpu::NormalDepthTarget& normals = context.resources.normal_depth();
-  context.target.bind_for_drawing();
+  context.target->bind_for_drawing();
   glDisable(GL_DEPTH_TEST);
   const EdgeVariant variant = EdgeVariant{}.set(EdgeFeature::CreasesOnly, frame.plan.creases_only);
   gpu::Program& edges = context.programs.get("fullscreen.vert", "edges.frag", variant.defines());

@@ -26,7 +26,7 @@ double hull_reach(const FrameContext& frame, double world_per_px) {
 // The inverted hull, outside the stencil mark the main pass left.
 void draw_hull_outline_pass(PassContext& context) {
   const FrameContext& frame = context.frame;
-  context.target.bind_for_drawing();
+  context.target->bind_for_drawing();
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_NOTEQUAL, 1, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

@@ -50,7 +50,7 @@ void shade_object(PassContext& context, std::size_t i) {
 void draw_main_pass(PassContext& context) {
   const FrameContext& frame = context.frame;
   const RenderParams& params = frame.params;
-  context.target.bind_for_drawing();
+  context.target->bind_for_drawing();
   glEnable(GL_FRAMEBUFFER_SRGB);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);

@@ -18,7 +18,9 @@ struct PassContext {
   const FrameBlocks& blocks;
   gpu::ProgramCache& programs;
   FrameResources& resources;
-  gpu::RenderTarget& target;
+  // The colour target; null for a data layer, which draws into the float
+  // target of FrameResources::normal_depth_for and needs no colour.
+  gpu::RenderTarget* target;
   // The main pass's cap checks (object_draw.h), read once the image is back
   // (when their answers are ready anyway) to report which objects drew both
   // sides.

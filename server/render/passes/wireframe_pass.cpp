@@ -8,7 +8,7 @@ namespace toond::render {
 // lie behind the front faces they border, so no stencil is needed.
 void draw_wireframe_pass(PassContext& context) {
   const FrameContext& frame = context.frame;
-  context.target.bind_for_drawing();
+  context.target->bind_for_drawing();
   glDisable(GL_STENCIL_TEST);
   OutlineVariant variant = frame.plan.outline;
   variant.set(OutlineFeature::LineSegment);
@@ -19,7 +19,7 @@ void draw_wireframe_pass(PassContext& context) {
   // written opaque. With one sample a pixel alpha to coverage does nothing
   // and the coverage would land in the image's alpha: the line is blended
   // over what is there by its coverage instead.
-  const bool multisampled = context.target.samples() > 1;
+  const bool multisampled = context.target->samples() > 1;
   if (multisampled) {
     glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glEnable(GL_SAMPLE_ALPHA_TO_ONE);
