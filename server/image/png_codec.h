@@ -8,6 +8,9 @@
 
 namespace toond::image {
 
+// tEXt chunks: (key, Latin-1 text) pairs.
+using TextChunks = std::vector<std::pair<std::string, std::string>>;
+
 struct PngOptions {
   // zlib level 0..9: 0 stores (fastest, largest); 1 to 3 the fastest
   // search for the layout (run-length matches for palette indices, zlib
@@ -20,7 +23,7 @@ struct PngOptions {
   int threads = 0;
   // tEXt chunks (key, Latin-1 text), written ahead of the pixels: a sprite
   // sheet carries its atlas this way.
-  std::vector<std::pair<std::string, std::string>> text{};
+  TextChunks text{};
 };
 
 // Encodes to PNG, 8 bits per channel, in the smallest layout that holds the

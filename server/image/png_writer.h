@@ -5,12 +5,10 @@
 #include <png.h>
 
 #include <string>
-#include <utility>
-#include <vector>
+
+#include "image/png_codec.h"
 
 namespace toond::image {
-
-using TextChunks = std::vector<std::pair<std::string, std::string>>;
 
 // libpng reports errors through longjmp by default; a C++ exception thrown
 // from the error callback unwinds cleanly instead (libpng is built to allow it).

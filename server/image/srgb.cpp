@@ -71,6 +71,4 @@ std::uint8_t linear_to_srgb_byte(float linear) {
   return encode(linear);
 }
 
-std::uint8_t linear_to_srgb_byte_by_formula(float linear) { return encode_by_formula(linear); }
-
 }  // namespace toond::image

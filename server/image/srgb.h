@@ -11,7 +11,5 @@ const std::array<float, 256>& srgb_to_linear_table();
 // The nearest sRGB byte of a linear value (clamped to 0..1; NaN gives 0),
 // from precomputed thresholds: the same byte as the formula, without a pow.
 std::uint8_t linear_to_srgb_byte(float linear);
-// The same by the formula itself: the yardstick the tests hold it to.
-std::uint8_t linear_to_srgb_byte_by_formula(float linear);
 
 }  // namespace toond::image

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -9,6 +10,12 @@
 
 namespace toond::image {
 namespace {
+
+// The defining formula, the yardstick: the byte nearest the encoded value.
+std::uint8_t linear_to_srgb_byte_by_formula(float linear) {
+  const float c = linear <= 0.0031308f ? linear * 12.92f : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+  return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
+}
 
 // The table encoder must give the formula's byte for every input. Every
 // float in 0..1 is a billion cases, so these walk a dense comb of them, and
