@@ -3,6 +3,7 @@
 #include <string>
 
 #include "limit_error.h"
+#include "render/pass_plan.h"
 #include "render/pixel_art_frame.h"
 #include "render/sheet_layout.h"
 
@@ -91,10 +92,16 @@ void check_drawn_render(const RenderParams& p, const RenderLimits& limits) {
 }  // namespace
 
 void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
-  // A pixel-art sheet draws each frame at 1/scale, one sample a pixel: that
-  // is what the framebuffer and sample checks weigh, not the tile's size.
+  // The framebuffer and sample checks weigh what is drawn, not what was
+  // asked: a pixel-art sheet draws each frame at 1/scale, one sample a
+  // pixel; a data layer draws one sample a pixel, unsupersampled (the pass
+  // plan gives it the Layer pass alone), whatever msaa and supersample say.
   const bool pixel_art = p.sheet && p.sheet->pixel_art;
-  const RenderParams drawn = pixel_art ? render::pixel_art_frame_params(p, p.sheet->pixel_art->scale) : p;
+  RenderParams drawn = pixel_art ? render::pixel_art_frame_params(p, p.sheet->pixel_art->scale) : p;
+  if (render::is_data_layer(p.output)) {
+    drawn.msaa = 1;
+    drawn.supersample = 1;
+  }
   if (p.sheet) check_sheet_budget(p, drawn, limits);
   check_drawn_render(drawn, limits);
 }

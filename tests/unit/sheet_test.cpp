@@ -201,6 +201,24 @@ TEST(SheetBudget, TheWholeSheetCountsAgainstTheLimits) {
   }
 }
 
+// A depth, normal or id layer draws one sample a pixel whatever msaa and
+// supersample say: a limit those would pass is no reason to refuse it.
+TEST(SheetBudget, DataLayersCountTheSamplesTheyDraw) {
+  using http::check_render_budget;
+  http::RenderLimits limits;
+  limits.max_samples = 256 * 256 * 4;
+  const json heavy = {{"width", 256}, {"height", 256}, {"msaa", 8}, {"supersample", 2}};
+  EXPECT_THROW(check_render_budget(params_of(heavy), limits), LimitError);
+  for (const char* layer : {"depth", "normal", "id"}) {
+    json request = heavy;
+    request["output"] = layer;
+    EXPECT_NO_THROW(check_render_budget(params_of(request), limits)) << layer;
+  }
+  json lines = heavy;
+  lines["output"] = "lines";
+  EXPECT_THROW(check_render_budget(params_of(lines), limits), LimitError) << "the lines layer draws what colour does";
+}
+
 TEST(CameraPresets, SpriteViewsAreOrthographicAndGivenFieldsWin) {
   const RenderParams iso = params_of({{"camera", {{"preset", "isometric"}}}});
   EXPECT_EQ(iso.camera.projection, Projection::Orthographic);
