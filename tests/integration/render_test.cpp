@@ -44,8 +44,12 @@ TEST_F(Render, DemoModelRendersAtTheRequestedSize) {
 TEST_F(Render, AWireframeWithoutMultisamplingLeavesTheImageOpaque) {
   auto client = daemon().client();
   for (int msaa : {1, 4}) {
-    const auto img = render_ok(client, {{"width", 160}, {"height", 128}, {"msaa", msaa},
-                                        {"outline", {{"method", "wireframe"}, {"width", 2.5}}}});
+    const json request = {{"width", 160}, {"height", 128}, {"msaa", msaa},
+                          {"outline", {{"method", "wireframe"}, {"width", 2.5}}}};
+    const auto img = render_ok(client, request);
+    json unlined = request;
+    unlined["outline"]["enabled"] = false;
+    EXPECT_GT(differing_share(img, render_ok(client, unlined), 3), 0.01) << "msaa " << msaa << ": the wireframe is drawn";
     std::size_t translucent = 0;
     for (std::size_t i = 3; i < img.rgba.size(); i += 4) translucent += img.rgba[i] != 255;
     EXPECT_EQ(translucent, 0u) << "msaa " << msaa;

@@ -242,6 +242,7 @@ TEST_F(PixelArtSheet, AnimatedPixelArtIsBlocksOnOnePaletteInEveryFrame) {
   for (const image::Image& frame : decoded.frames) {
     EXPECT_TRUE(whole_blocks(frame, 8));
     const std::set<std::uint32_t> colours = visible_colours(frame);
+    EXPECT_GE(colours.size(), 2u) << "every frame shows the model in more than one colour";
     every_frame.insert(colours.begin(), colours.end());
   }
   EXPECT_LE(every_frame.size(), 4u);

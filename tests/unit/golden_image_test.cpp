@@ -135,7 +135,8 @@ class GoldenImage : public test::GlContextTest {
 
   // Why this driver's references cannot be checked: empty when they can.
   std::string missing_references() const {
-    if (blessing() || fs::is_directory(set_)) return {};
+    // The CPU rasterizers' set is the one CI checks: missing, it fails.
+    if (blessing() || fs::is_directory(set_) || gpu::software_rasterizer(context().info().renderer)) return {};
     return "no golden references for " + context().info().renderer + " (" + context().info().vendor +
            "): they would be in " + set_.string() + "; TOOND_BLESS=1 writes them";
   }
