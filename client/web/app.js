@@ -128,17 +128,24 @@ function showImage({ blob, kind, ms, timing, passes }) {
   $('render-error').textContent = '';
 }
 
-function showRenderError(error) {
+// A failed answer shown in `slot` and at the control it names on `panel`;
+// a lost or busy server waits instead. Whether it was shown.
+function reportError(error, panel, slot) {
   if (error instanceof LostServer) {
     lostServer(error.retryAfter);
-    return;
+    return false;
   }
-  studio.panel.clearErrors();
+  panel.clearErrors();
+  const where = error.path ? ` at ${error.path}` : '';
+  $(slot).textContent = `${error.status} ${error.code ?? ''}${where}: ${error.message}`;
+  if (error.path) panel.showError(error.path, error.message);
+  return true;
+}
+
+function showRenderError(error) {
+  if (!reportError(error, studio.panel, 'render-error')) return;
   studio.errors += 1;
   $('view').dataset.errors = String(studio.errors);
-  const where = error.path ? ` at ${error.path}` : '';
-  $('render-error').textContent = `${error.status} ${error.code ?? ''}${where}: ${error.message}`;
-  if (error.path) studio.panel.showError(error.path, error.message);
 }
 
 // ---- a lost server --------------------------------------------------------
@@ -427,6 +434,7 @@ function showSheet({ blob, atlas, ms }) {
   view.dataset.frames = String(count);
   view.dataset.sheets = String(Number(view.dataset.sheets || 0) + 1);
   $('sheet-frame').hidden = false;
+  studio.sheetPanel.clearErrors();
   $('sheet-error').textContent = '';
   $('sheet-status').textContent = `${count} frames · ${size?.w}×${size?.h} px · ${Math.round(ms)} ms`;
   const png = $('sheet-download');
@@ -439,13 +447,7 @@ function showSheet({ blob, atlas, ms }) {
 }
 
 function showSheetError(error) {
-  if (error instanceof LostServer) {
-    lostServer(error.retryAfter);
-    return;
-  }
-  const where = error.path ? ` at ${error.path}` : '';
-  $('sheet-error').textContent = `${error.status} ${error.code ?? ''}${where}: ${error.message}`;
-  if (error.path) studio.sheetPanel.showError(error.path, error.message);
+  reportError(error, studio.sheetPanel, 'sheet-error');
 }
 
 function installSheet() {

@@ -28,6 +28,18 @@ export class ApiError extends Error {
 // A network failure or a daemon that is gone (as opposed to a refused request).
 export class LostServer extends Error {}
 
+// The error a failed answer stands for: a busy daemon (503) is a lost
+// server to wait for (Retry-After), anything else an ApiError with the
+// daemon's JSON error.
+export async function answerFailure(res) {
+  if (res.status === 503) {
+    const busy = new LostServer('the daemon is busy (503)');
+    busy.retryAfter = Number(res.headers.get('Retry-After')) || 1;
+    return busy;
+  }
+  return new ApiError(res.status, await res.json().catch(() => null));
+}
+
 export class RenderLoop {
   // bodyFor(kind) → the JSON body for 'quick' or 'full' from the current state.
   // onImage({blob, kind, ms, timing, passes}), onError(error), onIdle().
@@ -64,14 +76,8 @@ export class RenderLoop {
       const res = await fetch('/render', {
         method: 'POST', headers: { 'Content-Type': 'application/json' }, body: job.body,
       });
-      if (res.status >= 500 && res.status !== 503) {
-        const body = await res.json().catch(() => null);
-        failure = new ApiError(res.status, body);
-      } else if (res.status === 503) {
-        failure = new LostServer('the daemon is busy (503)');
-        failure.retryAfter = Number(res.headers.get('Retry-After')) || 1;
-      } else if (!res.ok) {
-        failure = new ApiError(res.status, await res.json().catch(() => null));
+      if (!res.ok) {
+        failure = await answerFailure(res);
       } else {
         const timing = parseServerTiming(res.headers.get('Server-Timing'));
         result = {

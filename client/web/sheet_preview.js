@@ -2,7 +2,7 @@
 // rides the live slider loop: it is asked for once the state has rested for
 // a moment (and the single image is up to date), one request at a time, and
 // only when its body changed since the last sheet shown.
-import { ApiError, LostServer } from './render_loop.js';
+import { LostServer, answerFailure } from './render_loop.js';
 
 // Long enough that a slider nudged twice in a row costs one sheet, short
 // enough to feel like it follows.
@@ -15,7 +15,7 @@ async function post(url, body, as) {
   } catch (e) {
     throw new LostServer(e.message);
   }
-  if (!res.ok) throw new ApiError(res.status, await res.json().catch(() => null));
+  if (!res.ok) throw await answerFailure(res);
   return as === 'json' ? res.json() : res.blob();
 }
 

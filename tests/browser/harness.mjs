@@ -32,6 +32,16 @@ export function launchChromium(chromium) {
   });
 }
 
+// A fresh page of `viewport` in its own context (returned too), and the list its uncaught
+// errors go to (a test ends by checking it is empty).
+export async function openPage(browser, viewport) {
+  const context = await browser.newContext({ viewport });
+  const page = await context.newPage();
+  const pageErrors = [];
+  page.on('pageerror', (e) => pageErrors.push(e.message));
+  return { context, page, pageErrors };
+}
+
 // The value after `name` on the command line; throws when it is missing.
 export function argument(name) {
   const i = process.argv.indexOf(name);

@@ -8,7 +8,7 @@ import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { argument, launchChromium, startDaemon } from './harness.mjs';
+import { argument, launchChromium, openPage, startDaemon } from './harness.mjs';
 import { dragSlider, imageStats, rendersShown, waitForFullRender } from './page_actions.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -40,6 +40,11 @@ async function waitForRenderError(page, after) {
     { timeout: STEP_TIMEOUT_MS });
 }
 
+// The body of the last single render asked for (not an atlas).
+function lastRender(requests) {
+  return requests.filter((r) => !r.url.includes('?')).at(-1)?.body;
+}
+
 // Shown: neither the control nor anything above it is hidden.
 function shown(page, pointer) {
   return page.locator(`[data-path="${pointer}"]`).first().isVisible();
@@ -47,7 +52,7 @@ function shown(page, pointer) {
 
 // ---- the checks -----------------------------------------------------------------
 
-async function checkLightType(page) {
+async function checkLightType(page, requests) {
   check(await shown(page, '/lights/0/direction') && !(await shown(page, '/lights/0/position'))
         && !(await shown(page, '/lights/0/radius')),
   'a directional light shows its direction, not a position or radius');
@@ -63,11 +68,20 @@ async function checkLightType(page) {
         && /position/.test(await light.locator('.field-error').first().textContent()),
   'the missing position is named at the light');
   await shot(page, '11-point-light.png');
+  const before = await rendersShown(page);
   for (const [i, v] of [2, 3, 4].entries()) {
     const box = page.locator(`[data-path="/lights/0/position/${i}"] input[type=number]`);
     await box.fill(String(v));
     await box.press('Enter');
   }
+  await page.waitForFunction((n) => {
+    const view = document.getElementById('view');
+    return Number(view.dataset.renders) > n && view.dataset.settled === 'yes'
+      && document.getElementById('render-error').textContent === '';
+  }, before, { timeout: STEP_TIMEOUT_MS });
+  const typed = lastRender(requests);
+  check(JSON.stringify(typed?.lights?.[0]?.position) === '[2,3,4]' && typed?.lights?.[0]?.type === 'point',
+    'the typed position is sent as a whole vector and renders', JSON.stringify(typed?.lights));
   const rendered = await rendersShown(page);
   await page.selectOption('#f-lights-0-type', 'directional');
   await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
@@ -130,7 +144,7 @@ async function checkLayers(page, requests) {
   let rendered = await rendersShown(page);
   await page.click('label[for=layer-lines]');
   await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
-  const last = requests[requests.length - 1];
+  const last = lastRender(requests);
   check(last?.output === 'lines', 'the lines button renders with output "lines"', JSON.stringify(last));
   check(decodeURIComponent(page.url()).includes('"output":"lines"'), 'the URL keeps the layer');
   check(await page.getAttribute('#download', 'download') === 'toond-lines.png', 'the download is named for the layer');
@@ -144,13 +158,13 @@ async function checkLayers(page, requests) {
     rendered = await rendersShown(page);
     await page.click(`label[for=layer-${layer}]`);
     await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
-    check(requests[requests.length - 1]?.output === layer, `the ${layer} button renders with output "${layer}"`);
+    check(lastRender(requests)?.output === layer, `the ${layer} button renders with output "${layer}"`);
   }
   rendered = await rendersShown(page);
   await page.click('label[for=layer-color]');
   await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
-  const back = requests[requests.length - 1];
-  check(back && (back.output ?? 'color') === 'color', 'colour again leaves output to its default', JSON.stringify(back));
+  const back = lastRender(requests);
+  check(back && !('output' in back), 'colour again leaves output to its default', JSON.stringify(back));
   check((await imageStats(page, '#view')).hash === colour.hash, 'and shows the colour image again');
 }
 
@@ -161,6 +175,15 @@ async function checkSheet(page, requests) {
   await page.check('#sheet-toggle');
   check(await shown(page, '/sheet/frames') && await shown(page, '/sheet/columns'),
     'switching the sheet on shows its controls from the schema');
+  // A refused sheet marks the control it names; the next sheet clears it.
+  const frames = page.locator('[data-path="/sheet/frames"] input[type=number]');
+  await frames.fill('0');
+  await frames.press('Enter');
+  await page.waitForFunction(() => document.getElementById('sheet-error').textContent !== '', null,
+    { timeout: STEP_TIMEOUT_MS });
+  check(/\/sheet\/frames/.test(await page.textContent('#sheet-error'))
+        && await page.locator('#sheet-controls .invalid').count() > 0,
+  'a refused sheet names the field and marks it', await page.textContent('#sheet-error'));
   for (const [field, value] of [['frames', 6], ['columns', 3]]) {
     const box = page.locator(`[data-path="/sheet/${field}"] input[type=number]`);
     await box.fill(String(value));
@@ -168,6 +191,8 @@ async function checkSheet(page, requests) {
   }
   await page.waitForFunction(() => document.getElementById('sheet-view').dataset.frames === '6'
     && !document.getElementById('sheet').classList.contains('busy'), null, { timeout: STEP_TIMEOUT_MS });
+  check(await page.locator('#sheet-controls .invalid').count() === 0 && await page.textContent('#sheet-error') === '',
+    'the sheet that then arrives clears the mark');
   const tiles = await page.locator('#sheet-tiles .tile').count();
   check(tiles === 6, 'the sheet preview outlines as many tiles as frames', `${tiles} tiles`);
   const sheetBodies = requests.filter((r) => r.body.sheet);
@@ -183,7 +208,14 @@ async function checkSheet(page, requests) {
     'the sheet is 3 tiles across and 2 down', `${sheet.width}×${sheet.height}, tile ${single.width}×${single.height}`);
   check(/6 frames/.test(await page.textContent('#sheet-status')), 'the frame count is shown',
     await page.textContent('#sheet-status'));
+  // Tile 4 of 3 columns × 2 rows: the middle of the lower row.
   const tile = page.locator('#sheet-tiles .tile').nth(4);
+  const box = await tile.boundingBox();
+  const view = await page.locator('#sheet-view').boundingBox();
+  const near = (a, b) => Math.abs(a - b) <= 2;
+  check(box && view && near(box.x - view.x, view.width / 3) && near(box.y - view.y, view.height / 2)
+        && near(box.width, view.width / 3) && near(box.height, view.height / 2),
+  'the atlas places tile 4 in the middle of the lower row', JSON.stringify({ box, view }));
   await tile.hover();
   const label = tile.locator('span');
   check(await label.isVisible() && /frame_004 · yaw/.test(await label.textContent()),
@@ -203,8 +235,9 @@ async function checkSheet(page, requests) {
   const sheetRenders = requests.filter((r) => r.body.sheet && !r.url.includes('?')).length;
   check(quick >= 2 && sheetRenders === 1, 'a drag renders quick single images and one sheet at its end',
     `${quick} quick renders, ${sheetRenders} sheet renders`);
-  check(requests.filter((r) => r.body.sheet).every((r) => r.body.outline?.width === requests.at(-1).body.outline?.width),
-    'the sheet shows the released value');
+  const released = Number(await page.inputValue('[data-path="/outline/width"] input[type=number]'));
+  check(requests.filter((r) => r.body.sheet).every((r) => r.body.outline?.width === released),
+    'the sheet shows the released value', `slider at ${released}`);
   check(decodeURIComponent(page.url()).includes('"sheet":{'), 'the URL keeps the sheet');
   await page.uncheck('#sheet-toggle');
   check(await page.locator('#sheet-frame').isHidden() && !decodeURIComponent(page.url()).includes('"sheet"'),
@@ -221,10 +254,7 @@ try {
   daemon = await startDaemon(toondBinary, '127.0.0.1:0', dataDir, STEP_TIMEOUT_MS);
   console.log(`toond at ${daemon.url}`);
   browser = await launchChromium(chromium);
-  const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
-  const page = await context.newPage();
-  const pageErrors = [];
-  page.on('pageerror', (e) => pageErrors.push(e.message));
+  const { page, pageErrors } = await openPage(browser, { width: 1280, height: 900 });
   const requests = [];
   page.on('request', (r) => {
     if (!/\/render(\?|$)/.test(r.url())) return;
@@ -233,12 +263,8 @@ try {
   // Small tiles keep the sheet quick on llvmpipe. Each part starts from a
   // fresh page, so one that fails does not hide what the others find.
   const start = encodeURIComponent(JSON.stringify({ width: 192, height: 192 }));
-  const bodies = [];
-  page.on('request', (r) => {
-    if (/\/render$/.test(r.url())) try { bodies.push(JSON.parse(r.postData() || '{}')); } catch { /* not JSON */ }
-  });
-  for (const [name, part] of [['light type', checkLightType], ['group switches', checkGroupSwitches],
-    ['layers', (p) => checkLayers(p, bodies)], ['sprite sheet', (p) => checkSheet(p, requests)]]) {
+  for (const [name, part] of [['light type', (p) => checkLightType(p, requests)], ['group switches', checkGroupSwitches],
+    ['layers', (p) => checkLayers(p, requests)], ['sprite sheet', (p) => checkSheet(p, requests)]]) {
     try {
       await page.goto('about:blank');
       await page.goto(`${daemon.url}/#${start}`);

@@ -7,7 +7,7 @@
 import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { argument, launchChromium, startDaemon } from './harness.mjs';
+import { argument, launchChromium, openPage, startDaemon } from './harness.mjs';
 import { dragSlider, imageStats, rendersShown, waitForFullRender } from './page_actions.mjs';
 import { fileURLToPath } from 'node:url';
 
@@ -313,10 +313,7 @@ try {
   daemon = await startToond('127.0.0.1:0', dataDir);
   console.log(`toond at ${daemon.url}`);
   browser = await launchChromium(chromium);
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-  const page = await context.newPage();
-  const pageErrors = [];
-  page.on('pageerror', (e) => pageErrors.push(e.message));
+  const { context, page, pageErrors } = await openPage(browser, { width: 1280, height: 800 });
   const requests = [];
   requests.maxInFlight = 0;
   let inFlight = 0;
