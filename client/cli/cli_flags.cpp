@@ -97,7 +97,10 @@ const Flag kFlags[] = {
       "the layer to render: color (default), lines, depth,\n"
       "normal or id; the same as --set output=LAYER"},
      kRender, false, set_output_layer},
-    {{"-o", "--out", "FILE", "where to write the PNG (required; - for standard output)"}, kRender, false,
+    {{"-o", "--out", "FILE",
+      "where to write the answer: a PNG, or an animated WebP\n"
+      "for sheet.animate (required; - for standard output)"},
+     kRender, false,
      set_output},
 
     {{"", "--models", "DIR", "the folder of model folders (default: ../shared/models)"}, kGallery, false,
@@ -137,9 +140,10 @@ with its own id).
 Prints the daemon's answer (id, triangles, materials, textures, warnings).
 )"},
     {Verb::render, "render",
-     "[PATH.obj|PATH.m | --model ID] [--params FILE.json]\n[--set key.sub=value ...] -o OUT.png",
+     "[PATH.obj|PATH.m | --model ID] [--params FILE.json]\n[--set key.sub=value ...] -o OUT.png|OUT.webp",
      "render a PNG of a local OBJ, a stored model or the demo model",
-     R"(Renders a PNG (POST /render). With PATH.obj (or a .m, .gltf or .glb model) the model and
+     R"(Renders a PNG (POST /render), or an animated WebP when the parameters ask
+for sheet.animate. With PATH.obj (or a .m, .gltf or .glb model) the model and
 its MTL files and textures are uploaded with the request; with --model a stored model is used;
 with neither the daemon's built-in demo model renders.
 )"},
