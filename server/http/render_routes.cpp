@@ -203,7 +203,8 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
         res.set_content(atlas.dump(2), "application/json");
         return;
       }
-      png_options.text.emplace_back("toond:atlas", atlas.dump());
+      // An animation is a WebP: the atlas comes with ?atlas=json alone.
+      if (!job.params.sheet->animate) png_options.text.emplace_back("toond:atlas", atlas.dump());
     }
     // With `sheet.animate` the frames go out as an animated WebP instead.
     std::optional<image::WebpAnimationOptions> animation;
@@ -236,7 +237,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     auto answer = std::make_shared<CachedRender>();
     const std::string encode_stage = animation ? "webp" : "png";
     if (animation) {
-      answer->body = image::encode_webp_animation(sheet_tiles(out.image, *layout), *animation);
+      answer->body = image::encode_webp_animation(out.frames, *animation);
       answer->content_type = "image/webp";
     } else {
       OutputPng encoded = encode_output(out, output, png_options);

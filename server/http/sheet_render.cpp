@@ -64,14 +64,23 @@ std::vector<image::Rgb8> sheet_palette(const std::vector<image::Image>& tiles,
 }
 
 // Quantises the small tiles to the sheet's palette (in place) and puts each,
-// blown up by the scale, into its place in the sheet.
-void finish_pixel_art(std::vector<image::Image>& tiles, const render::SheetParams::PixelArt& pixel_art,
-                      const render::SheetLayout& layout, image::Image& sheet) {
+// blown up by the scale, into its place in the sheet, or, for an
+// animation, into a frame of its own.
+void finish_pixel_art(std::vector<image::Image>& tiles, const render::SheetParams& params,
+                      const render::SheetLayout& layout, render::RenderOutput& sheet) {
+  const render::SheetParams::PixelArt& pixel_art = *params.pixel_art;
   const std::vector<image::Rgb8> palette = sheet_palette(tiles, pixel_art);
   for (std::size_t i = 0; i < tiles.size(); ++i) {
     // No palette only when no tile has a visible pixel: nothing to change.
     if (!palette.empty()) image::quantise_to_palette(tiles[i], palette, pixel_art.dither);
-    image::blit_upscaled(tiles[i], pixel_art.scale, sheet, layout.frames[i].x, layout.frames[i].y);
+    if (params.animate) {
+      image::Image& frame = sheet.frames.emplace_back(image::Image{
+          layout.tile_width, layout.tile_height,
+          std::vector<std::uint8_t>(static_cast<std::size_t>(layout.tile_width) * layout.tile_height * 4, 0)});
+      image::blit_upscaled(tiles[i], pixel_art.scale, frame, 0, 0);
+    } else {
+      image::blit_upscaled(tiles[i], pixel_art.scale, sheet.image, layout.frames[i].x, layout.frames[i].y);
+    }
   }
 }
 
@@ -101,12 +110,14 @@ render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJ
   std::vector<std::future<render::RenderOutput>> futures = context.renderer.submit_all(std::move(frames));
 
   render::RenderOutput sheet;
+  const bool animate = job.params.sheet->animate;
   const std::size_t values = static_cast<std::size_t>(layout.width) * layout.height * 4;
   // A data layer's sheet stays in floats until it is encoded, so that a
-  // depth sheet has one range over every frame.
+  // depth sheet has one range over every frame. An animation keeps its
+  // frames apart and lays out no sheet.
   if (render::is_data_layer(job.params.output)) {
     sheet.layer = {layout.width, layout.height, std::vector<float>(values, 0.0f)};
-  } else {
+  } else if (!animate) {
     sheet.image = {layout.width, layout.height, std::vector<std::uint8_t>(values, 0)};
   }
   std::vector<image::Image> art_tiles;  // pixel art: the small frames, until all are in
@@ -116,6 +127,8 @@ render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJ
     render::RenderOutput frame = await_render(futures[i], deadline, context.render_deadline);
     if (pixel_art) {
       art_tiles.push_back(std::move(frame.image));
+    } else if (animate) {
+      sheet.frames.push_back(std::move(frame.image));
     } else if (render::is_data_layer(job.params.output)) {
       copy_tile(frame.layer, layout.frames[i], sheet.layer);
     } else {
@@ -129,25 +142,11 @@ render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJ
   if (pixel_art) {
     // After the last frame: one palette needs every frame's colours.
     const auto start = std::chrono::steady_clock::now();
-    finish_pixel_art(art_tiles, *pixel_art, layout, sheet.image);
+    finish_pixel_art(art_tiles, *job.params.sheet, layout, sheet);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     sheet.timings.push_back({"pixel_art", ms, false, ms});
   }
   return sheet;
-}
-
-std::vector<image::Image> sheet_tiles(const image::Image& sheet, const render::SheetLayout& layout) {
-  std::vector<image::Image> tiles;
-  const std::size_t row_bytes = static_cast<std::size_t>(layout.tile_width) * 4;
-  for (const render::SheetFrame& frame : layout.frames) {
-    image::Image tile;
-    tile.width = layout.tile_width;
-    tile.height = layout.tile_height;
-    tile.rgba.resize(row_bytes * tile.height);
-    for (int y = 0; y < tile.height; ++y) std::memcpy(tile.pixel(0, y), sheet.pixel(frame.x, frame.y + y), row_bytes);
-    tiles.push_back(std::move(tile));
-  }
-  return tiles;
 }
 
 }  // namespace toond::http

@@ -17,7 +17,8 @@ namespace toond::http {
 render::SceneFrame scene_of(const render::RenderJob& job);
 
 // The sheet as one render's output: `image` (or, for a data layer,
-// `layer`) is the whole sheet, padding and empty tiles transparent;
+// `layer`) is the whole sheet, padding and empty tiles transparent; for
+// `sheet.animate`, `frames` holds the frames instead and there is no sheet;
 // `timings` add up each pass over the frames; `lods` give per object the finest level any frame drew (and "both" faces
 // when any frame drew both), `plan` and `samples` are the frames' own.
 // With `sheet.pixel_art` each frame is drawn at 1/scale, all are quantised to
@@ -25,9 +26,5 @@ render::SceneFrame scene_of(const render::RenderJob& job);
 // up into their tiles; the time that takes is the timing `pixel_art`.
 render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJob& job,
                                   const render::SheetLayout& layout, std::chrono::steady_clock::time_point deadline);
-
-// The sheet's tiles cut out again, in frame order: the frames of an
-// animation.
-std::vector<image::Image> sheet_tiles(const image::Image& sheet, const render::SheetLayout& layout);
 
 }  // namespace toond::http

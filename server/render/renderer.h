@@ -21,6 +21,9 @@ struct RenderOutput {
   // A data layer's values (output depth, normal or id), turned into its
   // PNG by the caller, who knows what the ids stand for.
   image::FloatImage layer;
+  // An animated sheet's frames, in the atlas's order, each tile-sized (no
+  // sheet is laid out: the animation holds them one by one).
+  std::vector<image::Image> frames;
   std::vector<PassTiming> timings;
   std::string plan;  // PassPlan::describe()
   std::vector<LodUse> lods;  // one per object, in order

@@ -238,8 +238,18 @@ TEST_F(PixelArtSheet, AnimatedPixelArtIsBlocksOnOnePaletteInEveryFrame) {
   ASSERT_FALSE(webp.empty());
   const WebpFrames decoded = decode_webp_frames(webp);
   ASSERT_EQ(decoded.frames.size(), 8u);
+  // The same frames as the pixel-art sheet's tiles (one palette, computed
+  // over the same small frames).
+  json sheet_params = params;
+  sheet_params["sheet"].erase("animate");
+  const image::Image sheet = image::decode_png(body_of(sheet_params, "image/png"));
+  const json atlas = atlas_of(sheet_params);
   std::set<std::uint32_t> every_frame;
-  for (const image::Image& frame : decoded.frames) {
+  for (std::size_t i = 0; i < decoded.frames.size(); ++i) {
+    const image::Image& frame = decoded.frames[i];
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%03zu", i);
+    EXPECT_TRUE(same_visible_pixels(frame, tile_of(sheet, atlas["frames"][name]["frame"]))) << name;
     EXPECT_TRUE(whole_blocks(frame, 8));
     const std::set<std::uint32_t> colours = visible_colours(frame);
     EXPECT_GE(colours.size(), 2u) << "every frame shows the model in more than one colour";
