@@ -175,6 +175,7 @@ async function checkSheet(page, requests) {
   await page.check('#sheet-toggle');
   check(await shown(page, '/sheet/frames') && await shown(page, '/sheet/columns'),
     'switching the sheet on shows its controls from the schema');
+  check(!(await shown(page, '/sheet/frame_ms')), 'the animation\'s frame time hides while animate is off');
   // A refused sheet marks the control it names; the next sheet clears it.
   const frames = page.locator('[data-path="/sheet/frames"] input[type=number]');
   await frames.fill('0');
