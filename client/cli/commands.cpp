@@ -182,7 +182,7 @@ int render(const Options& options) {
     std::cerr << "; server timing: " << timing;
   }
   std::cerr << "\n";
-  if (webp && options.output.size() >= 4 && options.output.compare(options.output.size() - 4, 4, ".png") == 0) {
+  if (webp && options.output.ends_with(".png")) {
     std::cerr << "toon: note: " << options.output << " holds a WebP (sheet.animate), not a PNG; name it .webp\n";
   }
   return 0;

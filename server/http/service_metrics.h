@@ -24,7 +24,7 @@ class ServiceMetrics {
   // its Server-Timing header: queue wait, each pass, encoding (stage
   // `encode_stage`: "png", or "webp" for an animated sheet).
   void observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms,
-                      double encode_ms, const std::string& encode_stage = "png");
+                      double encode_ms, const std::string& encode_stage);
   // One upload imported as a new model: how long the import took (parse,
   // mesh processing, levels of detail, storing) and the bundle's bytes.
   void observe_import(double seconds, std::size_t bytes);

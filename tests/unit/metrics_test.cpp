@@ -116,7 +116,7 @@ render::PassTiming timing(const std::string& pass, double ms) {
 
 TEST(Metrics, ServiceMetricsTimeRendersAndEachStage) {
   ServiceMetrics metrics;
-  metrics.observe_render(0.02, {timing("shade", 4.0), timing("outline", 1.0)}, 1.5, 2.0);
+  metrics.observe_render(0.02, {timing("shade", 4.0), timing("outline", 1.0)}, 1.5, 2.0, "png");
   const std::string text = metrics.registry().exposition();
   EXPECT_NE(text.find("toond_render_seconds_count 1\n"), std::string::npos) << text;
   EXPECT_NE(text.find("toond_render_seconds_bucket{le=\"0.025\"} 1\n"), std::string::npos) << text;
