@@ -37,7 +37,8 @@ const Flag kLimitFlags[] = {
        o.limits.render.max_output_pixels = parse_count(flag, v, 16 * 16, kMaxSide * kMaxSide);
      }},
     {{"", "--max-samples", "N",
-      "width x height x supersample^2 x msaa of a render, times\n"
+      "width x height x supersample^2 x msaa of a render as drawn\n"
+      "(a depth, normal or id layer: one sample a pixel), times\n"
       "its frames for a sheet (default 134217728 = 4096x4096x8)"},
      [](Options& o, Value flag, Value v) {
        o.limits.render.max_samples = parse_count(flag, v, 16 * 16, 16384ull * 16384ull * 8ull);
