@@ -43,6 +43,16 @@ const Flag kLimitFlags[] = {
      [](Options& o, Value flag, Value v) {
        o.limits.render.max_samples = parse_count(flag, v, 16 * 16, 16384ull * 16384ull * 8ull);
      }},
+    {{"", "--max-render-cost", "M",
+      "predicted cost of a render in Msamples: surface layers x\n"
+      "pixels x samples x passes, plus its triangles and the\n"
+      "screen tiles they cross, for all of a sheet's frames;\n"
+      "refused before anything is drawn, with what would fit\n"
+      "(default 5000, about 9 s of llvmpipe on 2 cores;\n"
+      "0: no limit). The upload answer shows a model's layers"},
+     [](Options& o, Value flag, Value v) {
+       o.limits.render.max_render_cost = static_cast<double>(parse_count(flag, v, 0, 1ull << 40));
+     }},
     {{"", "--max-lights", "N", "lights in a render (default 8)"},
      [](Options& o, Value flag, Value v) { o.limits.render.max_lights = parse_count(flag, v, 0, 8); }},
     {{"", "--max-objects", "N", "objects in a scene (default 16)"},

@@ -41,6 +41,14 @@ const Flag kGeneralFlags[] = {
       "render threads, each with its own GL context and its\n"
       "own GPU copies of the models (default 1)"},
      [](Options& o, Value flag, Value v) { o.render_threads = static_cast<std::size_t>(parse_count(flag, v, 1, 64)); }},
+    {{"", "--long-render-cost", "M",
+      "renders predicted to cost M Msamples or more (see\n"
+      "--max-render-cost) wait in a lane of their own, served\n"
+      "by one more render thread and context, so they never\n"
+      "hold up shorter ones (default 300; 0: one lane)"},
+     [](Options& o, Value flag, Value v) {
+       o.long_render_cost = static_cast<double>(parse_count(flag, v, 0, 1ull << 40));
+     }},
     {{"", "--max-upload-bytes", "N", "largest request body accepted (default 268435456)"},
      [](Options& o, Value flag, Value v) {
        o.max_upload_bytes = static_cast<std::size_t>(parse_count(flag, v, 1024, 1ull << 40));
@@ -59,9 +67,11 @@ const Flag kGeneralFlags[] = {
       "out first"},
      [](Options& o, Value flag, Value v) { o.gpu_cache_bytes = megabytes(flag, v, 1); }},
     {{"", "--render-timeout", "S",
-      "seconds a request waits for its render (default 60;\n"
+      "seconds a request waits for its render (default 10;\n"
       "fractions allowed). Past it: 503 \"deadline_exceeded\"\n"
-      "with Retry-After, and a job not yet started is dropped"},
+      "with Retry-After, and a job not yet started is dropped;\n"
+      "a long render (see --long-render-cost) is stopped\n"
+      "between chunks of triangles: 503 \"render_aborted\""},
      [](Options& o, Value flag, Value v) { o.render_timeout_s = parse_seconds(flag, v, 0.001, 86400); }},
     {{"", "--shader-dir", "DIR",
       "read the GLSL files (the names in shaders/) from DIR\n"

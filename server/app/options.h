@@ -18,13 +18,16 @@ struct Options {
   std::optional<int> gpu;
   std::size_t queue = 32;
   std::size_t render_threads = 1;  // each with its own GL context
+  // Msamples (render/render_cost.h) from which a render waits in the long
+  // lane, served by a render thread of its own; 0: one lane.
+  double long_render_cost = 300;
   std::size_t max_upload_bytes = 256u << 20;
   int threads = 8;
   // Finished PNGs kept for identical requests; 0 turns the cache off.
   std::size_t result_cache_bytes = std::size_t{64} << 20;
   // GPU memory for uploaded models kept between renders.
   std::size_t gpu_cache_bytes = std::size_t{1} << 30;
-  double render_timeout_s = 60;
+  double render_timeout_s = 10;
   // Empty: the shaders embedded in the binary. Otherwise GLSL files are read
   // from this folder and recompiled when they change (look development).
   std::string shader_dir;

@@ -8,7 +8,7 @@ namespace toond::http {
 namespace {
 
 constexpr const char* kAllowedHeaders = "Authorization, Content-Type";
-constexpr const char* kExposedHeaders = "Server-Timing, X-Toond-Passes, X-Toond-Lod, X-Toond-Samples, Retry-After, ETag";
+constexpr const char* kExposedHeaders = "Server-Timing, X-Toond-Passes, X-Toond-Lod, X-Toond-Samples, X-Toond-Cost, Retry-After, ETag";
 
 bool is_preflight(const httplib::Request& req) {
   return req.method == "OPTIONS" && req.has_header("Access-Control-Request-Method");

@@ -53,6 +53,12 @@ void write_exception(httplib::Response& res, std::exception_ptr ep) {
     res.set_header("Retry-After", "5");
     write_error(res, 503, "deadline_exceeded",
                 "the render's deadline (--render-timeout) passed while it waited in the queue");
+  } catch (const render::RenderAborted& e) {
+    res.set_header("Retry-After", "5");
+    write_error(res, 503, "render_aborted",
+                std::string(e.what()) +
+                    ": it ran past --render-timeout; a smaller size, fewer samples or fewer outline passes draw "
+                    "sooner (the answer's X-Toond-Cost header and --max-render-cost price a request)");
   } catch (const render::QueueFull& e) {
     res.set_header("Retry-After", "1");
     write_error(res, 503, "busy", std::string(e.what()) + "; retry shortly");

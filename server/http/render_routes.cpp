@@ -22,6 +22,8 @@
 #include "image/webp_animation.h"
 #include "render/ramp_image.h"
 #include "http/render_budget.h"
+#include "http/render_price.h"
+#include "limit_error.h"
 #include "render/sheet_atlas.h"
 #include "render/sheet_layout.h"
 #include "param_schema.h"
@@ -129,6 +131,35 @@ bool wants_atlas_only(const httplib::Request& req, const render::RenderParams& p
   return true;
 }
 
+// Prices the job, refuses it over --max-render-cost, and marks it with what
+// the price decides: its queue lane and whether its draws are paced. The
+// client is the connection's address: clients take turns in the queue.
+RenderPrice admit_by_price(ServiceContext& context, render::RenderJob& job, const httplib::Request& req) {
+  const RenderPrice price = price_render(job);
+  try {
+    check_render_cost(job, price, context.limits.render);
+  } catch (const LimitError&) {
+    context.metrics.count_cost_refusal();
+    throw;
+  }
+  job.client = req.remote_addr;
+  job.cost = price.total.units();
+  job.paced_chunk_triangles = paced_chunk_triangles(price.per_frame());
+  return price;
+}
+
+// "cost=12.3; frames=1; samples=…; triangles=…; tiles=…; framebuffer=…":
+// the predicted Msamples and what they are made of, for clients that size
+// their requests and for the cost benchmark, which fits the weights.
+std::string cost_header(const RenderPrice& price) {
+  std::ostringstream s;
+  s.precision(4);
+  const render::RenderCost& c = price.total;
+  s << "cost=" << c.units() << "; frames=" << price.frames << "; samples=" << c.samples << "; triangles=" << c.triangles
+    << "; tiles=" << c.tiles << "; framebuffer=" << c.framebuffer;
+  return s.str();
+}
+
 }  // namespace
 
 void register_render_routes(httplib::Server& server, ServiceContext& context) {
@@ -217,19 +248,28 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     const std::string cache_key = completed.dump();
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
 
+    const RenderPrice price = admit_by_price(context, job, req);
     const auto submitted = Clock::now();
     // Past the deadline the render thread skips the job instead of drawing
     // an image nobody waits for any more.
     const auto deadline = submitted + context.render_deadline;
     render::RenderOutput out;
-    if (layout) {
-      out = render_sheet(context, job, *layout, deadline);
-    } else {
-      job.deadline = deadline;
-      auto future = context.renderer.submit(std::move(job));
-      out = await_render(future, deadline, context.render_deadline);
+    try {
+      if (layout) {
+        out = render_sheet(context, job, *layout, deadline);
+      } else {
+        job.deadline = deadline;
+        const auto waited = wait_limit(job, deadline);
+        auto future = context.renderer.submit(std::move(job));
+        out = await_render(future, waited, context.render_deadline);
+      }
+    } catch (const render::RenderAborted&) {
+      context.metrics.count_abort();
+      throw;
     }
     const double render_ms = render_thread_ms(out);
+    context.metrics.observe_cost(price.total.units(), context.renderer.is_long(price.total.units()),
+                                 render_ms / 1000.0);
     const double queue_ms =
         std::chrono::duration<double, std::milli>(Clock::now() - submitted).count() - render_ms;
 
@@ -251,6 +291,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     answer->passes = out.plan;
     answer->lod = lod_header(out.lods);
     answer->samples = out.samples;
+    answer->headers.emplace_back("X-Toond-Cost", cost_header(price));
     answer_render(req, res, *answer);
     if (context.results) context.results->put(cache_key, std::move(answer));
     context.metrics.observe_render(std::chrono::duration<double>(Clock::now() - started).count(), out.timings,

@@ -6,6 +6,11 @@
 
 namespace toond::http {
 
+std::chrono::steady_clock::time_point wait_limit(const render::RenderJob& job,
+                                                 std::chrono::steady_clock::time_point deadline) {
+  return job.paced_chunk_triangles > 0 ? deadline + kAbortGrace : deadline;
+}
+
 render::RenderOutput await_render(std::future<render::RenderOutput>& future,
                                   std::chrono::steady_clock::time_point deadline, std::chrono::milliseconds limit) {
   if (future.wait_until(deadline) != std::future_status::ready) {

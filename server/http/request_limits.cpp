@@ -59,6 +59,7 @@ nlohmann::json limits_document(const RequestLimits& limits) {
       {"--max-samples", limits.render.max_samples},
       {"--max-lights", limits.render.max_lights},
       {"--max-objects", limits.render.max_objects},
+      {"--max-render-cost", limits.render.max_render_cost},
   };
 }
 

@@ -13,6 +13,9 @@ const std::vector<double> kPassBounds = {0.0005, 0.001, 0.0025, 0.005, 0.01, 0.0
 // uploads; bundles from a few kilobytes to the upload limit.
 const std::vector<double> kImportBounds = {0.01, 0.05, 0.1, 0.25, 0.5, 1, 2.5, 5, 10, 30, 60};
 const std::vector<double> kImportByteBounds = {1e4, 1e5, 1e6, 1e7, 3e7, 1e8, 3e8};
+// A thumbnail costs a few Msamples, a default 512² render tens, a large
+// sheet thousands; the default refusal is at 20000.
+const std::vector<double> kCostBounds = {1, 3, 10, 30, 100, 300, 1000, 3000, 10000, 30000};
 
 }  // namespace
 
@@ -26,6 +29,18 @@ ServiceMetrics::ServiceMetrics()
                                         "Time of each render stage as in Server-Timing (queue wait, each GPU pass, png), "
                                         "in seconds.", {"pass"},
                                         kPassBounds)),
+      predicted_cost_(registry_.histogram("toond_render_predicted_cost_msamples",
+                                          "Predicted cost of each admitted render request (all its frames), in "
+                                          "Msamples, by queue lane.", {"lane"}, kCostBounds)),
+      predicted_total_(registry_.counter("toond_render_predicted_msamples_total",
+                                         "Predicted cost of the renders that finished, in Msamples.")),
+      render_thread_seconds_(registry_.counter("toond_render_thread_seconds_total",
+                                               "Render threads' measured time for the same renders, in seconds.")),
+      cost_refusals_(registry_.counter("toond_render_cost_refusals_total",
+                                       "Render requests refused for their predicted cost (--max-render-cost).")),
+      aborts_(registry_.counter("toond_render_aborts_total",
+                                "Renders stopped at their deadline between chunks of triangles (503 "
+                                "render_aborted).")),
       import_seconds_(registry_.histogram("toond_import_seconds",
                                           "Uploads imported as new models, from the bundle to the stored model, in "
                                           "seconds.", {}, kImportBounds)),
@@ -43,6 +58,16 @@ void ServiceMetrics::observe_render(double seconds, const std::vector<render::Pa
   for (const render::PassTiming& p : passes) pass_seconds_.observe({p.pass}, p.ms / 1000.0);
   pass_seconds_.observe({encode_stage}, encode_ms / 1000.0);
 }
+
+void ServiceMetrics::observe_cost(double predicted_msamples, bool long_lane, double render_thread_seconds) {
+  predicted_cost_.observe({long_lane ? "long" : "short"}, predicted_msamples);
+  predicted_total_.add({}, predicted_msamples);
+  render_thread_seconds_.add({}, render_thread_seconds);
+}
+
+void ServiceMetrics::count_cost_refusal() { cost_refusals_.add({}); }
+
+void ServiceMetrics::count_abort() { aborts_.add({}); }
 
 void ServiceMetrics::observe_import(double seconds, std::size_t bytes) {
   import_seconds_.observe({}, seconds);

@@ -25,6 +25,14 @@ class ServiceMetrics {
   // `encode_stage`: "png", or "webp" for an animated sheet).
   void observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms,
                       double encode_ms, const std::string& encode_stage);
+  // A render request's price (render/render_cost.h) as it was admitted, its
+  // lane, and the render threads' time its frames took: the two counters'
+  // ratio is the seconds one Msample costs on this machine.
+  void observe_cost(double predicted_msamples, bool long_lane, double render_thread_seconds);
+  // A request refused for its predicted cost (--max-render-cost).
+  void count_cost_refusal();
+  // A render stopped at its deadline between chunks (503 render_aborted).
+  void count_abort();
   // One upload imported as a new model: how long the import took (parse,
   // mesh processing, levels of detail, storing) and the bundle's bytes.
   void observe_import(double seconds, std::size_t bytes);
@@ -37,6 +45,11 @@ class ServiceMetrics {
   CounterFamily& requests_;
   HistogramFamily& render_seconds_;
   HistogramFamily& pass_seconds_;
+  HistogramFamily& predicted_cost_;
+  CounterFamily& predicted_total_;
+  CounterFamily& render_thread_seconds_;
+  CounterFamily& cost_refusals_;
+  CounterFamily& aborts_;
   HistogramFamily& import_seconds_;
   HistogramFamily& import_bytes_;
 };

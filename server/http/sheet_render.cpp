@@ -105,6 +105,10 @@ render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJ
     one.params = render::frame_params(job.params, layout, frame);
     if (pixel_art) one.params = render::pixel_art_frame_params(std::move(one.params), pixel_art->scale);
     one.deadline = deadline;
+    // The sheet waits in the lane its whole price says, its client's turn.
+    one.client = job.client;
+    one.cost = job.cost;
+    one.paced_chunk_triangles = job.paced_chunk_triangles;
     frames.push_back(std::move(one));
   }
   std::vector<std::future<render::RenderOutput>> futures = context.renderer.submit_all(std::move(frames));
@@ -124,7 +128,7 @@ render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJ
   for (std::size_t i = 0; i < futures.size(); ++i) {
     // Each tile goes into place as soon as it is done, and its own image
     // is let go while the next frame renders.
-    render::RenderOutput frame = await_render(futures[i], deadline, context.render_deadline);
+    render::RenderOutput frame = await_render(futures[i], wait_limit(job, deadline), context.render_deadline);
     if (pixel_art) {
       art_tiles.push_back(std::move(frame.image));
     } else if (animate) {

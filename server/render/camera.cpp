@@ -16,10 +16,8 @@ struct ViewAxes {
 };
 
 ViewAxes view_axes(double yaw_deg, double pitch_deg) {
-  const double yaw = glm::radians(yaw_deg);
-  const double pitch = glm::radians(pitch_deg);
   ViewAxes axes;
-  axes.toward_eye = {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
+  axes.toward_eye = toward_eye(yaw_deg, pitch_deg);
   // Looking straight up or down makes +Y a bad up vector; pitch is limited
   // to ±89° by the schema, so +Y is always usable.
   axes.right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), axes.toward_eye));
@@ -67,6 +65,12 @@ std::vector<ViewAxes> framed_axes(const CameraParams& params) {
 }
 
 }  // namespace
+
+glm::dvec3 toward_eye(double yaw_deg, double pitch_deg) {
+  const double yaw = glm::radians(yaw_deg);
+  const double pitch = glm::radians(pitch_deg);
+  return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
+}
 
 CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, double aspect,
                        std::span<const glm::dvec3> outline) {

@@ -24,6 +24,9 @@ struct CameraSetup {
   glm::mat4 view_projection() const { return glm::mat4(projection * view); }
 };
 
+// The unit vector from the target toward the eye at this yaw and pitch.
+glm::dvec3 toward_eye(double yaw_deg, double pitch_deg);
+
 // yaw 0, pitch 0 puts the eye on +Z of the bounds' centre, looking toward -Z.
 // With distance 0 the eye backs off (orthographic: the view widens) until
 // every point of `outline` lies within kFrameFill of the image's half

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "render/draw_pacing.h"
 #include "render/vertex_attribute.h"
 
 namespace toond::render {
@@ -125,22 +126,18 @@ void GpuModel::bind_material(int index) const {
 }
 
 void GpuModel::draw(const scene::Submesh& submesh) const {
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(submesh.index_count), GL_UNSIGNED_INT,
-                 reinterpret_cast<const void*>(static_cast<std::uintptr_t>(submesh.first_index) *
-                                               sizeof(std::uint32_t)));
+  draw_triangles(submesh.index_count, submesh.first_index);
 }
 
 void GpuModel::draw_all(std::size_t lod) const {
   const Level& level = levels_[lod];
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(level.index_count), GL_UNSIGNED_INT,
-                 reinterpret_cast<const void*>(level.first_index * sizeof(std::uint32_t)));
+  draw_triangles(level.index_count, level.first_index);
 }
 
 void GpuModel::draw_caps(std::size_t lod) const {
   const Level& level = levels_[lod];
   if (level.cap_index_count == 0) return;
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(level.cap_index_count), GL_UNSIGNED_INT,
-                 reinterpret_cast<const void*>(level.first_cap_index * sizeof(std::uint32_t)));
+  draw_triangles(level.cap_index_count, level.first_cap_index);
 }
 
 }  // namespace toond::render

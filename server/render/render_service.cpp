@@ -1,5 +1,8 @@
 #include "render/render_service.h"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <iostream>
 
@@ -26,7 +29,8 @@ std::unique_ptr<gpu::ShaderSources> shader_sources(const std::string& shader_dir
 }  // namespace
 
 RenderService::RenderService(const Options& options) : options_(options) {
-  const std::size_t workers = std::max<std::size_t>(1, options_.render_threads);
+  worker_count_ = std::max<std::size_t>(1, options_.render_threads) + (options_.long_render_cost > 0 ? 1 : 0);
+  const std::size_t workers = worker_count_;
   forgets_.resize(workers);
   cache_use_.resize(workers);
   // One at a time: the first context's description is the service's, and a
@@ -57,16 +61,22 @@ void RenderService::stop() {
   }
 }
 
+bool RenderService::is_long(double cost) const {
+  return options_.long_render_cost > 0 && cost >= options_.long_render_cost;
+}
+
 std::future<RenderOutput> RenderService::submit(RenderJob job) {
   Task task;
   task.job = std::move(job);
   auto future = task.promise.get_future();
   {
     std::lock_guard lock(mutex_);
-    if (queue_.size() >= options_.queue_capacity) throw QueueFull();
-    queue_.push_back(std::move(task));
+    if (queued() >= options_.queue_capacity) throw QueueFull();
+    const std::string client = task.job.client;
+    (is_long(task.job.cost) ? long_lane_ : short_lane_).push(client, std::move(task));
   }
-  wake_.notify_one();
+  // Every thread looks: the one woken might serve the other lane only.
+  wake_.notify_all();
   return future;
 }
 
@@ -79,8 +89,11 @@ std::vector<std::future<RenderOutput>> RenderService::submit_all(std::vector<Ren
   }
   {
     std::lock_guard lock(mutex_);
-    if (queue_.size() >= options_.queue_capacity) throw QueueFull();
-    for (Task& task : tasks) queue_.push_back(std::move(task));
+    if (queued() >= options_.queue_capacity) throw QueueFull();
+    for (Task& task : tasks) {
+      const std::string client = task.job.client;
+      (is_long(task.job.cost) ? long_lane_ : short_lane_).push(client, std::move(task));
+    }
   }
   wake_.notify_all();
   return futures;
@@ -96,7 +109,42 @@ void RenderService::forget(const std::string& model_key) {
 
 std::size_t RenderService::queue_depth() const {
   std::lock_guard lock(mutex_);
-  return queue_.size();
+  return queued();
+}
+
+bool RenderService::serves_long_lane(std::size_t worker) const {
+  return options_.long_render_cost > 0 && worker + 1 == worker_count_;
+}
+
+// The long lane's thread takes long jobs only: a short job there would
+// load its model into a second context (twice the GPU memory) and draw at
+// the long lane's low CPU priority.
+bool RenderService::has_work_for(std::size_t worker) const {
+  return serves_long_lane(worker) ? !long_lane_.empty() : !short_lane_.empty();
+}
+
+RenderService::Task RenderService::take_for(std::size_t worker) {
+  if (serves_long_lane(worker)) return long_lane_.pop();
+  ++short_drawing_;
+  return short_lane_.pop();
+}
+
+RenderService::ShortTurn::~ShortTurn() {
+  if (service_) service_->short_render_done();
+}
+
+void RenderService::short_render_done() {
+  {
+    std::lock_guard lock(mutex_);
+    --short_drawing_;
+  }
+  short_idle_.notify_all();
+}
+
+void RenderService::yield_to_short_renders() {
+  std::unique_lock lock(mutex_);
+  short_idle_.wait_for(lock, kLongLaneYield,
+                       [&] { return stopping_ || (short_lane_.empty() && short_drawing_ == 0); });
 }
 
 std::size_t RenderService::gpu_models_loaded() const {
@@ -113,7 +161,24 @@ std::size_t RenderService::gpu_model_bytes() const {
   return n;
 }
 
+namespace {
+
+// The long lane's thread runs at the lowest CPU priority, set before its
+// context exists: a CPU rasterizer (llvmpipe) starts a context's raster
+// threads from the thread that makes it, and they inherit its priority. So
+// when a long render and a short one draw at once on a CPU, the short one's
+// threads get the cores; on a GPU only the thread recording commands is
+// affected. Lowering one's own priority needs no privilege.
+void lower_cpu_priority() {
+  if (setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 19) != 0) {
+    std::cerr << "toond: could not lower the long render lane's CPU priority; it shares the CPU evenly\n";
+  }
+}
+
+}  // namespace
+
 void RenderService::run(std::size_t worker, std::promise<void> started) {
+  if (serves_long_lane(worker)) lower_cpu_priority();
   std::optional<gpu::EglContext> context;
   std::unique_ptr<gpu::ShaderSources> sources;
   try {
@@ -158,10 +223,11 @@ bool RenderService::context_lost(std::size_t renders) const {
 }
 
 void RenderService::fail_queued(const std::exception_ptr& error) {
-  std::deque<Task> failed;
+  std::vector<Task> failed;
   {
     std::lock_guard lock(mutex_);
-    failed.swap(queue_);
+    failed = short_lane_.take_all();
+    for (Task& task : long_lane_.take_all()) failed.push_back(std::move(task));
   }
   for (Task& task : failed) task.promise.set_exception(error);
 }
@@ -183,14 +249,13 @@ bool RenderService::serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources
     std::vector<std::string> forgotten;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stopping_ || !queue_.empty() || !forgets_[worker].empty(); });
+      wake_.wait(lock, [&] { return stopping_ || has_work_for(worker) || !forgets_[worker].empty(); });
       // A model deleted before this task was taken is gone for it too.
       forgotten.swap(forgets_[worker]);
       if (forgotten.empty()) {
         // Work already accepted is finished before the thread stops.
-        if (queue_.empty()) return false;
-        task = std::move(queue_.front());
-        queue_.pop_front();
+        if (!has_work_for(worker)) return false;
+        task = take_for(worker);
       }
     }
     if (!forgotten.empty()) {
@@ -198,6 +263,8 @@ bool RenderService::serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources
       record_cache_use();
       continue;
     }
+    // A short task counts as drawing until its turn ends, whichever way.
+    const ShortTurn turn(serves_long_lane(worker) ? nullptr : this);
     if (task.job.deadline && std::chrono::steady_clock::now() > *task.job.deadline) {
       task.promise.set_exception(std::make_exception_ptr(DeadlineExceeded()));
       continue;
@@ -224,7 +291,13 @@ bool RenderService::serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources
         objects.push_back({models.get(o.model_key, *o.model, pinned), o.transform});
       }
       record_cache_use();
-      output = renderer.render(objects, task.job.params);
+      std::optional<DrawPacing> pacing;
+      if (task.job.paced_chunk_triangles > 0 && task.job.deadline) {
+        std::function<void()> between_chunks;
+        if (serves_long_lane(worker)) between_chunks = [this] { yield_to_short_renders(); };
+        pacing.emplace(task.job.paced_chunk_triangles, *task.job.deadline, std::move(between_chunks));
+      }
+      output = renderer.render(objects, task.job.params, pacing ? &*pacing : nullptr);
     } catch (...) {
       failure = std::current_exception();
     }

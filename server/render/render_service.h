@@ -4,6 +4,10 @@
 // jobs to whichever is free through one bounded queue and wait on a future.
 // A full queue refuses at once (the caller answers 503 + Retry-After)
 // instead of letting requests pile up behind a slow render.
+// The queue has two lanes: jobs priced as long (render_cost.h) wait in
+// their own, served by one extra render thread that the short lane's
+// threads never lend themselves to, so a long render holds up only other
+// long ones. In each lane the clients take turns (fair_queue.h).
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -18,6 +22,7 @@
 
 #include "gpu/egl_context.h"
 #include "gpu/shader_source.h"
+#include "render/fair_queue.h"
 #include "render/render_params.h"
 #include "render/renderer.h"
 #include "scene/model.h"
@@ -35,8 +40,16 @@ struct RenderJob {
   std::vector<JobObject> objects;  // at least one; a lone model has the identity
   RenderParams params;
   // Unset: none. A job still queued when its deadline passes is skipped
-  // (its future throws DeadlineExceeded); one already drawing finishes.
+  // (its future throws DeadlineExceeded); one already drawing finishes,
+  // unless it is paced.
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  // Who asked (the HTTP client's address): clients take turns in the queue.
+  std::string client;
+  // The predicted cost in Msamples (render_cost.h): which lane it waits in.
+  double cost = 0;
+  // Nonzero: the meshes are drawn in chunks of this many triangles and the
+  // render is stopped at its deadline (RenderAborted; draw_pacing.h).
+  std::size_t paced_chunk_triangles = 0;
 };
 
 // Set on a job's future when its deadline passed before it was started.
@@ -54,12 +67,20 @@ class QueueFull : public std::runtime_error {
 
 class RenderService {
  public:
+  // How long a long render's thread waits between chunks for short renders
+  // to finish before it goes on regardless.
+  static constexpr std::chrono::milliseconds kLongLaneYield{100};
+
   struct Options {
     std::optional<int> gpu_index;
     std::size_t queue_capacity = 32;
     // Render threads, each with its own context. On llvmpipe a second one
     // records a frame's vertices while the first's frame is rasterized.
     std::size_t render_threads = 1;
+    // Jobs priced at this many Msamples or more wait in the long lane, which
+    // one more render thread (and context) of its own serves, and serves
+    // only them. 0: one lane for all.
+    double long_render_cost = 0;
     std::size_t gpu_model_capacity = 8;  // models kept on the GPU
     std::size_t gpu_model_bytes = std::size_t{1} << 30;  // and their GPU memory at most
     // Empty: the shaders embedded at build time. Otherwise GLSL is read from
@@ -82,6 +103,8 @@ class RenderService {
   const gpu::GlInfo& gl_info() const { return gl_info_; }
 
   std::future<RenderOutput> submit(RenderJob job);
+  // Whether a job of this cost waits in the long lane.
+  bool is_long(double cost) const;
   // The frames of one request (a sprite sheet), queued one after another
   // with nothing between them, so a render thread draws them back to back
   // with the model and programs it just used. Admitted like one job: it
@@ -107,6 +130,30 @@ class RenderService {
     std::size_t bytes = 0;
   };
   void run(std::size_t worker, std::promise<void> started);
+  // Under mutex_: whether `worker` has a job to take, and taking it.
+  bool has_work_for(std::size_t worker) const;
+  Task take_for(std::size_t worker);
+  bool serves_long_lane(std::size_t worker) const;
+  // Between a long render's chunks: waits while short renders are queued
+  // or drawing, at most kLongLaneYield, so they need not wait behind its
+  // chunks (a CPU rasteriser draws all contexts' work in arrival order), and
+  // it still moves on under a steady stream of them.
+  void yield_to_short_renders();
+  // A short-lane worker's task ended (under no lock).
+  void short_render_done();
+  // Calls short_render_done() when it goes, for a short-lane task (null:
+  // a long one).
+  class ShortTurn {
+   public:
+    explicit ShortTurn(RenderService* service) : service_(service) {}
+    ~ShortTurn();
+    ShortTurn(const ShortTurn&) = delete;
+    ShortTurn& operator=(const ShortTurn&) = delete;
+
+   private:
+    RenderService* service_;
+  };
+  std::size_t queued() const { return short_lane_.size() + long_lane_.size(); }
   // Serves tasks on the current context until the service stops (false) or
   // the context is lost (true). Sets `started` once the caches exist.
   bool serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources> sources, std::promise<void>* started);
@@ -119,13 +166,17 @@ class RenderService {
   gpu::GlInfo gl_info_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
-  std::deque<Task> queue_;
+  FairQueue<Task> short_lane_;
+  FairQueue<Task> long_lane_;
+  std::size_t short_drawing_ = 0;  // short-lane tasks taken and not yet done
+  std::condition_variable short_idle_;
   // Per render thread, under mutex_: models to drop before its next task,
   // and what its cache held after its last one.
   std::vector<std::vector<std::string>> forgets_;
   std::vector<CacheUse> cache_use_;
   bool stopping_ = false;
   std::atomic<std::size_t> gpu_resets_{0};
+  std::size_t worker_count_ = 1;  // render threads, the long lane's included (its is the last)
   std::vector<std::thread> threads_;
 };
 

@@ -36,8 +36,10 @@ bool Renderer::real_gpu() {
   return *real_gpu_;
 }
 
-RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const RenderParams& params) {
+RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const RenderParams& params,
+                              DrawPacing* pacing) {
   if (objects.empty()) throw gpu::GpuError("a render needs at least one object");
+  const PacingScope paced(pacing);
   const FrameContext frame = build_frame_context(objects, params, face_culling_);
   RenderOutput out;
   out.plan = frame.plan.describe();
@@ -58,6 +60,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   const FrameBlocks blocks(frame, resources_.frame_uniforms());
   PassContext context{frame, blocks, programs_, resources_, target, {}};
   for (Pass pass : frame.plan.passes) {
+    if (pacing && pacing->expired()) break;
     const DrawPass draw = drawing_pass(pass);
     if (!draw) continue;
     draw(context);
@@ -69,6 +72,10 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
   }
   glBindVertexArray(0);
   glDisable(GL_STENCIL_TEST);
+  if (pacing && pacing->expired()) {
+    throw RenderAborted("the render was stopped at its deadline after " + std::to_string(pacing->chunks_drawn()) +
+                        " chunks of triangles");
+  }
   // Without supersampling the multisample resolve is a blit inside
   // read_back(); its time is part of the readback figure, since the
   // readback waits for it anyway (with it, the downsample pass resolves).

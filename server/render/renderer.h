@@ -9,6 +9,7 @@
 #include "gpu/program_cache.h"
 #include "image/float_image.h"
 #include "image/image.h"
+#include "render/draw_pacing.h"
 #include "render/frame_context.h"
 #include "render/frame_resources.h"
 #include "render/pass_timing.h"
@@ -41,8 +42,11 @@ class Renderer {
   void set_face_culling(bool on) { face_culling_ = on; }
 
   // Every object shares the camera, the lights and the passes; camera fit,
-  // shadow fit and floor use the union of their transformed bounds.
-  RenderOutput render(const std::vector<RenderObject>& objects, const RenderParams& params);
+  // shadow fit and floor use the union of their transformed bounds. With
+  // `pacing` the meshes are drawn in its chunks, and a render whose
+  // deadline passes throws RenderAborted (render/draw_pacing.h).
+  RenderOutput render(const std::vector<RenderObject>& objects, const RenderParams& params,
+                      DrawPacing* pacing = nullptr);
   RenderOutput render(const GpuModel& model, const RenderParams& params) {
     return render({RenderObject{model, glm::dmat4(1.0)}}, params);
   }

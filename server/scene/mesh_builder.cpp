@@ -9,6 +9,7 @@
 #include "scene/import_error.h"
 #include "scene/extreme_points.h"
 #include "scene/mesh_processing.h"
+#include "scene/duplicate_triangles.h"
 #include "scene/position_weld.h"
 
 namespace toond::scene {
@@ -52,11 +53,19 @@ void ImportWarnings::add(std::string message) {
   }
 }
 
+void ImportWarnings::add_summary(std::string message) {
+  ImportWarnings one;
+  one.add(std::move(message));
+  for (std::string& m : one.take()) summaries_.push_back(std::move(m));
+}
+
 std::vector<std::string> ImportWarnings::take() {
   std::vector<std::string> out;
   for (std::size_t i = 0; i < list_.size(); ++i) {
     out.push_back(counts_[i] > 1 ? std::to_string(counts_[i]) + " × " + list_[i] : std::move(list_[i]));
   }
+  for (std::string& m : summaries_) out.push_back(std::move(m));
+  summaries_.clear();
   if (dropped_ > 0) out.push_back(std::to_string(dropped_) + " further warnings left out");
   list_.clear();
   counts_.clear();
@@ -123,6 +132,7 @@ class Builder {
     assign_materials(src_.triangles);
     std::stable_sort(src_.triangles.begin(), src_.triangles.end(),
                      [](const SourceTriangle& a, const SourceTriangle& b) { return a.material < b.material; });
+    drop_repeated();
     build();
     return std::move(mesh_);
   }
@@ -282,8 +292,31 @@ class Builder {
     }
     src_.triangles.resize(kept);
     if (degenerate > 0) {
-      warnings_.add(src_.file + ": " + plural(degenerate, "degenerate (zero-area) triangle was", "degenerate (zero-area) triangles were") +
+      warnings_.add_summary(src_.file + ": " + plural(degenerate, "degenerate (zero-area) triangle was", "degenerate (zero-area) triangles were") +
                     " dropped");
+    }
+  }
+
+  // After the sort by material, so that of a face repeated under several
+  // materials the one kept is the one drawn last, which is what the main
+  // pass's less-or-equal depth test shows.
+  void drop_repeated() {
+    std::vector<TriangleCorners> corners(src_.triangles.size());
+    for (std::size_t t = 0; t < corners.size(); ++t) {
+      for (int c = 0; c < 3; ++c) corners[t].corner[c] = src_.positions[src_.triangles[t].corner[c].position];
+    }
+    const std::vector<bool> keep = last_of_each_triangle(corners);
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < keep.size(); ++t) {
+      if (keep[t]) src_.triangles[kept++] = src_.triangles[t];
+    }
+    const std::size_t repeated = src_.triangles.size() - kept;
+    src_.triangles.resize(kept);
+    if (repeated > 0) {
+      warnings_.add_summary(src_.file + ": " +
+                    plural(repeated, "triangle repeated", "triangles repeated") +
+                    " the corners of another and " + (repeated == 1 ? "was" : "were") +
+                    " dropped (of each face the one drawn last is kept)");
     }
   }
 
@@ -407,6 +440,7 @@ class Builder {
     mesh.bounds = compute_bounds(mesh.positions);
     mesh.extremes = extreme_points(mesh.positions);
     mesh.creases = measure_creases(mesh.positions, mesh.normals, mesh.indices);
+    mesh.cost = measure_render_cost(mesh.positions, mesh.indices, mesh.bounds.max - mesh.bounds.min);
     check_import_time(src_.limits, "measuring the mesh");
 
     for (std::size_t t = 0; t < triangles.size();) {

@@ -30,11 +30,18 @@ class ImportWarnings {
   static constexpr std::size_t kMaxMessageBytes = 240;
 
   void add(std::string message);
+  // A count the whole import adds up once (degenerate or repeated triangles
+  // dropped): kept even when kMaxWarnings others came first, since a file
+  // that repeats a face 100,000 times under new material names fills the
+  // list with those names before the repeats are counted. Sanitised and
+  // cut like any other.
+  void add_summary(std::string message);
   // The list, repeats counted, with a closing note when some were left out.
   std::vector<std::string> take();
 
  private:
   std::vector<std::string> list_;
+  std::vector<std::string> summaries_;
   std::vector<std::size_t> counts_;  // per entry of list_
   // Every distinct message seen: its index in list_, or kDropped.
   std::unordered_map<std::string, std::size_t> seen_;

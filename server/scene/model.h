@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/crease_profile.h"
+#include "scene/render_cost_profile.h"
 
 namespace toond::scene {
 
@@ -141,6 +142,9 @@ struct Mesh {
   std::size_t welded_positions = 0;
   // How much of the edge length is creased at each angle (scene/crease_profile.h).
   CreaseProfile creases;
+  // What rasterising the full mesh once costs (scene/render_cost_profile.h):
+  // what a request is priced by before it is queued.
+  RenderCostProfile cost;
   // Vertices extreme along many directions (scene/extreme_points.h): what
   // the camera projects to frame the model tightly.
   std::vector<glm::vec3> extremes;

@@ -102,7 +102,8 @@ void remove_quietly(const fs::path& path) {
 nlohmann::json ModelInfo::to_json() const {
   nlohmann::json j = {{"id", id},       {"triangles", triangles}, {"materials", materials}, {"textures", textures},
           {"bytes", bytes}, {"files", files},         {"warnings", warnings},
-          {"weld", {{"tolerance", weld.tolerance}, {"positions", weld.positions}}}};
+          {"weld", {{"tolerance", weld.tolerance}, {"positions", weld.positions}}},
+          {"cost", {{"layers", cost.layers}, {"edge_span", cost.edge_span}}}};
   if (choices.gltf_scene) j["scene"] = *choices.gltf_scene;
   return j;
 }
@@ -116,6 +117,11 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
   info.bytes = j.at("bytes").get<std::size_t>();
   info.files = j.at("files").get<std::vector<std::string>>();
   info.warnings = j.value("warnings", std::vector<std::string>{});
+  // Models stored before their cost was measured have no record of it.
+  if (const auto cost = j.find("cost"); cost != j.end() && cost->is_object()) {
+    info.cost.layers = cost->value("layers", 0.0);
+    info.cost.edge_span = cost->value("edge_span", 0.0);
+  }
   // Models stored before welding was reported have no record of it.
   if (const auto weld = j.find("weld"); weld != j.end() && weld->is_object()) {
     info.weld.tolerance = weld->value("tolerance", 0.0);
@@ -191,6 +197,7 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& 
   for (const auto& [path, content] : bundle.files()) info.files.push_back(path);
   info.warnings = model.warnings;
   info.weld = {model.mesh.weld_tolerance, model.mesh.welded_positions};
+  info.cost = {model.mesh.cost.layers(), model.mesh.cost.edge_span()};
 
   const fs::path temp = root_ / (std::string(kTempPrefix) + id + "-" + random_suffix());
   try {

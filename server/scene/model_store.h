@@ -33,6 +33,13 @@ struct ModelInfo {
     double tolerance = 0;
     std::size_t positions = 0;
   } weld;
+  // What drawing it costs (scene/render_cost_profile.h): the layers of
+  // surface its densest view meets, and the frame-widths of edge it
+  // rasterises.
+  struct Cost {
+    double layers = 0;
+    double edge_span = 0;
+  } cost;
   // What the upload asked of the import (a glTF scene), kept so that a
   // re-import makes the same model.
   ImportChoices choices;

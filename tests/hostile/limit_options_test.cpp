@@ -22,7 +22,9 @@ TEST(LimitOptions, DefaultsAreTheDocumentedOnes) {
   EXPECT_EQ(o.limits.render.max_objects, 16u);
   EXPECT_EQ(o.limits.max_json_bytes, 1048576u);
   EXPECT_EQ(o.limits.max_json_depth, 32u);
-  EXPECT_DOUBLE_EQ(o.render_timeout_s, 60.0);
+  EXPECT_DOUBLE_EQ(o.limits.render.max_render_cost, 5000.0);
+  EXPECT_DOUBLE_EQ(o.long_render_cost, 300.0);
+  EXPECT_DOUBLE_EQ(o.render_timeout_s, 10.0);
   EXPECT_DOUBLE_EQ(o.limits.import.max_seconds, 30.0);
   EXPECT_TRUE(o.access.token.empty());
   EXPECT_TRUE(o.access.cors_origins.empty());
@@ -31,7 +33,8 @@ TEST(LimitOptions, DefaultsAreTheDocumentedOnes) {
                            "(default 10000000)", "(default 67108864", "(default 16777216", "(default 134217728",
                            "(default 8)", "(default 16)", "(default 1048576)", "(default 32)", "--token T",
                            "--max-import-seconds S", "nothing is stored (default 30)",
-                           "--cors-origin O", "TOOND_TOKEN"}) {
+                           "--cors-origin O", "TOOND_TOKEN", "--max-render-cost M", "(default 5000",
+                           "--long-render-cost M", "(default 300; 0: one lane)", "(default 10;"}) {
     EXPECT_NE(usage().find(text), std::string::npos) << text;
   }
 }
@@ -41,7 +44,8 @@ TEST(LimitOptions, EachFlagSetsItsLimit) {
                                    "--max-texture-pixels", "4096", "--max-output-pixels", "65536", "--max-samples",
                                    "100000", "--max-lights", "2", "--max-objects", "4", "--max-json-bytes", "2000",
                                    "--max-json-depth", "8", "--token", "abc", "--cors-origin", "*",
-                                   "--render-timeout", "0.25", "--max-import-seconds", "2.5"});
+                                   "--render-timeout", "0.25", "--max-import-seconds", "2.5", "--max-render-cost",
+                                   "300", "--long-render-cost", "0"});
   EXPECT_EQ(o.limits.max_bundle_files, 3u);
   EXPECT_EQ(o.limits.import.max_vertices, 100u);
   EXPECT_EQ(o.limits.import.max_triangles, 50u);
@@ -56,6 +60,8 @@ TEST(LimitOptions, EachFlagSetsItsLimit) {
   EXPECT_EQ(o.access.cors_origins, std::vector<std::string>{"*"});
   EXPECT_DOUBLE_EQ(o.render_timeout_s, 0.25);
   EXPECT_DOUBLE_EQ(o.limits.import.max_seconds, 2.5);
+  EXPECT_DOUBLE_EQ(o.limits.render.max_render_cost, 300.0);
+  EXPECT_DOUBLE_EQ(o.long_render_cost, 0.0);
 }
 
 TEST(LimitOptions, BadValuesNameTheFlag) {

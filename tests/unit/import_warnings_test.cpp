@@ -32,6 +32,17 @@ TEST(ImportWarnings, RepeatsAreCountedOnceAndDistinctOnesCapped) {
   EXPECT_TRUE(warnings.take().empty()) << "take() leaves it empty";
 }
 
+TEST(ImportWarnings, SummariesAreKeptWhenTheListIsFull) {
+  ImportWarnings warnings;
+  for (int i = 0; i < 500; ++i) warnings.add("m.obj: material " + std::to_string(i) + " not found");
+  warnings.add_summary("m.obj: 499 triangles repeated the corners of another and were dropped");
+  const std::vector<std::string> out = warnings.take();
+  ASSERT_EQ(out.size(), ImportWarnings::kMaxWarnings + 2);
+  EXPECT_EQ(out[ImportWarnings::kMaxWarnings], "m.obj: 499 triangles repeated the corners of another and were dropped");
+  EXPECT_EQ(out.back(), std::to_string(500 - ImportWarnings::kMaxWarnings) + " further warnings left out");
+  EXPECT_TRUE(warnings.take().empty());
+}
+
 // The upload answer of an OBJ that switches to an undefined material
 // thousands of times (each time onto the same triangle: more would be slow
 // until imports of many faces on one edge are linear, issue 15).

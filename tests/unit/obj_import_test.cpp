@@ -105,7 +105,7 @@ TEST(ObjImport, HardEdgedCubeSplitsNormalsButSharesOutlineNormals) {
 TEST(ObjImport, VerticesAreDeduplicatedByTriple) {
   const std::string obj =
       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\nvn 0 0 1\n"
-      "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\nf 1/5/1 3/3/1 4/4/1\n";
+      "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\nf 1/5/1 2/2/1 4/4/1\n";
   const Model m = import_obj_bundle(make_bundle({{"q.obj", obj}}));
   expect_well_formed(m);
   EXPECT_EQ(m.mesh.triangle_count(), 3u);
@@ -322,7 +322,7 @@ TEST(ObjImport, TolerantSyntax) {
   // indices, texture coordinates with three components.
   const std::string obj =
       "# comment\r\nv 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\nvt 0 0 0\r\n"
-      "f 1// 2// 3//\r\nf 1/1/ \\\r\n 3/1/ 4/1/\r\nf -4 -2 -1\r\n";
+      "f 1// 2// 3//\r\nf 1/1/ \\\r\n 3/1/ 4/1/\r\nf -4 -3 -1\r\n";
   const Model m = import_obj_bundle(make_bundle({{"t.obj", obj}}));
   expect_well_formed(m);
   EXPECT_EQ(m.mesh.triangle_count(), 3u);

@@ -1,0 +1,264 @@
+#!/usr/bin/python3
+"""How well a render's predicted cost (X-Toond-Cost) tells its time, and how
+other clients fare while a costly model renders.
+
+Against a running toond started with --max-render-cost 0 --result-cache-mb 0
+(so nothing is refused and every request renders):
+
+  prediction: uploads the shared models and costly constructs (stacked,
+  nearly coincident and crossing triangles at several sizes), renders each
+  at a few sizes and MSAA settings, and fits render-thread milliseconds
+  (Server-Timing `total` less `png`) to the predicted Msamples through the
+  origin. Prints each render, the fitted ms per Msample and the error of
+  the prediction (median and worst |predicted/measured - 1|, and how many
+  renders are off by more than 2x).
+
+  contention (--contention): one client renders the issue's constructs at
+  512² (fresh bytes every time) while another renders the demo model at 128²
+  over and over; prints the small renders' p50/p99/max and each costly
+  render's outcome and time.
+
+    bench/render_cost.py http://127.0.0.1:8080 [--shared ../shared/models] [--contention SECONDS]
+"""
+import argparse
+import http.client
+import json
+import math
+import os
+import random
+import statistics
+import sys
+import threading
+import time
+import urllib.parse
+import uuid
+
+
+def vertex(x, y, z):
+    return f"v {x:.17g} {y:.17g} {z:.17g}\n"
+
+
+def nearly_coincident(n, salt=0.0):
+    return "".join(vertex(-1, -1, 1e-6 * i + salt) + vertex(1, -1, 1e-6 * i) + vertex(-1, 1, 1e-6 * i) +
+                   "f -3 -2 -1\n" for i in range(n))
+
+
+def stacked(n):
+    out = []
+    for i in range(n):
+        z, t = i / n, 0.01 * i
+        c, s = math.cos(t), math.sin(t)
+        corner = lambda x, y: vertex(x * c - y * s, x * s + y * c, z)
+        out.append(corner(-1.5, -1.5) + corner(3, -1.5) + corner(-1.5, 3) + "f -3 -2 -1\n")
+    return "".join(out)
+
+
+def slivers(n):
+    out = []
+    for i in range(n):
+        d = 2.0 * i / n - 1.0
+        out.append(vertex(-1 + d, -1 - d, 0) + vertex(1 + d, 1 - d, 0) + vertex(1 + d + 1e-4, 1 - d, 0) +
+                   "f -3 -2 -1\n")
+    return "".join(out)
+
+
+def multipart(files):
+    boundary = uuid.uuid4().hex
+    parts = []
+    for name, data in files:
+        if isinstance(data, str):
+            data = data.encode()
+        parts.append(f"--{boundary}\r\nContent-Disposition: form-data; name=\"file\"; filename=\"{name}\"\r\n"
+                     f"Content-Type: application/octet-stream\r\n\r\n".encode() + data + b"\r\n")
+    return b"".join(parts) + f"--{boundary}--\r\n".encode(), f"multipart/form-data; boundary={boundary}"
+
+
+class Client:
+    def __init__(self, url):
+        u = urllib.parse.urlparse(url)
+        self.conn = http.client.HTTPConnection(u.hostname, u.port or 80, timeout=120)
+
+    def upload(self, files):
+        body, ctype = multipart(files)
+        self.conn.request("POST", "/models", body=body, headers={"Content-Type": ctype})
+        res = self.conn.getresponse()
+        data = res.read()
+        if res.status not in (200, 201):
+            raise SystemExit(f"upload answered {res.status}: {data[:300]!r}")
+        return json.loads(data)
+
+    def render(self, params):
+        started = time.perf_counter()
+        self.conn.request("POST", "/render", body=json.dumps(params), headers={"Content-Type": "application/json"})
+        res = self.conn.getresponse()
+        data = res.read()
+        return res.status, time.perf_counter() - started, dict(res.getheaders()), data
+
+
+def timing(headers, name):
+    for entry in headers.get("Server-Timing", "").split(","):
+        fields = entry.strip().split(";")
+        if fields[0] == name:
+            for f in fields[1:]:
+                if f.startswith("dur="):
+                    return float(f[4:])
+    return None
+
+
+def cost_fields(headers):
+    fields = {}
+    for field in headers.get("X-Toond-Cost", "").split(";"):
+        key, _, value = field.strip().partition("=")
+        if key:
+            fields[key] = float(value)
+    return fields
+
+
+TERMS = ("samples", "triangles", "tiles", "framebuffer", "frames")
+# render/render_cost.h: kTriangleSamples, kTileSamples, kFramebufferSamples, kFrameSamples.
+DAEMON_WEIGHTS = (1, 40, 320, 1, 1.3e6)
+
+
+def solve(matrix, vector):
+    """Gaussian elimination with partial pivoting (a 5x5 system)."""
+    n = len(vector)
+    m = [row[:] + [v] for row, v in zip(matrix, vector)]
+    for col in range(n):
+        pivot = max(range(col, n), key=lambda r: abs(m[r][col]))
+        m[col], m[pivot] = m[pivot], m[col]
+        for r in range(n):
+            if r != col and m[col][col]:
+                f = m[r][col] / m[col][col]
+                m[r] = [a - f * b for a, b in zip(m[r], m[col])]
+    return [m[i][n] / m[i][i] if m[i][i] else 0.0 for i in range(n)]
+
+
+def fit_weights(rows):
+    """ms per unit of each term, minimising the squared relative error."""
+    a = [[sum(r[i] * r[j] / ms ** 2 for r, ms in rows) for j in range(len(TERMS))] for i in range(len(TERMS))]
+    b = [sum(r[i] * ms / ms ** 2 for r, ms in rows) for i in range(len(TERMS))]
+    return solve(a, b)
+
+
+def report(rows, predict, title):
+    errors = [predict(r) / ms - 1 for r, ms in rows]
+    absolute = sorted(abs(e) for e in errors)
+    print(f"{title}: |predicted/measured - 1| median {statistics.median(absolute):.2f}, "
+          f"p90 {absolute[int(0.9 * (len(absolute) - 1))]:.2f}, worst {absolute[-1]:.2f}; "
+          f"off by more than 2x: {sum(1 for e in errors if e > 1 or e < -0.5)} of {len(errors)}")
+
+
+def shared_bundles(folder):
+    bundles = {}
+    for name in sorted(os.listdir(folder)):
+        path = os.path.join(folder, name)
+        if not os.path.isdir(path) or name == "edge-cases":
+            continue
+        files = []
+        for root, _, names in os.walk(path):
+            for f in names:
+                if os.path.splitext(f)[1].lower() in (".obj", ".mtl", ".png", ".jpg"):
+                    full = os.path.join(root, f)
+                    with open(full, "rb") as fh:
+                        files.append((os.path.relpath(full, path), fh.read()))
+        bundles[name] = files
+    return bundles
+
+
+def prediction(url, shared):
+    client = Client(url)
+    models = {name: client.upload(files)["id"] for name, files in shared_bundles(shared).items()}
+    for n in (500, 2000):
+        models[f"nearly_coincident_{n}"] = client.upload([("m.obj", nearly_coincident(n))])["id"]
+    for n in (200, 800):
+        models[f"stacked_{n}"] = client.upload([("m.obj", stacked(n))])["id"]
+    for n in (20000, 80000):
+        models[f"slivers_{n}"] = client.upload([("m.obj", slivers(n))])["id"]
+    client.render({"width": 64, "height": 64})  # programs built
+    rows = []
+    for name, model in models.items():
+        for size, msaa in ((256, 1), (512, 4), (1024, 4)):
+            params = {"model": model, "width": size, "height": size, "msaa": msaa}
+            client.render(params)  # model on the GPU
+            runs = []
+            for _ in range(3):
+                status, _, headers, body = client.render(params)
+                if status != 200:
+                    print(f"{name} {size}² msaa {msaa}: {status} {body[:200]!r}")
+                    break
+                runs.append(timing(headers, "total") - (timing(headers, "png") or 0))
+            if runs:
+                fields = cost_fields(headers)
+                rows.append((name, size, msaa, fields, statistics.median(runs)))
+    data = [([f[t] for t in TERMS], ms) for *_, f, ms in rows]
+    # The daemon's figure, scaled by its best single factor (ms per Msample).
+    slope = sum(f["cost"] * ms / ms ** 2 for *_, f, ms in rows) / sum(f["cost"] ** 2 / ms ** 2 for *_, f, ms in rows)
+    weights = fit_weights(data)
+    print(f"{'model':28} {'size':>5} {'msaa':>4} {'Msamples':>10} {'ms':>9} {'predicted ms':>12} {'ratio':>6}")
+    for name, size, msaa, f, ms in rows:
+        guess = slope * f["cost"]
+        print(f"{name:28} {size:5} {msaa:4} {f['cost']:10.1f} {ms:9.1f} {guess:12.1f} {guess / ms:6.2f}")
+    print(f"\n{len(rows)} renders; the daemon's figure at {slope:.4f} ms per Msample ({1000 / slope:.0f} Msamples/s)")
+    report(data, lambda r: slope * sum(r[i] * w for i, w in enumerate(DAEMON_WEIGHTS)) / 1e6, "daemon's weights")
+    report(data, lambda r: sum(x * w for x, w in zip(r, weights)), "weights fitted here")
+    print("fitted weights, in surface samples: " +
+          ", ".join(f"{t} {w / weights[0]:.4g}" for t, w in zip(TERMS, weights)) +
+          f" (a surface sample {weights[0] * 1e6:.3f} ms per million)")
+
+
+def contention(url, seconds):
+    setup = Client(url)
+    setup.render({"width": 128, "height": 128})
+    stop = time.monotonic() + seconds
+    heavy_results = []
+
+    def heavy():
+        client = Client(url)
+        kinds = [("nearly_coincident", lambda salt: nearly_coincident(60000, salt)),
+                 ("stacked", lambda salt: stacked(20000) + f"# {salt}\n"),
+                 ("slivers", lambda salt: slivers(200000) + f"# {salt}\n")]
+        i = 0
+        while time.monotonic() < stop:
+            name, make = kinds[i % len(kinds)]
+            salt = random.random() * 1e-9
+            started = time.perf_counter()
+            model = client.upload([("m.obj", make(salt))])["id"]
+            upload_s = time.perf_counter() - started
+            status, elapsed, _, body = client.render({"model": model, "width": 512, "height": 512})
+            code = json.loads(body)["error"]["code"] if status != 200 else "image"
+            heavy_results.append((name, upload_s, status, code, elapsed))
+            i += 1
+
+    thread = threading.Thread(target=heavy)
+    thread.start()
+    time.sleep(0.5)
+    light = Client(url)
+    latencies = []
+    while time.monotonic() < stop or thread.is_alive():
+        status, elapsed, _, body = light.render({"width": 128, "height": 128, "camera": {"yaw": random.random() * 360}})
+        if status != 200:
+            print(f"small render answered {status}: {body[:200]!r}")
+        latencies.append(elapsed)
+    thread.join()
+    latencies.sort()
+    p = lambda q: latencies[min(len(latencies) - 1, int(q * len(latencies)))]
+    print(f"small 128² demo renders while costly ones ran: {len(latencies)}, p50 {p(0.5) * 1000:.0f} ms, "
+          f"p99 {p(0.99) * 1000:.0f} ms, max {latencies[-1] * 1000:.0f} ms")
+    for name, upload_s, status, code, elapsed in heavy_results:
+        print(f"  costly {name:18} upload {upload_s:5.2f} s, render answered {status} {code:15} in {elapsed:5.2f} s")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("url")
+    parser.add_argument("--shared", default=os.path.join(os.path.dirname(__file__), "..", "..", "shared", "models"))
+    parser.add_argument("--contention", type=float, help="seconds of the contention run (instead of the fit)")
+    args = parser.parse_args()
+    if args.contention:
+        contention(args.url, args.contention)
+    else:
+        prediction(args.url, args.shared)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

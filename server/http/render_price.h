@@ -1,0 +1,38 @@
+#pragma once
+// The price of a render request, worked out before it is queued
+// (render/render_cost.h): a sheet costs all its frames. Over the daemon's
+// --max-render-cost the request is refused with the figures and what would
+// bring it under; under it, the price picks the queue lane and whether the
+// draws are paced (render/draw_pacing.h).
+#include <cstddef>
+
+#include "http/render_limits.h"
+#include "render/render_cost.h"
+#include "render/render_service.h"
+
+namespace toond::http {
+
+struct RenderPrice {
+  render::RenderCost total;  // every frame of the request
+  std::size_t frames = 1;
+  render::RenderCost per_frame() const;
+};
+
+// Prices `job` (its parameters and its objects' meshes).
+RenderPrice price_render(const render::RenderJob& job);
+
+// Throws LimitError (422, limit_exceeded, --max-render-cost) when the price
+// is over the limit, naming the figure, the limit, and the changes to the
+// request (size, msaa, supersample, outline, frames) that would fit.
+void check_render_cost(const render::RenderJob& job, const RenderPrice& price, const RenderLimits& limits);
+
+// Frames priced at this many Msamples or more (about 0.7 s of llvmpipe) are
+// drawn in chunks of about kPacedChunkCost each (about 45 ms), the deadline
+// checked between them: such a render stops within about a chunk of it,
+// and a short render waits for at most one of its chunks.
+inline constexpr double kPacedFrameCost = 400;
+inline constexpr double kPacedChunkCost = 25;
+// Triangles per chunk for a frame of this price; 0: not paced.
+std::size_t paced_chunk_triangles(const render::RenderCost& frame);
+
+}  // namespace toond::http

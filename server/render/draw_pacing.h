@@ -1,0 +1,75 @@
+#pragma once
+// A render priced as long (render_cost.h) is drawn in chunks of triangles,
+// with the deadline checked between them: one draw call of sixty thousand
+// frame-sized triangles cannot be stopped once issued, a chunk of them ends
+// soon. One chunk is in flight at a time: the next is issued once the last
+// has been drawn, so a render past its deadline hands the render thread
+// back within about one chunk's time, and between chunks the render can
+// step aside for others (`between_chunks`): a CPU rasteriser such as
+// llvmpipe draws every context's work on one set of threads, in the order
+// it arrives, so a short render queued behind a long one's chunks waits for
+// them. Draws after the deadline are skipped, not failed half-way: every
+// pass still ends its queries and restores its state, and the renderer then
+// throws RenderAborted instead of reading back. Render thread only.
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+
+#include "gpu/gl.h"
+#include "gpu/gl_object.h"
+
+namespace toond::render {
+
+// Thrown by Renderer::render when its deadline passed while it drew.
+class RenderAborted : public std::runtime_error {
+ public:
+  explicit RenderAborted(const std::string& what) : std::runtime_error(what) {}
+};
+
+class DrawPacing {
+ public:
+  using Clock = std::chrono::steady_clock;
+  // `between_chunks`, when set, runs after each chunk has been drawn, before
+  // the next is issued (the render service waits there while short renders
+  // draw).
+  DrawPacing(std::size_t chunk_triangles, Clock::time_point deadline, std::function<void()> between_chunks = {});
+
+  // glDrawElements of `index_count` indices (triangles) from index
+  // `first_index` of the bound element buffer, chunk by chunk.
+  void draw_triangles(std::size_t index_count, std::size_t first_index);
+  bool expired() const { return expired_; }
+  std::size_t chunks_drawn() const { return chunks_; }
+
+ private:
+  // Waits until the chunk just issued is drawn; marks the pacing expired
+  // when the deadline passes first.
+  void wait_for_chunk();
+
+  std::size_t chunk_indices_;
+  Clock::time_point deadline_;
+  std::function<void()> between_chunks_;
+  std::size_t chunks_ = 0;
+  bool expired_ = false;
+};
+
+// Which pacing the draws on this thread follow while it lives (none outside
+// any scope): GL's current context is per thread, and so is the render
+// drawing on it, so the meshes' draw calls find it here instead of through
+// every pass's arguments.
+class PacingScope {
+ public:
+  explicit PacingScope(DrawPacing* pacing);
+  ~PacingScope();
+  PacingScope(const PacingScope&) = delete;
+  PacingScope& operator=(const PacingScope&) = delete;
+
+ private:
+  DrawPacing* outer_;
+};
+
+// What the meshes draw with: glDrawElements at once without a pacing
+// scope, through the scope's pacing within one.
+void draw_triangles(std::size_t index_count, std::size_t first_index);
+
+}  // namespace toond::render

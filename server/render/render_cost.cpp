@@ -1,0 +1,104 @@
+#include "render/render_cost.h"
+
+#include "render/camera.h"
+
+#include <cmath>
+#include <optional>
+#include <sstream>
+
+namespace toond::render {
+namespace {
+
+// Passes that rasterise the meshes over the whole drawn frame.
+int frame_geometry_passes(const PassPlan& plan) {
+  int n = 0;
+  for (Pass pass : plan.passes) {
+    switch (pass) {
+      case Pass::Main:
+      case Pass::HullOutline:
+      case Pass::Wireframe:
+      case Pass::EdgePrepass:
+      case Pass::Layer: ++n; break;
+      default: break;
+    }
+  }
+  return n;
+}
+
+// Passes that touch every sample of the frame once, however much is drawn.
+int frame_wide_passes(const PassPlan& plan) {
+  int n = 1;  // the clear before the first pass
+  for (Pass pass : plan.passes) {
+    switch (pass) {
+      case Pass::Edges:
+      case Pass::Resolve:
+      case Pass::Downsample:
+      case Pass::Readback: ++n; break;
+      default: break;
+    }
+  }
+  return n;
+}
+
+// One pass over every mesh at `width` × `height` drawn pixels, seen along
+// `view` (none: from their densest direction).
+RenderCost pass_cost(std::span<const scene::Mesh* const> meshes, const std::optional<glm::dvec3>& view,
+                     double width, double height, double samples) {
+  RenderCost cost;
+  const double diagonal_tiles = std::hypot(width, height) / kTilePixels;
+  for (const scene::Mesh* mesh : meshes) {
+    const double layers = view ? mesh->cost.layers_toward(*view) : mesh->cost.layers();
+    cost.samples += layers * width * height * samples;
+    cost.triangles += static_cast<double>(mesh->triangle_count());
+    cost.tiles += mesh->cost.edge_span() * diagonal_tiles * samples;
+  }
+  return cost;
+}
+
+}  // namespace
+
+double RenderCost::units() const {
+  return (samples + triangles * kTriangleSamples + tiles * kTileSamples + framebuffer * kFramebufferSamples +
+          frames * kFrameSamples) /
+         1e6;
+}
+
+std::string RenderCost::describe() const {
+  std::ostringstream s;
+  s.precision(3);
+  s << units() << " Msamples (surface samples " << samples / 1e6 << " M, triangles " << triangles / 1e6
+    << " M, tile samples crossed " << tiles / 1e6 << " M, frame samples " << framebuffer / 1e6 << " M)";
+  return s.str();
+}
+
+RenderCost& RenderCost::operator+=(const RenderCost& other) {
+  samples += other.samples;
+  triangles += other.triangles;
+  tiles += other.tiles;
+  framebuffer += other.framebuffer;
+  frames += other.frames;
+  return *this;
+}
+
+RenderCost predict_frame_cost(const RenderParams& params, const PassPlan& plan,
+                              std::span<const scene::Mesh* const> meshes, ViewKnown view) {
+  const double width = static_cast<double>(params.width) * plan.supersample;
+  const double height = static_cast<double>(params.height) * plan.supersample;
+  const bool known = view == ViewKnown::Camera;
+  const std::optional<glm::dvec3> eye =
+      known ? std::optional(toward_eye(params.camera.yaw_deg, params.camera.pitch_deg)) : std::nullopt;
+  RenderCost cost;
+  const RenderCost one_pass = pass_cost(meshes, eye, width, height, plan.samples);
+  for (int i = frame_geometry_passes(plan); i > 0; --i) cost += one_pass;
+  if (plan.has(Pass::Shadow)) {
+    const double side = params.shadows.map_size;
+    const glm::dvec3 light = params.lights[static_cast<std::size_t>(plan.shadow_light)].direction;
+    cost += pass_cost(meshes, known ? std::optional(light) : std::nullopt, side, side, 1);
+    cost.framebuffer += side * side;  // its clear
+  }
+  cost.framebuffer += width * height * plan.samples * frame_wide_passes(plan);
+  cost.frames = 1;
+  return cost;
+}
+
+}  // namespace toond::render

@@ -1,0 +1,80 @@
+// A long render drawn in chunks draws the same image as in one go, and one
+// past its deadline stops without breaking the context for the next.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <memory>
+#include <thread>
+
+#include "gpu/program_cache.h"
+#include "render/draw_pacing.h"
+#include "render/renderer.h"
+#include "scene/obj_import.h"
+#include "support/costly_models.h"
+#include "support/gl_context_test.h"
+#include "support/in_process_render.h"
+#include "toond_shader_files.h"
+
+namespace toond::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+class DrawPacingTest : public test::GlContextTest {
+ protected:
+  void SetUp() override {
+    scene::Bundle bundle;
+    bundle.add("stack.obj", test::stacked_triangles(300));
+    model_ = std::make_unique<scene::Model>(scene::import_obj_bundle(bundle));
+    programs_ = std::make_unique<gpu::ProgramCache>(
+        [](const std::string& name) { return std::string(shader_files::find(name)); });
+    renderer_ = std::make_unique<Renderer>(*programs_);
+    gpu_model_ = std::make_unique<GpuModel>(*model_);
+    params_ = test::complete_params({{"width", 96}, {"height", 96}});
+  }
+
+  RenderOutput render(DrawPacing* pacing) { return renderer_->render({RenderObject{*gpu_model_}}, params_, pacing); }
+
+  std::unique_ptr<scene::Model> model_;
+  std::unique_ptr<gpu::ProgramCache> programs_;
+  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<GpuModel> gpu_model_;
+  RenderParams params_;
+};
+
+TEST_F(DrawPacingTest, ChunksDrawTheSameImageAsOneDrawCall) {
+  const image::Image whole = render(nullptr).image;
+  int calls = 0;
+  DrawPacing pacing(7, Clock::now() + std::chrono::minutes(5), [&] { ++calls; });
+  const image::Image chunked = render(&pacing).image;
+  // 300 triangles in chunks of 7, in every pass that draws the mesh.
+  EXPECT_GE(pacing.chunks_drawn(), 2 * 43u);
+  EXPECT_EQ(static_cast<std::size_t>(calls), pacing.chunks_drawn());
+  EXPECT_FALSE(pacing.expired());
+  ASSERT_EQ(whole.width, chunked.width);
+  EXPECT_EQ(whole.rgba, chunked.rgba);
+}
+
+TEST_F(DrawPacingTest, PastTheDeadlineTheRenderStopsAndTheNextDrawsAsBefore) {
+  const image::Image before = render(nullptr).image;
+  DrawPacing late(7, Clock::now() - std::chrono::milliseconds(1));
+  EXPECT_THROW(render(&late), RenderAborted);
+  EXPECT_TRUE(late.expired());
+  EXPECT_EQ(late.chunks_drawn(), 0u);
+  // Stopped between passes and draws, nothing was left half set up.
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_EQ(render(nullptr).image.rgba, before.rgba);
+}
+
+TEST_F(DrawPacingTest, ADeadlineThatPassesMidwayStopsWithinAChunk) {
+  // Each pause between chunks takes 10 ms; the deadline falls 30 ms in,
+  // so the render stops after three or four chunks, not after all of them.
+  DrawPacing stopping(7, Clock::now() + std::chrono::milliseconds(30),
+                      [] { std::this_thread::sleep_for(std::chrono::milliseconds(10)); });
+  EXPECT_THROW(render(&stopping), RenderAborted);
+  EXPECT_GE(stopping.chunks_drawn(), 1u);
+  EXPECT_LE(stopping.chunks_drawn(), 5u);
+}
+
+}  // namespace
+}  // namespace toond::render

@@ -1,0 +1,160 @@
+// A request is priced before it is queued: refused over --max-render-cost
+// with what would fit, never for the shared models at any size the schema
+// allows with any preset; paced when long. No GL.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "http/render_limits.h"
+#include "http/render_price.h"
+#include "limit_error.h"
+#include "render/sheet_layout.h"
+#include "presets.h"
+#include "scene/bundle_import.h"
+#include "scene/obj_import.h"
+#include "support/costly_models.h"
+#include "support/in_process_render.h"
+#include "support/shared_models.h"
+
+namespace toond::http {
+namespace {
+
+std::shared_ptr<const scene::Model> obj_model(const std::string& obj) {
+  scene::Bundle bundle;
+  bundle.add("m.obj", obj);
+  return std::make_shared<const scene::Model>(scene::import_obj_bundle(bundle));
+}
+
+render::RenderJob job_of(std::shared_ptr<const scene::Model> model, const nlohmann::json& request) {
+  render::RenderJob job;
+  job.objects.push_back({"m", std::move(model), glm::dmat4(1.0)});
+  job.params = test::complete_params(request);
+  return job;
+}
+
+TEST(RenderPrice, TheIssuesStackIsRefusedWithWhatWouldFit) {
+  const render::RenderJob job = job_of(obj_model(test::nearly_coincident_triangles(60000)), nlohmann::json::object());
+  const RenderPrice price = price_render(job);
+  EXPECT_GT(price.total.units(), RenderLimits{}.max_render_cost);
+  try {
+    check_render_cost(job, price, RenderLimits{});
+    FAIL() << "not refused: " << price.total.describe();
+  } catch (const LimitError& e) {
+    EXPECT_EQ(e.status(), 422);
+    EXPECT_EQ(e.limit(), "--max-render-cost");
+    const std::string message = e.what();
+    EXPECT_NE(message.find("Msamples"), std::string::npos) << message;
+    EXPECT_NE(message.find("--max-render-cost = 5000"), std::string::npos) << message;
+    EXPECT_NE(message.find("30000 layers deep"), std::string::npos) << message;
+    // Half the size is a quarter of the samples, and so on: some size fits.
+    EXPECT_NE(message.find("width and height"), std::string::npos) << message;
+  }
+}
+
+TEST(RenderPrice, TheWaysOfferedDoFit) {
+  const auto model = obj_model(test::nearly_coincident_triangles(4000));
+  const render::RenderJob job = job_of(model, {{"width", 1024}, {"height", 1024}});
+  RenderLimits limits;
+  limits.max_render_cost = price_render(job).total.units() / 3;
+  try {
+    check_render_cost(job, price_render(job), limits);
+    FAIL() << "not refused";
+  } catch (const LimitError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("width and height 512 × 512"), std::string::npos) << message;
+    // msaa 4 → 1 takes the surface samples to a quarter: under a third.
+    EXPECT_NE(message.find("msaa 1"), std::string::npos) << message;
+    const render::RenderJob smaller = job_of(model, {{"width", 512}, {"height", 512}});
+    EXPECT_LE(price_render(smaller).total.units(), limits.max_render_cost);
+    const render::RenderJob one_sample = job_of(model, {{"width", 1024}, {"height", 1024}, {"msaa", 1}});
+    EXPECT_LE(price_render(one_sample).total.units(), limits.max_render_cost);
+  }
+}
+
+TEST(RenderPrice, ZeroMeansNoLimit) {
+  const render::RenderJob job = job_of(obj_model(test::nearly_coincident_triangles(60000)), nlohmann::json::object());
+  RenderLimits limits;
+  limits.max_render_cost = 0;
+  EXPECT_NO_THROW(check_render_cost(job, price_render(job), limits));
+}
+
+// Each frame at its own view: the sum of the single renders of those views.
+TEST(RenderPrice, ASheetCostsAllItsFramesEachFromItsView) {
+  const auto model = obj_model(test::stacked_triangles(100));
+  const render::RenderJob job = job_of(model, {{"width", 128}, {"height", 128}, {"sheet", {{"frames", 8}}}});
+  const RenderPrice sheet = price_render(job);
+  EXPECT_EQ(sheet.frames, 8u);
+  double singles = 0;
+  double least = 1e300, most = 0;
+  for (const render::SheetFrame& frame : render::layout_sheet(*job.params.sheet, 128, 128).frames) {
+    const render::RenderCost one =
+        price_render(job_of(model, {{"width", 128},
+                                    {"height", 128},
+                                    {"camera", {{"yaw", frame.yaw_deg}, {"pitch", frame.pitch_deg}}}}))
+            .total;
+    singles += one.units();
+    least = std::min(least, one.samples);
+    most = std::max(most, one.samples);
+  }
+  EXPECT_NEAR(sheet.total.units(), singles, 1e-9 * singles);
+  EXPECT_NEAR(sheet.per_frame().units(), singles / 8, 1e-9 * singles);
+  // The stack faces +Z: seen from the side its frames cover fewer samples.
+  EXPECT_GT(most, least * 1.5);
+}
+
+TEST(RenderPrice, OnlyLongFramesArePacedInChunksOfAboutTheChunkCost) {
+  render::RenderCost cheap;
+  cheap.samples = 10e6;
+  cheap.triangles = 1e5;
+  EXPECT_EQ(paced_chunk_triangles(cheap), 0u);
+  render::RenderCost dear;
+  dear.samples = 50000e6;
+  dear.triangles = 120000;
+  const std::size_t chunk = paced_chunk_triangles(dear);
+  ASSERT_GT(chunk, 0u);
+  const double chunks = dear.triangles / static_cast<double>(chunk);
+  EXPECT_NEAR(chunks / (dear.units() / kPacedChunkCost), 1.0, 0.01);
+}
+
+// The shared models, as users upload them: never refused at the schema's
+// largest size with any preset (the budget's false refusals are 0).
+TEST(RenderPrice, SharedModelsAreNeverRefused) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  std::vector<std::string> presets = {""};
+  for (const auto& item : proto::Presets::builtin().document().items()) presets.push_back(item.key());
+  double dearest = 0;
+  std::string dearest_what;
+  for (const auto& entry : std::filesystem::directory_iterator(test::shared_models_dir())) {
+    if (!entry.is_directory() || entry.path().filename() == "edge-cases") continue;
+    scene::Bundle bundle;
+    for (const auto& file : std::filesystem::recursive_directory_iterator(entry.path())) {
+      if (!file.is_regular_file()) continue;
+      const std::string ext = file.path().extension().string();
+      if (ext != ".obj" && ext != ".mtl" && ext != ".png" && ext != ".jpg") continue;
+      bundle.add(std::filesystem::relative(file.path(), entry.path()).generic_string(), test::read_file(file.path()));
+    }
+    const auto model = std::make_shared<const scene::Model>(scene::import_bundle(bundle));
+    for (const std::string& preset : presets) {
+      for (int side : {512, 2048, 4096}) {
+        nlohmann::json request = {{"width", side}, {"height", side}, {"msaa", 8}};
+        if (!preset.empty()) request["preset"] = preset;
+        const render::RenderJob job = job_of(model, request);
+        const RenderPrice price = price_render(job);
+        if (price.total.units() > dearest) {
+          dearest = price.total.units();
+          dearest_what = entry.path().filename().string() + " " + (preset.empty() ? "default" : preset) + " " +
+                         std::to_string(side) + "²";
+        }
+        EXPECT_NO_THROW(check_render_cost(job, price, RenderLimits{}))
+            << entry.path().filename() << " " << preset << " " << side;
+      }
+    }
+  }
+  std::cout << "dearest shared render: " << dearest << " Msamples (" << dearest_what << ")\n";
+}
+
+}  // namespace
+}  // namespace toond::http
