@@ -69,7 +69,7 @@ TEST(HeavyRender, OneOverTheCostLimitIsRefusedBeforeDrawingWithTheFigures) {
 // chunks: another client's small renders all answer while it draws, and
 // it is stopped at --render-timeout with a 503 that says so.
 TEST(HeavyRender, ALongRenderHoldsUpNoOtherClientAndStopsAtItsDeadline) {
-  Daemon daemon({}, {"--max-render-cost", "0", "--render-timeout", "4"});
+  Daemon daemon({}, {"--max-render-cost", "0", "--render-timeout", "6"});
   auto heavy_client = daemon.client();
   const std::string id = upload_obj_text(heavy_client, nearly_coincident_triangles(60000));
   ASSERT_FALSE(id.empty());

@@ -116,7 +116,8 @@ TEST(RenderPrice, OnlyLongFramesArePacedInChunksOfAboutTheChunkCost) {
   const std::size_t chunk = paced_chunk_triangles(dear);
   ASSERT_GT(chunk, 0u);
   const double chunks = dear.triangles / static_cast<double>(chunk);
-  EXPECT_NEAR(chunks / (dear.units() / kPacedChunkCost), 1.0, 0.01);
+  // Whole triangles a chunk: 59 of them where 59.99 would be exact.
+  EXPECT_NEAR(chunks / (dear.units() / kPacedChunkCost), 1.0, 0.05);
 }
 
 // The shared models, as users upload them: never refused at the schema's
