@@ -1,16 +1,13 @@
 #include "support/costly_models.h"
 
 #include <cmath>
-#include <cstdio>
+
+#include "support/heavy_inputs.h"
 
 namespace toond::test {
 namespace {
 
-std::string vertex(double x, double y, double z) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\n", x, y, z);
-  return buf;
-}
+std::string vertex(double x, double y, double z) { return obj_vertex_line(x, y, z); }
 
 // A face of the three vertices written last (relative indices).
 const char* kLastTriangle = "f -3 -2 -1\n";

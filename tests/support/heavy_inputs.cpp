@@ -191,6 +191,12 @@ scene::Bundle m_edge_fan(int n) {
 
 }  // namespace
 
+std::string obj_vertex_line(double x, double y, double z) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\n", x, y, z);
+  return buf;
+}
+
 const std::vector<HeavyInput>& heavy_inputs() {
   static const std::vector<HeavyInput> inputs = {
       {"huge_polygon", "one star-shaped polygon of n vertices", huge_polygon, 20000},

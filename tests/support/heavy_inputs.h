@@ -22,4 +22,7 @@ struct HeavyInput {
 
 const std::vector<HeavyInput>& heavy_inputs();
 
+// "v x y z\n" with every digit a double needs to come back the same.
+std::string obj_vertex_line(double x, double y, double z);
+
 }  // namespace toond::test
