@@ -74,6 +74,22 @@ const Flag kFlags[] = {
        if (!is_index(v) || v.size() > 9) throw UsageError("--scene '" + v + "': expected a scene's index, 0 or more");
        t.options.scene = v;
      }},
+    {{"", "--smooth-angle", "D",
+      "for files without normals: faces meeting at more than D\ndegrees keep their own normals (0..180, default 30)"},
+     kUpload, false,
+     [](FlagTarget& t, Value v) {
+       char* end = nullptr;
+       const double d = std::strtod(v.c_str(), &end);
+       if (v.empty() || end != v.c_str() + v.size() || !(d >= 0 && d <= 180)) {
+         throw UsageError("--smooth-angle '" + v + "': expected degrees from 0 to 180");
+       }
+       t.options.smooth_angle = v;
+     }},
+    {{"", "--up", "y|z", "the file's up axis: z for Z-up CAD and 3D-printing files"}, kUpload, false,
+     [](FlagTarget& t, Value v) {
+       if (v != "y" && v != "z") throw UsageError("--up '" + v + "': expected y or z");
+       t.options.up = v;
+     }},
 
     {{"", "--model", "ID", "render a model stored earlier with `toon upload`"}, kRender, false,
      [](FlagTarget& t, Value v) { t.options.model_id = required(v, "--model needs a model id"); }},
@@ -125,7 +141,8 @@ const VerbInfo kVerbs[] = {
 OpenGL vendor, renderer and version it renders with.
 Exit status 0 when the status is "ok", 1 otherwise or when it cannot be reached.
 )"},
-    {Verb::upload, "upload", "PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q] [--scene N]",
+    {Verb::upload, "upload",
+     "PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q] [--scene N]\n[--smooth-angle D] [--up y|z]",
      "store an OBJ with its MTL files and textures (or a .m mesh);\nprints the model id",
      R"(Sends an OBJ model to the daemon's store (POST /models) together with the
 MTL files its mtllib lines name and the textures those MTL files reference
@@ -136,7 +153,12 @@ folder are refused, missing files are reported and skipped. A .m mesh
 sent alone; a .gltf brings the .bin and image files its URIs name (inside its
 folder). A folder stands for its one model file (.obj, .m, .gltf or .glb).
 A glTF file's default scene is drawn; --scene N picks another (another model,
-with its own id).
+with its own id). Faces of a file without normals are smoothed across edges
+sharper than 30 degrees no more (normals by angle, as Blender's Auto Smooth;
+OBJ smoothing groups decide where the file has them; glTF without normals is
+flat, as its specification says): --smooth-angle D changes the angle, and
+--up z turns a Z-up file (most CAD and 3D-printing exports) upright. Each is
+part of the model's id.
 Prints the daemon's answer (id, triangles, materials, textures, warnings).
 )"},
     {Verb::render, "render",

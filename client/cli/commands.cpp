@@ -42,7 +42,11 @@ int upload(const Options& options) {
   if (!options.quiet) std::cerr << "toon: uploading " << bundle_summary(scan) << "\n";
 
   Connection conn(options.server);
-  const std::string path = options.scene.empty() ? "/models" : "/models?scene=" + options.scene;
+  std::string query;
+  if (!options.scene.empty()) query += "&scene=" + options.scene;
+  if (!options.smooth_angle.empty()) query += "&smooth_angle=" + options.smooth_angle;
+  if (!options.up.empty()) query += "&up=" + options.up;
+  const std::string path = query.empty() ? "/models" : "/models?" + query.substr(1);
   httplib::Result result = conn.post_multipart(path, bundle_parts(scan));
   if (!result) return conn.network_failure(result);
   if (result->status != 200 && result->status != 201) return error_reply(*result);

@@ -1,5 +1,7 @@
 // POST /models, GET /models, GET /models/{id}, DELETE /models/{id}.
 #include <algorithm>
+#include <cstdlib>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -15,16 +17,46 @@ constexpr const char* kIdPattern = "/models/([0-9a-f]{16,64})";
 
 
 // `?scene=N`: the glTF scene the upload asks for.
-scene::ImportChoices import_choices(const httplib::Request& req) {
-  scene::ImportChoices choices;
-  if (!req.has_param("scene")) return choices;
+std::optional<int> gltf_scene(const httplib::Request& req) {
+  if (!req.has_param("scene")) return std::nullopt;
   const std::string text = req.get_param_value("scene");
   const bool digits = !text.empty() && text.size() <= 9 &&
                       std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
   if (!digits) {
     throw RequestError(400, "invalid_parameter", "?scene: a glTF scene's index, a whole number from 0", "?scene");
   }
-  choices.gltf_scene = std::stoi(text);
+  return std::stoi(text);
+}
+
+// `?smooth_angle=D`: degrees, 0 to 180.
+std::optional<double> smooth_angle(const httplib::Request& req) {
+  if (!req.has_param("smooth_angle")) return std::nullopt;
+  const std::string text = req.get_param_value("smooth_angle");
+  char* end = nullptr;
+  const double angle = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !(angle >= 0.0 && angle <= 180.0)) {
+    throw RequestError(400, "invalid_parameter",
+                       "?smooth_angle: degrees from 0 (flat faces) to 180 (every edge smoothed), got \"" + text + "\"",
+                       "?smooth_angle");
+  }
+  return angle;
+}
+
+// `?up=y` (the default) or `?up=z`.
+bool z_up(const httplib::Request& req) {
+  if (!req.has_param("up")) return false;
+  const std::string text = req.get_param_value("up");
+  if (text != "y" && text != "z") {
+    throw RequestError(400, "invalid_parameter", "?up: y (the default) or z (a Z-up file, as CAD exports)", "?up");
+  }
+  return text == "z";
+}
+
+scene::ImportChoices import_choices(const httplib::Request& req) {
+  scene::ImportChoices choices;
+  choices.gltf_scene = gltf_scene(req);
+  choices.smooth_angle = smooth_angle(req);
+  choices.z_up = z_up(req);
   return choices;
 }
 

@@ -83,16 +83,17 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
   if (gltf.size() == 1 && !std::any_of(bundle.files().begin(), bundle.files().end(), [](const auto& file) {
         return has_extension(file.first, ".obj") || has_extension(file.first, ".m");
       })) {
-    model = import_gltf_bundle(bundle, gltf.front(), limits, choices.gltf_scene);
+    model = import_gltf_bundle(bundle, gltf.front(), limits, choices);
   } else {
     const std::string path = find_model_file(bundle, {".obj", ".m", ".gltf", ".glb"}, ".obj, .m, .gltf or .glb");
     if (has_extension(path, ".gltf") || has_extension(path, ".glb")) {
-      model = import_gltf_bundle(bundle, path, limits, choices.gltf_scene);
+      model = import_gltf_bundle(bundle, path, limits, choices);
     } else {
       if (choices.gltf_scene) {
         throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");
       }
-      model = has_extension(path, ".m") ? import_m_bundle(bundle, limits) : import_obj_bundle(bundle, limits);
+      model = has_extension(path, ".m") ? import_m_bundle(bundle, limits, choices)
+                                        : import_obj_bundle(bundle, limits, choices);
     }
   }
   check_import_time(limits, "reading the model");

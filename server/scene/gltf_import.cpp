@@ -160,8 +160,8 @@ bool keep_image_undecoded(tinygltf::Image*, const int, std::string*, std::string
 
 class GltfImporter {
  public:
-  GltfImporter(const Bundle& bundle, std::string path, const ImportLimits& limits, std::optional<int> scene)
-      : bundle_(bundle), path_(std::move(path)), limits_(limits), scene_(scene) {}
+  GltfImporter(const Bundle& bundle, std::string path, const ImportLimits& limits, const ImportChoices& choices)
+      : bundle_(bundle), path_(std::move(path)), limits_(limits), scene_(choices.gltf_scene), choices_(choices) {}
 
   Model run() {
     const GltfContainer container = open_gltf_container(*bundle_.find(path_), path_);
@@ -185,6 +185,9 @@ class GltfImporter {
     decode_draco(instances);
     MeshSource source = make_source(instances);
     source.limits = limits_;
+    apply_import_choices(source, choices_);
+    // glTF 2.0 §3.7.2.1: without NORMAL, flat normals.
+    source.smooth_angle_deg = kFlatSmoothAngle;
     model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
       build_materials(triangles);
       check_import_time(limits_, "decoding textures");
@@ -818,6 +821,7 @@ class GltfImporter {
   std::string path_;
   ImportLimits limits_;
   std::optional<int> scene_;
+  ImportChoices choices_;
   json doc_;
   json images_;
   tinygltf::Model gltf_;
@@ -836,8 +840,8 @@ class GltfImporter {
 }  // namespace
 
 Model import_gltf_bundle(const Bundle& bundle, const std::string& path, const ImportLimits& limits,
-                         std::optional<int> scene) {
-  return GltfImporter(bundle, path, limits, scene).run();
+                         const ImportChoices& choices) {
+  return GltfImporter(bundle, path, limits, choices).run();
 }
 
 }  // namespace toond::scene

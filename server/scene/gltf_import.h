@@ -3,6 +3,7 @@
 #include <string>
 
 #include "scene/bundle.h"
+#include "scene/import_choices.h"
 #include "scene/import_limits.h"
 #include "scene/model.h"
 
@@ -36,7 +37,10 @@ namespace toond::scene {
 // `limits` before anything is allocated from them, and every accessor,
 // buffer view and sparse part against the bytes it reads.
 // Callers that take any model file use import_bundle (bundle_import.h).
+// `choices.gltf_scene` picks the scene (none: the file's default, or its
+// first); `choices.z_up` turns the model. A primitive without NORMAL is
+// flat-shaded, as the specification says, whatever `choices.smooth_angle`.
 Model import_gltf_bundle(const Bundle& bundle, const std::string& path, const ImportLimits& limits = {},
-                         std::optional<int> scene = std::nullopt);
+                         const ImportChoices& choices = {});
 
 }  // namespace toond::scene

@@ -72,14 +72,15 @@ struct Face {
 
 class Parser {
  public:
-  Parser(std::string path, std::string_view text, const ImportLimits& limits)
-      : path_(std::move(path)), text_(text), limits_(limits) {}
+  Parser(std::string path, std::string_view text, const ImportLimits& limits, const ImportChoices& choices)
+      : path_(std::move(path)), text_(text), limits_(limits), choices_(choices) {}
 
   Model run() {
     parse();
     check_import_time(limits_, "parsing " + path_);
     MeshSource source = make_source();
     source.limits = limits_;
+    apply_import_choices(source, choices_);
     Model model;
     model.mesh = build_mesh(source, warnings_, [](std::vector<SourceTriangle>& triangles) {
       for (auto& tri : triangles) tri.material = 0;
@@ -314,6 +315,7 @@ class Parser {
   std::string path_;
   std::string_view text_;
   ImportLimits limits_;
+  ImportChoices choices_;
   ImportWarnings warnings_;
 
   std::vector<glm::dvec3> positions_;
@@ -340,9 +342,9 @@ class Parser {
 
 }  // namespace
 
-Model import_m_bundle(const Bundle& bundle, const ImportLimits& limits) {
+Model import_m_bundle(const Bundle& bundle, const ImportLimits& limits, const ImportChoices& choices) {
   const std::string path = find_model_file(bundle, {".m"}, ".m");
-  return Parser(path, *bundle.find(path), limits).run();
+  return Parser(path, *bundle.find(path), limits, choices).run();
 }
 
 }  // namespace toond::scene

@@ -1,5 +1,6 @@
 #pragma once
 #include "scene/bundle.h"
+#include "scene/import_choices.h"
 #include "scene/import_limits.h"
 #include "scene/model.h"
 
@@ -22,6 +23,6 @@ namespace toond::scene {
 // OBJ (mesh_builder.h). A line that cannot be read, a repeated vertex id
 // or a face naming a vertex id no Vertex line defines is an ImportError
 // naming the file and the line.
-Model import_m_bundle(const Bundle& bundle, const ImportLimits& limits = {});
+Model import_m_bundle(const Bundle& bundle, const ImportLimits& limits = {}, const ImportChoices& choices = {});
 
 }  // namespace toond::scene

@@ -10,6 +10,7 @@
 #include "scene/extreme_points.h"
 #include "scene/mesh_processing.h"
 #include "scene/duplicate_triangles.h"
+#include "scene/normals_by_angle.h"
 #include "scene/position_weld.h"
 
 namespace toond::scene {
@@ -103,6 +104,10 @@ struct GroupKey {
   bool operator==(const GroupKey&) const = default;
 };
 
+// The smoothing of a vertex whose normal is averaged over a corner group
+// made by angle (GroupKey::position then holds the group).
+constexpr std::int64_t kAngleGroup = std::numeric_limits<std::int64_t>::min() + 1;
+
 struct GroupKeyHash {
   std::size_t operator()(const GroupKey& k) const noexcept {
     return std::hash<std::uint64_t>()((static_cast<std::uint64_t>(k.position) << 20) ^
@@ -120,6 +125,7 @@ class Builder {
 
   Mesh run(const std::function<void(std::vector<SourceTriangle>&)>& assign_materials) {
     check_limits();
+    if (src_.z_up) turn_z_up();
     check_positions();
     check_indices();
     sanitize_colors();
@@ -151,6 +157,18 @@ class Builder {
     if (src_.triangles.size() > src_.limits.max_triangles) {
       throw ImportLimitError(src_.file, ImportLimit::Triangles, static_cast<double>(src_.limits.max_triangles),
                              src_.file + " has " + std::to_string(src_.triangles.size()) + " triangles, more than");
+    }
+  }
+
+  // (x, y, z) → (x, z, −y): a quarter turn about +X, so a Z-up file's +Z
+  // is +Y. Applied to every direction the file gives too.
+  void turn_z_up() {
+    const auto turn = [](auto& v) { v = {v.x, v.z, -v.y}; };
+    for (glm::dvec3& p : src_.positions) turn(p);
+    for (glm::dvec3& n : src_.normals) turn(n);
+    for (glm::dvec4& t : src_.tangents) {
+      const glm::dvec3 xyz(t);
+      t = glm::dvec4(xyz.x, xyz.z, -xyz.y, t.w);
     }
   }
 
@@ -339,6 +357,46 @@ class Builder {
     return -1 - static_cast<std::int64_t>(h >> 2);
   }
 
+  // Normals by angle (scene/normals_by_angle.h): corners of one vertex
+  // whose faces meet at a sharp edge around it get a vertex each, a copy of
+  // the first; returns per vertex (copies included) its corner group, which
+  // its normal is averaged over.
+  std::vector<std::uint32_t> split_by_angle(std::vector<std::uint32_t>& position_class,
+                                            std::vector<bool>& needs_normal,
+                                            std::vector<std::int64_t>& smoothing_of_vertex,
+                                            std::vector<std::int64_t>& file_tangents) {
+    Mesh& mesh = mesh_;
+    std::vector<std::uint8_t> eligible(mesh.indices.size());
+    for (std::size_t c = 0; c < eligible.size(); ++c) eligible[c] = needs_normal[mesh.indices[c]];
+    const std::vector<std::uint32_t> corner_group =
+        corner_groups_by_angle(mesh.positions, position_class, mesh.indices, eligible, src_.smooth_angle_deg);
+    constexpr std::uint32_t kNone = ~0u;
+    std::vector<std::uint32_t> group_of_vertex(mesh.positions.size(), kNone);
+    std::unordered_map<std::uint64_t, std::uint32_t> copies;
+    for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
+      if (!eligible[c]) continue;
+      const std::uint32_t v = mesh.indices[c];
+      const std::uint32_t g = corner_group[c];
+      if (group_of_vertex[v] == kNone) group_of_vertex[v] = g;
+      if (group_of_vertex[v] == g) continue;
+      const auto [it, inserted] = copies.try_emplace((static_cast<std::uint64_t>(v) << 32) | g, 0u);
+      if (inserted) {
+        it->second = static_cast<std::uint32_t>(mesh.positions.size());
+        mesh.positions.push_back(mesh.positions[v]);
+        mesh.normals.push_back(mesh.normals[v]);
+        mesh.texcoords.push_back(mesh.texcoords[v]);
+        if (!mesh.colors.empty()) mesh.colors.push_back(mesh.colors[v]);
+        file_tangents.push_back(file_tangents[v]);
+        smoothing_of_vertex.push_back(smoothing_of_vertex[v]);
+        needs_normal.push_back(true);
+        position_class.push_back(position_class[v]);
+        group_of_vertex.push_back(g);
+      }
+      mesh.indices[c] = it->second;
+    }
+    return group_of_vertex;
+  }
+
   void build() {
     Mesh& mesh = mesh_;
     mesh.origin = origin_;
@@ -415,15 +473,19 @@ class Builder {
     mesh.welded_positions = weld.moved;
 
     if (std::find(needs_normal.begin(), needs_normal.end(), true) != needs_normal.end()) {
-      const auto position_class = group_by_position(mesh.positions);
+      std::vector<std::uint32_t> position_class = group_by_position(mesh.positions);
+      // Without smoothing groups the angle between faces decides.
+      const std::vector<std::uint32_t> angle_group =
+          smoothing_in_use ? std::vector<std::uint32_t>{}
+                           : split_by_angle(position_class, needs_normal, smoothing_of_vertex, file_tangents);
       std::unordered_map<GroupKey, std::uint32_t, GroupKeyHash> group_ids;
       std::vector<std::uint32_t> groups(mesh.positions.size());
       for (std::size_t v = 0; v < groups.size(); ++v) {
         // A vertex that brought its own normal forms a group of its own
         // (its computed normal is discarded anyway).
-        const GroupKey key = needs_normal[v]
-                                 ? GroupKey{position_class[v], smoothing_of_vertex[v]}
-                                 : GroupKey{static_cast<std::uint32_t>(v), std::numeric_limits<std::int64_t>::min()};
+        const GroupKey key = !needs_normal[v] ? GroupKey{static_cast<std::uint32_t>(v), std::numeric_limits<std::int64_t>::min()}
+                             : !angle_group.empty() ? GroupKey{angle_group[v], kAngleGroup}
+                                                    : GroupKey{position_class[v], smoothing_of_vertex[v]};
         groups[v] = group_ids.emplace(key, static_cast<std::uint32_t>(group_ids.size())).first->second;
       }
       const auto computed = compute_grouped_normals(mesh.positions, mesh.indices, groups);
@@ -462,6 +524,11 @@ class Builder {
 };
 
 }  // namespace
+
+void apply_import_choices(MeshSource& source, const ImportChoices& choices) {
+  source.smooth_angle_deg = choices.smooth_angle.value_or(kDefaultSmoothAngle);
+  source.z_up = choices.z_up;
+}
 
 Mesh build_mesh(MeshSource& source, ImportWarnings& warnings,
                 const std::function<void(std::vector<SourceTriangle>&)>& assign_materials) {

@@ -12,7 +12,9 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/import_choices.h"
 #include "scene/import_limits.h"
+#include "scene/normals_by_angle.h"
 #include "scene/model.h"
 
 namespace toond::scene {
@@ -82,6 +84,13 @@ struct MeshSource {
   std::function<std::string(std::size_t)> describe_position;
   // Vertex and triangle counts allowed (ImportLimitError beyond).
   ImportLimits limits;
+  // Corners without a usable normal, where no smoothing groups decide, are
+  // smoothed across edges whose faces turn by less than this (degrees):
+  // 0 gives flat faces (glTF's rule), 180 smooths every edge.
+  double smooth_angle_deg = kDefaultSmoothAngle;
+  // The file is Z-up: positions, normals and tangents are turned so that
+  // its +Z becomes +Y, (x, y, z) → (x, z, −y), before anything else.
+  bool z_up = false;
 };
 
 // Builds the mesh of `source` (whose triangles it consumes):
@@ -95,18 +104,26 @@ struct MeshSource {
 //   ImportError;
 // - triangles with no area, in the file's numbers or after rounding to
 //   float, are dropped with a warning; none left is an ImportError;
+// - triangles whose corners repeat another's (in any rotation) are
+//   dropped, the one drawn last kept, with a warning that counts them;
 // - assign_materials(triangles) then sets every remaining triangle's
 //   material to an index into the model's materials (so an importer can
 //   keep only the materials in use);
 // - vertices are shared by (position, normal, texcoord, smoothing), so a
 //   position's colour goes with every vertex made from it; normals that
 //   are missing, zero or not finite are computed (angle-weighted, averaged
-//   per position within the mesh, the smoothing group or, with smoothing
-//   off where groups are used, the face); texcoords that are not finite
+//   per position within the smoothing group or, with smoothing off where
+//   groups are used, the face; without smoothing groups over the faces
+//   joined across edges sharper than source.smooth_angle_deg, a vertex
+//   copied for each such group: normals by angle); texcoords that are not finite
 //   become (0,0) and colours are sanitised, each with a warning;
 // - outline normals, tangents and bounds are derived (a corner's usable
 //   file tangent is kept instead of the derived one), and triangles are
 //   sorted (stably) into one submesh per material.
+// Sets what the upload's choices say of the mesh: the smoothing angle and
+// the up axis.
+void apply_import_choices(MeshSource& source, const ImportChoices& choices);
+
 Mesh build_mesh(MeshSource& source, ImportWarnings& warnings,
                 const std::function<void(std::vector<SourceTriangle>&)>& assign_materials);
 

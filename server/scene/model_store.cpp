@@ -1,5 +1,7 @@
 #include "scene/model_store.h"
 
+#include <cstdio>
+
 #include <fcntl.h>
 #include <openssl/evp.h>
 #include <unistd.h>
@@ -105,6 +107,8 @@ nlohmann::json ModelInfo::to_json() const {
           {"weld", {{"tolerance", weld.tolerance}, {"positions", weld.positions}}},
           {"cost", {{"layers", cost.layers}, {"edge_span", cost.edge_span}}}};
   if (choices.gltf_scene) j["scene"] = *choices.gltf_scene;
+  if (choices.smooth_angle) j["smooth_angle"] = *choices.smooth_angle;
+  if (choices.z_up) j["up"] = "z";
   return j;
 }
 
@@ -130,6 +134,10 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
   if (const auto scene = j.find("scene"); scene != j.end() && scene->is_number_integer()) {
     info.choices.gltf_scene = scene->get<int>();
   }
+  if (const auto angle = j.find("smooth_angle"); angle != j.end() && angle->is_number()) {
+    info.choices.smooth_angle = angle->get<double>();
+  }
+  info.choices.z_up = j.value("up", "y") == "z";
   return info;
 }
 
@@ -155,6 +163,13 @@ std::string bundle_id(const Bundle& bundle, const ImportChoices& choices) {
     feed(std::string_view("\0scene\0", 7));
     feed(std::to_string(*choices.gltf_scene));
   }
+  if (choices.smooth_angle) {
+    char angle[32];
+    std::snprintf(angle, sizeof angle, "%.17g", *choices.smooth_angle);
+    feed(std::string_view("\0smooth_angle\0", 14));
+    feed(angle);
+  }
+  if (choices.z_up) feed(std::string_view("\0up\0z", 6));
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   if (EVP_DigestFinal_ex(ctx.get(), digest, &length) != 1) throw std::runtime_error("SHA-256 failed");

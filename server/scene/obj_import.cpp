@@ -193,14 +193,15 @@ bool is_greyscale(const Texture& texture) {
 
 class Importer {
  public:
-  Importer(const Bundle& bundle, const ImportLimits& limits)
-      : bundle_(bundle), obj_path_(find_obj(bundle)), limits_(limits) {}
+  Importer(const Bundle& bundle, const ImportLimits& limits, const ImportChoices& choices)
+      : bundle_(bundle), obj_path_(find_obj(bundle)), limits_(limits), choices_(choices) {}
 
   Model run() {
     parse();
     check_import_time(limits_, "parsing " + obj_path_);
     MeshSource source = make_source();
     source.limits = limits_;
+    apply_import_choices(source, choices_);
     model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
       build_materials(triangles);
       check_import_time(limits_, "decoding textures");
@@ -416,6 +417,7 @@ class Importer {
   const Bundle& bundle_;
   std::string obj_path_;
   ImportLimits limits_;
+  ImportChoices choices_;
   ImportWarnings warnings_;
   std::unique_ptr<BundleMaterialReader> reader_;
   tinyobj::attrib_t attrib_;
@@ -431,6 +433,8 @@ class Importer {
 
 }  // namespace
 
-Model import_obj_bundle(const Bundle& bundle, const ImportLimits& limits) { return Importer(bundle, limits).run(); }
+Model import_obj_bundle(const Bundle& bundle, const ImportLimits& limits, const ImportChoices& choices) {
+  return Importer(bundle, limits, choices).run();
+}
 
 }  // namespace toond::scene

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "scene/bundle.h"
+#include "scene/import_choices.h"
 #include "scene/import_limits.h"
 #include "scene/model.h"
 
@@ -16,6 +17,6 @@ namespace toond::scene {
 // worked around (missing texture, unknown MTL keyword) become
 // Model::warnings; problems that cannot throw ImportError.
 // Callers that take any model file use import_bundle (bundle_import.h).
-Model import_obj_bundle(const Bundle& bundle, const ImportLimits& limits = {});
+Model import_obj_bundle(const Bundle& bundle, const ImportLimits& limits = {}, const ImportChoices& choices = {});
 
 }  // namespace toond::scene

@@ -145,6 +145,19 @@ TEST(CliArgs, UploadPicksAGltfSceneByIndex) {
   EXPECT_TRUE(contains(usage_error([] { parse({"render", "--scene", "1", "-o", "x.png"}); }), "--scene"));
 }
 
+TEST(CliArgs, UploadTakesTheSmoothingAngleAndTheUpAxis) {
+  const auto options = parse({"upload", "--smooth-angle", "45", "--up", "z", "part.obj"});
+  EXPECT_EQ(options.smooth_angle, "45");
+  EXPECT_EQ(options.up, "z");
+  EXPECT_TRUE(parse({"upload", "part.obj"}).smooth_angle.empty());
+  for (const char* bad : {"-1", "181", "x", ""}) {
+    EXPECT_TRUE(contains(usage_error([bad] { parse({"upload", "--smooth-angle", bad, "m.obj"}); }), "--smooth-angle"))
+        << bad;
+  }
+  EXPECT_TRUE(contains(usage_error([] { parse({"upload", "--up", "x", "m.obj"}); }), "--up"));
+  EXPECT_TRUE(contains(usage_error([] { parse({"render", "--up", "z", "-o", "x.png"}); }), "--up"));
+}
+
 TEST(CliArgs, RenderRequiresOutput) {
   EXPECT_TRUE(contains(usage_error([] { parse({"render", "spot.obj"}); }), "-o"));
   EXPECT_TRUE(contains(usage_error([] { parse({"render", "-o"}); }), "needs a value"));

@@ -30,11 +30,13 @@ const std::string kQuadCube =
     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
     "f 1 4 3 2\nf 5 6 7 8\nf 1 5 8 4\nf 2 3 7 6\nf 4 8 7 3\nf 1 2 6 5\n";
 
-TEST(ObjImport, QuadsAreTriangulatedAndMissingNormalsComputed) {
+// Normals by angle: the cube's faces meet at 90°, more than the default
+// 30°, so each face keeps its own four corners and its own normal.
+TEST(ObjImport, QuadsAreTriangulatedAndMissingNormalsComputedByAngle) {
   const Model m = import_obj_bundle(make_bundle({{"cube.obj", kQuadCube}}));
   expect_well_formed(m);
   EXPECT_EQ(m.mesh.triangle_count(), 12u);
-  EXPECT_EQ(m.mesh.positions.size(), 8u);
+  EXPECT_EQ(m.mesh.positions.size(), 24u);
   EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
   ASSERT_EQ(m.materials.size(), 1u);
   EXPECT_EQ(m.materials[0].diffuse, glm::vec3(0.8f));
@@ -47,17 +49,42 @@ TEST(ObjImport, QuadsAreTriangulatedAndMissingNormalsComputed) {
   EXPECT_EQ(m.mesh.origin, glm::dvec3(0.5));
   EXPECT_EQ(m.mesh.bounds.min, glm::vec3(-0.5f));
   EXPECT_EQ(m.mesh.bounds.max, glm::vec3(0.5f));
-  for (std::size_t v = 0; v < 8; ++v) {
-    EXPECT_NEAR(glm::dot(m.mesh.normals[v], glm::normalize(m.mesh.positions[v])), 1.0f, 1e-5f);
-    EXPECT_EQ(m.mesh.texcoords[v], glm::vec2(0.0f));
-  }
-  // Every triangle is wound counter-clockwise seen from outside.
+  for (std::size_t v = 0; v < m.mesh.positions.size(); ++v) EXPECT_EQ(m.mesh.texcoords[v], glm::vec2(0.0f));
+  // Every triangle is wound counter-clockwise seen from outside, and each
+  // corner's normal is its face's.
   for (std::size_t t = 0; t < m.mesh.indices.size(); t += 3) {
     const glm::dvec3 a = m.mesh.positions[m.mesh.indices[t]];
     const glm::dvec3 b = m.mesh.positions[m.mesh.indices[t + 1]];
     const glm::dvec3 c = m.mesh.positions[m.mesh.indices[t + 2]];
-    EXPECT_GT(glm::dot(triangle_normal(a, b, c), (a + b + c) / 3.0), 0.0);
+    const glm::dvec3 face = triangle_normal(a, b, c);
+    EXPECT_GT(glm::dot(face, (a + b + c) / 3.0), 0.0);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(glm::dot(glm::dvec3(m.mesh.normals[m.mesh.indices[t + k]]), face), 1.0, 1e-6) << t;
+    }
   }
+}
+
+// `smooth_angle` 180 smooths every edge: the cube's 8 corners shared, each
+// normal along its diagonal (what toond did before normals by angle).
+TEST(ObjImport, ASmoothAngleOf180SmoothsEveryEdge) {
+  ImportChoices smooth;
+  smooth.smooth_angle = 180;
+  const Model m = import_obj_bundle(make_bundle({{"cube.obj", kQuadCube}}), {}, smooth);
+  ASSERT_EQ(m.mesh.positions.size(), 8u);
+  for (std::size_t v = 0; v < 8; ++v) {
+    EXPECT_NEAR(glm::dot(m.mesh.normals[v], glm::normalize(m.mesh.positions[v])), 1.0f, 1e-5f);
+  }
+}
+
+// `up=z` turns a Z-up file so that its +Z is +Y: (x, y, z) → (x, z, −y).
+TEST(ObjImport, UpZTurnsTheFileUpright) {
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 0 3\nvn 0 -1 0\nf 1//1 2//1 3//1\n";
+  ImportChoices z_up;
+  z_up.z_up = true;
+  const Model m = import_obj_bundle(make_bundle({{"tall.obj", obj}}), {}, z_up);
+  EXPECT_NEAR(m.mesh.bounds.max.y - m.mesh.bounds.min.y, 3.0f, 1e-6f);
+  EXPECT_NEAR(m.mesh.bounds.max.z - m.mesh.bounds.min.z, 0.0f, 1e-6f);
+  for (const glm::vec3& n : m.mesh.normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f);
 }
 
 TEST(ObjImport, FarFromOriginKeepsPrecision) {
