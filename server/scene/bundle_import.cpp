@@ -11,6 +11,8 @@
 #include "scene/m_import.h"
 #include "scene/mesh_lod.h"
 #include "scene/obj_import.h"
+#include "scene/ply_import.h"
+#include "scene/stl_import.h"
 
 namespace toond::scene {
 namespace {
@@ -85,9 +87,16 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
       })) {
     model = import_gltf_bundle(bundle, gltf.front(), limits, choices);
   } else {
-    const std::string path = find_model_file(bundle, {".obj", ".m", ".gltf", ".glb"}, ".obj, .m, .gltf or .glb");
+    const std::string path = find_model_file(bundle, {".obj", ".m", ".gltf", ".glb", ".stl", ".ply"},
+                                             ".obj, .m, .gltf, .glb, .stl or .ply");
     if (has_extension(path, ".gltf") || has_extension(path, ".glb")) {
       model = import_gltf_bundle(bundle, path, limits, choices);
+    } else if (has_extension(path, ".stl") || has_extension(path, ".ply")) {
+      if (choices.gltf_scene) {
+        throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");
+      }
+      model = has_extension(path, ".stl") ? import_stl_bundle(bundle, limits, choices)
+                                          : import_ply_bundle(bundle, limits, choices);
     } else {
       if (choices.gltf_scene) {
         throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");

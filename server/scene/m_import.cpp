@@ -15,53 +15,11 @@
 #include "scene/bundle_import.h"
 #include "scene/import_error.h"
 #include "scene/mesh_builder.h"
+#include "scene/text_numbers.h"
 #include "text/trim.h"
 
 namespace toond::scene {
 namespace {
-
-bool is_blank(char c) { return c == ' ' || c == '\t'; }
-
-std::vector<std::string_view> split(std::string_view s) {
-  std::vector<std::string_view> tokens;
-  std::size_t pos = 0;
-  while (pos < s.size()) {
-    while (pos < s.size() && is_blank(s[pos])) ++pos;
-    const std::size_t start = pos;
-    while (pos < s.size() && !is_blank(s[pos])) ++pos;
-    if (pos > start) tokens.push_back(s.substr(start, pos - start));
-  }
-  return tokens;
-}
-
-// Locale-independent. Out-of-range values become infinity (rejected later
-// with the vertex named) or zero (underflow), as strtod would give.
-std::optional<double> parse_real(std::string_view s) {
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  if (s.empty() || s.front() == '+') return std::nullopt;
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (end != s.data() + s.size()) return std::nullopt;
-  if (error == std::errc::result_out_of_range) {
-    const bool negative = s.front() == '-';
-    const auto e = s.find_first_of("eE");
-    const bool tiny = e != std::string_view::npos ? (e + 1 < s.size() && s[e + 1] == '-')
-                                                  : s.substr(negative ? 1 : 0).starts_with("0") ||
-                                                        s.substr(negative ? 1 : 0).starts_with(".");
-    if (tiny) return negative ? -0.0 : 0.0;
-    return negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
-  }
-  if (error != std::errc()) return std::nullopt;
-  return value;
-}
-
-std::optional<std::int64_t> parse_id(std::string_view s) {
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  std::int64_t value = 0;
-  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (s.empty() || error != std::errc() || end != s.data() + s.size()) return std::nullopt;
-  return value;
-}
 
 struct Face {
   std::size_t line = 0;
@@ -119,7 +77,7 @@ class Parser {
                                                 ? std::string_view::npos
                                                 : close - brace - 1);
       }
-      const auto tokens = split(plain);
+      const auto tokens = split_blanks(plain);
       if (tokens.empty()) {
         ignore("{", line_number);
       } else if (tokens[0] == "Vertex") {
@@ -167,7 +125,7 @@ class Parser {
   void vertex(const std::vector<std::string_view>& tokens, std::string_view attributes, std::size_t line) {
     const char* form = "expected 'Vertex id x y z {attributes}' with a whole-number id and three numbers";
     if (tokens.size() != 5) fail(line, form);
-    const auto id = parse_id(tokens[1]);
+    const auto id = parse_integer(tokens[1]);
     if (!id) fail(line, form);
     glm::dvec3 p;
     for (int k = 0; k < 3; ++k) {
@@ -221,7 +179,7 @@ class Parser {
       }
       const std::size_t wanted = key == "normal" ? 3 : key == "uv" ? 2 : key == "rgb" ? 3 : 0;
       if (wanted == 0) continue;
-      const auto parts = split(value);
+      const auto parts = split_blanks(value);
       double numbers[3] = {0.0, 0.0, 0.0};
       bool ok = parenthesised && parts.size() == wanted;
       for (std::size_t k = 0; ok && k < wanted; ++k) {
@@ -252,12 +210,12 @@ class Parser {
     if (tokens.size() < 5) fail(line, form);
     Face f;
     f.line = line;
-    const auto id = parse_id(tokens[1]);
+    const auto id = parse_integer(tokens[1]);
     if (!id) fail(line, form);
     f.id = *id;
     f.first = face_vertex_ids_.size();
     for (std::size_t k = 2; k < tokens.size(); ++k) {
-      const auto vertex_id = parse_id(tokens[k]);
+      const auto vertex_id = parse_integer(tokens[k]);
       if (!vertex_id) fail(line, form);
       face_vertex_ids_.push_back(*vertex_id);
     }
