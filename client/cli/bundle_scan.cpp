@@ -99,6 +99,8 @@ class Scanner {
       include_gltf_files(obj_name, *obj_text);
       return std::move(result_);
     }
+    // STL and PLY name no other files.
+    if (has_suffix(obj_name, ".stl") || has_suffix(obj_name, ".ply")) return std::move(result_);
 
     std::vector<std::size_t> mtl_indices;
     for (const std::string& line : split_lines(*obj_text)) {
@@ -269,13 +271,14 @@ fs::path model_file_in(const fs::path& folder) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
-    if (entry.is_regular_file(ec) && (is_gltf_name(name) || has_suffix(name, ".obj") || has_suffix(name, ".m"))) {
+    if (entry.is_regular_file(ec) && (is_gltf_name(name) || has_suffix(name, ".obj") || has_suffix(name, ".m") ||
+                                      has_suffix(name, ".stl") || has_suffix(name, ".ply"))) {
       found.push_back(entry.path());
     }
   }
   if (found.size() != 1) {
     throw UsageError(folder.string() + " holds " + std::to_string(found.size()) +
-                     " model files (.obj, .m, .gltf, .glb); name the one to upload");
+                     " model files (.obj, .m, .gltf, .glb, .stl, .ply); name the one to upload");
   }
   return found.front();
 }

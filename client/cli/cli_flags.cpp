@@ -142,7 +142,7 @@ OpenGL vendor, renderer and version it renders with.
 Exit status 0 when the status is "ok", 1 otherwise or when it cannot be reached.
 )"},
     {Verb::upload, "upload",
-     "PATH.obj|PATH.m|PATH.glb|PATH.gltf|FOLDER [-q] [--scene N]\n[--smooth-angle D] [--up y|z]",
+     "PATH.obj|PATH.m|PATH.glb|PATH.gltf|PATH.stl|PATH.ply|FOLDER [-q]\n[--scene N] [--smooth-angle D] [--up y|z]",
      "store an OBJ with its MTL files and textures (or a .m mesh);\nprints the model id",
      R"(Sends an OBJ model to the daemon's store (POST /models) together with the
 MTL files its mtllib lines name and the textures those MTL files reference
@@ -150,8 +150,9 @@ MTL files its mtllib lines name and the textures those MTL files reference
 with their path relative to the OBJ's folder; references that leave that
 folder are refused, missing files are reported and skipped. A .m mesh
 (`Vertex i x y z {normal=(...)}` / `Face i a b c` lines) and a .glb are
-sent alone; a .gltf brings the .bin and image files its URIs name (inside its
-folder). A folder stands for its one model file (.obj, .m, .gltf or .glb).
+sent alone, and so are .stl and .ply files; a .gltf brings the .bin and image
+files its URIs name (inside its folder). A folder stands for its one model
+file (.obj, .m, .gltf, .glb, .stl or .ply).
 A glTF file's default scene is drawn; --scene N picks another (another model,
 with its own id). Faces of a file without normals are smoothed across edges
 sharper than 30 degrees no more (normals by angle, as Blender's Auto Smooth;

@@ -38,9 +38,9 @@ export function filesFromInput(fileList) {
 // the folder the user dropped ("spot/") is not part of them, and files
 // outside that folder (a README beside it) are left out.
 export function bundlePaths(files) {
-  const objs = files.filter((f) => /\.(obj|m|gltf|glb)$/i.test(f.path));
+  const objs = files.filter((f) => /\.(obj|m|gltf|glb|stl|ply)$/i.test(f.path));
   if (objs.length === 0) {
-    throw new Error('no .obj, .gltf or .glb (or .m) file among the ' + files.length + ' dropped');
+    throw new Error('no .obj, .gltf, .glb, .stl or .ply (or .m) file among the ' + files.length + ' dropped');
   }
   const shallowest = objs.map((f) => f.path).sort((a, b) => a.split('/').length - b.split('/').length)[0];
   const base = shallowest.includes('/') ? shallowest.slice(0, shallowest.lastIndexOf('/') + 1) : '';

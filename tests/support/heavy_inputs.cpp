@@ -5,6 +5,7 @@
 #include <string>
 
 #include "image/png_codec.h"
+#include "support/mesh_file_writers.h"
 
 namespace toond::test {
 namespace {
@@ -191,6 +192,20 @@ scene::Bundle m_edge_fan(int n) {
 
 }  // namespace
 
+// A strip of 100 × n quads as binary STL, and as binary PLY: positions
+// written once per corner (STL) or shared (PLY), both shaded by angle.
+scene::Bundle stl_strip(int n) {
+  scene::Bundle bundle;
+  bundle.add("strip.stl", binary_stl(wavy_grid(100, n)));
+  return bundle;
+}
+
+scene::Bundle ply_strip(int n) {
+  scene::Bundle bundle;
+  bundle.add("strip.ply", ply(wavy_grid(100, n), PlyForm::BinaryLittle));
+  return bundle;
+}
+
 std::string obj_vertex_line(double x, double y, double z) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\n", x, y, z);
@@ -214,6 +229,8 @@ const std::vector<HeavyInput>& heavy_inputs() {
       {"coincident_sheets", "n copies of a 16x16 grid at one place", coincident_sheets, 100},
       {"m_repeated_triangle", ".m: the same triangle n times", m_repeated_triangle, 40000},
       {"m_edge_fan", ".m: n triangles sharing one edge", m_edge_fan, 40000},
+      {"stl_strip", "binary STL: a strip of 100 × n quads", stl_strip, 60},
+      {"ply_strip", "binary PLY: a strip of 100 × n quads", ply_strip, 60},
   };
   return inputs;
 }

@@ -45,16 +45,17 @@ Triangles cube_triangles() {
   return m;
 }
 
-Triangles wavy_grid(int n) {
+Triangles wavy_grid(int columns, int rows) {
   Triangles m;
-  for (int y = 0; y <= n; ++y) {
-    for (int x = 0; x <= n; ++x) {
-      m.positions.push_back({double(x) / n, double(y) / n, 0.05 * std::sin(6.0 * x / n) * std::cos(5.0 * y / n)});
+  for (int y = 0; y <= rows; ++y) {
+    for (int x = 0; x <= columns; ++x) {
+      const double u = double(x) / columns, v = double(y) / rows;
+      m.positions.push_back({u, v, 0.05 * std::sin(6.0 * u) * std::cos(5.0 * v)});
     }
   }
-  const auto at = [n](int x, int y) { return static_cast<unsigned>(y * (n + 1) + x); };
-  for (int y = 0; y < n; ++y) {
-    for (int x = 0; x < n; ++x) {
+  const auto at = [columns](int x, int y) { return static_cast<unsigned>(y * (columns + 1) + x); };
+  for (int y = 0; y < rows; ++y) {
+    for (int x = 0; x < columns; ++x) {
       m.faces.push_back({at(x, y), at(x + 1, y), at(x + 1, y + 1)});
       m.faces.push_back({at(x, y), at(x + 1, y + 1), at(x, y + 1)});
     }

@@ -18,8 +18,9 @@ struct Triangles {
 // A unit cube, 8 positions, 12 triangles wound counter-clockwise from
 // outside.
 Triangles cube_triangles();
-// A grid of n × n quads (2n² triangles) in the XY plane, gently waved in z.
-Triangles wavy_grid(int n);
+// A grid of columns × rows quads (two triangles each) over the unit square
+// in the XY plane, gently waved in z.
+Triangles wavy_grid(int columns, int rows);
 
 // `header` fills the 80 header bytes (a header starting "solid" is allowed
 // in binary files, and common).
