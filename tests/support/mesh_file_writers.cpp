@@ -90,6 +90,15 @@ std::string ascii_stl(const Triangles& mesh) {
   return out + "endsolid test\n";
 }
 
+std::string obj(const Triangles& mesh) {
+  std::string out;
+  for (const glm::dvec3& p : mesh.positions) out += "v " + number(p.x) + " " + number(p.y) + " " + number(p.z) + "\n";
+  for (const auto& f : mesh.faces) {
+    out += "f " + std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) + " " + std::to_string(f[2] + 1) + "\n";
+  }
+  return out;
+}
+
 std::string ply(const Triangles& mesh, PlyForm form) {
   const char* format = form == PlyForm::Ascii          ? "ascii"
                        : form == PlyForm::BinaryLittle ? "binary_little_endian"

@@ -27,6 +27,9 @@ Triangles wavy_grid(int columns, int rows);
 std::string binary_stl(const Triangles& mesh, const std::string& header = "toond test");
 std::string ascii_stl(const Triangles& mesh);
 
+// OBJ: v lines and triangle faces, no normals.
+std::string obj(const Triangles& mesh);
+
 enum class PlyForm { Ascii, BinaryLittle, BinaryBig };
 // Vertices x y z (float), faces as a uchar-counted int list named
 // vertex_indices.
