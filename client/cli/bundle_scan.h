@@ -24,9 +24,9 @@ struct BundleScan {
 
 // Throws UsageError when the OBJ itself cannot be read. Everything else
 // (missing MTL or texture, a reference leaving the folder) becomes a warning.
-// A .gltf brings the .bin and image files its URIs name; a .glb travels
-// alone. A folder stands for its one model file (.obj, .m, .gltf or .glb;
-// none or several is a UsageError).
+// A .gltf brings the .bin and image files its URIs name; a .glb, .stl or
+// .ply travels alone. A folder stands for its one model file (.obj, .m,
+// .gltf, .glb, .stl or .ply; none or several is a UsageError).
 BundleScan scan_obj_bundle(const std::filesystem::path& obj_path);
 
 // Whether a file name ends in .gltf or .glb (any case).

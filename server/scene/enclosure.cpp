@@ -9,23 +9,11 @@
 
 #include "scene/edge_table.h"
 #include "scene/mesh_processing.h"
+#include "scene/union_find.h"
 
 namespace toond::scene {
 namespace {
 
-// Union-find over position groups: which triangles hang together.
-class Components {
- public:
-  explicit Components(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
-  std::uint32_t root(std::uint32_t v) {
-    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
-    return v;
-  }
-  void join(std::uint32_t a, std::uint32_t b) { parent_[root(a)] = root(b); }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
 
 // Per edge between two groups (smaller id in the high half): how many more
 // times the triangles cross it from the smaller id to the larger than back.
@@ -165,7 +153,7 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
     point[position_group[v]] = glm::dvec3(positions[v]);
     vertex_of[position_group[v]] = static_cast<std::uint32_t>(v);
   }
-  Components components(groups);
+  UnionFind components(groups);  // which triangles hang together
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     components.join(position_group[indices[t]], position_group[indices[t + 1]]);
     components.join(position_group[indices[t]], position_group[indices[t + 2]]);

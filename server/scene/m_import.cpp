@@ -39,18 +39,7 @@ class Parser {
     MeshSource source = make_source();
     source.limits = limits_;
     apply_import_choices(source, choices_);
-    Model model;
-    model.mesh = build_mesh(source, warnings_, [](std::vector<SourceTriangle>& triangles) {
-      for (auto& tri : triangles) tri.material = 0;
-    });
-    model.has_vertex_colors = !model.mesh.colors.empty();
-    Material material;
-    material.name = "default";
-    // With vertex colours the colours show as painted, as a texture does.
-    material.diffuse = glm::vec3(model.has_vertex_colors ? 1.0f : 0.8f);
-    model.materials.push_back(std::move(material));
-    model.warnings = warnings_.take();
-    return model;
+    return build_single_material_model(source, warnings_);
   }
 
  private:

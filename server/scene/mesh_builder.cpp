@@ -525,6 +525,20 @@ class Builder {
 
 }  // namespace
 
+Model build_single_material_model(MeshSource& source, ImportWarnings& warnings) {
+  Model model;
+  model.mesh = build_mesh(source, warnings, [](std::vector<SourceTriangle>& triangles) {
+    for (SourceTriangle& tri : triangles) tri.material = 0;
+  });
+  model.has_vertex_colors = !model.mesh.colors.empty();
+  Material material;
+  material.name = "default";
+  material.diffuse = glm::vec3(model.has_vertex_colors ? 1.0f : 0.8f);
+  model.materials.push_back(std::move(material));
+  model.warnings = warnings.take();
+  return model;
+}
+
 void apply_import_choices(MeshSource& source, const ImportChoices& choices) {
   source.smooth_angle_deg = choices.smooth_angle.value_or(kDefaultSmoothAngle);
   source.z_up = choices.z_up;

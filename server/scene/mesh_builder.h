@@ -127,4 +127,9 @@ void apply_import_choices(MeshSource& source, const ImportChoices& choices);
 Mesh build_mesh(MeshSource& source, ImportWarnings& warnings,
                 const std::function<void(std::vector<SourceTriangle>&)>& assign_materials);
 
+// The model of a format without materials (.m, STL, PLY): its mesh, one
+// material named "default" (0.8 grey, or white under vertex colours, which
+// then show as painted, as a texture would), and the import's warnings.
+Model build_single_material_model(MeshSource& source, ImportWarnings& warnings);
+
 }  // namespace toond::scene

@@ -5,30 +5,11 @@
 #include <numeric>
 
 #include "scene/mesh_processing.h"
+#include "scene/union_find.h"
 
 namespace toond::scene {
 namespace {
 
-// Union-find over corners, with path halving.
-class CornerSets {
- public:
-  explicit CornerSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
-  std::uint32_t find(std::uint32_t c) {
-    while (parent_[c] != c) {
-      parent_[c] = parent_[parent_[c]];
-      c = parent_[c];
-    }
-    return c;
-  }
-  void join(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
 
 // One side of an edge: the edge by its two position classes (smaller
 // first), and the triangle's corners at those two positions.
@@ -78,7 +59,7 @@ std::vector<std::uint32_t> corner_groups_by_angle(std::span<const glm::vec3> pos
   // Strictly less than the angle: at 0 nothing joins, not even coplanar
   // faces whose normals round a hair apart.
   const double cos_limit = std::cos(glm::radians(std::clamp(angle_deg, 0.0, 180.0)));
-  CornerSets sets(corners);
+  UnionFind sets(corners);
   for (std::size_t i = 0; i < sides.size();) {
     std::size_t end = i + 1;
     while (end < sides.size() && sides[end].key == sides[i].key) ++end;
@@ -115,7 +96,7 @@ std::vector<std::uint32_t> corner_groups_by_angle(std::span<const glm::vec3> pos
   std::vector<std::uint32_t> dense(corners, ~0u);
   std::uint32_t next = 0;
   for (std::uint32_t c = 0; c < corners; ++c) {
-    const std::uint32_t root = sets.find(c);
+    const std::uint32_t root = sets.root(c);
     if (dense[root] == ~0u) dense[root] = next++;
     group[c] = dense[root];
   }

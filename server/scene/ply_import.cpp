@@ -378,18 +378,7 @@ Model import_ply_bundle(const Bundle& bundle, const ImportLimits& limits, const 
   ImportWarnings warnings;
   MeshSource source = PlyReader(path, *bundle.find(path), limits, warnings).read();
   apply_import_choices(source, choices);
-  Model model;
-  model.mesh = build_mesh(source, warnings, [](std::vector<SourceTriangle>& triangles) {
-    for (SourceTriangle& tri : triangles) tri.material = 0;
-  });
-  model.has_vertex_colors = !model.mesh.colors.empty();
-  Material material;
-  material.name = "default";
-  // Vertex colours show as painted, as a texture would (as for .m files).
-  if (model.has_vertex_colors) material.diffuse = glm::vec3(1.0f);
-  model.materials.push_back(material);
-  model.warnings = warnings.take();
-  return model;
+  return build_single_material_model(source, warnings);
 }
 
 }  // namespace toond::scene

@@ -173,15 +173,7 @@ Model import_stl_bundle(const Bundle& bundle, const ImportLimits& limits, const 
                                 " bytes are too few for a binary STL (84 at least) and it is not ASCII STL");
   }
   ImportWarnings warnings;
-  Model model;
-  model.mesh = build_mesh(source, warnings, [](std::vector<SourceTriangle>& triangles) {
-    for (SourceTriangle& tri : triangles) tri.material = 0;
-  });
-  Material material;
-  material.name = "default";
-  model.materials.push_back(material);
-  model.warnings = warnings.take();
-  return model;
+  return build_single_material_model(source, warnings);
 }
 
 }  // namespace toond::scene
