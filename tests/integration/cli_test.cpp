@@ -5,6 +5,7 @@
 
 #include "image/png_codec.h"
 #include "support/image_checks.h"
+#include "support/mesh_file_writers.h"
 #include "support/shared_models.h"
 #include "test_client.h"
 
@@ -93,6 +94,22 @@ TEST_F(Cli, UploadsAndRendersADotMMesh) {
                             png.string(), "--server", daemon().url()});
   ASSERT_EQ(render.status, 0) << render.err;
   EXPECT_GT(coverage(foreground_mask(image::decode_png(read_file(png)))), 0.05);
+}
+
+// A binary STL is sent alone, and the upload options reach the import.
+TEST_F(Cli, UploadsAnStlWithTheSmoothingAngleAndTheUpAxis) {
+  const auto stl = out_dir() / "cube.stl";
+  {
+    std::ofstream out(stl, std::ios::binary);
+    out << binary_stl(cube_triangles(), "solid exported");
+  }
+  const auto upload = toon({"upload", stl.string(), "--smooth-angle", "180", "--up", "z", "--server", daemon().url()});
+  ASSERT_EQ(upload.status, 0) << upload.err;
+  const json info = json::parse(upload.out);
+  EXPECT_EQ(info["triangles"], 12);
+  EXPECT_EQ(info["files"], json::array({"cube.stl"}));
+  EXPECT_EQ(info["smooth_angle"], 180);
+  EXPECT_EQ(info["up"], "z");
 }
 
 TEST_F(Cli, RenderWithParamsFileRendersTheDemo) {
