@@ -1,5 +1,6 @@
 #include "scene/stl_import.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -82,10 +83,15 @@ bool binary_size_matches(std::string_view bytes) {
   return bytes.size() == kHeaderBytes + 4 + count * kTriangleBytes;
 }
 
+// "solid" alone does not make ASCII: binary headers often start with it.
+// ASCII STL goes on to its statements within its first lines.
+constexpr std::string_view kAsciiWords[] = {"facet", "loop", "vertex", "endsolid"};
 bool starts_as_ascii(std::string_view bytes) {
-  const std::string_view head = text::trim(bytes.substr(0, 512));
-  return head.starts_with("solid") && (head.size() == 5 || head[5] == ' ' || head[5] == '\t' || head[5] == '\r' ||
-                                       head[5] == '\n');
+  const std::string_view head = text::trim(bytes.substr(0, 1024));
+  const bool solid = head.starts_with("solid") && (head.size() == 5 || head[5] == ' ' || head[5] == '\t' ||
+                                                   head[5] == '\r' || head[5] == '\n');
+  return solid && std::any_of(std::begin(kAsciiWords), std::end(kAsciiWords),
+                              [&](std::string_view w) { return head.find(w) != std::string_view::npos; });
 }
 
 void read_binary(const std::string& path, std::string_view bytes, const ImportLimits& limits, MeshSource& source) {

@@ -67,6 +67,10 @@ TEST(StlImport, CountsThatLieAndCutFilesAreRefused) {
   std::string lie = test::binary_stl({});
   lie[80] = lie[81] = lie[82] = lie[83] = '\xff';  // 2^32 - 1 triangles in 84 bytes
   EXPECT_NE(import_error("lie.stl", lie).find("cut short, or the count is wrong"), std::string::npos);
+  // The same with a header that starts like ASCII: still a binary file.
+  std::string solid_lie = test::binary_stl({}, "solid but binary");
+  solid_lie[80] = solid_lie[81] = solid_lie[82] = solid_lie[83] = '\xff';
+  EXPECT_NE(import_error("lie.stl", solid_lie).find("cut short, or the count is wrong"), std::string::npos);
   std::string cut = test::binary_stl(test::cube_triangles());
   cut.resize(cut.size() - 7);
   EXPECT_NE(import_error("cut.stl", cut).find("cut short"), std::string::npos);
