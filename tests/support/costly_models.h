@@ -12,8 +12,8 @@ struct CostlyModel {
   std::string name;  // gtest-safe
   std::string what;  // for failure messages
   std::string (*obj)(int n);
-  // A size at which one render at 512² would take llvmpipe tens of seconds
-  // unpriced: the size the reports came from.
+  // A size at which one render at 512² takes llvmpipe seconds or more
+  // unpriced (for the first two, the sizes of the reports).
   int pathological_n = 0;
 };
 

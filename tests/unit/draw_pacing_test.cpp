@@ -2,6 +2,7 @@
 // past its deadline stops without breaking the context for the next.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <thread>
@@ -67,13 +68,20 @@ TEST_F(DrawPacingTest, PastTheDeadlineTheRenderStopsAndTheNextDrawsAsBefore) {
 }
 
 TEST_F(DrawPacingTest, ADeadlineThatPassesMidwayStopsWithinAChunk) {
-  // Each pause between chunks takes 10 ms; the deadline falls 30 ms in,
-  // so the render stops after three or four chunks, not after all of them.
-  DrawPacing stopping(7, Clock::now() + std::chrono::milliseconds(30),
-                      [] { std::this_thread::sleep_for(std::chrono::milliseconds(10)); });
+  // The deadline is far enough off that the frame's setup and three chunks
+  // fit before it on any build (ten warm renders' time); the pause after
+  // the third chunk then outlasts it, and nothing more is drawn.
+  const auto started = Clock::now();
+  render(nullptr);
+  const auto warm = Clock::now() - started;
+  const auto deadline = Clock::now() + std::clamp<Clock::duration>(10 * warm, std::chrono::milliseconds(300),
+                                                                   std::chrono::seconds(3));
+  int pauses = 0;
+  DrawPacing stopping(7, deadline, [&] {
+    if (++pauses == 3) std::this_thread::sleep_until(deadline + std::chrono::milliseconds(5));
+  });
   EXPECT_THROW(render(&stopping), RenderAborted);
-  EXPECT_GE(stopping.chunks_drawn(), 1u);
-  EXPECT_LE(stopping.chunks_drawn(), 5u);
+  EXPECT_EQ(stopping.chunks_drawn(), 3u);
 }
 
 }  // namespace
