@@ -19,6 +19,23 @@ struct EdgeSide {
   std::uint32_t corner_at_high;
 };
 
+// Sides ordered by their edge (low class, then high class), stable: two
+// counting sorts, by the high class and then by the low one, so the time is
+// linear in sides and classes whatever meets at one position (a comparison
+// sort's log factor showed in the import's n-versus-2n test).
+std::vector<EdgeSide> sorted_by_key(std::vector<EdgeSide> sides, std::size_t classes) {
+  std::vector<EdgeSide> out(sides.size());
+  std::vector<std::size_t> start(classes + 1);
+  for (const int shift : {0, 32}) {
+    std::fill(start.begin(), start.end(), 0);
+    for (const EdgeSide& side : sides) ++start[((side.key >> shift) & 0xffffffffu) + 1];
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    for (const EdgeSide& side : sides) out[start[(side.key >> shift) & 0xffffffffu]++] = side;
+    sides.swap(out);
+  }
+  return sides;
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> corner_groups_by_angle(std::span<const glm::vec3> positions,
@@ -52,9 +69,7 @@ std::vector<std::uint32_t> corner_groups_by_angle(std::span<const glm::vec3> pos
       sides.push_back({(static_cast<std::uint64_t>(pa) << 32) | pb, a_low ? a : b, a_low ? b : a});
     }
   }
-  std::sort(sides.begin(), sides.end(), [](const EdgeSide& x, const EdgeSide& y) {
-    return x.key != y.key ? x.key < y.key : x.corner_at_low < y.corner_at_low;
-  });
+  sides = sorted_by_key(std::move(sides), position_class.size());
 
   // Strictly less than the angle: at 0 nothing joins, not even coplanar
   // faces whose normals round a hair apart.

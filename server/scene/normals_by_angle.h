@@ -28,7 +28,7 @@ inline constexpr double kFlatSmoothAngle = 0.01;
 // smooth (flat shading), at 180 every two-sided edge is. Corners whose
 // `eligible` is false (their vertex brought its own normal, or smoothing
 // groups decide) join no group but their own. Group ids are dense, from 0.
-// O(n log n) in the triangles, whatever meets at one position.
+// Linear in the triangles and positions, whatever meets at one position.
 std::vector<std::uint32_t> corner_groups_by_angle(std::span<const glm::vec3> positions,
                                                   std::span<const std::uint32_t> position_class,
                                                   std::span<const std::uint32_t> indices,
