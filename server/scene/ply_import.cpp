@@ -265,8 +265,22 @@ class PlyReader {
     }
   }
 
+  // The upload answer says what of the file was left out.
+  void warn_unread(const Element& e, const std::vector<std::string>& read) {
+    std::string unread;
+    for (const Property& p : e.properties) {
+      if (std::find(read.begin(), read.end(), p.name) == read.end()) unread += (unread.empty() ? "" : ", ") + p.name;
+    }
+    if (!unread.empty()) warnings_.add(path_ + ": " + e.name + " properties not read: " + unread);
+  }
+
   void read_vertices(const Element& e, ValueReader& values, MeshSource& source) {
     const VertexLayout l = vertex_layout(e);
+    std::vector<std::string> read;
+    for (const auto& at : {l.x, l.y, l.z, l.nx, l.ny, l.nz, l.u, l.v, l.red, l.green, l.blue}) {
+      if (at) read.push_back(e.properties[*at].name);
+    }
+    warn_unread(e, read);
     if (!l.x || !l.y || !l.z) fail_("the vertex element has no x, y and z");
     const bool normals = l.nx && l.ny && l.nz;
     const bool uvs = l.u && l.v;
@@ -309,6 +323,7 @@ class PlyReader {
       if (e.properties[p].list_count && (n == "vertex_indices" || n == "vertex_index")) corners_at = p;
     }
     if (!corners_at) fail_("the face element has no vertex_indices list");
+    warn_unread(e, {e.properties[*corners_at].name});
     std::vector<std::uint32_t> corners;
     for (std::uint64_t f = 0; f < e.count; ++f) {
       for (std::size_t p = 0; p < e.properties.size(); ++p) {

@@ -114,11 +114,12 @@ TEST(PlyImport, NormalsUvsColoursAndPolygonsAreRead) {
   const std::string ply =
       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
       "property float nx\nproperty float ny\nproperty float nz\nproperty float s\nproperty float t\n"
-      "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\n"
-      "property list uchar int vertex_indices\nelement edge 1\nproperty int vertex1\nproperty int vertex2\n"
-      "end_header\n"
-      "0 0 0 0 0 1 0 0 255 0 0\n1 0 0 0 0 1 1 0 0 255 0\n1 1 0 0 0 1 1 1 0 0 255\n0 1 0 0 0 1 0 1 255 255 255\n"
-      "4 0 1 2 3\n0 1\n";
+      "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty float quality\nelement face 1\n"
+      "property list uchar int vertex_indices\nproperty list uchar float texcoord\nelement edge 1\n"
+      "property int vertex1\nproperty int vertex2\nend_header\n"
+      "0 0 0 0 0 1 0 0 255 0 0 0.5\n1 0 0 0 0 1 1 0 0 255 0 0.5\n1 1 0 0 0 1 1 1 0 0 255 0.5\n"
+      "0 1 0 0 0 1 0 1 255 255 255 0.5\n"
+      "4 0 1 2 3 8 0 0 1 0 1 1 0 1\n0 1\n";
   const Model m = import_one("quad.ply", ply);
   EXPECT_EQ(m.mesh.triangle_count(), 2u);
   EXPECT_TRUE(m.has_vertex_colors);
@@ -132,6 +133,8 @@ TEST(PlyImport, NormalsUvsColoursAndPolygonsAreRead) {
     }
   }
   EXPECT_NE(warnings_of(m).find("element \"edge\" is not read"), std::string::npos) << warnings_of(m);
+  EXPECT_NE(warnings_of(m).find("vertex properties not read: quality"), std::string::npos) << warnings_of(m);
+  EXPECT_NE(warnings_of(m).find("face properties not read: texcoord"), std::string::npos) << warnings_of(m);
 }
 
 TEST(PlyImport, HostileHeadersAndCountsAreRefused) {
