@@ -154,12 +154,12 @@ sent alone, and so are .stl and .ply files; a .gltf brings the .bin and image
 files its URIs name (inside its folder). A folder stands for its one model
 file (.obj, .m, .gltf, .glb, .stl or .ply).
 A glTF file's default scene is drawn; --scene N picks another (another model,
-with its own id). Faces of a file without normals are smoothed across edges
-sharper than 30 degrees no more (normals by angle, as Blender's Auto Smooth;
-OBJ smoothing groups decide where the file has them; glTF without normals is
-flat, as its specification says): --smooth-angle D changes the angle, and
---up z turns a Z-up file (most CAD and 3D-printing exports) upright. Each is
-part of the model's id.
+with its own id). In a file without normals, faces meeting at more than 30
+degrees keep their own normals and shallower edges are smoothed (normals by
+angle, as Blender's Auto Smooth; OBJ smoothing groups decide where the file
+has them; glTF without normals is flat, as its specification says):
+--smooth-angle D changes the angle, and --up z turns a Z-up file (most CAD
+and 3D-printing exports) upright. Each is part of the model's id.
 Prints the daemon's answer (id, triangles, materials, textures, warnings).
 )"},
     {Verb::render, "render",
