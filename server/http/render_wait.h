@@ -8,16 +8,16 @@
 
 namespace toond::http {
 
-// The render's output, or RequestError 503 "deadline_exceeded" (naming
-// --render-timeout, `limit` long) when it is not done by `deadline`.
 // How long a request waits for `job`, queued with `deadline`: a paced job
 // stops itself at its deadline and says so (503 render_aborted) within
-// about two chunks, so it is given kAbortGrace more to do that; any other
+// about a chunk, so it is given kAbortGrace more to do that; any other
 // job is waited for until the deadline.
 inline constexpr std::chrono::milliseconds kAbortGrace{2000};
 std::chrono::steady_clock::time_point wait_limit(const render::RenderJob& job,
                                                  std::chrono::steady_clock::time_point deadline);
 
+// The render's output, or RequestError 503 "deadline_exceeded" (naming
+// --render-timeout, `limit` long) when it is not done by `deadline`.
 render::RenderOutput await_render(std::future<render::RenderOutput>& future,
                                   std::chrono::steady_clock::time_point deadline, std::chrono::milliseconds limit);
 

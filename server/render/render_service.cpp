@@ -163,12 +163,11 @@ std::size_t RenderService::gpu_model_bytes() const {
 
 namespace {
 
-// The long lane's thread runs at the lowest CPU priority, set before its
-// context exists: a CPU rasterizer (llvmpipe) starts a context's raster
-// threads from the thread that makes it, and they inherit its priority. So
-// when a long render and a short one draw at once on a CPU, the short one's
-// threads get the cores; on a GPU only the thread recording commands is
-// affected. Lowering one's own priority needs no privilege.
+// The long lane's thread runs at the lowest CPU priority, so its own work
+// (recording draws, vertex work on a CPU rasteriser) gives way to the short
+// lane's. It does not reach llvmpipe's raster threads, which every context
+// shares (yield_to_short_renders covers those). Lowering one's own
+// priority needs no privilege.
 void lower_cpu_priority() {
   if (setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 19) != 0) {
     std::cerr << "toond: could not lower the long render lane's CPU priority; it shares the CPU evenly\n";
