@@ -261,6 +261,10 @@ Options parse_args(const std::vector<std::string>& args,
       }
       o.obj_path = positionals.front();
       break;
+    case Verb::info:
+      if (positionals.size() != 1) throw UsageError("info needs one model id (toon info ID)");
+      o.model_id = positionals.front();
+      break;
     case Verb::render:
       if (positionals.size() > 1) {
         throw UsageError("render takes at most one model file, got '" + positionals[1] + "' too");

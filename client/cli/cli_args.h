@@ -27,7 +27,7 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class Verb { none, health, upload, render, gallery };
+enum class Verb { none, health, upload, info, render, gallery };
 
 struct Options {
   Verb verb = Verb::none;
@@ -42,7 +42,7 @@ struct Options {
   std::string scene;  // a glTF scene's index (POST /models?scene=N); empty: the file's default
   std::string smooth_angle;  // POST /models?smooth_angle=D; empty: the daemon's default (30)
   std::string up;            // POST /models?up=y|z; empty: y
-  // render
+  // render, info
   std::string model_id;
   std::string params_file;                                // "-" reads standard input
   std::vector<std::pair<std::string, std::string>> sets;  // in command-line order

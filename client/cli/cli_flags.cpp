@@ -162,6 +162,13 @@ has them; glTF without normals is flat, as its specification says):
 and 3D-printing exports) upright. Each is part of the model's id.
 Prints the daemon's answer (id, triangles, materials, textures, warnings).
 )"},
+    {Verb::info, "info", "ID", "show what the daemon knows of a stored model, its animation clips too",
+     R"(Asks the daemon for GET /models/ID and prints its answer: triangles,
+materials, textures, files, the import's warnings and, for a model that
+moves, its animation clips (name, duration in seconds, channels) with its
+joint and morph-target counts. A clip is rendered with
+--set animation.clip=NAME --set animation.time=SECONDS.
+)"},
     {Verb::render, "render",
      "[PATH.obj|PATH.m | --model ID] [--params FILE.json]\n[--set key.sub=value ...] -o OUT.png|OUT.webp",
      "render a PNG of a local OBJ, a stored model or the demo model",

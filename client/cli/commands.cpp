@@ -72,6 +72,16 @@ int upload(const Options& options) {
   return 0;
 }
 
+int info(const Options& options) {
+  Connection conn(options.server);
+  httplib::Result result = conn.get("/models/" + options.model_id);
+  if (!result) return conn.network_failure(result);
+  if (result->status != 200) return error_reply(*result);
+  const json body = json::parse(result->body, nullptr, false);
+  std::cout << (body.is_discarded() ? result->body : body.dump(2)) << "\n";
+  return 0;
+}
+
 // The PNG is written beside its destination and renamed into place, so a
 // failed or interrupted render never leaves a truncated image under the
 // name a script will pick up. The temporary file is opened before the
@@ -199,6 +209,7 @@ int run_command(const Options& options) {
     switch (options.verb) {
       case Verb::health: return health(options);
       case Verb::upload: return upload(options);
+      case Verb::info: return info(options);
       case Verb::render: return render(options);
       case Verb::gallery: return run_gallery(options);
       case Verb::none: break;

@@ -38,6 +38,18 @@ SheetParams::PixelArt pixel_art_of(const json& a) {
   return art;
 }
 
+AnimationParams animation_of(const json& a) {
+  AnimationParams animation;
+  const json& clip = a.at("clip");
+  if (clip.is_string()) {
+    animation.clip = clip.get<std::string>();
+  } else {
+    animation.clip_index = clip.get<int>();
+  }
+  animation.time = a.at("time").get<double>();
+  return animation;
+}
+
 // The `sheet` block with its absent fields taken from the camera: a sheet
 // turns the view the request already has.
 SheetParams sheet_of(const json& s, const CameraParams& camera) {
@@ -214,6 +226,7 @@ RenderParams render_params_from_wire(const json& j) {
   p.lod_error_px = j.at("lod_error_px").get<double>();
   p.png_compression = j.at("png_compression").get<int>();
   if (j.contains("sheet")) p.sheet = sheet_of(j.at("sheet"), p.camera);
+  if (j.contains("animation")) p.animation = animation_of(j.at("animation"));
   p.output = output_of(j.at("output").get<std::string>());
   return p;
 }

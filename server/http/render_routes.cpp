@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "http/animation_pose.h"
 #include "http/bundle_upload.h"
 #include "http/output_png.h"
 #include "http/render_answer.h"
@@ -208,7 +209,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
         job.objects.push_back(std::move(o));
       }
     } else if (job.params.model.empty()) {
-      job.objects.push_back({"demo", context.library.demo(), glm::dmat4(1.0)});
+      job.objects.push_back({"demo", context.library.demo(), glm::dmat4(1.0), nullptr});
     } else {
       render::JobObject o;
       o.model_key = job.params.model;
@@ -247,6 +248,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     // inside them): they decide every byte of the PNG.
     const std::string cache_key = completed.dump();
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
+    pose_for_animation(context.clip_framings, job);
 
     const RenderPrice price = admit_by_price(context, job, req);
     const auto submitted = Clock::now();

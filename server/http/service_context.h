@@ -4,6 +4,7 @@
 #include <chrono>
 #include <memory>
 
+#include "http/animation_pose.h"
 #include "http/service_metrics.h"
 #include "http/request_limits.h"
 #include "scene/model_library.h"
@@ -23,6 +24,8 @@ struct ServiceContext {
   ServiceMetrics metrics{};
   // Finished renders by canonical parameters; null: every request renders.
   std::unique_ptr<ResultCache> results{};
+  // Recently used clips' framings (a request with `animation`).
+  ClipFramings clip_framings{};
 };
 
 }  // namespace toond::http

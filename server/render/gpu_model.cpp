@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <span>
 
 #include "render/draw_pacing.h"
 #include "render/vertex_attribute.h"
@@ -18,6 +19,27 @@ struct Vertex {
   float tangent[4];  // xyz, w = bitangent handedness
   float color[3];    // sRGB-encoded vertex colour; white without one
 };
+
+// The interleaved vertices of a mesh's streams; texcoords, tangents and
+// colours may be empty (then (0,0), +X and white).
+std::vector<Vertex> interleave(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                               std::span<const glm::vec2> texcoords, std::span<const glm::vec3> outline_normals,
+                               std::span<const glm::vec4> tangents, std::span<const glm::vec3> colors) {
+  std::vector<Vertex> vertices(positions.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    Vertex& v = vertices[i];
+    std::memcpy(v.position, &positions[i], sizeof v.position);
+    std::memcpy(v.normal, &normals[i], sizeof v.normal);
+    const glm::vec2 uv = i < texcoords.size() ? texcoords[i] : glm::vec2(0.0f);
+    std::memcpy(v.texcoord, &uv, sizeof v.texcoord);
+    std::memcpy(v.outline_normal, &outline_normals[i], sizeof v.outline_normal);
+    const glm::vec4 t = i < tangents.size() ? tangents[i] : glm::vec4(1, 0, 0, 1);
+    std::memcpy(v.tangent, &t, sizeof v.tangent);
+    const glm::vec3 c = i < colors.size() ? colors[i] : glm::vec3(1.0f);
+    std::memcpy(v.color, &c, sizeof v.color);
+  }
+  return vertices;
+}
 
 gpu::Texture upload_texture(const scene::Texture& tex, std::size_t& bytes) {
   gpu::Texture t = gpu::Texture::create(GL_TEXTURE_2D);
@@ -50,20 +72,13 @@ gpu::Texture upload_texture(const scene::Texture& tex, std::size_t& bytes) {
 GpuModel::GpuModel(const scene::Model& model)
     : bounds_(model.mesh.bounds), extremes_(model.mesh.extremes), creases_(model.mesh.creases), origin_(model.mesh.origin) {
   const scene::Mesh& mesh = model.mesh;
-  std::vector<Vertex> vertices(mesh.positions.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
-    Vertex& v = vertices[i];
-    std::memcpy(v.position, &mesh.positions[i], sizeof v.position);
-    std::memcpy(v.normal, &mesh.normals[i], sizeof v.normal);
-    const glm::vec2 uv = i < mesh.texcoords.size() ? mesh.texcoords[i] : glm::vec2(0.0f);
-    std::memcpy(v.texcoord, &uv, sizeof v.texcoord);
-    std::memcpy(v.outline_normal, &mesh.outline_normals[i], sizeof v.outline_normal);
-    const glm::vec4 t = i < mesh.tangents.size() ? mesh.tangents[i] : glm::vec4(1, 0, 0, 1);
-    std::memcpy(v.tangent, &t, sizeof v.tangent);
-    const glm::vec3 c = i < mesh.colors.size() ? mesh.colors[i] : glm::vec3(1.0f);
-    std::memcpy(v.color, &c, sizeof v.color);
-  }
+  const std::vector<Vertex> vertices =
+      interleave(mesh.positions, mesh.normals, mesh.texcoords, mesh.outline_normals, mesh.tangents, mesh.colors);
   has_vertex_colors_ = !mesh.colors.empty();
+  if (model.rig) {
+    texcoords_ = mesh.texcoords;
+    colors_ = mesh.colors;
+  }
   // Every level's indices in one buffer, full detail first; each level's
   // submesh ranges are moved to where its indices land.
   std::vector<std::uint32_t> indices = mesh.indices;
@@ -118,6 +133,22 @@ GpuModel::GpuModel(const scene::Model& model)
     material_blocks_.push_back(material_arena_.add(block));
   }
   material_arena_.upload();
+}
+
+void GpuModel::apply_pose(const scene::PosedVertices* pose) {
+  posed_ = pose != nullptr;
+  if (!pose) {
+    glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
+    return;
+  }
+  const std::vector<Vertex> vertices =
+      interleave(pose->positions, pose->normals, texcoords_, pose->outline_normals, pose->tangents, colors_);
+  if (!posed_vertices_) posed_vertices_ = gpu::Buffer::create();
+  glNamedBufferData(posed_vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(),
+                    GL_STREAM_DRAW);
+  glVertexArrayVertexBuffer(vao_.id(), 0, posed_vertices_.id(), 0, sizeof(Vertex));
+  posed_bounds_ = pose->bounds;
+  posed_extremes_ = pose->extremes;
 }
 
 void GpuModel::bind_material(int index) const {

@@ -10,6 +10,7 @@
 #include "gpu/uniform_arena.h"
 #include "render/uniform_blocks.h"
 #include "scene/model.h"
+#include "scene/pose.h"
 
 namespace toond::render {
 
@@ -28,6 +29,11 @@ class GpuModel {
   explicit GpuModel(const scene::Model& model);
 
   void bind() const { glBindVertexArray(vao_.id()); }
+  // Draws the model in `pose` (its vertex streams uploaded into a buffer of
+  // their own, indices and textures shared with the rest pose) until the
+  // next call; nullptr: the rest pose. Set before every render, since the
+  // copy is cached between renders.
+  void apply_pose(const scene::PosedVertices* pose);
   // Binds a material's uniform block (shaders/material.glsl), made once
   // when the model was uploaded.
   void bind_material(int index) const;
@@ -48,7 +54,11 @@ class GpuModel {
   const std::vector<double>& lod_errors() const { return lod_errors_; }
   std::size_t triangles(std::size_t lod = 0) const { return levels_[lod].index_count / 3; }
   // Whether a level's triangles close around a volume (scene/enclosure.h).
-  scene::Enclosure enclosure(std::size_t lod = 0) const { return levels_[lod].enclosure; }
+  // A posed level with holes counts as open: its caps moved with the pose,
+  // so the rest pose's caps cannot say which way they face.
+  scene::Enclosure enclosure(std::size_t lod = 0) const {
+    return posed_ && !levels_[lod].caps.empty() ? scene::Enclosure::Open : levels_[lod].enclosure;
+  }
   // Triangles closing the level's holes (scene::Mesh::caps); empty when closed.
   const std::vector<glm::vec3>& caps(std::size_t lod = 0) const { return levels_[lod].caps; }
   const std::vector<GpuMaterial>& materials() const { return materials_; }
@@ -67,9 +77,10 @@ class GpuModel {
       if (m.normal_texture >= 0) return true;
     return false;
   }
-  const scene::Bounds& bounds() const { return bounds_; }
+  // The pose's when one is applied (which may be a whole clip's).
+  const scene::Bounds& bounds() const { return posed_ ? posed_bounds_ : bounds_; }
   // Vertices extreme along many directions, for framing (relative to origin).
-  const std::vector<glm::vec3>& extremes() const { return extremes_; }
+  const std::vector<glm::vec3>& extremes() const { return posed_ ? posed_extremes_ : extremes_; }
   const scene::CreaseProfile& creases() const { return creases_; }
   // The model-space point the vertex positions are relative to.
   const glm::dvec3& origin() const { return origin_; }
@@ -78,6 +89,12 @@ class GpuModel {
  private:
   gpu::VertexArray vao_;
   gpu::Buffer vertices_;
+  gpu::Buffer posed_vertices_;  // created by the first apply_pose
+  bool posed_ = false;
+  scene::Bounds posed_bounds_;
+  std::vector<glm::vec3> posed_extremes_;
+  std::vector<glm::vec2> texcoords_;  // what a posed upload keeps of the rest
+  std::vector<glm::vec3> colors_;     // streams (empty: none)
   gpu::Buffer indices_;
   std::vector<gpu::Texture> textures_;
   std::vector<GpuMaterial> materials_;

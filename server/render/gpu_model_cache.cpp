@@ -4,8 +4,8 @@
 
 namespace toond::render {
 
-const GpuModel& GpuModelCache::get(const std::string& key, const scene::Model& model,
-                                   const std::vector<std::string>& pinned) {
+GpuModel& GpuModelCache::get(const std::string& key, const scene::Model& model,
+                             const std::vector<std::string>& pinned) {
   if (auto it = index_.find(key); it != index_.end()) {
     order_.splice(order_.begin(), order_, it->second);
     return *it->second->second;

@@ -22,8 +22,7 @@ class GpuModelCache {
   // `pinned` (the current scene's objects) are never evicted, nor is the
   // model just asked for: a scene larger than the limits is held whole
   // until its render is done, and the next load trims the cache back.
-  const GpuModel& get(const std::string& key, const scene::Model& model,
-                      const std::vector<std::string>& pinned = {});
+  GpuModel& get(const std::string& key, const scene::Model& model, const std::vector<std::string>& pinned = {});
   void forget(const std::string& key);
 
   std::size_t size() const { return order_.size(); }

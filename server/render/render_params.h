@@ -48,6 +48,14 @@ struct CameraParams {
   std::vector<glm::dvec2> framed_views;
 };
 
+// The `animation` block: a clip by name (`clip`) or by index
+// (`clip_index` >= 0), at `time` seconds of its loop.
+struct AnimationParams {
+  std::string clip;
+  int clip_index = -1;
+  double time = 0;
+};
+
 // A sprite sheet (the `sheet` block), with every absent field resolved:
 // frames at yaw_start + i × yaw_step, for each pitch in turn.
 struct SheetParams {
@@ -216,6 +224,7 @@ struct RenderParams {
   double lod_error_px = 0.5;  // the most a level's error may project to, output pixels
   int png_compression = 3;    // zlib level of the answer
   std::optional<SheetParams> sheet;  // unset: one image
+  std::optional<AnimationParams> animation;  // unset: the rest pose
   Output output = Output::Color;
 };
 

@@ -287,7 +287,9 @@ bool RenderService::serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources
       std::vector<std::string> pinned;
       for (const JobObject& o : task.job.objects) pinned.push_back(o.model_key);
       for (const JobObject& o : task.job.objects) {
-        objects.push_back({models.get(o.model_key, *o.model, pinned), o.transform});
+        GpuModel& model = models.get(o.model_key, *o.model, pinned);
+        model.apply_pose(o.pose.get());
+        objects.push_back({model, o.transform});
       }
       record_cache_use();
       std::optional<DrawPacing> pacing;

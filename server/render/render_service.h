@@ -18,6 +18,8 @@
 #include <optional>
 #include <string>
 #include <thread>
+
+#include "scene/pose.h"
 #include <vector>
 
 #include "gpu/egl_context.h"
@@ -34,6 +36,8 @@ struct JobObject {
   std::string model_key;  // GPU cache key: the model id, or "demo"
   std::shared_ptr<const scene::Model> model;
   glm::dmat4 transform{1.0};  // model → scene coordinates
+  // The model's vertices in the request's pose (scene/pose.h); null: at rest.
+  std::shared_ptr<const scene::PosedVertices> pose;
 };
 
 struct RenderJob {

@@ -25,6 +25,7 @@
 #include "scene/gltf_draco.h"
 #include "scene/gltf_json.h"
 #include "scene/gltf_meshopt.h"
+#include "scene/gltf_rig.h"
 #include "scene/import_error.h"
 #include "scene/mesh_builder.h"
 #include "scene/texture_decode.h"
@@ -100,12 +101,13 @@ struct TexcoordChoice {
 struct MeshInstance {
   int mesh = 0;
   glm::dmat4 transform{1.0};
+  int node = -1;  // the node that draws it; -1 in a file without nodes
 };
 
 // Exact-bits hash of a position and its colour, so coinciding vertices of
 // different primitives become one position as in an OBJ.
 struct WeldKey {
-  std::array<std::uint64_t, 6> bits;
+  std::array<std::uint64_t, 7> bits;
   bool operator==(const WeldKey&) const = default;
 };
 struct WeldKeyHash {
@@ -183,6 +185,7 @@ class GltfImporter {
     const std::vector<MeshInstance> instances = collect_instances();
     check_counts(instances);
     decode_draco(instances);
+    rig_reader_ = std::make_unique<GltfRigReader>(gltf_, *reader_, path_, drawn_nodes_, up_turn(), warnings_);
     MeshSource source = make_source(instances);
     source.limits = limits_;
     apply_import_choices(source, choices_);
@@ -192,6 +195,11 @@ class GltfImporter {
       build_materials(triangles);
       check_import_time(limits_, "decoding textures");
     });
+    if (rig_reader_->moves()) {
+      const glm::dmat4 file_to_mesh = glm::translate(glm::dmat4(1.0), -model_.mesh.origin) * glm::dmat4(up_turn());
+      model_.rig = std::make_shared<const Rig>(rig_reader_->finish(file_to_mesh));
+      check_import_time(limits_, "reading clips");
+    }
     report_ignored();
     model_.has_vertex_colors = !model_.mesh.colors.empty();
     model_.warnings = warnings_.take();
@@ -200,6 +208,13 @@ class GltfImporter {
 
  private:
   [[noreturn]] void fail(const std::string& message) const { throw ImportError(path_, path_ + ": " + message); }
+
+  // The upload's up axis as a turn of the file's coordinates (the mesh
+  // builder's turn_z_up): (x, y, z) → (x, z, −y) for a Z-up file.
+  glm::dmat3 up_turn() const {
+    if (!choices_.z_up) return glm::dmat3(1.0);
+    return glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0));
+  }
 
   // The bytes of a buffer view that a compression extension holds.
   std::optional<std::span<const std::uint8_t>> decoded_view(int view) {
@@ -415,6 +430,7 @@ class GltfImporter {
     // A node hierarchy is a tree; a node reached twice (a cycle, or two
     // parents) is drawn once, so a hostile file cannot loop or multiply.
     std::vector<bool> visited(gltf_.nodes.size(), false);
+    drawn_nodes_.assign(gltf_.nodes.size(), false);
     std::vector<std::pair<int, glm::dmat4>> stack;
     for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, glm::dmat4(1.0));
     bool reached_twice = false;
@@ -427,15 +443,15 @@ class GltfImporter {
         continue;
       }
       visited[static_cast<std::size_t>(index)] = true;
+      drawn_nodes_[static_cast<std::size_t>(index)] = true;
       const tinygltf::Node& node = gltf_.nodes[static_cast<std::size_t>(index)];
       const glm::dmat4 world = parent * local_transform(node);
       if (node.mesh >= 0) {
         if (static_cast<std::size_t>(node.mesh) >= gltf_.meshes.size()) {
           fail("node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) + ", which does not exist");
         }
-        instances.push_back({node.mesh, world});
+        instances.push_back({node.mesh, world, index});
       }
-      if (node.skin >= 0) ++ignored_["skinned nodes (drawn in their rest pose)"];
       if (node.camera >= 0) ++ignored_["cameras"];
       for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.emplace_back(*it, world);
     }
@@ -533,7 +549,6 @@ class GltfImporter {
       const tinygltf::Mesh& mesh = gltf_.meshes[static_cast<std::size_t>(instance.mesh)];
       for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
         const tinygltf::Primitive& primitive = mesh.primitives[p];
-        if (!primitive.targets.empty()) ++ignored_["morph targets"];
         if (!is_triangles(primitive.mode)) {
           ++skipped_modes;
           continue;
@@ -557,7 +572,15 @@ class GltfImporter {
           check_count(colours_in, 4, "colours");
           any_colour = true;
         }
-        // Positions, merged with equal ones (same colour) seen before.
+        // How each vertex moves, when anything in the file does.
+        std::vector<std::uint32_t> motions;
+        if (rig_reader_->moves() && instance.node >= 0) {
+          motions = rig_reader_->motions_of(instance.node, primitive, count, name);
+        } else if (rig_reader_->moves()) {
+          fail(name + " is drawn without a node in a file whose nodes move");
+        }
+        // Positions, merged with equal ones (same colour, same motion) seen
+        // before.
         std::vector<std::uint32_t> position_of(count);
         for (std::size_t i = 0; i < count; ++i) {
           const glm::dvec3 p3 = glm::dvec3(instance.transform * glm::dvec4(positions[3 * i], positions[3 * i + 1],
@@ -570,11 +593,13 @@ class GltfImporter {
           }
           const WeldKey key{{std::bit_cast<std::uint64_t>(p3.x), std::bit_cast<std::uint64_t>(p3.y),
                              std::bit_cast<std::uint64_t>(p3.z), std::bit_cast<std::uint64_t>(colour.r),
-                             std::bit_cast<std::uint64_t>(colour.g), std::bit_cast<std::uint64_t>(colour.b)}};
+                             std::bit_cast<std::uint64_t>(colour.g), std::bit_cast<std::uint64_t>(colour.b),
+                             motions.empty() ? 0u : motions[i]}};
           const auto [it, added] = welded.try_emplace(key, static_cast<std::uint32_t>(source.positions.size()));
           if (added) {
             source.positions.push_back(p3);
             colours.push_back(colour);
+            if (!motions.empty()) source.motions.push_back(motions[i]);
           }
           position_of[i] = it->second;
         }
@@ -809,8 +834,6 @@ class GltfImporter {
   }
 
   void report_ignored() {
-    if (!gltf_.animations.empty()) ignored_["animations"] += gltf_.animations.size();
-    if (!gltf_.skins.empty()) ignored_["skins"] += gltf_.skins.size();
     if (!gltf_.lights.empty()) ignored_["lights"] += gltf_.lights.size();
     std::string list;
     for (const auto& [what, count] : ignored_) list += (list.empty() ? "" : ", ") + std::to_string(count) + " " + what;
@@ -830,6 +853,8 @@ class GltfImporter {
   std::set<int> meshopt_fallbacks_;
   std::unique_ptr<MeshoptViews> meshopt_views_;
   std::unique_ptr<GltfAccessorReader> reader_;
+  std::unique_ptr<GltfRigReader> rig_reader_;
+  std::vector<bool> drawn_nodes_;  // nodes of the drawn scene
   ImportWarnings warnings_;
   std::map<std::string, std::size_t> ignored_;
   std::map<std::pair<int, ColorSpace>, int> texture_slots_;

@@ -386,6 +386,7 @@ class Builder {
         mesh.normals.push_back(mesh.normals[v]);
         mesh.texcoords.push_back(mesh.texcoords[v]);
         if (!mesh.colors.empty()) mesh.colors.push_back(mesh.colors[v]);
+        if (!mesh.motion.empty()) mesh.motion.push_back(mesh.motion[v]);
         file_tangents.push_back(file_tangents[v]);
         smoothing_of_vertex.push_back(smoothing_of_vertex[v]);
         needs_normal.push_back(true);
@@ -402,6 +403,7 @@ class Builder {
     mesh.origin = origin_;
     const auto& triangles = src_.triangles;
     const bool with_colors = !src_.colors.empty();
+    const bool with_motion = !src_.motions.empty();
 
     bool smoothing_in_use = false;
     for (const auto& tri : triangles) {
@@ -456,6 +458,7 @@ class Builder {
           mesh.texcoords.push_back(uv);
           file_tangents.push_back(corner.tangent);
           if (with_colors) mesh.colors.emplace_back(src_.colors[corner.position]);
+          if (with_motion) mesh.motion.push_back(src_.motions[corner.position]);
           smoothing_of_vertex.push_back(smoothing);
           needs_normal.push_back(!has_normal);
         }

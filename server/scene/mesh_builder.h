@@ -78,6 +78,9 @@ struct MeshSource {
   // bitangent's handedness (±1); need not be unit length, may be unusable.
   std::vector<glm::dvec4> tangents;
   std::vector<glm::dvec3> colors;     // empty, or one per position (0..1 expected)
+  // Empty, or one per position: how it moves (Rig::motions); carried to
+  // every vertex made from the position as Mesh::motion.
+  std::vector<std::uint32_t> motions;
   std::vector<SourceTriangle> triangles;
   // Names position `i` in messages, e.g. "vertex 12 (line 40)"; only called
   // on failure. Unset: "vertex i+1".

@@ -2,6 +2,7 @@
 // The in-memory form of an imported model: what the importer produces and
 // what the GPU upload consumes. Plain data, no GL.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 
 #include "scene/crease_profile.h"
 #include "scene/render_cost_profile.h"
+#include "scene/rig.h"
 
 namespace toond::scene {
 
@@ -123,6 +125,9 @@ struct Mesh {
   // are sRGB-encoded, to be decoded where they are used. Either empty (the
   // file has none) or one per position.
   std::vector<glm::vec3> colors;
+  // Per vertex, how it moves (an index into Rig::motions) when its model
+  // has a rig; empty when not.
+  std::vector<std::uint32_t> motion;
   std::vector<std::uint32_t> indices;      // triangles
   std::vector<Submesh> submeshes;
   std::vector<MeshLod> lods;  // coarser levels, finest first; empty: full detail only
@@ -160,6 +165,9 @@ struct Model {
   std::vector<Texture> textures;
   bool has_vertex_colors = false;  // == !mesh.colors.empty()
   std::vector<std::string> warnings;
+  // Skins, morph targets and clips (scene/rig.h); null when nothing moves.
+  // Shared: it is read-only once imported.
+  std::shared_ptr<const Rig> rig;
 };
 
 }  // namespace toond::scene

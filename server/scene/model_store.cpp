@@ -106,6 +106,13 @@ nlohmann::json ModelInfo::to_json() const {
           {"bytes", bytes}, {"files", files},         {"warnings", warnings},
           {"weld", {{"tolerance", weld.tolerance}, {"positions", weld.positions}}},
           {"cost", {{"layers", cost.layers}, {"edge_span", cost.edge_span}}}};
+  if (animation.any()) {
+    nlohmann::json clips = nlohmann::json::array();
+    for (const ClipInfo& c : animation.clips) {
+      clips.push_back({{"name", c.name}, {"duration", c.duration}, {"channels", c.channels}});
+    }
+    j["animation"] = {{"clips", clips}, {"joints", animation.joints}, {"morph_targets", animation.morph_targets}};
+  }
   if (choices.gltf_scene) j["scene"] = *choices.gltf_scene;
   if (choices.smooth_angle) j["smooth_angle"] = *choices.smooth_angle;
   if (choices.z_up) j["up"] = "z";
@@ -130,6 +137,14 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
   if (const auto weld = j.find("weld"); weld != j.end() && weld->is_object()) {
     info.weld.tolerance = weld->value("tolerance", 0.0);
     info.weld.positions = weld->value("positions", std::size_t{0});
+  }
+  if (const auto animation = j.find("animation"); animation != j.end() && animation->is_object()) {
+    for (const nlohmann::json& c : animation->value("clips", nlohmann::json::array())) {
+      info.animation.clips.push_back(
+          {c.value("name", std::string()), c.value("duration", 0.0), c.value("channels", std::size_t{0})});
+    }
+    info.animation.joints = animation->value("joints", std::size_t{0});
+    info.animation.morph_targets = animation->value("morph_targets", std::size_t{0});
   }
   if (const auto scene = j.find("scene"); scene != j.end() && scene->is_number_integer()) {
     info.choices.gltf_scene = scene->get<int>();
@@ -213,6 +228,11 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& 
   info.warnings = model.warnings;
   info.weld = {model.mesh.weld_tolerance, model.mesh.welded_positions};
   info.cost = {model.mesh.cost.layers(), model.mesh.cost.edge_span()};
+  if (model.rig) {
+    for (const Clip& clip : model.rig->clips) info.animation.clips.push_back({clip.name, clip.duration, clip.channels.size()});
+    info.animation.joints = model.rig->joint_count;
+    info.animation.morph_targets = model.rig->morph_target_count;
+  }
 
   const fs::path temp = root_ / (std::string(kTempPrefix) + id + "-" + random_suffix());
   try {

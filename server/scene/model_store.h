@@ -40,6 +40,20 @@ struct ModelInfo {
     double layers = 0;
     double edge_span = 0;
   } cost;
+  // What moves (scene/rig.h): each clip's name, duration (seconds) and
+  // channel count, the skins' joints and the morph targets. Empty clips and
+  // zero counts: nothing moves.
+  struct ClipInfo {
+    std::string name;
+    double duration = 0;
+    std::size_t channels = 0;
+  };
+  struct Animation {
+    std::vector<ClipInfo> clips;
+    std::size_t joints = 0;
+    std::size_t morph_targets = 0;
+    bool any() const { return !clips.empty() || joints > 0 || morph_targets > 0; }
+  } animation;
   // What the upload asked of the import (a glTF scene), kept so that a
   // re-import makes the same model.
   ImportChoices choices;

@@ -30,7 +30,7 @@ std::shared_ptr<const scene::Model> obj_model(const std::string& obj) {
 
 render::RenderJob job_of(std::shared_ptr<const scene::Model> model, const nlohmann::json& request) {
   render::RenderJob job;
-  job.objects.push_back({"m", std::move(model), glm::dmat4(1.0)});
+  job.objects.push_back({"m", std::move(model), glm::dmat4(1.0), nullptr});
   job.params = test::complete_params(request);
   return job;
 }

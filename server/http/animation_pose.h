@@ -1,0 +1,37 @@
+#pragma once
+// A request's `animation` applied to its model: the clip looked up (by
+// name, by the part after '|', or by index), the time wrapped onto the
+// clip's loop, the vertices posed on the request's thread, and the whole
+// clip's framing (computed once per model and clip, then kept) put on the
+// pose so that every time of one clip is framed alike.
+#include <cstddef>
+#include <list>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <utility>
+
+#include "render/render_service.h"
+#include "scene/pose.h"
+
+namespace toond::http {
+
+// The framings of recently used clips, by model id and clip index.
+class ClipFramings {
+ public:
+  static constexpr std::size_t kCapacity = 64;
+  std::shared_ptr<const scene::ClipFraming> get(const std::string& model_id, const scene::Model& model,
+                                                std::size_t clip);
+
+ private:
+  using Entry = std::pair<std::string, std::shared_ptr<const scene::ClipFraming>>;
+  std::mutex mutex_;
+  std::list<Entry> recent_;  // most recently used first
+};
+
+// Poses the job's one object as job.params.animation asks (nothing when it
+// asks nothing). RequestError 400 when the job is a scene of objects, 422
+// (path /animation/clip) when the model has no such clip.
+void pose_for_animation(ClipFramings& framings, render::RenderJob& job);
+
+}  // namespace toond::http
