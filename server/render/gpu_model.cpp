@@ -94,6 +94,7 @@ GpuModel::GpuModel(const scene::Model& model)
   auto add_caps = [&](Level& level, const std::vector<std::uint32_t>& cap_indices) {
     level.first_cap_index = indices.size();
     level.cap_index_count = cap_indices.size();
+    if (model.rig) level.cap_indices = cap_indices;
     indices.insert(indices.end(), cap_indices.begin(), cap_indices.end());
   };
   add_caps(levels_[0], mesh.cap_indices);
@@ -149,6 +150,10 @@ void GpuModel::apply_pose(const scene::PosedVertices* pose) {
   glVertexArrayVertexBuffer(vao_.id(), 0, posed_vertices_.id(), 0, sizeof(Vertex));
   posed_bounds_ = pose->bounds;
   posed_extremes_ = pose->extremes;
+  for (Level& level : levels_) {
+    level.posed_caps.clear();
+    for (const std::uint32_t v : level.cap_indices) level.posed_caps.push_back(pose->positions[v]);
+  }
 }
 
 void GpuModel::bind_material(int index) const {

@@ -54,13 +54,13 @@ class GpuModel {
   const std::vector<double>& lod_errors() const { return lod_errors_; }
   std::size_t triangles(std::size_t lod = 0) const { return levels_[lod].index_count / 3; }
   // Whether a level's triangles close around a volume (scene/enclosure.h).
-  // A posed level with holes counts as open: its caps moved with the pose,
-  // so the rest pose's caps cannot say which way they face.
-  scene::Enclosure enclosure(std::size_t lod = 0) const {
-    return posed_ && !levels_[lod].caps.empty() ? scene::Enclosure::Open : levels_[lod].enclosure;
-  }
+  // A pose keeps the topology, so a closed level stays closed.
+  scene::Enclosure enclosure(std::size_t lod = 0) const { return levels_[lod].enclosure; }
   // Triangles closing the level's holes (scene::Mesh::caps); empty when closed.
-  const std::vector<glm::vec3>& caps(std::size_t lod = 0) const { return levels_[lod].caps; }
+  // Posed: the caps moved with the pose.
+  const std::vector<glm::vec3>& caps(std::size_t lod = 0) const {
+    return posed_ ? levels_[lod].posed_caps : levels_[lod].caps;
+  }
   const std::vector<GpuMaterial>& materials() const { return materials_; }
   GLuint texture(int index) const { return textures_[static_cast<std::size_t>(index)].id(); }
   bool has_textures() const { return !textures_.empty(); }
@@ -106,6 +106,8 @@ class GpuModel {
     std::size_t index_count = 0;
     scene::Enclosure enclosure = scene::Enclosure::Open;
     std::vector<glm::vec3> caps;
+    std::vector<std::uint32_t> cap_indices{};  // kept for a rigged model: the caps of a pose
+    std::vector<glm::vec3> posed_caps{};
     std::size_t first_cap_index = 0;  // the caps' range of the index buffer
     std::size_t cap_index_count = 0;
   };

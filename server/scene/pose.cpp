@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <bit>
 #include <set>
+#include <unordered_map>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "image/parallel_tasks.h"
 #include "scene/clip_sampling.h"
 #include "scene/extreme_points.h"
 #include "scene/mesh_processing.h"
@@ -105,9 +108,47 @@ NodePose pose_nodes(const Rig& rig, const Clip* clip, double time) {
   return pose;
 }
 
-PosedVertices pose_vertices(const Mesh& rest, const Rig& rig, const NodePose& pose) {
+namespace {
+
+constexpr std::size_t kPoseRun = 16384;
+
+// Each motion's blended joint matrix in one pose: vertices that move alike
+// share it (a flat-shaded mesh has several vertices per position).
+std::vector<glm::mat4> motion_matrices(const Rig& rig, const NodePose& pose) {
   const NodePose at_rest = pose_nodes(rig, nullptr, 0.0);
   const std::vector<std::vector<glm::mat4>> joints = joint_matrices(rig, at_rest, pose);
+  std::vector<glm::mat4> blends(rig.motions.size(), glm::mat4(0.0f));
+  for (std::size_t m = 0; m < rig.motions.size(); ++m) {
+    const VertexMotion& motion = rig.motions[m];
+    const std::vector<glm::mat4>& binding = joints[motion.binding];
+    for (std::uint32_t k = 0; k < motion.influence_count; ++k) {
+      const Influence& influence = rig.influences[motion.first_influence + k];
+      blends[m] += influence.weight * binding[influence.joint];
+    }
+  }
+  return blends;
+}
+
+// Adds the morph targets' weighted deltas of the vertex's motion.
+void add_morphs(const Rig& rig, const std::vector<std::vector<double>>& weights, const VertexMotion& motion,
+                glm::vec3& position, glm::vec3* normal) {
+  if (motion.morph_set < 0) return;
+  const MorphSet& set = rig.morph_sets[static_cast<std::size_t>(motion.morph_set)];
+  const std::vector<double>& w = weights[static_cast<std::size_t>(motion.morph_set)];
+  for (std::size_t t = 0; t < set.targets(); ++t) {
+    if (w[t] == 0.0) continue;
+    const std::size_t at = t * set.vertices + motion.morph_vertex;
+    position += static_cast<float>(w[t]) * set.position_deltas[at];
+    if (normal && !set.normal_deltas.empty()) *normal += static_cast<float>(w[t]) * set.normal_deltas[at];
+  }
+}
+
+}  // namespace
+
+PosedVertices pose_vertices(const Mesh& rest, const Rig& rig, const NodePose& pose) {
+  const std::vector<glm::mat4> blends = motion_matrices(rig, pose);
+  std::vector<glm::mat3> normal_matrices(blends.size());
+  for (std::size_t m = 0; m < blends.size(); ++m) normal_matrices[m] = cofactor(glm::mat3(blends[m]));
   const std::vector<std::vector<double>> weights = morph_weights(rig, pose);
 
   PosedVertices out;
@@ -116,40 +157,31 @@ PosedVertices pose_vertices(const Mesh& rest, const Rig& rig, const NodePose& po
   out.normals.resize(count);
   out.outline_normals.resize(count);
   out.tangents.resize(count);
-  for (std::size_t v = 0; v < count; ++v) {
-    const VertexMotion& motion = rig.motions[rest.motion[v]];
-    glm::vec3 position = rest.positions[v];
-    glm::vec3 normal = rest.normals[v];
-    if (motion.morph_set >= 0) {
-      const MorphSet& set = rig.morph_sets[static_cast<std::size_t>(motion.morph_set)];
-      const std::vector<double>& w = weights[static_cast<std::size_t>(motion.morph_set)];
-      for (std::size_t t = 0; t < set.targets(); ++t) {
-        if (w[t] == 0.0) continue;
-        const std::size_t at = t * set.vertices + motion.morph_vertex;
-        position += static_cast<float>(w[t]) * set.position_deltas[at];
-        if (!set.normal_deltas.empty()) normal += static_cast<float>(w[t]) * set.normal_deltas[at];
-      }
+  // Over the cores in runs of kPoseRun vertices: posing runs on the
+  // request's thread, and for a large mesh it is most of the request's own
+  // work before the render thread's.
+  const int runs = static_cast<int>((count + kPoseRun - 1) / kPoseRun);
+  image::run_tasks(runs, image::hardware_threads(), [&](int run) {
+    const std::size_t end = std::min(count, (static_cast<std::size_t>(run) + 1) * kPoseRun);
+    for (std::size_t v = static_cast<std::size_t>(run) * kPoseRun; v < end; ++v) {
+      const std::uint32_t m = rest.motion[v];
+      glm::vec3 position = rest.positions[v];
+      glm::vec3 normal = rest.normals[v];
+      add_morphs(rig, weights, rig.motions[m], position, &normal);
+      const glm::mat4& blend = blends[m];
+      const glm::mat3& normal_matrix = normal_matrices[m];
+      out.positions[v] = glm::vec3(blend * glm::vec4(position, 1.0f));
+      out.normals[v] = unit_or(normal_matrix * normal, rest.normals[v]);
+      const glm::vec3 outline = rest.outline_normals[v];
+      out.outline_normals[v] = unit_or(normal_matrix * outline, out.normals[v]) * glm::length(outline);
+      const glm::vec4 tangent = rest.tangents[v];
+      const glm::vec3 along = glm::mat3(blend) * glm::vec3(tangent);
+      const glm::vec3 posed_normal = out.normals[v];
+      out.tangents[v] =
+          glm::vec4(unit_or(along - posed_normal * glm::dot(posed_normal, along), glm::vec3(tangent)), tangent.w);
     }
-    glm::mat4 blend(0.0f);
-    const std::vector<glm::mat4>& binding = joints[motion.binding];
-    for (std::uint32_t k = 0; k < motion.influence_count; ++k) {
-      const Influence& influence = rig.influences[motion.first_influence + k];
-      blend += influence.weight * binding[influence.joint];
-    }
-    const glm::mat3 linear(blend);
-    const glm::mat3 normal_matrix = cofactor(linear);
-    out.positions[v] = glm::vec3(blend * glm::vec4(position, 1.0f));
-    out.normals[v] = unit_or(normal_matrix * normal, rest.normals[v]);
-    const glm::vec3 outline = rest.outline_normals[v];
-    out.outline_normals[v] = unit_or(normal_matrix * outline, out.normals[v]) * glm::length(outline);
-    const glm::vec4 tangent = rest.tangents[v];
-    const glm::vec3 along = linear * glm::vec3(tangent);
-    const glm::vec3 posed_normal = out.normals[v];
-    out.tangents[v] =
-        glm::vec4(unit_or(along - posed_normal * glm::dot(posed_normal, along), glm::vec3(tangent)), tangent.w);
-  }
+  });
   out.bounds = compute_bounds(out.positions);
-  out.extremes = extreme_points(out.positions);
   return out;
 }
 
@@ -161,7 +193,13 @@ namespace {
 // kMaxFramingPoses, evenly over the clip, where that would be more.
 constexpr std::size_t kFramingGrid = 120;
 
-std::vector<double> framing_times(const Clip& clip) {
+// Poses × points a framing may evaluate: a mesh of many points is sampled
+// at fewer times between its keys (down to 16 over the clip), each padded
+// by the larger step that leaves.
+constexpr std::size_t kFramingPointBudget = 2'000'000;
+
+std::vector<double> framing_times(const Clip& clip, std::size_t points) {
+  const std::size_t affordable = kFramingPointBudget / std::max<std::size_t>(points, 1);
   std::set<double> keys{0.0, clip.duration};
   for (const Channel& ch : clip.channels) keys.insert(ch.times.begin(), ch.times.end());
   std::set<double> times;
@@ -170,14 +208,16 @@ std::vector<double> framing_times(const Clip& clip) {
     times.insert(*it);
     const auto next = std::next(it);
     if (next == keys.end() || *next > clip.duration) continue;
-    for (int k = 1; k <= 3; ++k) times.insert(*it + (*next - *it) * k / 4.0);
+    if (affordable >= 4 * keys.size()) {
+      for (int k = 1; k <= 3; ++k) times.insert(*it + (*next - *it) * k / 4.0);
+    }
   }
   const auto even = [&](std::size_t count) {
     for (std::size_t k = 0; k < count; ++k) {
       times.insert(clip.duration * static_cast<double>(k) / static_cast<double>(count - 1));
     }
   };
-  even(kFramingGrid);
+  even(std::clamp<std::size_t>(affordable, 16, kFramingGrid));
   if (times.size() > kMaxFramingPoses) {
     times.clear();
     even(kMaxFramingPoses);
@@ -185,27 +225,90 @@ std::vector<double> framing_times(const Clip& clip) {
   return {times.begin(), times.end()};
 }
 
+// The distinct (position, motion) pairs of a mesh: what framing poses (a
+// flat-shaded mesh repeats each position for every face around it).
+struct FramingPoints {
+  std::vector<glm::vec3> positions;
+  std::vector<std::uint32_t> motions;
+};
+
+FramingPoints framing_points(const Mesh& rest) {
+  FramingPoints points;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> seen;  // hash → indices into points
+  for (std::size_t v = 0; v < rest.positions.size(); ++v) {
+    const glm::vec3& p = rest.positions[v];
+    const std::uint64_t key = (std::uint64_t{std::bit_cast<std::uint32_t>(p.x)} * 0x9E3779B97F4A7C15ull) ^
+                              (std::uint64_t{std::bit_cast<std::uint32_t>(p.y)} * 0xC2B2AE3D27D4EB4Full) ^
+                              (std::uint64_t{std::bit_cast<std::uint32_t>(p.z)} * 0x165667B19E3779F9ull) ^
+                              rest.motion[v];
+    std::vector<std::uint32_t>& same = seen[key];
+    const bool known = std::any_of(same.begin(), same.end(), [&](std::uint32_t i) {
+      return points.positions[i] == p && points.motions[i] == rest.motion[v];
+    });
+    if (known) continue;
+    same.push_back(static_cast<std::uint32_t>(points.positions.size()));
+    points.positions.push_back(p);
+    points.motions.push_back(rest.motion[v]);
+  }
+  return points;
+}
+
+std::vector<glm::vec3> pose_points(const FramingPoints& points, const Rig& rig, const NodePose& pose) {
+  const std::vector<glm::mat4> blends = motion_matrices(rig, pose);
+  const std::vector<std::vector<double>> weights = morph_weights(rig, pose);
+  std::vector<glm::vec3> posed(points.positions.size());
+  for (std::size_t i = 0; i < posed.size(); ++i) {
+    glm::vec3 position = points.positions[i];
+    add_morphs(rig, weights, rig.motions[points.motions[i]], position, nullptr);
+    posed[i] = glm::vec3(blends[points.motions[i]] * glm::vec4(position, 1.0f));
+  }
+  return posed;
+}
+
 }  // namespace
 
 ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip_index) {
   const Clip& clip = rig.clips[clip_index];
-  const std::vector<double> times = framing_times(clip);
+  const FramingPoints points = framing_points(rest);
+  const std::vector<double> times = framing_times(clip, points.positions.size());
+  // Each sample's extreme points, box and the largest step any point took
+  // from the sample before: samples are posed over the cores, each run
+  // posing the sample before its first once more.
+  struct Sampled {
+    std::vector<glm::vec3> extremes;
+    Bounds bounds;
+    float step = 0;
+  };
+  std::vector<Sampled> sampled(times.size());
+  const int threads = image::hardware_threads();
+  const std::size_t per_run =
+      (times.size() + static_cast<std::size_t>(threads) - 1) / static_cast<std::size_t>(threads);
+  image::run_tasks(threads, threads, [&](int run) {
+    const std::size_t first = static_cast<std::size_t>(run) * per_run;
+    const std::size_t end = std::min(times.size(), first + per_run);
+    std::vector<glm::vec3> previous;
+    if (first > 0 && first < end) previous = pose_points(points, rig, pose_nodes(rig, &clip, times[first - 1]));
+    for (std::size_t i = first; i < end; ++i) {
+      std::vector<glm::vec3> posed = pose_points(points, rig, pose_nodes(rig, &clip, times[i]));
+      sampled[i].extremes = extreme_points(posed);
+      sampled[i].bounds = compute_bounds(posed);
+      for (std::size_t v = 0; v < previous.size(); ++v) {
+        sampled[i].step = std::max(sampled[i].step, glm::length(posed[v] - previous[v]));
+      }
+      previous = std::move(posed);
+    }
+  });
   std::vector<glm::vec3> reached;  // every pose's extreme points
   std::vector<glm::vec3> corners;  // every pose's box
-  std::vector<glm::vec3> previous;
-  // Between two samples a vertex strays from both by at most half of its
+  // Between two samples a point strays from both by at most half of its
   // step from one to the other (a turn of less than half a circle), so the
   // largest step halved pads the framing.
   float largest_step = 0;
-  for (const double t : times) {
-    PosedVertices posed = pose_vertices(rest, rig, pose_nodes(rig, &clip, t));
-    reached.insert(reached.end(), posed.extremes.begin(), posed.extremes.end());
-    corners.push_back(posed.bounds.min);
-    corners.push_back(posed.bounds.max);
-    for (std::size_t v = 0; v < previous.size(); ++v) {
-      largest_step = std::max(largest_step, glm::length(posed.positions[v] - previous[v]));
-    }
-    previous = std::move(posed.positions);
+  for (const Sampled& s : sampled) {
+    reached.insert(reached.end(), s.extremes.begin(), s.extremes.end());
+    corners.push_back(s.bounds.min);
+    corners.push_back(s.bounds.max);
+    largest_step = std::max(largest_step, s.step);
   }
   const float margin = largest_step * 0.5f;
   ClipFraming framing;

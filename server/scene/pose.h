@@ -33,6 +33,8 @@ struct PosedVertices {
   std::vector<glm::vec3> outline_normals;
   std::vector<glm::vec4> tangents;
   Bounds bounds;
+  // Points for framing (scene/extreme_points.h): not made by pose_vertices
+  // (a request frames by its whole clip: frame_clip).
   std::vector<glm::vec3> extremes;
 };
 
@@ -41,10 +43,11 @@ PosedVertices pose_vertices(const Mesh& rest, const Rig& rig, const NodePose& po
 // Where a clip's poses reach: bounds and extreme points over poses sampled
 // at every key time of the clip, at three times evenly between each two
 // neighbouring keys and at 120 times evenly over the clip (at most
-// kMaxFramingPoses poses, evenly over the clip, where that makes more),
-// padded by half the largest step any vertex takes from one sample to the
-// next. Framing a render by these keeps the camera still from one time of
-// the clip to the next.
+// kMaxFramingPoses poses, evenly over the clip, where that makes more; a
+// mesh of many points gets fewer samples between its keys, down to 16 over
+// the clip), padded by half the largest step any point takes from one
+// sample to the next. Framing a render by these keeps the camera still from
+// one time of the clip to the next.
 inline constexpr std::size_t kMaxFramingPoses = 240;
 struct ClipFraming {
   Bounds bounds;
