@@ -3,6 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "image/png_codec.h"
 #include "support/mesh_file_writers.h"
@@ -206,6 +210,97 @@ scene::Bundle ply_strip(int n) {
   return bundle;
 }
 
+namespace {
+
+// A .glb of `json` and its binary chunk.
+std::string glb(const nlohmann::json& json, std::string bin) {
+  std::string text = json.dump();
+  while (text.size() % 4 != 0) text.push_back(' ');
+  while (bin.size() % 4 != 0) bin.push_back('\0');
+  std::string out;
+  const auto u32 = [&](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+  u32(0x46546C67);
+  u32(2);
+  u32(static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + bin.size()));
+  u32(static_cast<std::uint32_t>(text.size()));
+  u32(0x4E4F534A);
+  out += text;
+  u32(static_cast<std::uint32_t>(bin.size()));
+  u32(0x004E4942);
+  return out + bin;
+}
+
+}  // namespace
+
+// A skinned bar of 10n joints in one chain (a ring of four vertices per
+// joint) and a clip turning every joint, 100 keys each: 1,000 joints and
+// 100,000 keys at n = 100.
+scene::Bundle skinned_chain(int n) {
+  const int joints = 10 * n;
+  constexpr int kKeys = 100;
+  nlohmann::json j = {{"asset", {{"version", "2.0"}}}, {"scene", 0}};
+  std::string bin;
+  const auto accessor = [&](const void* data, std::size_t bytes, std::size_t count, int component, const char* type) {
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes}});
+    bin.append(static_cast<const char*>(data), bytes);
+    j["accessors"].push_back(
+        {{"bufferView", j["bufferViews"].size() - 1}, {"componentType", component}, {"count", count}, {"type", type}});
+    return j["accessors"].size() - 1;
+  };
+  std::vector<float> positions;
+  std::vector<std::uint16_t> joint_of;
+  std::vector<float> weights;
+  std::vector<std::uint32_t> indices;
+  for (int r = 0; r < joints; ++r) {
+    for (const auto& [x, z] : {std::pair{-0.2f, -0.2f}, {0.2f, -0.2f}, {0.2f, 0.2f}, {-0.2f, 0.2f}}) {
+      positions.insert(positions.end(), {x, static_cast<float>(r), z});
+      joint_of.insert(joint_of.end(), {static_cast<std::uint16_t>(r), 0, 0, 0});
+      weights.insert(weights.end(), {1, 0, 0, 0});
+    }
+    for (std::uint32_t k = 0; r + 1 < joints && k < 4; ++k) {
+      const std::uint32_t a = static_cast<std::uint32_t>(r) * 4 + k, b = static_cast<std::uint32_t>(r) * 4 + (k + 1) % 4;
+      indices.insert(indices.end(), {a, b + 4, b, a, a + 4, b + 4});
+    }
+  }
+  nlohmann::json attributes = {
+      {"POSITION", accessor(positions.data(), positions.size() * 4, positions.size() / 3, 5126, "VEC3")},
+      {"JOINTS_0", accessor(joint_of.data(), joint_of.size() * 2, joint_of.size() / 4, 5123, "VEC4")},
+      {"WEIGHTS_0", accessor(weights.data(), weights.size() * 4, weights.size() / 4, 5126, "VEC4")}};
+  const auto index = accessor(indices.data(), indices.size() * 4, indices.size(), 5125, "SCALAR");
+  j["meshes"] = {{{"primitives", {{{"attributes", attributes}, {"indices", index}}}}}};
+  j["nodes"] = {{{"mesh", 0}, {"skin", 0}}};
+  std::vector<int> joint_nodes;
+  std::vector<float> inverse_binds;
+  for (int r = 0; r < joints; ++r) {
+    nlohmann::json node = {{"translation", {0, r == 0 ? 0 : 1, 0}}};
+    if (r + 1 < joints) node["children"] = {r + 2};
+    j["nodes"].push_back(node);
+    joint_nodes.push_back(r + 1);
+    inverse_binds.insert(inverse_binds.end(), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -static_cast<float>(r), 0, 1});
+  }
+  j["scenes"] = {{{"nodes", {0, 1}}}};
+  j["skins"] = {{{"joints", joint_nodes},
+                 {"inverseBindMatrices", accessor(inverse_binds.data(), inverse_binds.size() * 4, joints, 5126, "MAT4")}}};
+  std::vector<float> times(kKeys);
+  for (int k = 0; k < kKeys; ++k) times[static_cast<std::size_t>(k)] = 0.04f * static_cast<float>(k);
+  const auto input = accessor(times.data(), times.size() * 4, times.size(), 5126, "SCALAR");
+  nlohmann::json samplers = nlohmann::json::array(), channels = nlohmann::json::array();
+  for (int r = 0; r < joints; ++r) {
+    std::vector<float> turns;
+    for (int k = 0; k < kKeys; ++k) {
+      const float half = 0.01f * std::sin(0.3f * static_cast<float>(k + r));
+      turns.insert(turns.end(), {0, 0, std::sin(half), std::cos(half)});
+    }
+    samplers.push_back({{"input", input}, {"output", accessor(turns.data(), turns.size() * 4, kKeys, 5126, "VEC4")}});
+    channels.push_back({{"sampler", r}, {"target", {{"node", r + 1}, {"path", "rotation"}}}});
+  }
+  j["animations"] = {{{"name", "wave"}, {"samplers", samplers}, {"channels", channels}}};
+  j["buffers"] = {{{"byteLength", bin.size()}}};
+  scene::Bundle bundle;
+  bundle.add("chain.glb", glb(j, bin));
+  return bundle;
+}
+
 std::string obj_vertex_line(double x, double y, double z) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\n", x, y, z);
@@ -231,6 +326,7 @@ const std::vector<HeavyInput>& heavy_inputs() {
       {"m_edge_fan", ".m: n triangles sharing one edge", m_edge_fan, 40000},
       {"stl_strip", "binary STL: a strip of 100 × n quads", stl_strip, 60},
       {"ply_strip", "binary PLY: a strip of 100 × n quads", ply_strip, 60},
+      {"skinned_chain", "glTF: 10n joints in a chain skinning a bar, a clip of 1000n keys", skinned_chain, 100},
   };
   return inputs;
 }
