@@ -7,6 +7,7 @@ import {
   clone, effectiveParams, getPointer, paramsFromHash, paramsToHash, schemaDefaults, setPointer, withPreset,
 } from './params.js';
 import { ApiError, LostServer, RenderLoop } from './render_loop.js';
+import { AnimationPanel } from './animation_panel.js';
 import { SheetPreview } from './sheet_preview.js';
 import { bundlePaths, filesFromDrop, filesFromInput, uploadBundle } from './upload.js';
 
@@ -31,6 +32,7 @@ const studio = {
   params: paramsFromHash(location.hash),
   panel: null,
   sheetPanel: null,
+  animation: null,
   loop: null,
   sheet: null,
   sheetUrl: null,
@@ -73,6 +75,10 @@ function sync() {
   view.style.maxWidth = `${shown.width}px`;
   for (const radio of document.querySelectorAll('#layers input')) radio.checked = radio.value === shown.output;
   syncSheet(shown);
+  if (studio.animation) {
+    studio.animation.sync();
+    studio.animation.showModel(studio.params.model ?? null);
+  }
 }
 
 function change(pointer, value, final) {
@@ -177,7 +183,7 @@ function lostServer(retryAfterSeconds) {
 // ---- models and upload ------------------------------------------------------
 
 function modelLabel(model) {
-  const obj = (model.files ?? []).find((f) => /\.(obj|m)$/i.test(f)) ?? 'model';
+  const obj = (model.files ?? []).find((f) => /\.(obj|m|gltf|glb|stl|ply)$/i.test(f)) ?? 'model';
   return `${obj} · ${model.triangles} triangles · ${model.id.slice(0, 8)}`;
 }
 
@@ -537,6 +543,10 @@ async function start() {
   studio.loop = new RenderLoop({ bodyFor, onImage: showImage, onError: showRenderError });
   installLayers();
   installSheet();
+  studio.animation = new AnimationPanel($('animation'), {
+    get: () => studio.params.animation,
+    set: (animation, final) => change('/animation', animation, final),
+  });
   installUpload();
   installOrbit();
   installOutput();

@@ -9,7 +9,7 @@ import { getPointer, isPlainObject } from './params.js';
 
 // Chosen elsewhere on the page: the model list, the preset menu, scenes
 // (curl or the CLI only), the layer switcher and the sprite-sheet section.
-const HANDLED_ELSEWHERE = new Set(['model', 'preset', 'objects', 'output', 'sheet']);
+const HANDLED_ELSEWHERE = new Set(['model', 'preset', 'objects', 'output', 'sheet', 'animation']);
 // Top-level scalars that belong with a block rather than with the output.
 const GROUP_OF_SCALAR = { ambient: 'lights', light_combine: 'lights' };
 // Ranges this wide (model units up to 1e12) make a useless slider; such a

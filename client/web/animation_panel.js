@@ -1,0 +1,110 @@
+// The animation section: shown only for a model with clips (GET
+// /models/{id} lists them), a clip selector, a time slider over the clip's
+// duration and a play button that steps the time. Its state is the
+// request's `animation` block, so the URL, the copied commands and the
+// sprite sheet see it as any other parameter.
+
+// Steps of the play button per second of the clip's own time.
+const PLAY_STEPS_PER_SECOND = 12;
+
+export class AnimationPanel {
+  // `root` holds #clip-select, #clip-time, #clip-time-label and #clip-play;
+  // `hooks.get()` is the current `animation` (or undefined) and
+  // `hooks.set(animation, final)` replaces it (undefined: rest pose).
+  constructor(root, hooks) {
+    this.root = root;
+    this.hooks = hooks;
+    this.clips = [];
+    this.modelId = null;
+    this.infoCache = new Map();
+    this.timer = null;
+    this.select = root.querySelector('#clip-select');
+    this.slider = root.querySelector('#clip-time');
+    this.label = root.querySelector('#clip-time-label');
+    this.play = root.querySelector('#clip-play');
+    this.select.addEventListener('change', () => this.chooseClip(this.select.value));
+    this.slider.addEventListener('input', () => this.setTime(Number(this.slider.value), false));
+    this.slider.addEventListener('change', () => this.setTime(Number(this.slider.value), true));
+    this.play.addEventListener('click', () => (this.timer ? this.stop() : this.start()));
+  }
+
+  // The model shown changed (or may have): fetch what it has, once per id.
+  async showModel(id) {
+    if (id === this.modelId) return;
+    this.modelId = id;
+    this.stop();
+    let clips = [];
+    if (id) {
+      if (!this.infoCache.has(id)) {
+        const res = await fetch(`/models/${id}`).catch(() => null);
+        const info = res && res.ok ? await res.json().catch(() => null) : null;
+        this.infoCache.set(id, info?.animation?.clips ?? []);
+      }
+      clips = this.infoCache.get(id);
+    }
+    if (id !== this.modelId) return;  // another model was chosen meanwhile
+    this.clips = clips;
+    this.root.hidden = clips.length === 0;
+    this.select.replaceChildren(new Option('rest pose', ''),
+      ...clips.map((c) => new Option(`${c.name} (${c.duration.toFixed(2)} s)`, c.name)));
+    // A clip the model does not have (a URL made for another model) goes.
+    const current = this.hooks.get();
+    if (current && !clips.some((c) => c.name === current.clip)) this.hooks.set(undefined, true);
+    else this.sync();
+  }
+
+  // Shows the state's clip and time.
+  sync() {
+    const current = this.hooks.get();
+    const clip = this.clipNamed(current?.clip);
+    this.select.value = clip ? clip.name : '';
+    this.slider.disabled = !clip;
+    this.play.disabled = !clip;
+    this.slider.max = String(clip ? clip.duration : 1);
+    this.slider.step = String(clip ? Math.max(clip.duration / 200, 0.001) : 0.01);
+    const time = current?.time ?? 0;
+    this.slider.value = String(time);
+    this.label.textContent = clip ? `${time.toFixed(3)} s` : '';
+    this.play.textContent = this.timer ? 'Pause' : 'Play';
+    this.play.setAttribute('aria-pressed', this.timer ? 'true' : 'false');
+  }
+
+  clipNamed(name) {
+    return this.clips.find((c) => c.name === name);
+  }
+
+  chooseClip(name) {
+    this.stop();
+    this.hooks.set(name ? { clip: name, time: 0 } : undefined, true);
+  }
+
+  setTime(time, final) {
+    const current = this.hooks.get();
+    if (!current) return;
+    this.hooks.set({ ...current, time }, final);
+  }
+
+  // Steps the time round the clip's loop; each step asks for a full render
+  // (the render loop drops steps it cannot keep up with).
+  start() {
+    const clip = this.clipNamed(this.hooks.get()?.clip);
+    if (!clip) return;
+    this.timer = setInterval(() => {
+      const current = this.hooks.get();
+      if (!current || !this.clipNamed(current.clip)) {
+        this.stop();
+        return;
+      }
+      const step = 1 / PLAY_STEPS_PER_SECOND;
+      const next = clip.duration > 0 ? ((current.time ?? 0) + step) % clip.duration : 0;
+      this.hooks.set({ ...current, time: Math.round(next * 1000) / 1000 }, true);
+    }, 1000 / PLAY_STEPS_PER_SECOND);
+    this.sync();
+  }
+
+  stop() {
+    if (this.timer) clearInterval(this.timer);
+    this.timer = null;
+    this.sync();
+  }
+}

@@ -1,0 +1,123 @@
+// The page's animation section in a real browser (Debian's chromium through
+// playwright-core, a real toond on 127.0.0.1:0): hidden for a model without
+// clips, shown with a clip selector for Blender's rigged bar, the time
+// slider and the play button posing the render through `animation`, and
+// gone again (with the state's `animation`) for a model without clips.
+//   node animation.test.mjs --toond PATH --exported DIR --artifacts DIR
+// Exit 0: every check passed; 1: a check failed. Screenshots go to --artifacts.
+import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { argument, launchChromium, openPage, startDaemon } from './harness.mjs';
+import { imageStats, rendersShown, waitForFullRender } from './page_actions.mjs';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const { chromium } = await import(path.join(here, 'node_modules/playwright-core/index.mjs')).catch(() => {
+  console.error('playwright-core is not installed: run tests/browser/install.sh');
+  process.exit(1);
+});
+
+const STEP_TIMEOUT_MS = Number(process.env.TOOND_BROWSER_STEP_TIMEOUT_MS || 45000);
+
+const toondBinary = argument('--toond');
+const exported = argument('--exported');
+const artifacts = argument('--artifacts');
+mkdirSync(artifacts, { recursive: true });
+
+let failures = 0;
+function check(condition, what, detail = '') {
+  console.log(`${condition ? 'ok  ' : 'FAIL'} ${what}${detail ? ` (${detail})` : ''}`);
+  if (!condition) failures += 1;
+}
+
+async function uploadRiggedBar(url) {
+  const form = new FormData();
+  for (const name of ['rigged.gltf', 'rigged.bin']) {
+    form.append('file', new Blob([readFileSync(path.join(exported, 'blender', name))]), name);
+  }
+  const res = await fetch(`${url}/models`, { method: 'POST', body: form });
+  if (!res.ok) throw new Error(`upload failed: ${res.status} ${await res.text()}`);
+  return (await res.json()).id;
+}
+
+// The body of the last single render asked for.
+function lastRender(requests) {
+  return requests.filter((r) => !r.url.includes('?')).at(-1)?.body;
+}
+
+const dataDir = mkdtempSync(path.join(tmpdir(), 'toond-animation-'));
+let daemon = null;
+let browser = null;
+const started = Date.now();
+try {
+  daemon = await startDaemon(toondBinary, '127.0.0.1:0', dataDir, STEP_TIMEOUT_MS);
+  const id = await uploadRiggedBar(daemon.url);
+  browser = await launchChromium(chromium);
+  const { page, pageErrors } = await openPage(browser, { width: 1280, height: 900 });
+  const requests = [];
+  page.on('request', (r) => {
+    if (!/\/render(\?|$)/.test(r.url())) return;
+    try { requests.push({ url: r.url(), body: JSON.parse(r.postData() || '{}') }); } catch { /* not JSON */ }
+  });
+  const start = encodeURIComponent(JSON.stringify({ width: 160, height: 160 }));
+  await page.goto(`${daemon.url}/#${start}`);
+  await waitForFullRender(page, 0, STEP_TIMEOUT_MS);
+  check(await page.locator('#animation').isHidden(), 'the demo model (no clips) shows no animation section');
+
+  let rendered = await rendersShown(page);
+  await page.waitForFunction((model) => [...document.querySelectorAll('#model-select option')]
+    .some((o) => o.value === model), id, { timeout: STEP_TIMEOUT_MS });
+  await page.selectOption('#model-select', id);
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  await page.locator('#animation').waitFor({ state: 'visible', timeout: STEP_TIMEOUT_MS });
+  const options = await page.locator('#clip-select option').allTextContents();
+  check(options.length === 3 && /Bend \(1\.00 s\)/.test(options[1]) && /Twist \(0\.50 s\)/.test(options[2]),
+    'a model with clips shows them, with their durations', options.join(', '));
+  const rest = await imageStats(page, '#view');
+
+  rendered = await rendersShown(page);
+  await page.selectOption('#clip-select', 'Bend');
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  check(JSON.stringify(lastRender(requests)?.animation) === JSON.stringify({ clip: 'Bend', time: 0 }),
+    'choosing a clip renders it at time 0', JSON.stringify(lastRender(requests)?.animation));
+
+  rendered = await rendersShown(page);
+  await page.locator('#clip-time').fill('0.5');
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  const half = lastRender(requests)?.animation;
+  check(half?.clip === 'Bend' && half?.time === 0.5, 'the time slider poses the render', JSON.stringify(half));
+  const posed = await imageStats(page, '#view');
+  check(posed.hash !== rest.hash, 'the posed image differs from the rest pose');
+  check(/0\.500 s/.test(await page.textContent('#clip-time-label')), 'the time is shown');
+  check(decodeURIComponent(page.url()).includes('"animation":{"clip":"Bend","time":0.5}'), 'the URL keeps the pose');
+  await page.screenshot({ path: path.join(artifacts, '21-animation-bend.png'), fullPage: true });
+
+  requests.length = 0;
+  await page.click('#clip-play');
+  check(await page.textContent('#clip-play') === 'Pause', 'play turns into pause');
+  await page.waitForFunction(() => Number(document.getElementById('view').dataset.renders) > 0, null,
+    { timeout: STEP_TIMEOUT_MS });
+  await page.waitForTimeout(1500);
+  await page.click('#clip-play');
+  const times = [...new Set(requests.map((r) => r.body.animation?.time).filter((t) => t !== undefined))];
+  check(times.length >= 3, 'playing steps the time and renders each step it can', times.join(', '));
+
+  rendered = await rendersShown(page);
+  await page.selectOption('#model-select', '');
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  await page.waitForFunction(() => document.getElementById('animation').hidden, null, { timeout: STEP_TIMEOUT_MS });
+  await page.waitForFunction(() => !decodeURIComponent(location.hash).includes('animation'), null,
+    { timeout: STEP_TIMEOUT_MS });
+  check(true, 'back on the demo model the section hides and the state drops `animation`');
+  check(pageErrors.length === 0, 'no uncaught errors in the page', pageErrors.join(' | '));
+} catch (e) {
+  check(false, 'the browser test ran to the end', e.stack || String(e));
+} finally {
+  if (browser) await browser.close();
+  if (daemon) daemon.child.kill('SIGKILL');
+  rmSync(dataDir, { recursive: true, force: true });
+}
+
+console.log(`animation test: ${failures} failed, ${((Date.now() - started) / 1000).toFixed(1)} s; screenshots in ${artifacts}`);
+process.exit(failures > 0 ? 1 : 0);
