@@ -1,32 +1,91 @@
 #include "http/animation_pose.h"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 
 #include "request_error.h"
+#include "render/sheet_layout.h"
 #include "scene/clip_sampling.h"
 
 namespace toond::http {
 namespace {
 
-std::size_t find_clip(const scene::Model& model, const render::AnimationParams& animation) {
-  const std::string pointer = "/animation/clip";
+// The index of the clip `name` (or `index` >= 0) in the model, or a 422 at
+// `pointer` naming the clips there are.
+std::size_t find_clip(const scene::Model& model, const std::string& name, int index, const std::string& pointer) {
   if (!model.rig || model.rig->clips.empty()) {
     throw RequestError(422, "unknown_clip", pointer + ": the model has no animation clips", pointer);
   }
   const scene::Rig& rig = *model.rig;
-  if (animation.clip_index >= 0) {
-    if (static_cast<std::size_t>(animation.clip_index) < rig.clips.size()) {
-      return static_cast<std::size_t>(animation.clip_index);
-    }
+  if (index >= 0) {
+    if (static_cast<std::size_t>(index) < rig.clips.size()) return static_cast<std::size_t>(index);
     throw RequestError(422, "unknown_clip",
-                       pointer + ": clip " + std::to_string(animation.clip_index) + " does not exist; the model has " +
+                       pointer + ": clip " + std::to_string(index) + " does not exist; the model has " +
                            std::to_string(rig.clips.size()) + " (" + rig.clip_names() + ")",
                        pointer);
   }
-  if (const std::optional<std::size_t> found = rig.find_clip(animation.clip)) return *found;
+  if (const std::optional<std::size_t> found = rig.find_clip(name)) return *found;
   throw RequestError(422, "unknown_clip",
-                     pointer + ": the model has no clip \"" + animation.clip + "\"; its clips are " + rig.clip_names(),
+                     pointer + ": the model has no clip \"" + name + "\"; its clips are " + rig.clip_names(),
                      pointer);
+}
+
+int sheet_clip_frames(const render::SheetClip& clip, const std::string& entry) {
+  if (clip.frames && clip.fps) {
+    throw RequestError(400, "invalid_parameter", entry + "/fps: give frames or fps, not both", entry + "/fps");
+  }
+  if (clip.frames) return *clip.frames;
+  if (!clip.fps) return 8;
+  const double frames = std::max(1.0, std::round(clip.duration * *clip.fps));
+  if (frames > 64) {
+    throw RequestError(400, "invalid_parameter",
+                       entry + "/fps: " + std::to_string(*clip.fps) + " frames a second make " +
+                           std::to_string(static_cast<long long>(frames)) + " frames of \"" + clip.name +
+                           "\" (" + std::to_string(clip.duration) + " s), more than 64",
+                       entry + "/fps");
+  }
+  return static_cast<int>(frames);
+}
+
+// Bounds and extreme points that hold every clip's framing.
+scene::ClipFraming framing_of_all(ClipFramings& framings, const render::JobObject& object,
+                                  const std::vector<render::SheetClip>& clips) {
+  scene::ClipFraming all;
+  for (std::size_t c = 0; c < clips.size(); ++c) {
+    const std::shared_ptr<const scene::ClipFraming> one = framings.get(object.model_key, *object.model, clips[c].index);
+    all.bounds = c == 0 ? one->bounds
+                        : scene::Bounds{glm::min(all.bounds.min, one->bounds.min), glm::max(all.bounds.max, one->bounds.max)};
+    all.extremes.insert(all.extremes.end(), one->extremes.begin(), one->extremes.end());
+  }
+  return all;
+}
+
+std::vector<std::shared_ptr<const scene::PosedVertices>> pose_sheet_frames(ClipFramings& framings,
+                                                                           render::RenderJob& job) {
+  const render::SheetParams& sheet = *job.params.sheet;
+  render::JobObject& object = job.objects.front();
+  const scene::Model& model = *object.model;
+  const scene::ClipFraming framing = framing_of_all(framings, object, sheet.clips);
+  const render::SheetLayout layout = render::layout_sheet(sheet, job.params.width, job.params.height);
+  // Every direction of one time shares one pose.
+  std::map<std::pair<int, double>, std::shared_ptr<const scene::PosedVertices>> by_time;
+  std::vector<std::shared_ptr<const scene::PosedVertices>> poses;
+  for (const render::SheetFrame& frame : layout.frames) {
+    auto& pose = by_time[{frame.clip, frame.time}];
+    if (!pose) {
+      const scene::Rig& rig = *model.rig;
+      const scene::Clip& clip = rig.clips[sheet.clips[static_cast<std::size_t>(frame.clip)].index];
+      auto posed = std::make_shared<scene::PosedVertices>(
+          scene::pose_vertices(model.mesh, rig, scene::pose_nodes(rig, &clip, frame.time)));
+      posed->bounds = framing.bounds;
+      posed->extremes = framing.extremes;
+      pose = std::move(posed);
+    }
+    poses.push_back(pose);
+  }
+  object.pose = poses.front();
+  return poses;
 }
 
 }  // namespace
@@ -51,8 +110,41 @@ std::shared_ptr<const scene::ClipFraming> ClipFramings::get(const std::string& m
   return framing;
 }
 
-void pose_for_animation(ClipFramings& framings, render::RenderJob& job) {
-  if (!job.params.animation) return;
+void resolve_sheet_clips(render::RenderJob& job) {
+  if (!job.params.sheet || job.params.sheet->clips.empty()) return;
+  render::SheetParams& sheet = *job.params.sheet;
+  if (!job.params.objects.empty()) {
+    throw RequestError(400, "invalid_parameter",
+                       "/sheet/animation: a scene of `objects` cannot be animated; give `model`", "/sheet/animation");
+  }
+  if (job.params.animation) {
+    throw RequestError(400, "invalid_parameter",
+                       "/animation: an animated sheet takes its clips from sheet.animation; leave `animation` out",
+                       "/animation");
+  }
+  const scene::Model& model = *job.objects.front().model;
+  std::size_t frames = 0;
+  for (std::size_t i = 0; i < sheet.clips.size(); ++i) {
+    render::SheetClip& clip = sheet.clips[i];
+    const std::string entry = "/sheet/animation" + (sheet.clip_list ? "/" + std::to_string(i) : std::string());
+    clip.index = find_clip(model, clip.clip, clip.clip_index, entry + "/clip");
+    clip.name = model.rig->clips[clip.index].name;
+    clip.duration = model.rig->clips[clip.index].duration;
+    clip.frame_count = sheet_clip_frames(clip, entry);
+    frames += static_cast<std::size_t>(clip.frame_count) * sheet.pitches_deg.size() * static_cast<std::size_t>(sheet.frames);
+  }
+  if (frames > kMaxAnimatedSheetFrames) {
+    throw RequestError(400, "invalid_parameter",
+                       "/sheet/animation: the sheet would have " + std::to_string(frames) + " frames (clips × pitches × " +
+                           "directions × frames per clip), more than " + std::to_string(kMaxAnimatedSheetFrames),
+                       "/sheet/animation");
+  }
+}
+
+std::vector<std::shared_ptr<const scene::PosedVertices>> pose_for_animation(ClipFramings& framings,
+                                                                            render::RenderJob& job) {
+  if (job.params.sheet && !job.params.sheet->clips.empty()) return pose_sheet_frames(framings, job);
+  if (!job.params.animation) return {};
   if (!job.params.objects.empty()) {
     throw RequestError(400, "invalid_parameter",
                        "/animation: a scene of `objects` cannot be animated; give `model` with `animation`",
@@ -60,7 +152,8 @@ void pose_for_animation(ClipFramings& framings, render::RenderJob& job) {
   }
   render::JobObject& object = job.objects.front();
   const scene::Model& model = *object.model;
-  const std::size_t clip_index = find_clip(model, *job.params.animation);
+  const render::AnimationParams& animation = *job.params.animation;
+  const std::size_t clip_index = find_clip(model, animation.clip, animation.clip_index, "/animation/clip");
   const scene::Rig& rig = *model.rig;
   const scene::Clip& clip = rig.clips[clip_index];
   const double time = scene::clip_time(clip, job.params.animation->time);
@@ -70,6 +163,7 @@ void pose_for_animation(ClipFramings& framings, render::RenderJob& job) {
   posed->bounds = framing->bounds;
   posed->extremes = framing->extremes;
   object.pose = std::move(posed);
+  return {};
 }
 
 }  // namespace toond::http

@@ -29,9 +29,24 @@ class ClipFramings {
   std::list<Entry> recent_;  // most recently used first
 };
 
+// The most frames an animated sheet may have (clips × pitches × directions
+// × frames per clip).
+inline constexpr std::size_t kMaxAnimatedSheetFrames = 1024;
+
+// Looks each clip of an animated sheet (`sheet.animation`) up in the job's
+// model and sets its index, name, duration and frame count. RequestError
+// 422 `unknown_clip` at /sheet/animation[/N]/clip when the model has no
+// such clip; 400 for a scene of objects, for a top-level `animation` beside
+// it, for frames and fps together, and beyond kMaxAnimatedSheetFrames.
+void resolve_sheet_clips(render::RenderJob& job);
+
 // Poses the job's one object as job.params.animation asks (nothing when it
 // asks nothing). RequestError 400 when the job is a scene of objects, 422
-// (path /animation/clip) when the model has no such clip.
-void pose_for_animation(ClipFramings& framings, render::RenderJob& job);
+// (path /animation/clip) when the model has no such clip. For an animated
+// sheet: the pose of each of its frames, by frame index, all framed over
+// every pose of every clip of the sheet (the object itself gets the first
+// frame's, whose framing the atlas then uses); otherwise nothing.
+std::vector<std::shared_ptr<const scene::PosedVertices>> pose_for_animation(ClipFramings& framings,
+                                                                            render::RenderJob& job);
 
 }  // namespace toond::http

@@ -50,6 +50,19 @@ AnimationParams animation_of(const json& a) {
   return animation;
 }
 
+SheetClip sheet_clip_of(const json& a) {
+  SheetClip clip;
+  const json& name = a.at("clip");
+  if (name.is_string()) {
+    clip.clip = name.get<std::string>();
+  } else {
+    clip.clip_index = name.get<int>();
+  }
+  if (a.contains("frames")) clip.frames = a.at("frames").get<int>();
+  if (a.contains("fps")) clip.fps = a.at("fps").get<double>();
+  return clip;
+}
+
 // The `sheet` block with its absent fields taken from the camera: a sheet
 // turns the view the request already has.
 SheetParams sheet_of(const json& s, const CameraParams& camera) {
@@ -67,6 +80,11 @@ SheetParams sheet_of(const json& s, const CameraParams& camera) {
   if (s.contains("pixel_art")) sheet.pixel_art = pixel_art_of(s.at("pixel_art"));
   sheet.animate = s.at("animate").get<bool>();
   sheet.frame_ms = s.at("frame_ms").get<int>();
+  if (s.contains("animation")) {
+    const json& a = s.at("animation");
+    sheet.clip_list = a.is_array();
+    for (const json& entry : a.is_array() ? a : json::array({a})) sheet.clips.push_back(sheet_clip_of(entry));
+  }
   return sheet;
 }
 

@@ -2,7 +2,9 @@
 // `params` part) to upload and render in one call. With `sheet`: a sprite
 // sheet with its atlas in a tEXt chunk, or (?atlas=json) the atlas alone, or
 // (sheet.animate) its frames as an animated WebP.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <sstream>
 
@@ -194,7 +196,6 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     const nlohmann::json completed = schema.validate_and_complete(proto::Presets::builtin().expand(request));
     job.params = render_params_from_wire(completed);
     check_sheet_params(job.params);
-    check_render_budget(job.params, context.limits.render);
     if (!job.params.objects.empty()) {
       for (std::size_t i = 0; i < job.params.objects.size(); ++i) {
         const render::SceneObject& object = job.params.objects[i];
@@ -221,8 +222,15 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
       job.objects.push_back(std::move(o));
     }
 
+    // An animated sheet's size follows its clips' lengths: they are looked
+    // up before the sheet is held to the budget.
+    resolve_sheet_clips(job);
+    check_render_budget(job.params, context.limits.render);
     const OutputDescription output = describe_output(job);
     load_bundle_images(context, job);
+    // Posed before the atlas, which frames the sheet as its frames are.
+    const std::vector<std::shared_ptr<const scene::PosedVertices>> sheet_poses =
+        pose_for_animation(context.clip_framings, job);
     const bool atlas_only = wants_atlas_only(req, job.params);
     image::PngOptions png_options;
     png_options.compression_level = job.params.png_compression;
@@ -243,12 +251,23 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     if (job.params.sheet && job.params.sheet->animate) {
       animation.emplace();
       animation->frame_ms = job.params.sheet->frame_ms;
+      // An animated sheet's frames show as long as the clip's own: whole
+      // milliseconds that add up as the exact times do (83, 84, 83 ms for
+      // 1/12 s), so a long loop does not drift.
+      if (!job.params.sheet->clips.empty()) {
+        double elapsed = 0;
+        for (const render::SheetFrame& frame : layout->frames) {
+          const double next = elapsed + frame.duration_ms;
+          animation->durations_ms.push_back(
+              std::max(1, static_cast<int>(std::lround(next)) - static_cast<int>(std::lround(elapsed))));
+          elapsed = next;
+        }
+      }
     }
     // Completed parameters name content-addressed models (and bundle files
     // inside them): they decide every byte of the PNG.
     const std::string cache_key = completed.dump();
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
-    pose_for_animation(context.clip_framings, job);
 
     const RenderPrice price = admit_by_price(context, job, req);
     const auto submitted = Clock::now();
@@ -258,7 +277,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     render::RenderOutput out;
     try {
       if (layout) {
-        out = render_sheet(context, job, *layout, deadline);
+        out = render_sheet(context, job, *layout, sheet_poses, deadline);
       } else {
         job.deadline = deadline;
         const auto waited = wait_limit(job, deadline);

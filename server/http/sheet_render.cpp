@@ -90,18 +90,26 @@ render::SceneFrame scene_of(const render::RenderJob& job) {
   std::vector<render::ScenePart> parts;
   for (const render::JobObject& o : job.objects) {
     const scene::Mesh& mesh = o.model->mesh;
-    parts.push_back({mesh.bounds, mesh.origin, o.transform, mesh.extremes});
+    // A posed object is framed as its pose says (a whole clip's reach).
+    if (o.pose) {
+      parts.push_back({o.pose->bounds, mesh.origin, o.transform, o.pose->extremes});
+    } else {
+      parts.push_back({mesh.bounds, mesh.origin, o.transform, mesh.extremes});
+    }
   }
   return render::frame_scene(parts);
 }
 
 render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJob& job,
-                                  const render::SheetLayout& layout, std::chrono::steady_clock::time_point deadline) {
+                                  const render::SheetLayout& layout,
+                                  const std::vector<std::shared_ptr<const scene::PosedVertices>>& poses,
+                                  std::chrono::steady_clock::time_point deadline) {
   const std::optional<render::SheetParams::PixelArt>& pixel_art = job.params.sheet->pixel_art;
   std::vector<render::RenderJob> frames;
   for (const render::SheetFrame& frame : layout.frames) {
     render::RenderJob one;
     one.objects = job.objects;
+    if (!poses.empty()) one.objects.front().pose = poses[static_cast<std::size_t>(frame.index)];
     one.params = render::frame_params(job.params, layout, frame);
     if (pixel_art) one.params = render::pixel_art_frame_params(std::move(one.params), pixel_art->scale);
     one.deadline = deadline;

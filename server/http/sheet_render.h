@@ -3,6 +3,7 @@
 // queued together (RenderService::submit_all), each a render of its own
 // view under the framing shared by all (render/sheet_layout.h).
 #include <chrono>
+#include <memory>
 #include <vector>
 
 #include "http/service_context.h"
@@ -23,8 +24,12 @@ render::SceneFrame scene_of(const render::RenderJob& job);
 // when any frame drew both), `plan` and `samples` are the frames' own.
 // With `sheet.pixel_art` each frame is drawn at 1/scale, all are quantised to
 // one palette (the given one, or one computed over every frame), then blown
-// up into their tiles; the time that takes is the timing `pixel_art`.
+// up into their tiles; the time that takes is the timing `pixel_art`. An
+// animated sheet draws frame i in poses[i] (http/animation_pose.h); empty
+// `poses`: every frame in the job's own.
 render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJob& job,
-                                  const render::SheetLayout& layout, std::chrono::steady_clock::time_point deadline);
+                                  const render::SheetLayout& layout,
+                                  const std::vector<std::shared_ptr<const scene::PosedVertices>>& poses,
+                                  std::chrono::steady_clock::time_point deadline);
 
 }  // namespace toond::http

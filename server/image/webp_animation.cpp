@@ -51,6 +51,9 @@ class Data {
 
 std::string encode_webp_animation(std::span<const Image> frames, const WebpAnimationOptions& options) {
   if (frames.empty()) throw std::invalid_argument("an animation needs at least one frame");
+  if (!options.durations_ms.empty() && options.durations_ms.size() != frames.size()) {
+    throw std::invalid_argument("an animation needs one duration per frame");
+  }
   const int width = frames.front().width;
   const int height = frames.front().height;
 
@@ -72,7 +75,8 @@ std::string encode_webp_animation(std::span<const Image> frames, const WebpAnima
   config.exact = 1;
 
   int timestamp_ms = 0;
-  for (const Image& frame : frames) {
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const Image& frame = frames[i];
     if (frame.width != width || frame.height != height) {
       throw std::invalid_argument("the frames of an animation must all have the same size");
     }
@@ -86,7 +90,7 @@ std::string encode_webp_animation(std::span<const Image> frames, const WebpAnima
     if (!WebPAnimEncoderAdd(encoder.get(), picture.get(), timestamp_ms, &config)) {
       fail(encoder.get(), "cannot add a frame");
     }
-    timestamp_ms += options.frame_ms;
+    timestamp_ms += options.durations_ms.empty() ? options.frame_ms : options.durations_ms[i];
   }
   // A last call without a frame gives the last frame its duration.
   if (!WebPAnimEncoderAdd(encoder.get(), nullptr, timestamp_ms, nullptr)) fail(encoder.get(), "cannot end");

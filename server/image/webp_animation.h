@@ -4,6 +4,7 @@
 // turntable any browser plays.
 #include <span>
 #include <string>
+#include <vector>
 
 #include "image/image.h"
 
@@ -11,6 +12,9 @@ namespace toond::image {
 
 struct WebpAnimationOptions {
   int frame_ms = 100;  // how long each frame shows
+  // Per frame, how long it shows (an animated sheet's clip frames);
+  // empty: frame_ms each. Must then have one entry per frame.
+  std::vector<int> durations_ms;
   // libwebp's lossless effort, 0 (fastest) to 9 (smallest); every level
   // decodes to the same pixels. 0: a 24-frame 512² turntable of the demo
   // model encodes in 64 ms to 394 KB, against 317 ms and 342 KB at 1 (one

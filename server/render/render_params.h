@@ -56,6 +56,20 @@ struct AnimationParams {
   double time = 0;
 };
 
+// One clip of an animated sheet (`sheet.animation`): as asked, then, once
+// the HTTP layer has looked it up in the model, resolved.
+struct SheetClip {
+  std::string clip;  // by name; or
+  int clip_index = -1;  // by index (>= 0)
+  std::optional<int> frames;
+  std::optional<double> fps;
+  // Resolved (http/animation_pose.h):
+  std::size_t index = 0;  // into the model's Rig::clips
+  std::string name;
+  double duration = 0;  // seconds
+  int frame_count = 0;  // columns of its rows
+};
+
 // A sprite sheet (the `sheet` block), with every absent field resolved:
 // frames at yaw_start + i × yaw_step, for each pitch in turn.
 struct SheetParams {
@@ -76,6 +90,10 @@ struct SheetParams {
   std::optional<PixelArt> pixel_art;
   bool animate = false;  // answer an animated WebP of the frames instead of the sheet's PNG
   int frame_ms = 100;    // how long each animation frame shows
+  // An animated sheet: per clip, per pitch, a row per direction (`frames`
+  // yaws) of the clip's frames. Empty: a turntable.
+  std::vector<SheetClip> clips;
+  bool clip_list = false;  // sheet.animation was a list (error paths name the entry)
 };
 
 enum class LightKind { Directional, Point };

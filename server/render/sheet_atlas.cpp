@@ -30,6 +30,36 @@ json framing_of(const CameraParams& params, const CameraSetup& camera) {
   return framing;
 }
 
+// Aseprite's tags: one per clip, pitch and direction, over its row's frames
+// ("walk_45", "walk_45_p30" when the sheet has several pitches).
+json frame_tags(const SheetLayout& layout, const SheetParams& sheet) {
+  json tags = json::array();
+  const auto tag_name = [&](const SheetFrame& frame) {
+    char angle[32];
+    std::snprintf(angle, sizeof angle, "%g", frame.yaw_deg);
+    std::string name = sheet.clips[static_cast<std::size_t>(frame.clip)].name + "_" + angle;
+    if (sheet.pitches_deg.size() > 1) {
+      std::snprintf(angle, sizeof angle, "%g", frame.pitch_deg);
+      name += std::string("_p") + angle;
+    }
+    return name;
+  };
+  for (std::size_t i = 0; i < layout.frames.size();) {
+    const SheetFrame& first = layout.frames[i];
+    std::size_t end = i;
+    while (end < layout.frames.size() && layout.frames[end].y == first.y) ++end;
+    tags.push_back({{"name", tag_name(first)},
+                    {"from", first.index},
+                    {"to", layout.frames[end - 1].index},
+                    {"direction", "forward"},
+                    {"clip", sheet.clips[static_cast<std::size_t>(first.clip)].name},
+                    {"yaw", first.yaw_deg},
+                    {"pitch", first.pitch_deg}});
+    i = end;
+  }
+  return tags;
+}
+
 }  // namespace
 
 json sheet_atlas(const SheetLayout& layout, const RenderParams& params, const SceneFrame& scene,
@@ -55,6 +85,12 @@ json sheet_atlas(const SheetLayout& layout, const RenderParams& params, const Sc
         {"yaw", frame.yaw_deg},
         {"pitch", frame.pitch_deg},
     };
+    if (frame.clip >= 0) {
+      json& entry = frames[frame_name(frame.index)];
+      entry["clip"] = params.sheet->clips[static_cast<std::size_t>(frame.clip)].name;
+      entry["time"] = frame.time;
+      entry["duration"] = frame.duration_ms;
+    }
   }
   const SheetParams& sheet = *params.sheet;
   json meta = {
@@ -73,6 +109,7 @@ json sheet_atlas(const SheetLayout& layout, const RenderParams& params, const Sc
       {"pitches", sheet.pitches_deg},
       {"camera", framing},
   };
+  if (!sheet.clips.empty()) meta["frameTags"] = frame_tags(layout, sheet);
   return {{"frames", frames}, {"meta", meta}};
 }
 

@@ -13,9 +13,45 @@ double normalised_yaw(double deg) {
   return wrapped < 0.0 ? wrapped + 360.0 : wrapped;
 }
 
+SheetLayout layout_clips(const SheetParams& sheet, int tile_width, int tile_height) {
+  SheetLayout layout;
+  layout.tile_width = tile_width;
+  layout.tile_height = tile_height;
+  layout.padding = sheet.padding;
+  for (const SheetClip& clip : sheet.clips) layout.columns = std::max(layout.columns, clip.frame_count);
+  int row = 0;
+  int index = 0;
+  for (std::size_t c = 0; c < sheet.clips.size(); ++c) {
+    const SheetClip& clip = sheet.clips[c];
+    const double step = clip.duration / clip.frame_count;
+    for (const double pitch : sheet.pitches_deg) {
+      for (int d = 0; d < sheet.frames; ++d, ++row) {
+        for (int k = 0; k < clip.frame_count; ++k) {
+          SheetFrame frame;
+          frame.index = index++;
+          frame.x = k * (tile_width + sheet.padding);
+          frame.y = row * (tile_height + sheet.padding);
+          frame.yaw_deg = normalised_yaw(sheet.yaw_start_deg + d * sheet.yaw_step_deg);
+          frame.pitch_deg = pitch;
+          frame.clip = static_cast<int>(c);
+          frame.time = k * step;
+          frame.duration_ms = clip.duration > 0.0 ? step * 1000.0 : sheet.frame_ms;
+          frame.direction = d;
+          layout.frames.push_back(frame);
+        }
+      }
+    }
+  }
+  layout.rows = row;
+  layout.width = layout.columns * tile_width + (layout.columns - 1) * sheet.padding;
+  layout.height = layout.rows * tile_height + (layout.rows - 1) * sheet.padding;
+  return layout;
+}
+
 }  // namespace
 
 SheetLayout layout_sheet(const SheetParams& sheet, int tile_width, int tile_height) {
+  if (!sheet.clips.empty()) return layout_clips(sheet, tile_width, tile_height);
   SheetLayout layout;
   layout.tile_width = tile_width;
   layout.tile_height = tile_height;

@@ -14,6 +14,12 @@ struct SheetFrame {
   int y = 0;
   double yaw_deg = 0;    // in [0, 360)
   double pitch_deg = 0;
+  // An animated sheet's frame: which of SheetParams::clips, at which time
+  // (seconds), shown for how long, from which direction (0 .. frames − 1).
+  int clip = -1;  // -1: a turntable frame
+  double time = 0;
+  double duration_ms = 0;
+  int direction = 0;
 };
 
 struct SheetLayout {
@@ -28,7 +34,9 @@ struct SheetLayout {
 };
 
 // Pitch by pitch, frames fill rows of `columns` tiles from the top left; a
-// pitch's last row may be short, and the next pitch starts a new row.
+// pitch's last row may be short, and the next pitch starts a new row. An
+// animated sheet (resolved clips) has instead, clip by clip and pitch by
+// pitch, a row per direction of the clip's frames at k · duration / frames.
 SheetLayout layout_sheet(const SheetParams& sheet, int tile_width, int tile_height);
 
 // The parameters of one frame's render: the sheet's own, turned to the

@@ -59,11 +59,12 @@ async function shot(page, name) {
 // edits it: a number's own pointer, a vector's components, a colour's array
 // (plus its alpha). Arrays of objects are looked at through item 0.
 // `objects` (multi-model scenes) and `sheet` (sprite sheets) are not edited
-// on this page.
+// on this page; `animation` is, by the animation section, which only a
+// model with clips shows (animation.test.mjs).
 function numericLeaves(schema, pointer = '', out = []) {
   if (schema.type === 'object' && schema.properties) {
     for (const [key, sub] of Object.entries(schema.properties)) {
-      if (pointer === '' && (key === 'objects' || key === 'sheet')) continue;
+      if (pointer === '' && ['objects', 'sheet', 'animation'].includes(key)) continue;
       numericLeaves(sub, `${pointer}/${key}`, out);
     }
   } else if (schema.type === 'array' && schema.items?.type === 'object') {

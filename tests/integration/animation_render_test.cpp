@@ -9,6 +9,8 @@
 #include <string>
 
 #include "image/png_codec.h"
+#include "support/golden_compare.h"
+#include "support/webp_frames.h"
 #include "support/shared_models.h"
 #include "test_client.h"
 
@@ -19,6 +21,18 @@ using json = nlohmann::json;
 
 class AnimatedModel : public SharedDaemonTest {
  protected:
+  static httplib::Client daemon_client() { return daemon().client(); }
+  // The atlas alone (?atlas=json) of a sheet request that must succeed.
+  static json sheet_atlas(const json& params) {
+    auto client = daemon_client();
+    const auto res = post_json(client, "/render?atlas=json", params);
+    if (!res || res->status != 200) {
+      ADD_FAILURE() << (res ? std::to_string(res->status) + ": " + res->body : "no answer");
+      return json::object();
+    }
+    return json::parse(res->body);
+  }
+
   static json upload() {
     auto client = daemon().client();
     const auto res = upload_files(client, TOOND_EXPORTED_DIR "/blender", {"rigged.gltf", "rigged.bin"});
@@ -152,6 +166,100 @@ TEST_F(AnimatedModel, TheCliListsTheClipsAndRendersAPose) {
                                    "--server", daemon().url()});
   ASSERT_EQ(render.status, 0) << render.err;
   EXPECT_EQ(image::decode_png(read_file(png)).rgba, pose(0.25).rgba);
+}
+
+// ---- animated sheets -------------------------------------------------------
+
+TEST_F(AnimatedModel, AnAnimatedSheetHasARowPerDirectionAndAColumnPerFrame) {
+  const json sheet = {{"frames", 4},
+                      {"animation", {{{"clip", "Bend"}, {"frames", 8}}, {{"clip", "Twist"}, {"fps", 12}}}}};
+  const json params = {{"model", id()}, {"width", 48}, {"height", 48}, {"sheet", sheet}};
+  const json atlas = sheet_atlas(params);
+  // Bend: 4 rows of 8 frames; Twist (0.5 s at 12 fps): 4 rows of 6.
+  ASSERT_EQ(atlas["frames"].size(), 4u * 8u + 4u * 6u);
+  EXPECT_EQ(atlas["meta"]["size"], json({{"w", 8 * 48}, {"h", 8 * 48}}));
+  const json& f9 = atlas["frames"]["frame_009"];  // Bend, second direction, second frame
+  EXPECT_EQ(f9["clip"], "Bend");
+  EXPECT_DOUBLE_EQ(f9["time"].get<double>(), 0.125);
+  EXPECT_DOUBLE_EQ(f9["duration"].get<double>(), 125.0);
+  EXPECT_EQ(f9["frame"]["x"], 48);
+  EXPECT_EQ(f9["frame"]["y"], 48);
+  const json& twist = atlas["frames"]["frame_033"];  // Twist, first direction, second frame
+  EXPECT_EQ(twist["clip"], "Twist");
+  EXPECT_NEAR(twist["time"].get<double>(), 0.5 / 6, 1e-12);
+  EXPECT_NEAR(twist["duration"].get<double>(), 500.0 / 6, 1e-9);
+  EXPECT_EQ(twist["frame"]["y"], 4 * 48);
+  // Aseprite tags: one per clip and direction, over its row.
+  const json& tags = atlas["meta"]["frameTags"];
+  ASSERT_EQ(tags.size(), 8u);
+  EXPECT_EQ(tags[1]["name"], "Bend_" + std::to_string(static_cast<int>(tags[1]["yaw"].get<double>())));
+  EXPECT_EQ(tags[1]["from"], 8);
+  EXPECT_EQ(tags[1]["to"], 15);
+  EXPECT_EQ(tags[1]["direction"], "forward");
+  EXPECT_EQ(tags[4]["clip"], "Twist");
+  EXPECT_EQ(tags[4]["from"], 32);
+  EXPECT_EQ(tags[4]["to"], 37);
+}
+
+TEST_F(AnimatedModel, EachTileOfAnAnimatedSheetIsTheSingleRenderOfItsPoseAndView) {
+  const json params = {{"model", id()},
+                       {"width", 64},
+                       {"height", 64},
+                       {"sheet", {{"frames", 3}, {"animation", {{"clip", "Bend"}, {"frames", 4}}}}}};
+  auto client = daemon_client();
+  const auto res = post_json(client, "/render", params);
+  ASSERT_TRUE(res && res->status == 200) << (res ? res->body : "");
+  const image::Image sheet = image::decode_png(res->body);
+  const json atlas = sheet_atlas(params);
+  const double distance = atlas["meta"]["camera"]["distance"];
+  ASSERT_EQ(atlas["frames"].size(), 12u);
+  for (const auto& [name, frame] : atlas["frames"].items()) {
+    const image::Image single =
+        render_ok(client, {{"model", id()},
+                           {"width", 64},
+                           {"height", 64},
+                           {"camera", {{"yaw", frame["yaw"]}, {"pitch", frame["pitch"]}, {"distance", distance}}},
+                           {"animation", {{"clip", frame["clip"]}, {"time", frame["time"]}}}});
+    const GoldenDiff diff = compare_golden(single, tile_of(sheet, frame["frame"]));
+    EXPECT_TRUE(diff.passes()) << name << ": " << diff.pixels_over << " pixels differ, largest " << diff.largest;
+  }
+}
+
+TEST_F(AnimatedModel, AnAnimatedWebpPlaysTheClipsWithTheirOwnFrameTimes) {
+  // Twist lasts 0.5 s: 6 frames at 12 per second end at 83, 167, 250, ...
+  // ms of each direction's loop (rounded as the exact times add up).
+  const json params = {
+      {"model", id()},
+      {"width", 32},
+      {"height", 32},
+      {"sheet", {{"frames", 2}, {"animate", true}, {"animation", {{"clip", "Twist"}, {"fps", 12}}}}}};
+  auto client = daemon_client();
+  const auto res = post_json(client, "/render", params);
+  ASSERT_TRUE(res && res->status == 200) << (res ? res->body : "");
+  EXPECT_EQ(res->get_header_value("Content-Type"), "image/webp");
+  const WebpFrames webp = decode_webp_frames(res->body);
+  ASSERT_EQ(webp.end_ms.size(), 12u);
+  const std::vector<int> expected = {83, 167, 250, 333, 417, 500, 583, 667, 750, 833, 917, 1000};
+  EXPECT_EQ(webp.end_ms, expected);
+}
+
+TEST_F(AnimatedModel, AnAnimatedSheetRefusesWhatCannotBe) {
+  auto client = daemon_client();
+  const auto code_and_path = [&](const json& sheet, const json& extra = json::object()) {
+    json params = {{"model", id()}, {"width", 32}, {"height", 32}, {"sheet", sheet}};
+    params.update(extra);
+    const auto res = post_json(client, "/render", params);
+    return std::pair{res ? res->status : 0, res ? error_of(res)["path"].get<std::string>() : ""};
+  };
+  EXPECT_EQ(code_and_path({{"animation", {{"clip", "Walk"}}}}), std::pair(422, std::string("/sheet/animation/clip")));
+  EXPECT_EQ(code_and_path({{"animation", {{{"clip", "Bend"}}, {{"clip", 9}}}}}),
+            std::pair(422, std::string("/sheet/animation/1/clip")));
+  EXPECT_EQ(code_and_path({{"animation", {{"clip", "Bend"}, {"frames", 4}, {"fps", 10}}}}),
+            std::pair(400, std::string("/sheet/animation/fps")));
+  EXPECT_EQ(code_and_path({{"animation", {{"clip", "Bend"}}}}, {{"animation", {{"clip", "Bend"}}}}),
+            std::pair(400, std::string("/animation")));
+  EXPECT_EQ(code_and_path({{"frames", 64}, {"pitches", {0, 10, 20}}, {"animation", {{"clip", "Bend"}, {"frames", 64}}}}),
+            std::pair(400, std::string("/sheet/animation")));
 }
 
 }  // namespace
