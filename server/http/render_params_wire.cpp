@@ -38,26 +38,25 @@ SheetParams::PixelArt pixel_art_of(const json& a) {
   return art;
 }
 
+// A `clip` field: a name, or (a number) an index.
+void read_clip(const json& clip, std::string& name, int& index) {
+  if (clip.is_string()) {
+    name = clip.get<std::string>();
+  } else {
+    index = clip.get<int>();
+  }
+}
+
 AnimationParams animation_of(const json& a) {
   AnimationParams animation;
-  const json& clip = a.at("clip");
-  if (clip.is_string()) {
-    animation.clip = clip.get<std::string>();
-  } else {
-    animation.clip_index = clip.get<int>();
-  }
+  read_clip(a.at("clip"), animation.clip, animation.clip_index);
   animation.time = a.at("time").get<double>();
   return animation;
 }
 
 SheetClip sheet_clip_of(const json& a) {
   SheetClip clip;
-  const json& name = a.at("clip");
-  if (name.is_string()) {
-    clip.clip = name.get<std::string>();
-  } else {
-    clip.clip_index = name.get<int>();
-  }
+  read_clip(a.at("clip"), clip.clip, clip.clip_index);
   if (a.contains("frames")) clip.frames = a.at("frames").get<int>();
   if (a.contains("fps")) clip.fps = a.at("fps").get<double>();
   return clip;

@@ -9,14 +9,10 @@ import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { argument, launchChromium, openPage, startDaemon } from './harness.mjs';
+import { argument, checker, launchChromium, loadChromium, openPage, startDaemon } from './harness.mjs';
 import { imageStats, rendersShown, waitForFullRender } from './page_actions.mjs';
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const { chromium } = await import(path.join(here, 'node_modules/playwright-core/index.mjs')).catch(() => {
-  console.error('playwright-core is not installed: run tests/browser/install.sh');
-  process.exit(1);
-});
+const chromium = await loadChromium(path.dirname(fileURLToPath(import.meta.url)));
 
 const STEP_TIMEOUT_MS = Number(process.env.TOOND_BROWSER_STEP_TIMEOUT_MS || 45000);
 
@@ -25,11 +21,7 @@ const exported = argument('--exported');
 const artifacts = argument('--artifacts');
 mkdirSync(artifacts, { recursive: true });
 
-let failures = 0;
-function check(condition, what, detail = '') {
-  console.log(`${condition ? 'ok  ' : 'FAIL'} ${what}${detail ? ` (${detail})` : ''}`);
-  if (!condition) failures += 1;
-}
+const { check, failed } = checker();
 
 async function uploadRiggedBar(url) {
   const form = new FormData();
@@ -119,5 +111,5 @@ try {
   rmSync(dataDir, { recursive: true, force: true });
 }
 
-console.log(`animation test: ${failures} failed, ${((Date.now() - started) / 1000).toFixed(1)} s; screenshots in ${artifacts}`);
-process.exit(failures > 0 ? 1 : 0);
+console.log(`animation test: ${failed()} failed, ${((Date.now() - started) / 1000).toFixed(1)} s; screenshots in ${artifacts}`);
+process.exit(failed() > 0 ? 1 : 0);

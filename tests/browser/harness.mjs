@@ -1,6 +1,7 @@
 // What the page tests share: their command line, the toond under test and
 // the headless chromium that drives the page.
 import { spawn } from 'node:child_process';
+import path from 'node:path';
 import { createInterface } from 'node:readline';
 
 // Starts toond and waits for its "listening on <url>" line; resolves to
@@ -47,4 +48,27 @@ export function argument(name) {
   const i = process.argv.indexOf(name);
   if (i < 0 || i + 1 >= process.argv.length) throw new Error(`missing ${name}`);
   return process.argv[i + 1];
+}
+
+// playwright-core's chromium from the tests' own node_modules; exits 1 with
+// the way to install it when it is missing.
+export async function loadChromium(testFolder) {
+  const { chromium } = await import(path.join(testFolder, 'node_modules/playwright-core/index.mjs')).catch(() => {
+    console.error('playwright-core is not installed: run tests/browser/install.sh');
+    process.exit(1);
+  });
+  return chromium;
+}
+
+// A test's checks: each prints ok or FAIL with what it checked; `failed()`
+// counts the FAILs.
+export function checker() {
+  let failures = 0;
+  return {
+    check(condition, what, detail = '') {
+      console.log(`${condition ? 'ok  ' : 'FAIL'} ${what}${detail ? ` (${detail})` : ''}`);
+      if (!condition) failures += 1;
+    },
+    failed: () => failures,
+  };
 }
