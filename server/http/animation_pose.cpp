@@ -11,6 +11,17 @@
 namespace toond::http {
 namespace {
 
+// A pose whose vertices left float range (joints scaled past it) cannot be
+// framed or drawn.
+void check_finite(const scene::Bounds& bounds, const std::string& pointer) {
+  bool finite = true;
+  for (int axis = 0; axis < 3; ++axis) finite = finite && std::isfinite(bounds.min[axis]) && std::isfinite(bounds.max[axis]);
+  if (!finite) {
+    throw RequestError(422, "bad_pose", pointer + ": the clip moves vertices beyond the range of numbers drawn",
+                       pointer);
+  }
+}
+
 // The index of the clip `name` (or `index` >= 0) in the model, or a 422 at
 // `pointer` naming the clips there are.
 std::size_t find_clip(const scene::Model& model, const std::string& name, int index, const std::string& pointer) {
@@ -67,6 +78,7 @@ std::vector<std::shared_ptr<const scene::PosedVertices>> pose_sheet_frames(ClipF
   render::JobObject& object = job.objects.front();
   const scene::Model& model = *object.model;
   const scene::ClipFraming framing = framing_of_all(framings, object, sheet.clips);
+  check_finite(framing.bounds, "/sheet/animation");
   const render::SheetLayout layout = render::layout_sheet(sheet, job.params.width, job.params.height);
   // Every direction of one time shares one pose.
   std::map<std::pair<int, double>, std::shared_ptr<const scene::PosedVertices>> by_time;
@@ -78,6 +90,7 @@ std::vector<std::shared_ptr<const scene::PosedVertices>> pose_sheet_frames(ClipF
       const scene::Clip& clip = rig.clips[sheet.clips[static_cast<std::size_t>(frame.clip)].index];
       auto posed = std::make_shared<scene::PosedVertices>(
           scene::pose_vertices(model.mesh, rig, scene::pose_nodes(rig, &clip, frame.time)));
+      check_finite(posed->bounds, "/sheet/animation");
       posed->bounds = framing.bounds;
       posed->extremes = framing.extremes;
       pose = std::move(posed);
@@ -160,6 +173,8 @@ std::vector<std::shared_ptr<const scene::PosedVertices>> pose_for_animation(Clip
   auto posed = std::make_shared<scene::PosedVertices>(
       scene::pose_vertices(model.mesh, rig, scene::pose_nodes(rig, &clip, time)));
   const std::shared_ptr<const scene::ClipFraming> framing = framings.get(object.model_key, model, clip_index);
+  check_finite(posed->bounds, "/animation/clip");
+  check_finite(framing->bounds, "/animation/clip");
   posed->bounds = framing->bounds;
   posed->extremes = framing->extremes;
   object.pose = std::move(posed);

@@ -59,6 +59,18 @@ GltfRigReader::GltfRigReader(const tinygltf::Model& gltf, const GltfAccessorRead
 
 void GltfRigReader::fail(const std::string& message) const { throw ImportError(file_, file_ + ": " + message); }
 
+// Accessor `index` read as `components` per element, once its declared
+// count is known to be `expected`: an accessor without a buffer view reads
+// as zeros, as many as it declares, so a count is checked before reading.
+std::vector<double> GltfRigReader::read_counted(int index, const std::string& role, int components,
+                                                std::size_t expected) const {
+  const std::size_t declared = reader_.accessor(index, role).count;
+  if (declared != expected) {
+    fail(role + " has " + std::to_string(declared) + " elements where " + std::to_string(expected) + " are needed");
+  }
+  return reader_.read(index, role, components);
+}
+
 // Parents from the children lists, checked to form a forest; the order
 // world matrices are computed in (parents first); the rest pose.
 void GltfRigReader::read_nodes() {
@@ -147,7 +159,7 @@ std::uint32_t GltfRigReader::binding_of(int skin, int node) {
     binding.inverse_binds.assign(s.joints.size(), glm::dmat4(1.0));
     if (s.inverseBindMatrices >= 0) {
       const std::string role = "skin " + std::to_string(skin) + " inverseBindMatrices";
-      const std::vector<double> m = reader_.read(s.inverseBindMatrices, role, 16);
+      const std::vector<double> m = read_counted(s.inverseBindMatrices, role, 16, s.joints.size());
       if (m.size() != 16 * s.joints.size()) {
         fail(role + " has " + std::to_string(m.size() / 16) + " matrices for " + std::to_string(s.joints.size()) +
              " joints");
@@ -172,8 +184,8 @@ std::vector<double> GltfRigReader::read_weights_of(int node, const tinygltf::Pri
     const auto w = primitive.attributes.find("WEIGHTS_" + std::to_string(sets));
     if (j == primitive.attributes.end() || w == primitive.attributes.end()) break;
     const std::string joints_role = name + " JOINTS_" + std::to_string(sets);
-    std::vector<double> js = reader_.read(j->second, joints_role, 4);
-    std::vector<double> ws = reader_.read(w->second, name + " WEIGHTS_" + std::to_string(sets), 4);
+    std::vector<double> js = read_counted(j->second, joints_role, 4, count);
+    std::vector<double> ws = read_counted(w->second, name + " WEIGHTS_" + std::to_string(sets), 4, count);
     if (js.size() != 4 * count || ws.size() != 4 * count) {
       fail(name + " has " + std::to_string(std::min(js.size(), ws.size()) / 4) + " joint influences for " +
            std::to_string(count) + " positions");
@@ -201,8 +213,10 @@ std::int32_t GltfRigReader::morph_set_of(int node, const tinygltf::Primitive& pr
   MorphSet set;
   set.node = node;
   set.vertices = count;
+  // Deltas for the primitive's own targets only: a mesh may list more
+  // weights than its primitives have targets.
   set.default_weights = mesh.weights;
-  set.default_weights.resize(morph_targets_of(mesh), 0.0);
+  set.default_weights.resize(primitive.targets.size(), 0.0);
   // Deltas are in the mesh's own coordinates: the node's rest transform
   // and the upload's turn take them to the mesh's space.
   const glm::dmat3 linear = turn_ * glm::dmat3(rest_world_[static_cast<std::size_t>(node)]);
@@ -216,7 +230,7 @@ std::int32_t GltfRigReader::morph_set_of(int node, const tinygltf::Primitive& pr
       const auto it = primitive.targets[t].find(attribute);
       if (it == primitive.targets[t].end()) return;
       const std::string role = name + " target " + std::to_string(t) + " " + attribute;
-      const std::vector<double> d = reader_.read(it->second, role, 3);
+      const std::vector<double> d = read_counted(it->second, role, 3, count);
       if (d.size() != 3 * count) fail(role + " has " + std::to_string(d.size() / 3) + " deltas for " + std::to_string(count) + " positions");
       if (!all_finite(d)) fail(role + " holds a number that is not finite");
       for (std::size_t v = 0; v < count; ++v) into[t * count + v] = glm::vec3(by * glm::dvec3(d[3 * v], d[3 * v + 1], d[3 * v + 2]));
@@ -307,6 +321,10 @@ Channel GltfRigReader::read_channel(std::size_t a, std::size_t c) {
   if (!interpolation) fail(name + " has the interpolation \"" + sampler.interpolation + "\"");
   out.interpolation = *interpolation;
   const std::string sampler_name = "animation " + std::to_string(a) + " sampler " + std::to_string(channel.sampler);
+  const std::size_t keys_declared = reader_.accessor(sampler.input, sampler_name + " input").count;
+  if (keys_declared > kMaxClipNumbers - clip_numbers_) {
+    fail("the clips hold more than " + std::to_string(kMaxClipNumbers) + " key times and values");
+  }
   out.times = reader_.read(sampler.input, sampler_name + " input", 1);
   if (out.times.empty()) fail(sampler_name + " input has no keys");
   if (!all_finite(out.times)) fail(sampler_name + " input holds a key time that is not finite");
@@ -324,12 +342,24 @@ Channel GltfRigReader::read_channel(std::size_t a, std::size_t c) {
         node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < gltf_.meshes.size() ? morph_targets_of(gltf_.meshes[static_cast<std::size_t>(node.mesh)]) : 0;
     if (targets == 0) fail(name + " animates the morph weights of node " + std::to_string(out.node) + ", whose mesh has no morph targets");
     out.width = static_cast<int>(targets);
-    out.values = reader_.read(sampler.output, sampler_name + " output", 1);
   } else {
     out.width = out.path == ChannelPath::Rotation ? 4 : 3;
-    out.values = reader_.read(sampler.output, sampler_name + " output", out.width);
   }
   const std::size_t expected = keys * groups * static_cast<std::size_t>(out.width);
+  if (expected > kMaxClipNumbers - clip_numbers_ - keys) {
+    fail("the clips hold more than " + std::to_string(kMaxClipNumbers) + " key times and values");
+  }
+  const int components = out.path == ChannelPath::Weights ? 1 : out.width;
+  const std::string output_role = sampler_name + " output";
+  // The count is checked before anything is read: an accessor without a
+  // buffer view reads as zeros, as many as it declares.
+  const std::size_t declared = reader_.accessor(sampler.output, output_role).count;
+  if (declared * static_cast<std::size_t>(components) != expected) {
+    fail(output_role + " has " + std::to_string(declared * static_cast<std::size_t>(components)) +
+         " numbers where its " + std::to_string(keys) + " keys need " + std::to_string(expected));
+  }
+  out.values = reader_.read(sampler.output, output_role, components);
+  clip_numbers_ += keys + expected;
   if (out.values.size() != expected) {
     fail(sampler_name + " output has " + std::to_string(out.values.size()) + " numbers where its " +
          std::to_string(keys) + " keys need " + std::to_string(expected));

@@ -45,6 +45,7 @@ class GltfRigReader {
 
  private:
   [[noreturn]] void fail(const std::string& message) const;
+  std::vector<double> read_counted(int index, const std::string& role, int components, std::size_t expected) const;
   void read_nodes();
   void check_skins_are_drawn(const std::vector<bool>& drawn_nodes) const;
   std::uint32_t binding_of(int skin, int node);
@@ -68,6 +69,9 @@ class GltfRigReader {
   using MotionKey = std::tuple<std::uint32_t, std::vector<std::uint64_t>, std::int32_t, std::uint32_t>;
   std::map<MotionKey, std::uint32_t> motion_ids_;
   std::set<int> meshes_with_targets_;  // counted once in Rig::morph_target_count
+  // Key times and values read so far, at most kMaxClipNumbers (160 MB).
+  static constexpr std::size_t kMaxClipNumbers = 20'000'000;
+  std::size_t clip_numbers_ = 0;
 };
 
 }  // namespace toond::scene

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "support/gltf_meshopt_writer.h"
+#include "support/gltf_rig_writer.h"
 #include "support/gltf_writer.h"
 
 namespace {
@@ -116,5 +117,48 @@ int main(int argc, char** argv) {
   const std::string glb = write_gltf(doc, GltfForm::Glb)[0].second;
   save("truncated.glb", glb.substr(0, glb.size() / 2));
   std::printf("wrote the glTF seed corpus to %s\n", dir.c_str());
+  // What moves: a bar of three rings skinned to a chain of two joints (two
+  // weight sets), a morph target, and a clip with LINEAR, STEP and
+  // CUBICSPLINE channels on rotation, translation and weights.
+  GltfDocument rigged;
+  rigged.meshes = {{bar_primitive(3)}};
+  rigged.nodes.resize(3);
+  rigged.nodes[0].mesh = 0;
+  rigged.nodes[1].children = {2};
+  rigged.nodes[2].translation = glm::dvec3(0, 1, 0);
+  rigged.scene_roots = {0, 1};
+  GltfParts rig = build_gltf(rigged);
+  std::vector<std::uint16_t> joints;
+  std::vector<float> weights;
+  for (int v = 0; v < 12; ++v) {
+    joints.insert(joints.end(), {0, 1, 0, 0});
+    weights.insert(weights.end(), {1.0f - v / 12.0f, v / 12.0f, 0, 0});
+  }
+  nlohmann::json& attributes = rig.json["meshes"][0]["primitives"][0]["attributes"];
+  attributes["JOINTS_0"] = append_joints_accessor(rig, joints);
+  attributes["WEIGHTS_0"] = append_float_accessor(rig, weights, "VEC4");
+  attributes["JOINTS_1"] = append_joints_accessor(rig, joints);
+  attributes["WEIGHTS_1"] = append_float_accessor(rig, std::vector<float>(48, 0.0f), "VEC4");
+  rig.json["meshes"][0]["primitives"][0]["targets"] = {
+      {{"POSITION", append_float_accessor(rig, std::vector<float>(36, 0.25f), "VEC3")}}};
+  rig.json["meshes"][0]["weights"] = {0.5};
+  rig.json["skins"] = {{{"joints", {1, 2}},
+                        {"inverseBindMatrices", append_float_accessor(rig, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
+                                                                            1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1},
+                                                                      "MAT4")}}};
+  rig.json["nodes"][0]["skin"] = 0;
+  const int times = append_float_accessor(rig, {0.0f, 0.5f, 1.25f}, "SCALAR");
+  const int turns = append_float_accessor(rig, {0, 0, 0, 1, 0, 0, 0.7071f, 0.7071f, 0, 0, 1, 0}, "VEC4");
+  const int moves = append_float_accessor(rig, {0, 0, 0, 1, 0, 0, 0, 2, 0}, "VEC3");
+  // CUBICSPLINE: in-tangent, value, out-tangent per key.
+  const int morphs = append_float_accessor(rig, {0, 0, 1, 1, 1, 0, 0, 0.5f, 0}, "SCALAR");
+  rig.json["animations"] = {{{"name", "Armature|Bend"},
+                             {"samplers", {{{"input", times}, {"output", turns}},
+                                           {{"input", times}, {"output", moves}, {"interpolation", "STEP"}},
+                                           {{"input", times}, {"output", morphs}, {"interpolation", "CUBICSPLINE"}}}},
+                             {"channels", {{{"sampler", 0}, {"target", {{"node", 2}, {"path", "rotation"}}}},
+                                           {{"sampler", 1}, {"target", {{"node", 1}, {"path", "translation"}}}},
+                                           {{"sampler", 2}, {"target", {{"node", 0}, {"path", "weights"}}}}}}}};
+  save("rigged.glb", pack_gltf(rig, GltfForm::Glb)[0].second);
   return 0;
 }

@@ -435,6 +435,23 @@ TEST(GltfRigErrors, NanKeysAreRefused) {
             std::string::npos);
 }
 
+TEST(GltfRigErrors, CountsAreCheckedBeforeAnythingIsRead) {
+  // An accessor without a buffer view reads as zeros, as many as it
+  // declares: a billion of them must be refused, not allocated.
+  const auto empty_accessor = [](nlohmann::json& j, const char* type) {
+    j["accessors"].push_back({{"componentType", 5126}, {"count", 1000000000}, {"type", type}});
+    return j["accessors"].size() - 1;
+  };
+  std::string error = bar_error([&](nlohmann::json& j) {
+    j["meshes"][0]["primitives"][0]["targets"][0]["POSITION"] = empty_accessor(j, "VEC3");
+  });
+  EXPECT_NE(error.find("has 1000000000 elements where 12 are needed"), std::string::npos) << error;
+  error = bar_error([&](nlohmann::json& j) { j["animations"][0]["samplers"][0]["input"] = empty_accessor(j, "SCALAR"); });
+  EXPECT_NE(error.find("more than 20000000 key times and values"), std::string::npos) << error;
+  error = bar_error([&](nlohmann::json& j) { j["animations"][0]["samplers"][0]["output"] = empty_accessor(j, "VEC4"); });
+  EXPECT_NE(error.find("output has 4000000000 numbers where its 2 keys need 8"), std::string::npos) << error;
+}
+
 TEST(GltfRigErrors, AChannelOnAMissingNodeIsRefused) {
   const std::string error =
       bar_error([](nlohmann::json& j) { j["animations"][0]["channels"][0]["target"]["node"] = 42; });
