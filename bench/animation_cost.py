@@ -11,7 +11,11 @@ round, so no answer comes from a cache), and the client's wall time counts
 everything the daemon does: posing runs on the request's thread, before the
 render thread.
 
-    bench/animation_cost.py http://127.0.0.1:8080 [--shared ../shared/models] [--rounds 40] [--size 512]
+With --sheet: an 8-direction sheet of 12 frames of the clip at 128² in one
+request against the 96 single renders of the same tiles (medians of a few
+rounds each): what the issue on animated sheets asks to stay under 1.
+
+    bench/animation_cost.py http://127.0.0.1:8080 [--shared ../shared/models] [--rounds 40] [--size 512] [--sheet]
 """
 import argparse
 import http.client
@@ -144,12 +148,34 @@ def render_ms(conn, params):
     return (time.perf_counter() - start) * 1e3
 
 
+def sheet_against_singles(conn, model, rounds):
+    size, directions, frames = 128, 8, 12
+    sheet = {"model": model, "width": size, "height": size,
+             "sheet": {"frames": directions, "animation": {"clip": "Sway", "frames": frames}}}
+    render_ms(conn, sheet)  # frames the clip once
+    sheet_times, single_times = [], []
+    for r in range(rounds):
+        sheet["png_compression"] = 1 + r % 2  # a fresh request each round (no cached answer)
+        sheet_times.append(render_ms(conn, sheet))
+        total = 0.0
+        for d in range(directions):
+            for k in range(frames):
+                total += render_ms(conn, {"model": model, "width": size, "height": size, "png_compression": 1 + r % 2,
+                                          "camera": {"yaw": 360.0 * d / directions},
+                                          "animation": {"clip": "Sway", "time": 2.0 * k / frames}})
+        single_times.append(total)
+    s, t = statistics.median(sheet_times), statistics.median(single_times)
+    print(f"{directions} directions x {frames} frames at {size}², {rounds} rounds: sheet median {s:.0f} ms, "
+          f"the {directions * frames} singles {t:.0f} ms, ratio {s / t:.3f}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("server")
     parser.add_argument("--shared", default="../shared/models")
     parser.add_argument("--rounds", type=int, default=40)
     parser.add_argument("--size", type=int, default=512)
+    parser.add_argument("--sheet", action="store_true")
     args = parser.parse_args()
     url = urllib.parse.urlparse(args.server)
     conn = http.client.HTTPConnection(url.hostname, url.port or 80, timeout=120)
@@ -157,6 +183,8 @@ def main():
     info = upload(conn, "rigged-bunny.glb", rigged_glb(positions, triangles))
     print(f"rigged bunny: {len(positions)} positions, {info['triangles']} triangles, "
           f"clips {[c['name'] for c in info['animation']['clips']]}")
+    if args.sheet:
+        return sheet_against_singles(conn, info["id"], max(1, args.rounds // 10))
     base = {"model": info["id"], "width": args.size, "height": args.size}
     # The first posed request frames the clip (once per model and clip): timed apart.
     first = render_ms(conn, dict(base, animation={"clip": "Sway", "time": 0.0}))

@@ -243,6 +243,34 @@ TEST_F(AnimatedModel, AnAnimatedWebpPlaysTheClipsWithTheirOwnFrameTimes) {
   EXPECT_EQ(webp.end_ms, expected);
 }
 
+TEST_F(AnimatedModel, ANormalLayerSheetOfAClipMatchesItsColourSheetFrameForFrame) {
+  // Dynamic 2D lighting takes a normal-map sheet beside the colour sheet:
+  // the same tiles, the same poses, the model covering the same pixels.
+  json params = {{"model", id()},
+                 {"width", 48},
+                 {"height", 48},
+                 {"background", {0, 0, 0, 0}},
+                 {"outline", {{"enabled", false}}},
+                 {"sheet", {{"frames", 2}, {"animation", {{"clip", "Bend"}, {"frames", 4}}}}}};
+  auto client = daemon_client();
+  const auto colour = post_json(client, "/render", params);
+  params["output"] = "normal";
+  const auto normal = post_json(client, "/render", params);
+  ASSERT_TRUE(colour && colour->status == 200 && normal && normal->status == 200);
+  const image::Image c = image::decode_png(colour->body), n = image::decode_png(normal->body);
+  ASSERT_EQ(c.width, n.width);
+  ASSERT_EQ(c.height, n.height);
+  // Pixels the colour sheet covers fully must hold a normal, pixels it
+  // leaves empty none (edge pixels, partly covered, may go either way).
+  std::size_t differ = 0, covered = 0;
+  for (std::size_t i = 3; i < c.rgba.size(); i += 4) {
+    covered += c.rgba[i] == 255;
+    differ += (c.rgba[i] == 255 && n.rgba[i] == 0) || (c.rgba[i] == 0 && n.rgba[i] > 0);
+  }
+  EXPECT_GT(covered, 500u);
+  EXPECT_EQ(differ, 0u) << differ << " pixels are covered in one sheet and empty in the other";
+}
+
 TEST_F(AnimatedModel, AnAnimatedSheetRefusesWhatCannotBe) {
   auto client = daemon_client();
   const auto code_and_path = [&](const json& sheet, const json& extra = json::object()) {
@@ -252,6 +280,8 @@ TEST_F(AnimatedModel, AnAnimatedSheetRefusesWhatCannotBe) {
     return std::pair{res ? res->status : 0, res ? error_of(res)["path"].get<std::string>() : ""};
   };
   EXPECT_EQ(code_and_path({{"animation", {{"clip", "Walk"}}}}), std::pair(422, std::string("/sheet/animation/clip")));
+  EXPECT_EQ(code_and_path({{"animation", {{"clip", "Bend"}, {"frames", 0}}}}).first, 400);
+  EXPECT_EQ(code_and_path({{"animation", {{"clip", "Bend"}, {"frames", 10000}}}}).first, 400);
   EXPECT_EQ(code_and_path({{"animation", {{{"clip", "Bend"}}, {{"clip", 9}}}}}),
             std::pair(422, std::string("/sheet/animation/1/clip")));
   EXPECT_EQ(code_and_path({{"animation", {{"clip", "Bend"}, {"frames", 4}, {"fps", 10}}}}),
