@@ -8,9 +8,10 @@
 const PLAY_STEPS_PER_SECOND = 12;
 
 export class AnimationPanel {
-  // `root` holds #clip-select, #clip-time, #clip-time-label and #clip-play;
-  // `hooks.get()` is the current `animation` (or undefined) and
-  // `hooks.set(animation, final)` replaces it (undefined: rest pose).
+  // `root` holds #clip-select, #clip-time, #clip-time-label, #clip-play and
+  // #clip-sheet; `hooks.get()` is the current `animation` (or undefined),
+  // `hooks.set(animation, final)` replaces it (undefined: rest pose) and
+  // `hooks.sheetOfClip(name)` asks for an animated sprite sheet of a clip.
   constructor(root, hooks) {
     this.root = root;
     this.hooks = hooks;
@@ -22,10 +23,15 @@ export class AnimationPanel {
     this.slider = root.querySelector('#clip-time');
     this.label = root.querySelector('#clip-time-label');
     this.play = root.querySelector('#clip-play');
+    this.sheetButton = root.querySelector('#clip-sheet');
     this.select.addEventListener('change', () => this.chooseClip(this.select.value));
     this.slider.addEventListener('input', () => this.setTime(Number(this.slider.value), false));
     this.slider.addEventListener('change', () => this.setTime(Number(this.slider.value), true));
     this.play.addEventListener('click', () => (this.timer ? this.stop() : this.start()));
+    this.sheetButton.addEventListener('click', () => {
+      const clip = this.clipNamed(this.hooks.get()?.clip);
+      if (clip) this.hooks.sheetOfClip(clip.name);
+    });
   }
 
   // The model shown changed (or may have): fetch what it has, once per id.
@@ -60,6 +66,7 @@ export class AnimationPanel {
     this.select.value = clip ? clip.name : '';
     this.slider.disabled = !clip;
     this.play.disabled = !clip;
+    this.sheetButton.disabled = !clip;
     this.slider.max = String(clip ? clip.duration : 1);
     this.slider.step = String(clip ? Math.max(clip.duration / 200, 0.001) : 0.01);
     const time = current?.time ?? 0;

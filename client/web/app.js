@@ -452,6 +452,22 @@ function showSheet({ blob, atlas, ms }) {
   json.hidden = false;
 }
 
+// The sheet's request: the page's state, except that an animated sheet
+// takes its clips from sheet.animation and not from the pose shown above.
+function sheetBody() {
+  const body = clone(studio.params);
+  if (body.sheet?.animation) delete body.animation;
+  return body;
+}
+
+// The animation section's "Sheet of this clip": the sheet on, each of its
+// directions a row of the clip's frames.
+function sheetOfClip(clip) {
+  studio.params.sheet = { ...(studio.params.sheet ?? {}), animation: { clip, frames: 8 } };
+  sync();
+  studio.sheet.schedule(0);
+}
+
 function showSheetError(error) {
   reportError(error, studio.sheetPanel, 'sheet-error');
 }
@@ -464,7 +480,7 @@ function installSheet() {
     removeItem: () => {},
   }, { only: ['sheet'] });
   studio.sheet = new SheetPreview({
-    bodyFor: () => (sheetOn() ? clone(studio.params) : null),
+    bodyFor: () => (sheetOn() ? sheetBody() : null),
     onSheet: showSheet,
     onError: showSheetError,
     onBusy: (busy) => { $('sheet').classList.toggle('busy', busy); },
@@ -546,6 +562,7 @@ async function start() {
   studio.animation = new AnimationPanel($('animation'), {
     get: () => studio.params.animation,
     set: (animation, final) => change('/animation', animation, final),
+    sheetOfClip,
   });
   installUpload();
   installOrbit();

@@ -85,6 +85,20 @@ try {
   check(decodeURIComponent(page.url()).includes('"animation":{"clip":"Bend","time":0.5}'), 'the URL keeps the pose');
   await page.screenshot({ path: path.join(artifacts, '21-animation-bend.png'), fullPage: true });
 
+  // An animated sheet of the clip: its own clips, not the pose above.
+  requests.length = 0;
+  await page.click('#clip-sheet');
+  await page.waitForFunction(() => document.getElementById('sheet-view').dataset.frames === '64'
+    && !document.getElementById('sheet').classList.contains('busy'), null, { timeout: STEP_TIMEOUT_MS });
+  const sheetBody = requests.filter((r) => r.body.sheet).at(-1)?.body;
+  check(sheetBody && JSON.stringify(sheetBody.sheet.animation) === JSON.stringify({ clip: 'Bend', frames: 8 })
+        && !('animation' in sheetBody),
+  'the sheet button asks for a sheet of the clip alone', JSON.stringify(sheetBody));
+  check(/64 frames/.test(await page.textContent('#sheet-status')), 'eight directions of eight frames',
+    await page.textContent('#sheet-status'));
+  await page.screenshot({ path: path.join(artifacts, '22-animation-sheet.png'), fullPage: true });
+  await page.uncheck('#sheet-toggle');
+
   requests.length = 0;
   await page.click('#clip-play');
   check(await page.textContent('#clip-play') === 'Pause', 'play turns into pause');
