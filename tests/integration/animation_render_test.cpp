@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "image/png_codec.h"
@@ -269,6 +270,47 @@ TEST_F(AnimatedModel, ANormalLayerSheetOfAClipMatchesItsColourSheetFrameForFrame
   }
   EXPECT_GT(covered, 500u);
   EXPECT_EQ(differ, 0u) << differ << " pixels are covered in one sheet and empty in the other";
+}
+
+// Blender's walking character (tests/exported/blender/make_walker.py):
+// its Walk cycle has no root motion and a foot on the ground at every
+// frame, so in a sheet seen level (orthographic, pitch 0: the ground is one
+// row of pixels, however near or far a foot is) the lowest covered pixel
+// row of each direction's frames stays where it is, within a pixel.
+TEST_F(AnimatedModel, AWalkingCharactersFeetStayPutInEveryDirection) {
+  auto client = daemon_client();
+  const auto uploaded = upload_files(client, TOOND_EXPORTED_DIR "/blender", {"walker.glb"});
+  ASSERT_TRUE(uploaded && (uploaded->status == 200 || uploaded->status == 201)) << (uploaded ? uploaded->body : "");
+  const std::string walker = json::parse(uploaded->body)["id"];
+  const json params = {{"model", walker},
+                       {"width", 96},
+                       {"height", 96},
+                       {"background", {0, 0, 0, 0}},
+                       {"camera", {{"projection", "orthographic"}, {"pitch", 0}}},
+                       {"sheet", {{"frames", 8}, {"yaw_start", 0}, {"animation", {{"clip", "Walk"}, {"frames", 12}}}}}};
+  const auto res = post_json(client, "/render", params);
+  ASSERT_TRUE(res && res->status == 200) << (res ? res->body : "");
+  const image::Image sheet = image::decode_png(res->body);
+  const json atlas = sheet_atlas(params);
+  ASSERT_EQ(atlas["frames"].size(), 96u);
+  std::map<double, std::pair<int, int>> lowest_by_yaw;  // yaw → (min, max) of the lowest covered row
+  for (const auto& [name, frame] : atlas["frames"].items()) {
+    const image::Image tile = tile_of(sheet, frame["frame"]);
+    int lowest = -1;
+    for (int y = 0; y < tile.height; ++y) {
+      for (int x = 0; x < tile.width; ++x) {
+        if (tile.rgba[(static_cast<std::size_t>(y) * tile.width + x) * 4 + 3] > 0) lowest = y;
+      }
+    }
+    ASSERT_GE(lowest, 0) << name << " is empty";
+    auto [it, added] = lowest_by_yaw.try_emplace(frame["yaw"].get<double>(), lowest, lowest);
+    it->second = {std::min(it->second.first, lowest), std::max(it->second.second, lowest)};
+  }
+  ASSERT_EQ(lowest_by_yaw.size(), 8u);
+  for (const auto& [yaw, range] : lowest_by_yaw) {
+    EXPECT_LE(range.second - range.first, 1) << "yaw " << yaw << ": the lowest row goes from " << range.first
+                                             << " to " << range.second;
+  }
 }
 
 TEST_F(AnimatedModel, AnAnimatedSheetRefusesWhatCannotBe) {
