@@ -228,9 +228,10 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     check_render_budget(job.params, context.limits.render);
     const OutputDescription output = describe_output(job);
     load_bundle_images(context, job);
-    // Posed before the atlas, which frames the sheet as its frames are.
-    const std::vector<std::shared_ptr<const scene::PosedVertices>> sheet_poses =
-        pose_for_animation(context.clip_framings, job);
+    // A sheet is posed before its atlas, which frames it as its frames
+    // are; a single image after the result cache had its chance.
+    std::vector<std::shared_ptr<const scene::PosedVertices>> sheet_poses;
+    if (job.params.sheet) sheet_poses = pose_for_animation(context.clip_framings, job);
     const bool atlas_only = wants_atlas_only(req, job.params);
     image::PngOptions png_options;
     png_options.compression_level = job.params.png_compression;
@@ -268,6 +269,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     // inside them): they decide every byte of the PNG.
     const std::string cache_key = completed.dump();
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
+    if (!job.params.sheet) pose_for_animation(context.clip_framings, job);
 
     const RenderPrice price = admit_by_price(context, job, req);
     const auto submitted = Clock::now();
