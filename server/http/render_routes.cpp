@@ -45,11 +45,15 @@ double render_thread_ms(const render::RenderOutput& out) {
   return ms;
 }
 
-std::string server_timing(const render::RenderOutput& out, double queue_ms, const std::string& encode_stage,
-                          double encode_ms) {
+// `pose_ms`: posing on the request's thread before the job was queued (a
+// request with `animation`; 0: none, and no entry).
+std::string server_timing(const render::RenderOutput& out, double pose_ms, double queue_ms,
+                          const std::string& encode_stage, double encode_ms) {
   std::ostringstream s;
   s.precision(3);
-  s << std::fixed << "queue;dur=" << queue_ms;
+  s << std::fixed;
+  if (pose_ms > 0) s << "pose;dur=" << pose_ms << ", ";
+  s << "queue;dur=" << queue_ms;
   for (const auto& t : out.timings) {
     s << ", " << t.pass << ";dur=" << t.ms;
     // Software GL shades vertices on the render thread at draw time, which
@@ -57,10 +61,10 @@ std::string server_timing(const render::RenderOutput& out, double queue_ms, cons
     if (t.gpu) s << ";desc=gpu;cpu=" << t.cpu_ms;
   }
   s << ", " << encode_stage << ";dur=" << encode_ms;
-  // The request's own work from the render thread's first pass to the last
-  // encoded byte, without the queue: GPU-timed passes may overlap the
-  // thread's time, so the entries above need not add up to it.
-  s << ", total;dur=" << render_thread_ms(out) + encode_ms;
+  // The request's own work, posing, then from the render thread's first
+  // pass to the last encoded byte, without the queue: GPU-timed passes may
+  // overlap the thread's time, so the entries above need not add up to it.
+  s << ", total;dur=" << pose_ms + render_thread_ms(out) + encode_ms;
   return s.str();
 }
 
@@ -231,7 +235,15 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     // A sheet is posed before its atlas, which frames it as its frames
     // are; a single image after the result cache had its chance.
     std::vector<std::shared_ptr<const scene::PosedVertices>> sheet_poses;
-    if (job.params.sheet) sheet_poses = pose_for_animation(context.clip_framings, job);
+    double pose_ms = 0;
+    const auto pose = [&] {
+      const auto start = Clock::now();
+      sheet_poses = pose_for_animation(context.clip_framings, job);
+      if (job.params.animation || !sheet_poses.empty()) {
+        pose_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+      }
+    };
+    if (job.params.sheet) pose();
     const bool atlas_only = wants_atlas_only(req, job.params);
     image::PngOptions png_options;
     png_options.compression_level = job.params.png_compression;
@@ -269,7 +281,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     // inside them): they decide every byte of the PNG.
     const std::string cache_key = completed.dump();
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
-    if (!job.params.sheet) pose_for_animation(context.clip_framings, job);
+    if (!job.params.sheet) pose();
 
     const RenderPrice price = admit_by_price(context, job, req);
     const auto submitted = Clock::now();
@@ -309,7 +321,8 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     }
     const double encode_ms = std::chrono::duration<double, std::milli>(Clock::now() - encode_start).count();
 
-    res.set_header("Server-Timing", server_timing(out, queue_ms < 0 ? 0 : queue_ms, encode_stage, encode_ms));
+    res.set_header("Server-Timing",
+                   server_timing(out, pose_ms, queue_ms < 0 ? 0 : queue_ms, encode_stage, encode_ms));
     answer->etag = etag_of(answer->body);
     answer->passes = out.plan;
     answer->lod = lod_header(out.lods);

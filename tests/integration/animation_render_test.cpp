@@ -86,6 +86,17 @@ TEST_F(AnimatedModel, TheUploadListsClipsJointsAndMorphTargets) {
   EXPECT_EQ(json::parse(again->body)["animation"], a);
 }
 
+TEST_F(AnimatedModel, ServerTimingCountsThePosing) {
+  auto client = daemon_client();
+  const auto posed = post_json(client, "/render", {{"model", id()}, {"width", 32}, {"height", 32},
+                                                   {"animation", {{"clip", "Bend"}, {"time", 0.3}}}});
+  ASSERT_TRUE(posed && posed->status == 200);
+  const std::string timing = posed->get_header_value("Server-Timing");
+  EXPECT_EQ(timing.rfind("pose;dur=", 0), 0u) << timing;
+  const auto rest = post_json(client, "/render", {{"model", id()}, {"width", 32}, {"height", 32}});
+  EXPECT_EQ(rest->get_header_value("Server-Timing").find("pose;"), std::string::npos);
+}
+
 TEST_F(AnimatedModel, APoseDiffersFromTheRestAndTimeWrapsRoundTheLoop) {
   const image::Image start = pose(0.0);
   const image::Image quarter = pose(0.25);
