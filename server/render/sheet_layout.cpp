@@ -36,7 +36,6 @@ SheetLayout layout_clips(const SheetParams& sheet, int tile_width, int tile_heig
           frame.clip = static_cast<int>(c);
           frame.time = k * step;
           frame.duration_ms = clip.duration > 0.0 ? step * 1000.0 : sheet.frame_ms;
-          frame.direction = d;
           layout.frames.push_back(frame);
         }
       }

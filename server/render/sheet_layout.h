@@ -15,11 +15,10 @@ struct SheetFrame {
   double yaw_deg = 0;    // in [0, 360)
   double pitch_deg = 0;
   // An animated sheet's frame: which of SheetParams::clips, at which time
-  // (seconds), shown for how long, from which direction (0 .. frames − 1).
+  // (seconds), shown for how long.
   int clip = -1;  // -1: a turntable frame
   double time = 0;
   double duration_ms = 0;
-  int direction = 0;
 };
 
 struct SheetLayout {

@@ -79,7 +79,6 @@ void GltfRigReader::read_nodes() {
   for (std::size_t i = 0; i < count; ++i) {
     const tinygltf::Node& node = gltf_.nodes[i];
     RigNode& out = rig_.nodes[i];
-    out.name = node.name;
     if (node.matrix.size() == 16) out.matrix = glm::make_mat4(node.matrix.data());
     if (node.translation.size() == 3) out.translation = glm::make_vec3(node.translation.data());
     if (node.rotation.size() == 4) {
@@ -394,10 +393,13 @@ void GltfRigReader::read_clips() {
 Rig GltfRigReader::finish(const glm::dmat4& file_to_mesh) {
   read_clips();
   rig_.file_to_mesh = file_to_mesh;
+  const glm::dmat4 mesh_to_file = glm::inverse(file_to_mesh);
+  for (Binding& binding : rig_.bindings) {
+    binding.mesh_to_local = glm::inverse(rest_world_[static_cast<std::size_t>(binding.node)]) * mesh_to_file;
+  }
   std::set<int> joints;
   for (const tinygltf::Skin& skin : gltf_.skins) joints.insert(skin.joints.begin(), skin.joints.end());
   rig_.joint_count = joints.size();
-  rig_.skin_count = gltf_.skins.size();
   return std::move(rig_);
 }
 

@@ -32,17 +32,13 @@ glm::dmat4 matrix_of(const Trs& trs) {
 // mesh's: the file's skinning (joint world · inverse bind) taken from the
 // mesh's space and back. At rest it is the identity for a mesh bound as it
 // was drawn, so an unanimated vertex stays where the import put it.
-std::vector<std::vector<glm::mat4>> joint_matrices(const Rig& rig, const NodePose& rest, const NodePose& pose) {
-  const glm::dmat4 mesh_to_file = glm::inverse(rig.file_to_mesh);
+std::vector<std::vector<glm::mat4>> joint_matrices(const Rig& rig, const NodePose& pose) {
   std::vector<std::vector<glm::mat4>> matrices(rig.bindings.size());
   for (std::size_t b = 0; b < rig.bindings.size(); ++b) {
     const Binding& binding = rig.bindings[b];
-    // The import baked the mesh's node transform into its positions; the
-    // skin works on the mesh's own coordinates, so that is undone first.
-    const glm::dmat4 to_local = glm::inverse(rest.world[static_cast<std::size_t>(binding.node)]) * mesh_to_file;
     for (std::size_t j = 0; j < binding.joints.size(); ++j) {
       const glm::dmat4 skin = pose.world[static_cast<std::size_t>(binding.joints[j])] * binding.inverse_binds[j];
-      matrices[b].push_back(glm::mat4(rig.file_to_mesh * skin * to_local));
+      matrices[b].push_back(glm::mat4(rig.file_to_mesh * skin * binding.mesh_to_local));
     }
   }
   return matrices;
@@ -115,8 +111,7 @@ constexpr std::size_t kPoseRun = 16384;
 // Each motion's blended joint matrix in one pose: vertices that move alike
 // share it (a flat-shaded mesh has several vertices per position).
 std::vector<glm::mat4> motion_matrices(const Rig& rig, const NodePose& pose) {
-  const NodePose at_rest = pose_nodes(rig, nullptr, 0.0);
-  const std::vector<std::vector<glm::mat4>> joints = joint_matrices(rig, at_rest, pose);
+  const std::vector<std::vector<glm::mat4>> joints = joint_matrices(rig, pose);
   std::vector<glm::mat4> blends(rig.motions.size(), glm::mat4(0.0f));
   for (std::size_t m = 0; m < rig.motions.size(); ++m) {
     const VertexMotion& motion = rig.motions[m];
@@ -313,7 +308,6 @@ ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip_index)
   const float margin = largest_step * 0.5f;
   ClipFraming framing;
   framing.poses = times.size();
-  framing.margin = margin;
   framing.bounds = compute_bounds(corners);
   framing.bounds.min -= glm::vec3(margin);
   framing.bounds.max += glm::vec3(margin);

@@ -53,7 +53,6 @@ struct ClipFraming {
   Bounds bounds;
   std::vector<glm::vec3> extremes;
   std::size_t poses = 0;  // how many were sampled
-  float margin = 0;       // the padding, mesh units
 };
 ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip);
 

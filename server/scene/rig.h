@@ -16,7 +16,6 @@ namespace toond::scene {
 // A node's own transform at rest: translation · rotation · scale, or a
 // matrix (which clips do not animate).
 struct RigNode {
-  std::string name;
   int parent = -1;  // index into Rig::nodes, -1 for a root
   glm::dvec3 translation{0.0};
   glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
@@ -58,6 +57,10 @@ struct Binding {
   int node = -1;  // the node whose mesh this is
   std::vector<int> joints;  // node indices
   std::vector<glm::dmat4> inverse_binds;  // one per joint
+  // From the mesh's space to the mesh's own coordinates: the import baked
+  // the node's rest transform (and the upload's turn and recentring) into
+  // the positions, and a skin works on the coordinates the file gave.
+  glm::dmat4 mesh_to_local{1.0};
 };
 
 // The morph targets of one mesh drawn by one node: deltas per target per
@@ -99,7 +102,6 @@ struct Rig {
   // where posed positions are drawn.
   glm::dmat4 file_to_mesh{1.0};
   std::size_t joint_count = 0;  // distinct nodes used as joints by skins
-  std::size_t skin_count = 0;
   std::size_t morph_target_count = 0;  // over every mesh with targets
 
   // The clip named `name` as the file names it, or by the part after the
