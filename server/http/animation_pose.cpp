@@ -72,33 +72,18 @@ scene::ClipFraming framing_of_all(ClipFramings& framings, const render::JobObjec
   return all;
 }
 
-std::vector<std::shared_ptr<const scene::PosedVertices>> pose_sheet_frames(ClipFramings& framings,
-                                                                           render::RenderJob& job) {
-  const render::SheetParams& sheet = *job.params.sheet;
-  render::JobObject& object = job.objects.front();
-  const scene::Model& model = *object.model;
-  const scene::ClipFraming framing = framing_of_all(framings, object, sheet.clips);
-  check_finite(framing.bounds, "/sheet/animation");
-  const render::SheetLayout layout = render::layout_sheet(sheet, job.params.width, job.params.height);
-  // Every direction of one time shares one pose.
-  std::map<std::pair<int, double>, std::shared_ptr<const scene::PosedVertices>> by_time;
-  std::vector<std::shared_ptr<const scene::PosedVertices>> poses;
-  for (const render::SheetFrame& frame : layout.frames) {
-    auto& pose = by_time[{frame.clip, frame.time}];
-    if (!pose) {
-      const scene::Rig& rig = *model.rig;
-      const scene::Clip& clip = rig.clips[sheet.clips[static_cast<std::size_t>(frame.clip)].index];
-      auto posed = std::make_shared<scene::PosedVertices>(
-          scene::pose_vertices(model.mesh, rig, scene::pose_nodes(rig, &clip, frame.time)));
-      check_finite(posed->bounds, "/sheet/animation");
-      posed->bounds = framing.bounds;
-      posed->extremes = framing.extremes;
-      pose = std::move(posed);
-    }
-    poses.push_back(pose);
-  }
-  object.pose = poses.front();
-  return poses;
+// The model posed at `time` of clip `clip`, framed as `framing` says (a
+// whole clip's reach, or a whole sheet's).
+std::shared_ptr<const scene::PosedVertices> posed_at(const scene::Model& model, std::size_t clip, double time,
+                                                     const scene::ClipFraming& framing, const std::string& pointer) {
+  const scene::Rig& rig = *model.rig;
+  auto posed = std::make_shared<scene::PosedVertices>(
+      scene::pose_vertices(model.mesh, rig, scene::pose_nodes(rig, &rig.clips[clip], time)));
+  check_finite(posed->bounds, pointer);
+  check_finite(framing.bounds, pointer);
+  posed->bounds = framing.bounds;
+  posed->extremes = framing.extremes;
+  return posed;
 }
 
 }  // namespace
@@ -154,10 +139,8 @@ void resolve_sheet_clips(render::RenderJob& job) {
   }
 }
 
-std::vector<std::shared_ptr<const scene::PosedVertices>> pose_for_animation(ClipFramings& framings,
-                                                                            render::RenderJob& job) {
-  if (job.params.sheet && !job.params.sheet->clips.empty()) return pose_sheet_frames(framings, job);
-  if (!job.params.animation) return {};
+void pose_for_animation(ClipFramings& framings, render::RenderJob& job) {
+  if (!job.params.animation) return;
   if (!job.params.objects.empty()) {
     throw RequestError(400, "invalid_parameter",
                        "/animation: a scene of `objects` cannot be animated; give `model` with `animation`",
@@ -166,19 +149,31 @@ std::vector<std::shared_ptr<const scene::PosedVertices>> pose_for_animation(Clip
   render::JobObject& object = job.objects.front();
   const scene::Model& model = *object.model;
   const render::AnimationParams& animation = *job.params.animation;
-  const std::size_t clip_index = find_clip(model, animation.clip, animation.clip_index, "/animation/clip");
-  const scene::Rig& rig = *model.rig;
-  const scene::Clip& clip = rig.clips[clip_index];
-  const double time = scene::clip_time(clip, job.params.animation->time);
-  auto posed = std::make_shared<scene::PosedVertices>(
-      scene::pose_vertices(model.mesh, rig, scene::pose_nodes(rig, &clip, time)));
-  const std::shared_ptr<const scene::ClipFraming> framing = framings.get(object.model_key, model, clip_index);
-  check_finite(posed->bounds, "/animation/clip");
-  check_finite(framing->bounds, "/animation/clip");
-  posed->bounds = framing->bounds;
-  posed->extremes = framing->extremes;
-  object.pose = std::move(posed);
-  return {};
+  const std::size_t clip = find_clip(model, animation.clip, animation.clip_index, "/animation/clip");
+  const double time = scene::clip_time(model.rig->clips[clip], animation.time);
+  object.pose = posed_at(model, clip, time, *framings.get(object.model_key, model, clip), "/animation/clip");
+}
+
+std::vector<std::shared_ptr<const scene::PosedVertices>> pose_sheet_frames(ClipFramings& framings,
+                                                                           render::RenderJob& job,
+                                                                           const render::SheetLayout& layout) {
+  const render::SheetParams& sheet = *job.params.sheet;
+  render::JobObject& object = job.objects.front();
+  const scene::Model& model = *object.model;
+  const scene::ClipFraming framing = framing_of_all(framings, object, sheet.clips);
+  // Every direction of one time shares one pose.
+  std::map<std::pair<int, double>, std::shared_ptr<const scene::PosedVertices>> by_time;
+  std::vector<std::shared_ptr<const scene::PosedVertices>> poses;
+  for (const render::SheetFrame& frame : layout.frames) {
+    auto& pose = by_time[{frame.clip, frame.time}];
+    if (!pose) {
+      pose = posed_at(model, sheet.clips[static_cast<std::size_t>(frame.clip)].index, frame.time, framing,
+                      "/sheet/animation");
+    }
+    poses.push_back(pose);
+  }
+  object.pose = poses.front();
+  return poses;
 }
 
 }  // namespace toond::http

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "render/render_service.h"
+#include "render/sheet_layout.h"
 #include "scene/pose.h"
 
 namespace toond::http {
@@ -42,11 +43,16 @@ void resolve_sheet_clips(render::RenderJob& job);
 
 // Poses the job's one object as job.params.animation asks (nothing when it
 // asks nothing). RequestError 400 when the job is a scene of objects, 422
-// (path /animation/clip) when the model has no such clip. For an animated
-// sheet: the pose of each of its frames, by frame index, all framed over
-// every pose of every clip of the sheet (the object itself gets the first
-// frame's, whose framing the atlas then uses); otherwise nothing.
-std::vector<std::shared_ptr<const scene::PosedVertices>> pose_for_animation(ClipFramings& framings,
-                                                                            render::RenderJob& job);
+// (path /animation/clip) when the model has no such clip, 422 bad_pose
+// when the pose leaves float range.
+void pose_for_animation(ClipFramings& framings, render::RenderJob& job);
+
+// An animated sheet's (resolved clips, laid out as `layout`) pose of each
+// frame, by frame index, all framed over every pose of every clip of the
+// sheet. The object itself gets the first frame's, whose framing the atlas
+// then uses.
+std::vector<std::shared_ptr<const scene::PosedVertices>> pose_sheet_frames(ClipFramings& framings,
+                                                                           render::RenderJob& job,
+                                                                           const render::SheetLayout& layout);
 
 }  // namespace toond::http

@@ -232,24 +232,28 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     check_render_budget(job.params, context.limits.render);
     const OutputDescription output = describe_output(job);
     load_bundle_images(context, job);
+    std::optional<render::SheetLayout> layout;
+    if (job.params.sheet) layout = render::layout_sheet(*job.params.sheet, job.params.width, job.params.height);
     // A sheet is posed before its atlas, which frames it as its frames
     // are; a single image after the result cache had its chance.
     std::vector<std::shared_ptr<const scene::PosedVertices>> sheet_poses;
     double pose_ms = 0;
     const auto pose = [&] {
       const auto start = Clock::now();
-      sheet_poses = pose_for_animation(context.clip_framings, job);
-      if (job.params.animation || !sheet_poses.empty()) {
-        pose_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+      if (layout && !job.params.sheet->clips.empty()) {
+        sheet_poses = pose_sheet_frames(context.clip_framings, job, *layout);
+      } else if (job.params.animation) {
+        pose_for_animation(context.clip_framings, job);
+      } else {
+        return;
       }
+      pose_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     };
-    if (job.params.sheet) pose();
+    if (layout) pose();
     const bool atlas_only = wants_atlas_only(req, job.params);
     image::PngOptions png_options;
     png_options.compression_level = job.params.png_compression;
-    std::optional<render::SheetLayout> layout;
-    if (job.params.sheet) {
-      layout = render::layout_sheet(*job.params.sheet, job.params.width, job.params.height);
+    if (layout) {
       const nlohmann::json atlas = render::sheet_atlas(*layout, job.params, scene_of(job),
                                                        job.params.sheet->animate ? "sheet.webp" : "sheet.png");
       if (atlas_only) {
@@ -281,7 +285,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     // inside them): they decide every byte of the PNG.
     const std::string cache_key = completed.dump();
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
-    if (!job.params.sheet) pose();
+    if (!layout) pose();
 
     const RenderPrice price = admit_by_price(context, job, req);
     const auto submitted = Clock::now();
