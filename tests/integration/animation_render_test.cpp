@@ -107,9 +107,11 @@ TEST_F(AnimatedModel, APoseDiffersFromTheRestAndTimeWrapsRoundTheLoop) {
   EXPECT_EQ(pose(0.25, "color", 0).rgba, quarter.rgba);  // the clip by its index
 }
 
-TEST_F(AnimatedModel, EveryFrameOfAClipIsFramedAlikeAndNeverCutOff) {
-  // Frame by frame at 24 per second: nothing touches the image's edge, and
-  // a pixel row and column well inside hold the model at every frame.
+TEST_F(AnimatedModel, NoFrameOfAClipIsCutOff) {
+  // Frame by frame at 24 per second, every frame framed by the whole clip:
+  // nothing touches the image's edge. (That the framing is one for all
+  // frames is checked by the sheet tests: tiles equal single renders, and
+  // the walker's feet stay put.)
   int frames = 0;
   for (int k = 0; k < 24; ++k) {
     const image::Image img = pose(k / 24.0);
@@ -204,11 +206,15 @@ TEST_F(AnimatedModel, AnAnimatedSheetHasARowPerDirectionAndAColumnPerFrame) {
   // Aseprite tags: one per clip and direction, over its row.
   const json& tags = atlas["meta"]["frameTags"];
   ASSERT_EQ(tags.size(), 8u);
-  EXPECT_EQ(tags[1]["name"], "Bend_" + std::to_string(static_cast<int>(tags[1]["yaw"].get<double>())));
+  // Directions from the camera's default yaw (30°) a quarter turn apart.
+  EXPECT_EQ(tags[0]["name"], "Bend_30");
+  EXPECT_EQ(tags[1]["name"], "Bend_120");
+  EXPECT_DOUBLE_EQ(tags[1]["yaw"].get<double>(), 120.0);
   EXPECT_EQ(tags[1]["from"], 8);
   EXPECT_EQ(tags[1]["to"], 15);
   EXPECT_EQ(tags[1]["direction"], "forward");
   EXPECT_EQ(tags[4]["clip"], "Twist");
+  EXPECT_EQ(tags[4]["name"], "Twist_30");
   EXPECT_EQ(tags[4]["from"], 32);
   EXPECT_EQ(tags[4]["to"], 37);
 }
