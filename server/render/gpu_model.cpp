@@ -137,11 +137,14 @@ GpuModel::GpuModel(const scene::Model& model)
 }
 
 void GpuModel::apply_pose(const scene::PosedVertices* pose) {
-  posed_ = pose != nullptr;
   if (!pose) {
-    glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
+    // Every render of every model comes through here: a model never posed
+    // costs no GL call.
+    if (posed_) glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
+    posed_ = false;
     return;
   }
+  posed_ = true;
   const std::vector<Vertex> vertices =
       interleave(pose->positions, pose->normals, texcoords_, pose->outline_normals, pose->tangents, colors_);
   if (!posed_vertices_) posed_vertices_ = gpu::Buffer::create();
