@@ -185,7 +185,8 @@ class GltfImporter {
     const std::vector<MeshInstance> instances = collect_instances();
     check_counts(instances);
     decode_draco(instances);
-    rig_reader_ = std::make_unique<GltfRigReader>(gltf_, *reader_, path_, drawn_nodes_, up_turn(), warnings_);
+    rig_reader_ = std::make_unique<GltfRigReader>(gltf_, *reader_, path_, drawn_nodes_,
+                                                  up_axis_turn(choices_.z_up), warnings_);
     MeshSource source = make_source(instances);
     source.limits = limits_;
     apply_import_choices(source, choices_);
@@ -196,7 +197,8 @@ class GltfImporter {
       check_import_time(limits_, "decoding textures");
     });
     if (rig_reader_->moves()) {
-      const glm::dmat4 file_to_mesh = glm::translate(glm::dmat4(1.0), -model_.mesh.origin) * glm::dmat4(up_turn());
+      const glm::dmat4 file_to_mesh =
+          glm::translate(glm::dmat4(1.0), -model_.mesh.origin) * glm::dmat4(up_axis_turn(choices_.z_up));
       model_.rig = std::make_shared<const Rig>(rig_reader_->finish(file_to_mesh));
       check_import_time(limits_, "reading clips");
     }
@@ -208,13 +210,6 @@ class GltfImporter {
 
  private:
   [[noreturn]] void fail(const std::string& message) const { throw ImportError(path_, path_ + ": " + message); }
-
-  // The upload's up axis as a turn of the file's coordinates (the mesh
-  // builder's turn_z_up): (x, y, z) → (x, z, −y) for a Z-up file.
-  glm::dmat3 up_turn() const {
-    if (!choices_.z_up) return glm::dmat3(1.0);
-    return glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0));
-  }
 
   // The bytes of a buffer view that a compression extension holds.
   std::optional<std::span<const std::uint8_t>> decoded_view(int view) {

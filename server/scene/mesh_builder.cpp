@@ -160,16 +160,13 @@ class Builder {
     }
   }
 
-  // (x, y, z) → (x, z, −y): a quarter turn about +X, so a Z-up file's +Z
-  // is +Y. Applied to every direction the file gives too.
+  // A quarter turn about +X (up_axis_turn), applied to every direction the
+  // file gives too.
   void turn_z_up() {
-    const auto turn = [](auto& v) { v = {v.x, v.z, -v.y}; };
-    for (glm::dvec3& p : src_.positions) turn(p);
-    for (glm::dvec3& n : src_.normals) turn(n);
-    for (glm::dvec4& t : src_.tangents) {
-      const glm::dvec3 xyz(t);
-      t = glm::dvec4(xyz.x, xyz.z, -xyz.y, t.w);
-    }
+    const glm::dmat3 turn = up_axis_turn(true);
+    for (glm::dvec3& p : src_.positions) p = turn * p;
+    for (glm::dvec3& n : src_.normals) n = turn * n;
+    for (glm::dvec4& t : src_.tangents) t = glm::dvec4(turn * glm::dvec3(t), t.w);
   }
 
   void check_positions() const {
@@ -540,6 +537,12 @@ Model build_single_material_model(MeshSource& source, ImportWarnings& warnings) 
   model.materials.push_back(std::move(material));
   model.warnings = warnings.take();
   return model;
+}
+
+glm::dmat3 up_axis_turn(bool z_up) {
+  if (!z_up) return glm::dmat3(1.0);
+  // Columns: where +X, +Y and +Z go.
+  return glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0));
 }
 
 void apply_import_choices(MeshSource& source, const ImportChoices& choices) {

@@ -123,6 +123,12 @@ struct MeshSource {
 // - outline normals, tangents and bounds are derived (a corner's usable
 //   file tangent is kept instead of the derived one), and triangles are
 //   sorted (stably) into one submesh per material.
+// The turn a Z-up file's coordinates get, (x, y, z) → (x, z, −y), so its
+// +Z becomes +Y; the identity for a Y-up file. build_mesh applies it to
+// positions, normals and tangents; an importer turns what it keeps beside
+// the mesh (a rig's deltas and matrices) with the same matrix.
+glm::dmat3 up_axis_turn(bool z_up);
+
 // Sets what the upload's choices say of the mesh: the smoothing angle and
 // the up axis.
 void apply_import_choices(MeshSource& source, const ImportChoices& choices);
