@@ -35,7 +35,7 @@ const Flag kGeneralFlags[] = {
       "hardware device, else Mesa's surfaceless platform"},
      [](Options& o, Value flag, Value v) { o.gpu = static_cast<int>(parse_count(flag, v, 0, 1024)); }},
     {{"", "--list-gpus", "", "print the EGL devices and exit"}, [](Options& o, Value, Value) { o.list_gpus = true; }},
-    {{"", "--queue", "N", "render jobs allowed to wait (default 32); beyond: 503"},
+    {{"", "--queue", "N", "render jobs allowed to wait in each lane (default 32); beyond: 503"},
      [](Options& o, Value flag, Value v) { o.queue = static_cast<std::size_t>(parse_count(flag, v, 1, 100000)); }},
     {{"", "--render-threads", "N",
       "render threads, each with its own GL context and its\n"

@@ -71,9 +71,10 @@ std::future<RenderOutput> RenderService::submit(RenderJob job) {
   auto future = task.promise.get_future();
   {
     std::lock_guard lock(mutex_);
-    if (queued() >= options_.queue_capacity) throw QueueFull();
+    FairQueue<Task>& lane = lane_for(task.job.cost);
+    if (lane.size() >= options_.queue_capacity) throw QueueFull();
     const std::string client = task.job.client;
-    (is_long(task.job.cost) ? long_lane_ : short_lane_).push(client, std::move(task));
+    lane.push(client, std::move(task));
   }
   // Every thread looks: the one woken might serve the other lane only.
   wake_.notify_all();
@@ -89,10 +90,13 @@ std::vector<std::future<RenderOutput>> RenderService::submit_all(std::vector<Ren
   }
   {
     std::lock_guard lock(mutex_);
-    if (queued() >= options_.queue_capacity) throw QueueFull();
+    // A sheet's frames share its price, so they share a lane; admitted as one
+    // request, they may take the lane past its capacity.
+    FairQueue<Task>& lane = lane_for(tasks.empty() ? 0.0 : tasks.front().job.cost);
+    if (lane.size() >= options_.queue_capacity) throw QueueFull();
     for (Task& task : tasks) {
       const std::string client = task.job.client;
-      (is_long(task.job.cost) ? long_lane_ : short_lane_).push(client, std::move(task));
+      lane.push(client, std::move(task));
     }
   }
   wake_.notify_all();

@@ -158,6 +158,9 @@ class RenderService {
     RenderService* service_;
   };
   std::size_t queued() const { return short_lane_.size() + long_lane_.size(); }
+  // Each lane is held to the queue's capacity on its own: a long sheet's
+  // many frames waiting in the long lane must not turn short renders away.
+  FairQueue<Task>& lane_for(double cost) { return is_long(cost) ? long_lane_ : short_lane_; }
   // Serves tasks on the current context until the service stops (false) or
   // the context is lost (true). Sets `started` once the caches exist.
   bool serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources> sources, std::promise<void>* started);

@@ -116,6 +116,35 @@ TEST(HeavyRender, ALongRenderHoldsUpNoOtherClientAndStopsAtItsDeadline) {
 }
 
 // A long render under the limit ends with its image, and says its price.
+// A long sheet queues all its frames at once, more than the queue holds;
+// they wait in the long lane, which is held to the capacity on its own, so
+// another client's small renders are still taken (before, every one was a
+// 503 `busy` until the sheet was done).
+TEST(HeavyRender, ALongSheetsFramesDoNotFillTheQueueForOthers) {
+  Daemon daemon({}, {"--max-render-cost", "0", "--long-render-cost", "20", "--queue", "2"});
+  auto client = daemon.client();
+  const std::string id = upload_obj_text(client, stacked_triangles(400));
+  ASSERT_FALSE(id.empty());
+  auto sheet = std::async(std::launch::async, [&] {
+    auto own = daemon.client();
+    return post_json(own, "/render", {{"model", id}, {"width", 256}, {"height", 256}, {"sheet", {{"frames", 24}}}});
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  int answered = 0;
+  for (int i = 0; i < 5; ++i) {
+    auto small = post_json(client, "/render", {{"width", 64}, {"height", 64}, {"camera", {{"yaw", 7 * i}}}});
+    ASSERT_TRUE(small);
+    EXPECT_EQ(small->status, 200) << small->body;
+    answered += small->status == 200;
+  }
+  const auto long_sheet = sheet.get();
+  ASSERT_TRUE(long_sheet);
+  EXPECT_EQ(long_sheet->status, 200) << long_sheet->body;
+  const std::string cost = long_sheet->get_header_value("X-Toond-Cost");
+  EXPECT_GE(std::stod(cost.substr(5)), 20.0) << "the sheet must be priced into the long lane: " << cost;
+  EXPECT_EQ(answered, 5);
+}
+
 TEST(HeavyRender, ALongRenderUnderTheDeadlineAnswersItsImageAndPrice) {
   Daemon daemon({}, {"--max-render-cost", "0", "--long-render-cost", "1"});
   auto client = daemon.client();
