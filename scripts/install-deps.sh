@@ -16,6 +16,9 @@ packages=(
   # glTF 2.0 / GLB import (JSON and container; images go through our decoders);
   # Draco for KHR_draco_mesh_compression, decoded in the toond-draco-decode helper
   libtinygltf-dev libwebp-dev libdraco-dev
+  # FBX, COLLADA, 3DS, 3MF, OFF and more, read by assimp in the
+  # toond-assimp-convert helper (the daemon does not link it)
+  libassimp-dev
   # HTTP + JSON + schema validation
   libcpp-httplib-dev libssl-dev nlohmann-json3-dev libvalijson-dev
   # tests, shader checks, benchmarks; Pillow decodes our PNGs as a second opinion

@@ -7,6 +7,8 @@ foreach(needle
     "RUN scripts/install-deps.sh"   # the packages CI installs
     "scripts/build.sh"              # the build CI runs
     "scripts/runtime-packages.sh"   # runtime libraries derived from the binaries
+    "toond-draco-decode"            # the helpers toond runs from its own folder
+    "toond-assimp-convert"
     "libegl-mesa0"                  # Mesa's EGL vendor: llvmpipe without a GPU
     "libegl1"                       # glvnd's libEGL: NVIDIA's EGL on a GPU host
     "NVIDIA_DRIVER_CAPABILITIES=graphics,utility"

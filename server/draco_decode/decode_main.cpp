@@ -6,12 +6,7 @@
 // (draco_decode/draco_wire.h) with the attributes asked for, in that order.
 // Exit status 0 on success, 1 when the data cannot be decoded (the reason
 // on standard error), 2 on a usage error.
-#include <sys/resource.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <new>
 #include <optional>
@@ -22,62 +17,36 @@
 #include <draco/mesh/mesh.h>
 
 #include "draco_decode/draco_wire.h"
-#include "draco_decode/stdio_bytes.h"
+#include "helper_process/resource_limits.h"
+#include "helper_process/stdio_bytes.h"
 
 namespace {
 
 using namespace toond;
 
 struct Options {
-  unsigned long long memory_mb = 0;
-  unsigned long long cpu_seconds = 0;
+  helper_process::ResourceLimits limits;
   std::vector<std::uint32_t> attributes;
 };
-
-std::optional<unsigned long long> number(const char* text) {
-  char* end = nullptr;
-  errno = 0;
-  const unsigned long long v = std::strtoull(text, &end, 10);
-  if (errno != 0 || end == text || *end != '\0') return std::nullopt;
-  return v;
-}
 
 std::optional<Options> parse_options(int argc, char** argv) {
   Options options;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
-    const auto value = number(argv[i + 1]);
+    const auto value = helper_process::parse_count(argv[i + 1]);
     if (!value) return std::nullopt;
     if (flag == "--memory-mb") {
-      options.memory_mb = *value;
+      options.limits.memory_mb = *value;
     } else if (flag == "--cpu-seconds") {
-      options.cpu_seconds = *value;
+      options.limits.cpu_seconds = *value;
     } else if (flag == "--attribute" && *value <= UINT32_MAX) {
       options.attributes.push_back(static_cast<std::uint32_t>(*value));
     } else {
       return std::nullopt;
     }
   }
-  if (argc % 2 != 1 || options.memory_mb == 0 || options.cpu_seconds == 0) return std::nullopt;
+  if (argc % 2 != 1 || options.limits.memory_mb == 0 || options.limits.cpu_seconds == 0) return std::nullopt;
   return options;
-}
-
-// Set before any input is read, so the decoder never runs without them.
-void limit_resources(const Options& options) {
-  const auto set = [](int resource, rlim_t soft, rlim_t hard) {
-    const rlimit limit{soft, hard};
-    setrlimit(resource, &limit);
-  };
-  set(RLIMIT_CORE, 0, 0);  // a crash leaves no core file behind
-  // Past the soft limit SIGXCPU ends the process; the hard one is a backstop.
-  set(RLIMIT_CPU, options.cpu_seconds, options.cpu_seconds + 1);
-#if !defined(__SANITIZE_ADDRESS__)
-  // AddressSanitizer reserves terabytes of address space for its shadow, so
-  // a sanitizer build runs without this one (the daemon's wall-clock limit
-  // and output cap still hold).
-  const rlim_t bytes = static_cast<rlim_t>(options.memory_mb) << 20;
-  set(RLIMIT_AS, bytes, bytes);
-#endif
 }
 
 int fail(const std::string& why) {
@@ -137,7 +106,7 @@ std::optional<draco_wire::Attribute> values_of(const draco::Mesh& mesh, const dr
 }
 
 int decode(const Options& options) {
-  const std::string input = draco_wire::read_all_stdin();
+  const std::string input = helper_process::read_all_stdin();
   draco::DecoderBuffer buffer;
   buffer.Init(input.data(), input.size());
   draco::Decoder decoder;
@@ -159,7 +128,7 @@ int decode(const Options& options) {
     if (!values) return fail(why);
     out.attributes.push_back(std::move(*values));
   }
-  if (!draco_wire::write_all_stdout(draco_wire::write_mesh(out))) return fail("cannot write the answer");
+  if (!helper_process::write_all_stdout(draco_wire::write_mesh(out))) return fail("cannot write the answer");
   return 0;
 }
 
@@ -171,11 +140,11 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: toond-draco-decode --memory-mb N --cpu-seconds S [--attribute ID]... < data.drc\n");
     return 2;
   }
-  limit_resources(*options);
+  helper_process::apply_resource_limits(options->limits);
   try {
     return decode(*options);
   } catch (const std::bad_alloc&) {
-    return fail("decoding needs more than the memory limit of " + std::to_string(options->memory_mb) + " MB");
+    return fail("decoding needs more than the memory limit of " + std::to_string(options->limits.memory_mb) + " MB");
   } catch (const std::exception& e) {
     return fail(std::string("the decoder failed: ") + e.what());
   }

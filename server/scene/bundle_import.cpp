@@ -4,6 +4,7 @@
 #include <chrono>
 #include <vector>
 
+#include "scene/assimp_import.h"
 #include "scene/enclosure.h"
 #include "scene/gltf_container.h"
 #include "scene/gltf_import.h"
@@ -19,7 +20,7 @@ namespace {
 
 char ascii_lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
 
-std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+std::string single_quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 
 }  // namespace
 
@@ -34,6 +35,10 @@ bool has_extension(std::string_view path, std::string_view extension) {
 
 std::string find_model_file(const Bundle& bundle, std::initializer_list<std::string_view> extensions,
                             std::string_view noun) {
+  return find_model_file(bundle, std::span<const std::string_view>(extensions.begin(), extensions.size()), noun);
+}
+
+std::string find_model_file(const Bundle& bundle, std::span<const std::string_view> extensions, std::string_view noun) {
   std::vector<std::string> found;
   for (const auto& [path, content] : bundle.files()) {
     for (const std::string_view extension : extensions) {
@@ -46,17 +51,27 @@ std::string find_model_file(const Bundle& bundle, std::initializer_list<std::str
   if (found.size() == 1) return found.front();
   std::string listing;
   if (found.empty()) {
-    for (const auto& [path, content] : bundle.files()) listing += (listing.empty() ? "" : ", ") + quoted(path);
+    for (const auto& [path, content] : bundle.files()) listing += (listing.empty() ? "" : ", ") + single_quoted(path);
     throw ImportError("", "the bundle holds no " + std::string(noun) + " file" +
                               (listing.empty() ? std::string(" (it is empty)") : " (it holds " + listing + ")"));
   }
-  for (const auto& path : found) listing += (listing.empty() ? "" : ", ") + quoted(path);
+  for (const auto& path : found) listing += (listing.empty() ? "" : ", ") + single_quoted(path);
   throw ImportError(found[1], "the bundle holds " + std::to_string(found.size()) + " " + std::string(noun) +
                                   " files (" + listing + "); a bundle is one model with exactly one " +
                                   std::string(noun) + " file");
 }
 
 namespace {
+
+// Every model-file extension import_bundle takes, toond's own readers' first.
+std::vector<std::string_view> model_extensions() {
+  std::vector<std::string_view> extensions = {".obj", ".m", ".gltf", ".glb", ".stl", ".ply"};
+  for (const std::string_view extension : assimp_extensions()) extensions.push_back(extension);
+  return extensions;
+}
+
+constexpr std::string_view kModelFileNoun =
+    "model (.obj, .gltf, .glb, .stl, .ply, .fbx, .dae, .3ds, .3mf, .off, .m or another format assimp reads)";
 
 // The bundle's glTF files, known by content whatever their names (a .bin
 // or image never starts like one).
@@ -87,20 +102,18 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
       })) {
     model = import_gltf_bundle(bundle, gltf.front(), limits, choices);
   } else {
-    const std::string path = find_model_file(bundle, {".obj", ".m", ".gltf", ".glb", ".stl", ".ply"},
-                                             ".obj, .m, .gltf, .glb, .stl or .ply");
+    const std::string path = find_model_file(bundle, model_extensions(), kModelFileNoun);
+    if (choices.gltf_scene && !has_extension(path, ".gltf") && !has_extension(path, ".glb")) {
+      throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");
+    }
     if (has_extension(path, ".gltf") || has_extension(path, ".glb")) {
       model = import_gltf_bundle(bundle, path, limits, choices);
+    } else if (read_through_assimp(path)) {
+      model = import_assimp_bundle(bundle, path, limits, choices);
     } else if (has_extension(path, ".stl") || has_extension(path, ".ply")) {
-      if (choices.gltf_scene) {
-        throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");
-      }
       model = has_extension(path, ".stl") ? import_stl_bundle(bundle, limits, choices)
                                           : import_ply_bundle(bundle, limits, choices);
     } else {
-      if (choices.gltf_scene) {
-        throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");
-      }
       model = has_extension(path, ".m") ? import_m_bundle(bundle, limits, choices)
                                         : import_obj_bundle(bundle, limits, choices);
     }

@@ -2,6 +2,7 @@
 // The one entry point for turning an uploaded bundle into a Model, whatever
 // its model file's format.
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -14,8 +15,9 @@ namespace toond::scene {
 
 // Imports the bundle's one model file with the importer its extension
 // (ASCII case-insensitive) names: .obj (import_obj_bundle, obj_import.h),
-// .m (import_m_bundle, m_import.h) or .gltf / .glb (import_gltf_bundle,
-// gltf_import.h). A glTF file is also known by its content (gltf_container.h)
+// .m (import_m_bundle, m_import.h), .gltf / .glb (import_gltf_bundle,
+// gltf_import.h), .stl and .ply (stl_import.h, ply_import.h), or one of
+// the formats read through assimp (import_assimp_bundle, assimp_import.h). A glTF file is also known by its content (gltf_container.h)
 // whatever its name, when it is the bundle's only model file. Throws
 // ImportError naming the files when the bundle holds no model file or more
 // than one, and whatever the importer throws. The mesh comes back with its levels of detail and in vertex-cache
@@ -34,5 +36,6 @@ bool has_extension(std::string_view path, std::string_view extension);
 // ".obj or .m").
 std::string find_model_file(const Bundle& bundle, std::initializer_list<std::string_view> extensions,
                             std::string_view noun);
+std::string find_model_file(const Bundle& bundle, std::span<const std::string_view> extensions, std::string_view noun);
 
 }  // namespace toond::scene

@@ -1,15 +1,11 @@
 #include "scene/draco_decoder.h"
 
-#include <signal.h>
-#include <string.h>
-
 #include <algorithm>
-#include <cstdlib>
 #include <limits>
 #include <string>
-#include <system_error>
 
 #include "scene/child_process.h"
+#include "scene/helper_program.h"
 
 namespace toond::scene {
 namespace {
@@ -38,22 +34,6 @@ std::size_t answer_cap(const DracoJob& job) {
   return static_cast<std::size_t>(std::min<std::uint64_t>(bytes, std::numeric_limits<std::size_t>::max() / 2));
 }
 
-// The decoder's own reason, printable and short.
-std::string reason_from(const std::string& errors) {
-  std::string line = errors.substr(0, errors.find('\n')).substr(0, 200);
-  std::replace_if(line.begin(), line.end(), [](char c) { return c < 0x20 || c > 0x7e; }, '?');
-  return line.empty() ? "it gave no reason" : line;
-}
-
-std::string signal_name(int signal) {
-  const char* abbreviation = sigabbrev_np(signal);
-  return abbreviation ? "SIG" + std::string(abbreviation) : "signal " + std::to_string(signal);
-}
-
-std::string seconds_text(std::chrono::milliseconds time) {
-  return std::to_string(time.count() / 1000) + "." + std::to_string(time.count() % 1000 / 100) + " s";
-}
-
 void check_answer(const draco_wire::Mesh& mesh, const DracoJob& job) {
   if (mesh.attributes.size() != job.attributes.size()) {
     throw DracoDecodeError("the decoder answered " + std::to_string(mesh.attributes.size()) + " attributes for " +
@@ -70,16 +50,13 @@ void check_answer(const draco_wire::Mesh& mesh, const DracoJob& job) {
 }  // namespace
 
 std::filesystem::path draco_decoder_program() {
-  if (const char* set = std::getenv("TOOND_DRACO_DECODER"); set && *set) return set;
-  std::error_code error;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  return (error ? std::filesystem::path() : self.parent_path()) / "toond-draco-decode";
+  return helper_program("TOOND_DRACO_DECODER", "toond-draco-decode");
 }
 
 draco_wire::Mesh decode_draco_mesh(const DracoJob& job) {
   ChildRun run;
   run.program = draco_decoder_program().string();
-  const auto cpu_seconds = std::max<long long>(1, (job.time_limit.count() + 999) / 1000);
+  const auto cpu_seconds = helper_cpu_seconds(job.time_limit);
   run.arguments = {"--memory-mb", std::to_string(memory_mb_for(job)), "--cpu-seconds", std::to_string(cpu_seconds)};
   for (const std::uint32_t id : job.attributes) {
     run.arguments.push_back("--attribute");
@@ -88,33 +65,15 @@ draco_wire::Mesh decode_draco_mesh(const DracoJob& job) {
   run.input = std::string_view(reinterpret_cast<const char*>(job.data.data()), job.data.size());
   run.time_limit = job.time_limit;
   run.max_output = answer_cap(job);
-  const ChildResult result = run_child(run);
-
-  switch (result.end) {
-    case ChildResult::End::NotStarted:
-      throw DracoDecodeError("the Draco decoder " + run.program + " cannot be started (" +
-                             std::error_code(result.code, std::generic_category()).message() + ")");
-    case ChildResult::End::TimedOut:
-      throw DracoDecodeError("the decoder took longer than " + seconds_text(job.time_limit) + " and was stopped");
-    case ChildResult::End::OutputTooLarge:
-      throw DracoDecodeError("the decoder answered more than the primitive's accessors can hold");
-    case ChildResult::End::Signalled:
-      if (result.code == SIGXCPU) {
-        throw DracoDecodeError("the decoder used more than " + std::to_string(cpu_seconds) +
-                               " s of processor time and was stopped");
-      }
-      throw DracoDecodeError("the decoder crashed (" + signal_name(result.code) + ")");
-    case ChildResult::End::Exited:
-      if (result.code == 1) throw DracoDecodeError(reason_from(result.errors));
-      if (result.code != 0) {
-        throw DracoDecodeError("the decoder stopped with status " + std::to_string(result.code) + ": " +
-                               reason_from(result.errors));
-      }
-      break;
+  std::string answer;
+  try {
+    answer = run_helper(run, "the decoder", "answered more than the primitive's accessors can hold").output;
+  } catch (const HelperError& e) {
+    throw DracoDecodeError(e.what());
   }
   draco_wire::Mesh mesh;
   try {
-    mesh = draco_wire::read_mesh(result.output);
+    mesh = draco_wire::read_mesh(answer);
   } catch (const draco_wire::WireError& e) {
     throw DracoDecodeError(std::string("the decoder's answer is not a mesh: ") + e.what());
   }

@@ -162,8 +162,14 @@ bool keep_image_undecoded(tinygltf::Image*, const int, std::string*, std::string
 
 class GltfImporter {
  public:
-  GltfImporter(const Bundle& bundle, std::string path, const ImportLimits& limits, const ImportChoices& choices)
-      : bundle_(bundle), path_(std::move(path)), limits_(limits), scene_(choices.gltf_scene), choices_(choices) {}
+  GltfImporter(const Bundle& bundle, std::string path, const ImportLimits& limits, const ImportChoices& choices,
+               GltfOrigin origin)
+      : bundle_(bundle),
+        path_(std::move(path)),
+        limits_(limits),
+        scene_(choices.gltf_scene),
+        choices_(choices),
+        origin_(origin) {}
 
   Model run() {
     const GltfContainer container = open_gltf_container(*bundle_.find(path_), path_);
@@ -190,8 +196,9 @@ class GltfImporter {
     MeshSource source = make_source(instances);
     source.limits = limits_;
     apply_import_choices(source, choices_);
-    // glTF 2.0 §3.7.2.1: without NORMAL, flat normals.
-    source.smooth_angle_deg = kFlatSmoothAngle;
+    // glTF 2.0 §3.7.2.1: without NORMAL, flat normals. A converted file's
+    // missing normals were missing in the original, which said nothing.
+    if (origin_ == GltfOrigin::File) source.smooth_angle_deg = kFlatSmoothAngle;
     model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
       build_materials(triangles);
       check_import_time(limits_, "decoding textures");
@@ -263,7 +270,8 @@ class GltfImporter {
     if (!used.is_array()) return;
     std::string names;
     for (const json& name : used) {
-      if (name.is_string() && !reads_extension(name.get<std::string>())) {
+      if (name.is_string() && !reads_extension(name.get<std::string>()) &&
+          !(origin_ == GltfOrigin::Converted && written_by_converter(name.get<std::string>()))) {
         names += (names.empty() ? "" : ", ") + name.get<std::string>();
       }
     }
@@ -285,6 +293,25 @@ class GltfImporter {
     if (refusal == bundle_paths::Refusal::absolute) refuse("an absolute path");
     if (refusal != bundle_paths::Refusal::none) refuse("which leaves the upload's folder");
     return bundle_.resolve(path_, decoded);
+  }
+
+  // The bundle file a converted file's image names: the path as the
+  // original file wrote it, relative to the file, or else its file name
+  // alone anywhere beside the file (with a warning).
+  std::optional<std::string> find_converted_image(const std::string& written, const std::string& role) {
+    if (auto path = bundle_.resolve(path_, written)) return path;
+    const std::string file_name = written.substr(written.find_last_of("/\\") + 1);
+    if (file_name.empty() || file_name == written) return std::nullopt;
+    auto path = bundle_.resolve(path_, file_name);
+    if (path) {
+      warnings_.add(path_ + ": " + role + " " + in_quotes(written) + " was found by its file name alone, as " +
+                    in_quotes(*path));
+    }
+    return path;
+  }
+
+  static bool written_by_converter(std::string_view extension) {
+    return extension == "FB_ngon_encoding" || extension == "KHR_materials_pbrSpecularGlossiness";
   }
 
   bool uses_extension(std::string_view name) const {
@@ -707,7 +734,8 @@ class GltfImporter {
         }
         return std::make_pair(name, std::string(decoded->bytes.begin(), decoded->bytes.end()));
       }
-      const auto path = resolve_uri(text, "image " + std::to_string(index));
+      const auto path = origin_ == GltfOrigin::Converted ? find_converted_image(text, role)
+                                                         : resolve_uri(text, "image " + std::to_string(index));
       if (!path) {
         warnings_.add(name + ": " + in_quotes(text) + " is not in the upload; " + role + " is left out");
         return std::nullopt;
@@ -840,6 +868,7 @@ class GltfImporter {
   ImportLimits limits_;
   std::optional<int> scene_;
   ImportChoices choices_;
+  GltfOrigin origin_;
   json doc_;
   json images_;
   tinygltf::Model gltf_;
@@ -860,8 +889,8 @@ class GltfImporter {
 }  // namespace
 
 Model import_gltf_bundle(const Bundle& bundle, const std::string& path, const ImportLimits& limits,
-                         const ImportChoices& choices) {
-  return GltfImporter(bundle, path, limits, choices).run();
+                         const ImportChoices& choices, GltfOrigin origin) {
+  return GltfImporter(bundle, path, limits, choices, origin).run();
 }
 
 }  // namespace toond::scene

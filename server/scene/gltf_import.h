@@ -40,7 +40,18 @@ namespace toond::scene {
 // `choices.gltf_scene` picks the scene (none: the file's default, or its
 // first); `choices.z_up` turns the model. A primitive without NORMAL is
 // flat-shaded, as the specification says, whatever `choices.smooth_angle`.
+//
+// A glTF file that toond-assimp-convert wrote from another format
+// (assimp_import.h) is read with `origin` Converted, which keeps what the
+// original file meant: a primitive without NORMAL gets normals by angle
+// (`choices.smooth_angle`) as any file without normals; an image URI is the
+// path the original file gave (often the artist's absolute or Windows path),
+// found in the bundle relative to the file or else by its file name alone,
+// with a warning; and the extensions the converter writes on its own
+// (FB_ngon_encoding, KHR_materials_pbrSpecularGlossiness) are not reported.
+enum class GltfOrigin { File, Converted };
+
 Model import_gltf_bundle(const Bundle& bundle, const std::string& path, const ImportLimits& limits = {},
-                         const ImportChoices& choices = {});
+                         const ImportChoices& choices = {}, GltfOrigin origin = GltfOrigin::File);
 
 }  // namespace toond::scene

@@ -21,7 +21,7 @@
 #include <draco/mesh/mesh.h>
 
 #include "draco_decode/draco_wire.h"
-#include "draco_decode/stdio_bytes.h"
+#include "helper_process/stdio_bytes.h"
 
 namespace {
 
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     if (flag == "--bits") bits = std::atoi(argv[i + 1]);
     if (flag == "--type") types.push_back(type_named(argv[i + 1]));
   }
-  const draco_wire::Mesh input = draco_wire::read_mesh(draco_wire::read_all_stdin());
+  const draco_wire::Mesh input = draco_wire::read_mesh(helper_process::read_all_stdin());
   if (input.attributes.size() != types.size()) return fail("one --type per attribute, please");
 
   draco::Mesh mesh;
@@ -102,5 +102,5 @@ int main(int argc, char** argv) {
   put_u32(out, static_cast<std::uint32_t>(ids.size()));
   for (const std::uint32_t id : ids) put_u32(out, id);
   out.append(encoded.data(), encoded.size());
-  return draco_wire::write_all_stdout(out) ? 0 : 1;
+  return helper_process::write_all_stdout(out) ? 0 : 1;
 }

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "fake_helpers.h"
 #include "gltf_import_checks.h"
 #include "model_checks.h"
 #include "scene/bundle_import.h"
@@ -203,31 +204,9 @@ TEST_F(GltfDracoMalformed, AttributeIdsThatDoNotFitAreRefused) {
       << error;
 }
 
-// Decoder stand-ins: shell scripts in a temporary folder, removed afterwards.
-class FakeDecoders {
- public:
-  FakeDecoders()
-      : dir_(std::filesystem::temp_directory_path() / ("toond-fake-draco-" + std::to_string(getpid()))) {
-    std::filesystem::create_directories(dir_);
-  }
-  ~FakeDecoders() { std::filesystem::remove_all(dir_); }
-  FakeDecoders(const FakeDecoders&) = delete;
-  FakeDecoders& operator=(const FakeDecoders&) = delete;
-
-  std::string make(const std::string& name, const std::string& body) {
-    const auto path = dir_ / name;
-    std::ofstream(path) << "#!/bin/sh\n" << body << "\n";
-    std::filesystem::permissions(path, std::filesystem::perms::owner_all);
-    return path.string();
-  }
-
- private:
-  std::filesystem::path dir_;
-};
-
 TEST_F(GltfDracoMalformed, ADecoderThatCrashesHangsOrBabblesIsARefusalNotACrash) {
   const auto files = test::pack_gltf(test::draco_compress(sphere_parts()), GltfForm::Glb);
-  FakeDecoders fakes;
+  test_checks::FakeHelpers fakes;
 
   setenv("TOOND_DRACO_DECODER", fakes.make("crash", "kill -SEGV $$").c_str(), 1);
   std::string error = import_error(files);

@@ -226,9 +226,9 @@ TEST(BundleImport, PicksTheImporterByExtension) {
   EXPECT_EQ(import_bundle(make_bundle({{"tri.obj", obj}, {"tri.mtl", ""}})).mesh.triangle_count(), 1u);
   EXPECT_EQ(import_bundle(make_bundle({{"Tri.OBJ", obj}})).mesh.triangle_count(), 1u);
   // Names that only contain the extensions are not model files.
-  expect_import_error(make_bundle({{"a.mtl", "newmtl a\n"}, {"b.obj.txt", obj}, {"c.mm", ""}}), "", "no .obj, .m, .gltf, .glb, .stl or .ply",
+  expect_import_error(make_bundle({{"a.mtl", "newmtl a\n"}, {"b.obj.txt", obj}, {"c.mm", ""}}), "", "no model (.obj, .gltf, .glb, .stl, .ply, .fbx",
                       "'a.mtl'");
-  expect_import_error(Bundle{}, "", "no .obj, .m, .gltf, .glb, .stl or .ply", "empty");
+  expect_import_error(Bundle{}, "", "no model (.obj, .gltf, .glb, .stl, .ply, .fbx", "empty");
 }
 
 TEST(BundleImport, ExactlyOneModelFile) {

@@ -1,9 +1,9 @@
-#include "draco_decode/stdio_bytes.h"
+#include "helper_process/stdio_bytes.h"
 
 #include <cerrno>
 #include <unistd.h>
 
-namespace toond::draco_wire {
+namespace toond::helper_process {
 
 std::string read_all_stdin() {
   std::string input;
@@ -29,4 +29,4 @@ bool write_all_stdout(const std::string& bytes) {
   return true;
 }
 
-}  // namespace toond::draco_wire
+}  // namespace toond::helper_process

@@ -1,0 +1,232 @@
+// Formats read through assimp in the toond-assimp-convert helper: Blender's
+// FBX and COLLADA come in upright and in metres with their clips, textures
+// named by another machine's path are found by file name, files without
+// normals are shaded by angle, and a helper that fails in any way is an
+// ImportError naming the file.
+#include <gtest/gtest.h>
+
+#include <stdlib.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "fake_helpers.h"
+#include "model_checks.h"
+#include "scene/assimp_import.h"
+#include "scene/bundle_import.h"
+#include "scene/import_error.h"
+#include "scene/mesh_processing.h"
+
+namespace toond::scene {
+namespace {
+
+using test_checks::expect_well_formed;
+using test_checks::Files;
+using test_checks::has_warning;
+using test_checks::make_bundle;
+using test_checks::warnings_of;
+
+const std::filesystem::path kBlender = TOOND_EXPORTED_DIR "/blender";
+
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A 2 x 2 cube written by hand in the Object File Format: positions and
+// quads, no normals.
+constexpr const char* kOffCube =
+    "OFF\n8 6 0\n-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n"
+    "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
+
+// A 1 m x 2 m quad in centimetres, Z up, whose texture is named by the
+// artist's Windows path, as COLLADA exporters on Windows write it.
+constexpr const char* kTexturedQuadDae = R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="centimeter" meter="0.01"/><up_axis>Z_UP</up_axis></asset>
+  <library_images>
+    <image id="checker" name="checker"><init_from>C:\Users\artist\maps\Checker.png</init_from></image>
+  </library_images>
+  <library_effects>
+    <effect id="paint-fx"><profile_COMMON>
+      <newparam sid="surface"><surface type="2D"><init_from>checker</init_from></surface></newparam>
+      <newparam sid="sampler"><sampler2D><source>surface</source></sampler2D></newparam>
+      <technique sid="common"><lambert><diffuse><texture texture="sampler" texcoord="UVMap"/></diffuse></lambert></technique>
+    </profile_COMMON></effect>
+  </library_effects>
+  <library_materials><material id="paint" name="paint"><instance_effect url="#paint-fx"/></material></library_materials>
+  <library_geometries>
+    <geometry id="quad" name="quad"><mesh>
+      <source id="quad-pos"><float_array id="quad-pos-a" count="12">0 0 0 100 0 0 100 0 200 0 0 200</float_array>
+        <technique_common><accessor source="#quad-pos-a" count="4" stride="3">
+          <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+        </accessor></technique_common></source>
+      <source id="quad-uv"><float_array id="quad-uv-a" count="8">0 0 1 0 1 1 0 1</float_array>
+        <technique_common><accessor source="#quad-uv-a" count="4" stride="2">
+          <param name="S" type="float"/><param name="T" type="float"/>
+        </accessor></technique_common></source>
+      <vertices id="quad-v"><input semantic="POSITION" source="#quad-pos"/></vertices>
+      <triangles material="paint" count="2">
+        <input semantic="VERTEX" source="#quad-v" offset="0"/>
+        <input semantic="TEXCOORD" source="#quad-uv" offset="0" set="0"/>
+        <p>0 1 2 0 2 3</p>
+      </triangles>
+    </mesh></geometry>
+  </library_geometries>
+  <library_visual_scenes><visual_scene id="scene">
+    <node id="quad-node" name="quad"><instance_geometry url="#quad">
+      <bind_material><technique_common><instance_material symbol="paint" target="#paint">
+        <bind_vertex_input semantic="UVMap" input_semantic="TEXCOORD" input_set="0"/>
+      </instance_material></technique_common></bind_material>
+    </instance_geometry></node>
+  </visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)";
+
+// Every test runs the helper the build made (the daemon finds it beside
+// itself; this test binary lives elsewhere).
+class AssimpImport : public ::testing::Test {
+ protected:
+  void SetUp() override { setenv("TOOND_ASSIMP_CONVERTER", TOOND_ASSIMP_CONVERTER_PATH, 1); }
+};
+using AssimpImportErrors = AssimpImport;
+
+std::string import_error(const Files& files, const ImportLimits& limits = {}) {
+  try {
+    import_bundle(make_bundle(files), limits);
+  } catch (const ImportError& e) {
+    EXPECT_EQ(e.file(), files.front().first);
+    return e.what();
+  }
+  ADD_FAILURE() << files.front().first << " was read";
+  return {};
+}
+
+TEST_F(AssimpImport, EveryExtensionIsKnownAndOwnReadersKeepTheirs) {
+  for (const char* path : {"a.fbx", "b/C.DAE", "c.3ds", "d.3mf", "e.off", "f.x"}) {
+    EXPECT_TRUE(read_through_assimp(path)) << path;
+  }
+  for (const char* path : {"a.obj", "b.stl", "c.ply", "d.glb", "e.gltf", "f.m", "g.png", "h.blend"}) {
+    EXPECT_FALSE(read_through_assimp(path)) << path;
+  }
+}
+
+TEST_F(AssimpImport, BlendersFbxCharacterComesWithItsClipsUprightAndInMetres) {
+  const Model model = import_bundle(make_bundle({{"rigged.fbx", read_file(kBlender / "rigged.fbx")}}));
+  expect_well_formed(model);
+  ASSERT_TRUE(model.rig);
+  EXPECT_EQ(model.rig->clip_names(), "\"Bend\", \"Twist\"");
+  EXPECT_EQ(model.rig->joint_count, 3u);
+  EXPECT_EQ(model.rig->morph_target_count, 1u);
+  // The bar is 2 m tall along +Y, as in the glTF twin; the FBX stores
+  // centimetres (UnitScaleFactor 1).
+  const glm::vec3 size = model.mesh.bounds.max - model.mesh.bounds.min;
+  EXPECT_NEAR(size.y, 2.0f, 1e-4f);
+  EXPECT_NEAR(size.x, 0.4f, 1e-4f);
+  EXPECT_NEAR(size.z, 0.4f, 1e-4f);
+  EXPECT_TRUE(has_warning(model, "rigged.fbx: scaled to metres (the file's unit is 1 cm)")) << warnings_of(model);
+  EXPECT_FALSE(has_warning(model, "FB_ngon_encoding")) << warnings_of(model);
+}
+
+TEST_F(AssimpImport, AColladaFileIsUprightInMetresAndFindsItsTextureByFileName) {
+  const Model model = import_bundle(make_bundle({{"art/quad.dae", kTexturedQuadDae},
+                                                 {"art/checker.png", test_checks::tiny_png(200, 40, 40)}}));
+  expect_well_formed(model);
+  const glm::vec3 size = model.mesh.bounds.max - model.mesh.bounds.min;
+  EXPECT_NEAR(size.x, 1.0f, 1e-5f);
+  EXPECT_NEAR(size.y, 2.0f, 1e-5f);  // the file's +Z
+  EXPECT_NEAR(size.z, 0.0f, 1e-5f);
+  ASSERT_EQ(model.textures.size(), 1u);
+  EXPECT_EQ(model.textures[0].path, "art/checker.png");
+  EXPECT_TRUE(has_warning(model, "was found by its file name alone, as 'art/checker.png'")) << warnings_of(model);
+}
+
+TEST_F(AssimpImport, ATextureNotInTheUploadIsAWarning) {
+  const Model model = import_bundle(make_bundle({{"quad.dae", kTexturedQuadDae}}));
+  EXPECT_TRUE(model.textures.empty());
+  EXPECT_TRUE(has_warning(model, "is not in the upload")) << warnings_of(model);
+}
+
+TEST_F(AssimpImport, AFileWithoutNormalsIsShadedByAngle) {
+  // The glTF answer has no NORMAL; glTF's own rule (flat) would give the
+  // same cube, so a smooth angle past 90° shows which rule was applied.
+  const Model flat = import_bundle(make_bundle({{"cube.off", kOffCube}}));
+  expect_well_formed(flat);
+  EXPECT_EQ(flat.mesh.triangle_count(), 12u);
+  EXPECT_EQ(flat.mesh.positions.size(), 24u);
+  ImportChoices smooth;
+  smooth.smooth_angle = 120.0;
+  const Model rounded = import_bundle(make_bundle({{"cube.off", kOffCube}}), {}, smooth);
+  EXPECT_EQ(rounded.mesh.positions.size(), 8u);
+}
+
+TEST_F(AssimpImport, UpZTurnsAFileWithoutAxes) {
+  ImportChoices z_up;
+  z_up.z_up = true;
+  const Model model =
+      import_bundle(make_bundle({{"cube.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 0 3\n3 0 1 2\n"}}), {}, z_up);
+  const glm::vec3 size = model.mesh.bounds.max - model.mesh.bounds.min;
+  EXPECT_NEAR(size.y, 3.0f, 1e-6f);
+}
+
+TEST_F(AssimpImportErrors, BrokenFilesAreRefusedWithTheirReason) {
+  EXPECT_NE(import_error({{"empty.fbx", ""}}).find("empty.fbx: the file is empty"), std::string::npos);
+  const std::string garbage = import_error({{"noise.fbx", std::string(1000, '\x7f')}});
+  EXPECT_NE(garbage.find("noise.fbx: "), std::string::npos) << garbage;
+  const std::string fbx = read_file(kBlender / "rigged.fbx");
+  const std::string cut = import_error({{"cut.fbx", fbx.substr(0, fbx.size() / 2)}});
+  EXPECT_NE(cut.find("cut.fbx: "), std::string::npos) << cut;
+  const std::string off = import_error({{"lie.off", "OFF\n4000000000 1 0\n0 0 0\n"}});
+  EXPECT_NE(off.find("lie.off: "), std::string::npos) << off;
+}
+
+// Blender 3.4 writes a skinned mesh with a shape key as a <skin> and a
+// <morph> of one geometry; Debian's assimp (5.2.5) cannot resolve that pair.
+TEST_F(AssimpImportErrors, BlendersColladaSkinWithAShapeKeyIsRefusedWithAssimpsReason) {
+  const std::string error = import_error({{"rigged.dae", read_file(kBlender / "rigged.dae")}});
+  EXPECT_NE(error.find("rigged.dae: Unable to resolve library reference"), std::string::npos) << error;
+}
+
+TEST_F(AssimpImportErrors, AHelperThatCrashesHangsOrBabblesIsARefusalNotACrash) {
+  const Files files = {{"cube.off", kOffCube}};
+  test_checks::FakeHelpers fakes;
+
+  setenv("TOOND_ASSIMP_CONVERTER", fakes.make("crash", "kill -SEGV $$").c_str(), 1);
+  std::string error = import_error(files);
+  EXPECT_NE(error.find("cube.off: the OFF reader crashed (SIGSEGV)"), std::string::npos) << error;
+
+  setenv("TOOND_ASSIMP_CONVERTER", fakes.make("babble", "cat >/dev/null; printf 'not glTF at all'").c_str(), 1);
+  error = import_error(files);
+  EXPECT_NE(error.find("the OFF reader answered something other than glTF"), std::string::npos) << error;
+
+  setenv("TOOND_ASSIMP_CONVERTER",
+         fakes.make("liar", "cat >/dev/null; printf 'glTF\\002\\000\\000\\000\\377\\377\\000\\000'").c_str(), 1);
+  error = import_error(files);
+  EXPECT_NE(error.find("cube.off: not a valid glTF binary"), std::string::npos) << error;
+
+  setenv("TOOND_ASSIMP_CONVERTER", fakes.make("refuse", "cat >/dev/null; echo 'no such thing' >&2; exit 1").c_str(), 1);
+  error = import_error(files);
+  EXPECT_NE(error.find("cube.off: no such thing"), std::string::npos) << error;
+
+  // A hang ends at the import's own time limit.
+  setenv("TOOND_ASSIMP_CONVERTER", fakes.make("hang", "exec sleep 60").c_str(), 1);
+  ImportLimits limits;
+  limits.max_seconds = 1.0;
+  const auto started = std::chrono::steady_clock::now();
+  error = import_error(files, limits);
+  EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(10));
+  EXPECT_NE(error.find("took longer than"), std::string::npos) << error;
+
+  setenv("TOOND_ASSIMP_CONVERTER", "/nonexistent/toond-assimp-convert", 1);
+  error = import_error(files);
+  EXPECT_NE(error.find("cannot be started"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace toond::scene
