@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
+#include "glb/glb_container.h"
 
 namespace toond::cli {
 namespace {
@@ -155,31 +156,7 @@ constexpr int kUnsignedInt = 5125;
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
 
-void append_u32(std::string& out, std::uint32_t v) {
-  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
-}
-
 }  // namespace
-
-std::string glb_container(const std::string& json_text, const std::string& bin) {
-  std::string json_chunk = json_text;
-  while (json_chunk.size() % 4) json_chunk.push_back(' ');
-  std::string bin_chunk = bin;
-  while (bin_chunk.size() % 4) bin_chunk.push_back('\0');
-  const std::size_t bin_bytes = bin_chunk.empty() ? 0 : 8 + bin_chunk.size();
-  std::string glb;
-  append_u32(glb, 0x46546C67);  // "glTF"
-  append_u32(glb, 2);
-  append_u32(glb, static_cast<std::uint32_t>(12 + 8 + json_chunk.size() + bin_bytes));
-  append_u32(glb, static_cast<std::uint32_t>(json_chunk.size()));
-  append_u32(glb, 0x4E4F534A);  // "JSON"
-  glb += json_chunk;
-  if (bin_chunk.empty()) return glb;  // the binary chunk is optional
-  append_u32(glb, static_cast<std::uint32_t>(bin_chunk.size()));
-  append_u32(glb, 0x004E4942);  // "BIN\0"
-  glb += bin_chunk;
-  return glb;
-}
 
 std::string glb_from_obj(const BundleScan& scan) {
   if (scan.files.empty()) throw UsageError("no OBJ to write as glTF");
@@ -316,7 +293,7 @@ std::string glb_from_obj(const BundleScan& scan) {
   }
   document["meshes"] = json::array({{{"primitives", mesh_primitives}}});
   document["buffers"] = json::array({{{"byteLength", buffer.bin.size()}}});
-  return glb_container(document.dump(), buffer.bin);
+  return glb::glb_container(document.dump(), buffer.bin);
 }
 
 }  // namespace toond::cli

@@ -22,8 +22,4 @@ namespace toond::cli {
 // carried. Throws UsageError when the OBJ does not parse or has no faces.
 std::string glb_from_obj(const BundleScan& scan);
 
-// A binary glTF container: the JSON chunk (padded with spaces), then the
-// binary chunk (padded with zeros) when `bin` holds any bytes.
-std::string glb_container(const std::string& json_text, const std::string& bin);
-
 }  // namespace toond::cli

@@ -4,7 +4,7 @@
 
 #include <openssl/evp.h>
 
-#include "glb_from_obj.h"
+#include "glb/glb_container.h"
 
 namespace toond::test {
 namespace {
@@ -132,7 +132,7 @@ GltfFiles pack_gltf(const GltfParts& parts, GltfForm form, const std::string& st
   json doc = parts.json;
   switch (form) {
     case GltfForm::Glb:
-      return {{stem + ".glb", cli::glb_container(doc.dump(), parts.bin)}};
+      return {{stem + ".glb", glb::glb_container(doc.dump(), parts.bin)}};
     case GltfForm::DataUris:
       doc["buffers"][0]["uri"] = data_uri(parts.bin, "application/octet-stream");
       return {{stem + ".gltf", doc.dump(1)}};

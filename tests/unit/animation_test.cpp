@@ -337,17 +337,6 @@ std::string read_text(const std::filesystem::path& path) {
   return s.str();
 }
 
-// The farthest any point of `a` lies from its nearest point of `b`.
-double farthest_from(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
-  double worst = 0;
-  for (const glm::dvec3& p : a) {
-    double nearest = 1e300;
-    for (const glm::dvec3& q : b) nearest = std::min(nearest, glm::length(p - q));
-    worst = std::max(worst, nearest);
-  }
-  return worst;
-}
-
 // Blender's glTF of a bending bar (3 bones, blended weights, a shape key
 // animated with them) posed here, against the OBJ Blender wrote of the same
 // moment from its own armature deform: tests/exported/blender/make_rigged.py.
@@ -377,9 +366,9 @@ TEST(BlenderRig, BendAtHalfASecondIsWhereBlenderPutIt) {
   // The OBJ's six decimals round by 5e-7; a neighbouring frame (1/24 s
   // away) is 0.03 off.
   const std::vector<glm::dvec3> ours = posed_at(0.5);
-  EXPECT_LT(farthest_from(ours, blender), 1e-5);
-  EXPECT_LT(farthest_from(blender, ours), 1e-5);
-  EXPECT_GT(farthest_from(posed_at(0.5 - 1.0 / 24.0), blender), 1e-2);
+  EXPECT_LT(test_checks::farthest_from(ours, blender), 1e-5);
+  EXPECT_LT(test_checks::farthest_from(blender, ours), 1e-5);
+  EXPECT_GT(test_checks::farthest_from(posed_at(0.5 - 1.0 / 24.0), blender), 1e-2);
 }
 
 // ---- what a file gets wrong -----------------------------------------------

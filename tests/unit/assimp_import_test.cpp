@@ -19,6 +19,7 @@
 #include "scene/bundle_import.h"
 #include "scene/import_error.h"
 #include "scene/mesh_processing.h"
+#include "scene/pose.h"
 
 namespace toond::scene {
 namespace {
@@ -132,6 +133,34 @@ TEST_F(AssimpImport, BlendersFbxCharacterComesWithItsClipsUprightAndInMetres) {
   EXPECT_NEAR(size.z, 0.4f, 1e-4f);
   EXPECT_TRUE(has_warning(model, "rigged.fbx: scaled to metres (the file's unit is 1 cm)")) << warnings_of(model);
   EXPECT_FALSE(has_warning(model, "FB_ngon_encoding")) << warnings_of(model);
+}
+
+// Blender's FBX of the bending bar (tests/exported/blender/make_rigged.py),
+// posed at 0.5 s of Bend, against the OBJ Blender wrote of that moment from
+// its own armature deform and shape key: the bones, the skin weights and
+// the shape key's animated weight all arrive through the helper.
+TEST_F(AssimpImport, BlendersFbxBendsWhereBlenderPutIt) {
+  const Model model = import_bundle(make_bundle({{"rigged.fbx", read_file(kBlender / "rigged.fbx")}}));
+  ASSERT_TRUE(model.rig);
+  const Rig& rig = *model.rig;
+  std::vector<glm::dvec3> blender;
+  std::istringstream obj(read_file(kBlender / "rigged_pose_bend_0_5.obj"));
+  for (std::string line; std::getline(obj, line);) {
+    glm::dvec3 v;
+    if (std::sscanf(line.c_str(), "v %lf %lf %lf", &v.x, &v.y, &v.z) == 3) blender.push_back(v);
+  }
+  ASSERT_EQ(blender.size(), 72u);
+  const auto posed_at = [&](double t) {
+    const PosedVertices posed = pose_vertices(model.mesh, rig, pose_nodes(rig, &rig.clips[*rig.find_clip("Bend")], t));
+    std::vector<glm::dvec3> points;
+    for (const glm::vec3& p : posed.positions) points.push_back(glm::dvec3(p) + model.mesh.origin);
+    return points;
+  };
+  const std::vector<glm::dvec3> ours = posed_at(0.5);
+  EXPECT_LT(test_checks::farthest_from(ours, blender), 1e-5);
+  EXPECT_LT(test_checks::farthest_from(blender, ours), 1e-5);
+  // The shape key's weight is 0 at the start: the middle ring is 0.2 in.
+  EXPECT_GT(test_checks::farthest_from(blender, posed_at(0.0)), 0.1);
 }
 
 TEST_F(AssimpImport, AColladaFileIsUprightInMetresAndFindsItsTextureByFileName) {

@@ -36,6 +36,17 @@ inline std::string tiny_png(std::uint8_t r, std::uint8_t g, std::uint8_t b, int 
   return image::encode_png(img);
 }
 
+// The farthest any point of `a` lies from its nearest point of `b`.
+inline double farthest_from(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+  double worst = 0;
+  for (const glm::dvec3& p : a) {
+    double nearest = 1e300;
+    for (const glm::dvec3& q : b) nearest = std::min(nearest, glm::length(p - q));
+    worst = std::max(worst, nearest);
+  }
+  return worst;
+}
+
 inline bool has_warning(const Model& model, const std::string& needle) {
   return std::any_of(model.warnings.begin(), model.warnings.end(),
                      [&](const std::string& w) { return w.find(needle) != std::string::npos; });
