@@ -163,6 +163,43 @@ TEST_F(AssimpImport, BlendersFbxBendsWhereBlenderPutIt) {
   EXPECT_GT(test_checks::farthest_from(blender, posed_at(0.0)), 0.1);
 }
 
+// Blender's walking character (tests/exported/blender/make_walker.py: 13
+// bones, three materials) as glTF, FBX and COLLADA, posed at 0.25 s of its
+// walk, against the OBJ Blender wrote of that moment.
+class WalkerTwin : public ::testing::TestWithParam<const char*> {
+ protected:
+  void SetUp() override { setenv("TOOND_ASSIMP_CONVERTER", TOOND_ASSIMP_CONVERTER_PATH, 1); }
+};
+
+TEST_P(WalkerTwin, WalksWhereBlenderPutIt) {
+  const std::string name = GetParam();
+  const Model model = import_bundle(make_bundle({{name, read_file(kBlender / name)}}));
+  ASSERT_TRUE(model.rig);
+  const Rig& rig = *model.rig;
+  EXPECT_EQ(rig.joint_count, 13u);
+  // COLLADA carries the active action alone, under the armature's name.
+  const std::size_t walk = rig.clips.size() == 1 ? 0 : *rig.find_clip("Walk");
+  EXPECT_NEAR(rig.clips[walk].duration, 1.0, 1e-6);
+  const PosedVertices posed = pose_vertices(model.mesh, rig, pose_nodes(rig, &rig.clips[walk], 0.25));
+  std::vector<glm::dvec3> ours;
+  for (const glm::vec3& p : posed.positions) ours.push_back(glm::dvec3(p) + model.mesh.origin);
+  std::vector<glm::dvec3> blender;
+  std::istringstream obj(read_file(kBlender / "walker_walk_0_25.obj"));
+  for (std::string line; std::getline(obj, line);) {
+    glm::dvec3 v;
+    if (std::sscanf(line.c_str(), "v %lf %lf %lf", &v.x, &v.y, &v.z) == 3) blender.push_back(v);
+  }
+  ASSERT_GT(blender.size(), 100u);
+  EXPECT_LT(test_checks::farthest_from(ours, blender), 1e-5);
+  EXPECT_LT(test_checks::farthest_from(blender, ours), 1e-5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Blender, WalkerTwin, ::testing::Values("walker.glb", "walker.fbx", "walker.dae"),
+                         [](const auto& param_info) {
+                           std::string name = param_info.param;
+                           return name.substr(name.find('.') + 1);
+                         });
+
 TEST_F(AssimpImport, AColladaFileIsUprightInMetresAndFindsItsTextureByFileName) {
   const Model model = import_bundle(make_bundle({{"art/quad.dae", kTexturedQuadDae},
                                                  {"art/checker.png", test_checks::tiny_png(200, 40, 40)}}));

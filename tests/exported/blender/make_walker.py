@@ -29,6 +29,16 @@
 #         and leans back 1.5 deg) and a head turn 0 -> +20 -> 0 -> -20 -> 0
 #         deg about the vertical; every other bone keyed at rest.
 # The exporter orders the animations by name: "Idle" is animation 0, "Walk" 1.
+#
+# The same character in Blender's other formats, for the format twins:
+#   walker.fbx       both takes (Walk, Idle), baked at every frame
+#   walker.dae       COLLADA, the active action only (Walk, bones sampled as
+#                    matrices at every frame)
+#   walker_rest.obj  the rest pose with its materials (Y up), and
+#   walker_rest.stl, walker_rest.ply  positions and faces only (Z up, as
+#                    Blender writes them: upload with ?up=z)
+#   walker_walk_0_25.obj  the mesh at Walk frame 6 (0.25 s) from Blender's
+#                    own armature deform, Y up, positions only
 # Reruns are not byte-identical: Blender's split normals of the smooth parts
 # vary in the last bit and the Skin primitive's triangles come in another
 # order; the geometry, weights and keys are the same.
@@ -37,6 +47,7 @@
 import math
 import os
 
+import addon_utils
 import bmesh
 import bpy
 from mathutils import Matrix, Vector
@@ -405,3 +416,58 @@ bpy.ops.export_scene.gltf(
     export_materials='EXPORT',
 )
 print("wrote", OUT, os.path.getsize(OUT), "bytes")
+
+STEM = os.path.join(HERE, "walker")
+# The FBX exporter bakes each NLA strip as a take by playing the scene: the
+# tracks must be live (with them off every take is the rest pose).
+rig.animation_data.use_nla = True
+bpy.ops.export_scene.fbx(
+    filepath=STEM + ".fbx",
+    object_types={'ARMATURE', 'MESH'},
+    add_leaf_bones=False,
+    bake_anim=True,
+    bake_anim_use_all_bones=True,
+    bake_anim_use_nla_strips=True,
+    bake_anim_use_all_actions=False,
+    bake_anim_force_startend_keying=True,
+    use_armature_deform_only=True,
+    path_mode='STRIP',
+)
+print("wrote", STEM + ".fbx", os.path.getsize(STEM + ".fbx"), "bytes")
+
+rig.animation_data.use_nla = False
+rig.animation_data.action = walk
+print("COLLADA export:", bpy.ops.wm.collada_export(
+    filepath=STEM + ".dae",
+    selected=False,
+    include_armatures=True,
+    include_animations=True,
+    include_all_actions=False,
+    export_animation_type_selection='sample',
+    sampling_rate=1,
+    triangulate=True,
+))
+
+# The rest pose, and Walk at 0.25 s, from the deformed mesh.
+for module in ("io_mesh_stl", "io_mesh_ply"):
+    addon_utils.enable(module, default_set=True)
+rig.animation_data.action = None
+arm_data.pose_position = 'REST'  # the pose bones keep the last frame's values
+scene.frame_set(0)
+bpy.context.view_layer.update()
+bpy.ops.object.select_all(action='DESELECT')
+body.select_set(True)
+bpy.context.view_layer.objects.active = body
+bpy.ops.export_scene.obj(filepath=STEM + "_rest.obj", use_selection=True, use_mesh_modifiers=True,
+                         use_triangles=True, use_normals=True, use_uvs=False, use_materials=True,
+                         use_animation=False)
+bpy.ops.export_mesh.stl(filepath=STEM + "_rest.stl", use_selection=True, ascii=False)
+bpy.ops.export_mesh.ply(filepath=STEM + "_rest.ply", use_selection=True, use_normals=False,
+                        use_uv_coords=False, use_colors=False)
+arm_data.pose_position = 'POSE'
+rig.animation_data.action = walk
+scene.frame_set(6)
+bpy.context.view_layer.update()
+bpy.ops.export_scene.obj(filepath=STEM + "_walk_0_25.obj", use_selection=True, use_mesh_modifiers=True,
+                         use_triangles=True, use_normals=False, use_uvs=False, use_materials=False,
+                         use_animation=False)
