@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bundle_paths/bundle_path.h"
+#include "bundle_paths/model_formats.h"
 #include "bundle_paths/name_index.h"
 #include "bundle_paths/statement_names.h"
 #include "cli_args.h"
@@ -62,6 +63,28 @@ std::string in_quotes(std::string_view s) {
   return out;
 }
 
+// The runs of printable text in `content` (delimited by quotes, angle
+// brackets, control bytes or anything outside ASCII) that end in an image
+// extension, each once, in the order they first appear.
+std::vector<std::string> image_names_in(std::string_view content) {
+  static constexpr std::string_view kImages[] = {".png", ".jpg", ".jpeg", ".webp", ".tga", ".bmp", ".gif"};
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= content.size(); ++i) {
+    const unsigned char c = i < content.size() ? static_cast<unsigned char>(content[i]) : 0;
+    if (c >= 0x20 && c < 0x7f && c != '"' && c != '<' && c != '>') continue;
+    std::string_view run = content.substr(start, i - start);
+    while (!run.empty() && run.front() == ' ') run.remove_prefix(1);
+    if (!run.empty() && run.size() < 1024 && bundle_paths::has_any_extension(run, kImages) &&
+        seen.insert(std::string(run)).second) {
+      names.emplace_back(run);
+    }
+    start = i + 1;
+  }
+  return names;
+}
+
 // The outcome of looking up one reference.
 struct Lookup {
   enum Kind { found, missing, refused } kind;
@@ -101,6 +124,10 @@ class Scanner {
     }
     // STL and PLY name no other files.
     if (has_suffix(obj_name, ".stl") || has_suffix(obj_name, ".ply")) return std::move(result_);
+    if (bundle_paths::has_any_extension(obj_name, bundle_paths::assimp_model_extensions())) {
+      include_named_images(obj_name, *obj_text);
+      return std::move(result_);
+    }
 
     std::vector<std::size_t> mtl_indices;
     for (const std::string& line : split_lines(*obj_text)) {
@@ -151,6 +178,20 @@ class Scanner {
         if (uri.rfind("data:", 0) == 0) continue;
         include(name, "uri", bundle_paths::uri_reference(uri));
       }
+    }
+  }
+
+  // FBX, COLLADA, 3DS and the other formats read through assimp name their
+  // textures by path inside the file (binary or text), often the artist's
+  // absolute one: every run of text in it that ends in an image file's
+  // extension is looked up as the daemon does, as written and then by its
+  // file name alone beside the model.
+  void include_named_images(const std::string& name, const std::string& content) {
+    for (const std::string& written : image_names_in(content)) {
+      const std::string file_name = written.substr(written.find_last_of("/\\") + 1);
+      Lookup found = lookup(name, written);
+      if (found.kind != Lookup::found && !file_name.empty()) found = lookup(name, file_name);
+      include_lookup(name, "texture", written, found);
     }
   }
 
@@ -271,14 +312,13 @@ fs::path model_file_in(const fs::path& folder) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
-    if (entry.is_regular_file(ec) && (is_gltf_name(name) || has_suffix(name, ".obj") || has_suffix(name, ".m") ||
-                                      has_suffix(name, ".stl") || has_suffix(name, ".ply"))) {
+    if (entry.is_regular_file(ec) && bundle_paths::is_model_file(name)) {
       found.push_back(entry.path());
     }
   }
   if (found.size() != 1) {
     throw UsageError(folder.string() + " holds " + std::to_string(found.size()) +
-                     " model files (.obj, .m, .gltf, .glb, .stl, .ply); name the one to upload");
+                     " model files (" + std::string(bundle_paths::kModelFormatsText) + "); name the one to upload");
   }
   return found.front();
 }

@@ -25,8 +25,10 @@ struct BundleScan {
 // Throws UsageError when the OBJ itself cannot be read. Everything else
 // (missing MTL or texture, a reference leaving the folder) becomes a warning.
 // A .gltf brings the .bin and image files its URIs name; a .glb, .stl or
-// .ply travels alone. A folder stands for its one model file (.obj, .m,
-// .gltf, .glb, .stl or .ply; none or several is a UsageError).
+// .ply travels alone; an FBX, COLLADA or other file read through assimp
+// brings the images it names (bundle_paths/model_formats.h), found as the
+// daemon finds them: as written, else by file name beside the model. A
+// folder stands for its one model file (none or several is a UsageError).
 BundleScan scan_obj_bundle(const std::filesystem::path& obj_path);
 
 // Whether a file name ends in .gltf or .glb (any case).

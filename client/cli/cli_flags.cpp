@@ -142,8 +142,9 @@ OpenGL vendor, renderer and version it renders with.
 Exit status 0 when the status is "ok", 1 otherwise or when it cannot be reached.
 )"},
     {Verb::upload, "upload",
-     "PATH.obj|PATH.m|PATH.glb|PATH.gltf|PATH.stl|PATH.ply|FOLDER [-q]\n[--scene N] [--smooth-angle D] [--up y|z]",
-     "store an OBJ with its MTL files and textures (or a .m mesh);\nprints the model id",
+     "PATH.obj|PATH.glb|PATH.gltf|PATH.stl|PATH.ply|PATH.fbx|PATH.dae|...|FOLDER [-q]\n"
+     "[--scene N] [--smooth-angle D] [--up y|z]",
+     "store a model with its textures (OBJ + MTL, glTF, STL, PLY, FBX,\nCOLLADA, 3DS, ...); prints the model id",
      R"(Sends an OBJ model to the daemon's store (POST /models) together with the
 MTL files its mtllib lines name and the textures those MTL files reference
 (map_Kd, map_Ks, map_Ns, map_d, map_Bump, bump, norm, disp). Files are sent
@@ -151,8 +152,11 @@ with their path relative to the OBJ's folder; references that leave that
 folder are refused, missing files are reported and skipped. A .m mesh
 (`Vertex i x y z {normal=(...)}` / `Face i a b c` lines) and a .glb are
 sent alone, and so are .stl and .ply files; a .gltf brings the .bin and image
-files its URIs name (inside its folder). A folder stands for its one model
-file (.obj, .m, .gltf, .glb, .stl or .ply).
+files its URIs name (inside its folder). An FBX, COLLADA (.dae), 3DS, 3MF,
+OFF or other file the daemon reads through assimp brings the images it
+names, found as written or by file name beside it. A folder stands for its
+one model file (.obj, .gltf, .glb, .stl, .ply, .fbx, .dae, .3ds, .3mf, .off,
+.m or another format assimp reads).
 A glTF file's default scene is drawn; --scene N picks another (another model,
 with its own id). In a file without normals, faces meeting at more than 30
 degrees keep their own normals and shallower edges are smoothed (normals by

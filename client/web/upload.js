@@ -37,10 +37,23 @@ export function filesFromInput(fileList) {
 // Paths inside the bundle are relative to the folder that holds the OBJ:
 // the folder the user dropped ("spot/") is not part of them, and files
 // outside that folder (a README beside it) are left out.
+// The model files' extensions: toond's own readers', then those read
+// through assimp (server/bundle_paths/model_formats.cpp; a unit test keeps
+// the two lists equal).
+export const MODEL_EXTENSIONS = [
+  'obj', 'm', 'gltf', 'glb', 'stl', 'ply',
+  'fbx', 'dae', 'zae', '3ds', '3mf', 'off', 'x', 'x3d', 'x3db', 'ase', 'ask',
+  'ac', 'ac3d', 'acc', 'amf', 'b3d', 'cob', 'dxf', 'hmp', 'ifc', 'ifczip',
+  'iqm', 'irrmesh', 'lwo', 'lxo', 'md2', 'md3', 'md5mesh', 'mdc', 'mdl', 'ms3d', 'ndo',
+  'nff', 'enff', 'ogex', 'pmx', 'q3o', 'q3s', 'sib', 'smd', 'xgl',
+];
+const MODEL_FILE = new RegExp('\\.(' + MODEL_EXTENSIONS.join('|') + ')$', 'i');
+
 export function bundlePaths(files) {
-  const objs = files.filter((f) => /\.(obj|m|gltf|glb|stl|ply)$/i.test(f.path));
+  const objs = files.filter((f) => MODEL_FILE.test(f.path));
   if (objs.length === 0) {
-    throw new Error('no .obj, .gltf, .glb, .stl or .ply (or .m) file among the ' + files.length + ' dropped');
+    throw new Error('no model file (.obj, .gltf, .glb, .stl, .ply, .fbx, .dae, .3ds, .3mf, .off, ...) among the ' +
+      files.length + ' dropped');
   }
   const shallowest = objs.map((f) => f.path).sort((a, b) => a.split('/').length - b.split('/').length)[0];
   const base = shallowest.includes('/') ? shallowest.slice(0, shallowest.lastIndexOf('/') + 1) : '';

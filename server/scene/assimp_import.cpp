@@ -1,9 +1,9 @@
 #include "scene/assimp_import.h"
 
 #include <algorithm>
-#include <array>
 #include <limits>
 
+#include "bundle_paths/model_formats.h"
 #include "scene/bundle_import.h"
 #include "scene/gltf_container.h"
 #include "scene/gltf_import.h"
@@ -13,14 +13,8 @@
 namespace toond::scene {
 namespace {
 
-constexpr std::array<std::string_view, 41> kExtensions = {
-    ".fbx", ".dae",  ".zae", ".3ds", ".3mf",     ".off", ".x",    ".x3d", ".x3db", ".ase",   ".ask",
-    ".ac",  ".ac3d", ".acc", ".amf", ".b3d",     ".cob", ".dxf",  ".hmp", ".ifc",  ".ifczip", ".iqm",
-    ".irrmesh", ".lwo", ".lxo", ".md2", ".md3", ".md5mesh", ".mdc", ".mdl", ".ms3d", ".ndo", ".nff",
-    ".enff", ".ogex", ".pmx", ".q3o", ".q3s", ".sib", ".smd", ".xgl"};
-
 std::string lower_extension(std::string_view path) {
-  for (const std::string_view extension : kExtensions) {
+  for (const std::string_view extension : bundle_paths::assimp_model_extensions()) {
     if (has_extension(path, extension)) return std::string(extension.substr(1));
   }
   return {};
@@ -81,8 +75,6 @@ Bundle with_converted_file(const Bundle& bundle, const std::string& path, std::s
 }
 
 }  // namespace
-
-std::span<const std::string_view> assimp_extensions() { return kExtensions; }
 
 bool read_through_assimp(std::string_view path) { return !lower_extension(path).empty(); }
 

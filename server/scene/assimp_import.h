@@ -9,7 +9,6 @@
 // daemon does not link assimp.
 #include <chrono>
 #include <filesystem>
-#include <span>
 #include <string>
 #include <string_view>
 
@@ -20,14 +19,8 @@
 
 namespace toond::scene {
 
-// The model-file extensions read through the helper, with their dots
-// (".fbx", ".dae", ...). Formats whose models span several files (Unreal's
-// .3d pairs, LightWave scenes, Quake archives) and files that hold only
-// motion are not among them; .obj, .stl, .ply and glTF have readers of
-// toond's own.
-std::span<const std::string_view> assimp_extensions();
-
-// Whether bundle path `path` has one of assimp_extensions().
+// Whether bundle path `path` has one of the extensions read through the
+// helper (bundle_paths::assimp_model_extensions()).
 bool read_through_assimp(std::string_view path);
 
 // How long one conversion may take unless the import's own deadline is

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <vector>
 
+#include "bundle_paths/model_formats.h"
 #include "scene/assimp_import.h"
 #include "scene/enclosure.h"
 #include "scene/gltf_container.h"
@@ -65,13 +66,14 @@ namespace {
 
 // Every model-file extension import_bundle takes, toond's own readers' first.
 std::vector<std::string_view> model_extensions() {
-  std::vector<std::string_view> extensions = {".obj", ".m", ".gltf", ".glb", ".stl", ".ply"};
-  for (const std::string_view extension : assimp_extensions()) extensions.push_back(extension);
+  std::vector<std::string_view> extensions;
+  for (const auto& list : {bundle_paths::own_model_extensions(), bundle_paths::assimp_model_extensions()}) {
+    extensions.insert(extensions.end(), list.begin(), list.end());
+  }
   return extensions;
 }
 
-constexpr std::string_view kModelFileNoun =
-    "model (.obj, .gltf, .glb, .stl, .ply, .fbx, .dae, .3ds, .3mf, .off, .m or another format assimp reads)";
+const std::string kModelFileNoun = "model (" + std::string(bundle_paths::kModelFormatsText) + ")";
 
 // The bundle's glTF files, known by content whatever their names (a .bin
 // or image never starts like one).

@@ -112,6 +112,21 @@ TEST_F(Cli, UploadsAnStlWithTheSmoothingAngleAndTheUpAxis) {
   EXPECT_EQ(info["up"], "z");
 }
 
+// An FBX character goes through the daemon's assimp helper and comes back
+// with its clips; `toon info` shows them.
+TEST_F(Cli, UploadsAnFbxCharacterWithItsClips) {
+  const std::string fbx = (std::filesystem::path(TOOND_EXPORTED_DIR) / "blender" / "walker.fbx").string();
+  const auto upload = toon({"upload", fbx, "--server", daemon().url()});
+  ASSERT_EQ(upload.status, 0) << upload.err;
+  const json info = json::parse(upload.out);
+  EXPECT_EQ(info["files"], json::array({"walker.fbx"}));
+  EXPECT_EQ(info["animation"]["joints"], 13);
+  ASSERT_EQ(info["animation"]["clips"].size(), 2u);
+  // In the order the file gives its takes.
+  EXPECT_EQ(info["animation"]["clips"][0]["name"], "Walk");
+  EXPECT_EQ(info["animation"]["clips"][1]["name"], "Idle");
+}
+
 TEST_F(Cli, RenderWithParamsFileRendersTheDemo) {
   const auto params = out_dir() / "params.json";
   {

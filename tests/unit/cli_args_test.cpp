@@ -491,6 +491,31 @@ TEST(BundleScan, GltfBringsTheFilesItsUrisNameAndAFolderItsModelFile) {
   EXPECT_THROW(scan_obj_bundle(dir.path() / "two"), UsageError);
 }
 
+// An FBX or COLLADA file names its textures by whatever path the artist's
+// machine had; toon sends what the daemon will find: the path as written
+// inside the folder, else the file name beside the model.
+TEST(BundleScan, AnFbxOrColladaFileBringsTheImagesItNames) {
+  TempDir dir;
+  const std::string fbx = std::string("Kaydara FBX Binary  \0\x1a\0", 23) + "S\x1b\0\0\0" +
+                          "C:\\Users\\me\\maps\\Skin.PNG" + std::string("\0\x05", 2) + "S\x0e\0\0\0" +
+                          "textures/eyes.jpg" + "\x01" + std::string("RelativeFilename\0", 17) + "gone.tga";
+  dir.write("hero/hero.fbx", fbx);
+  dir.write("hero/skin.png", "skin");
+  dir.write("hero/textures/eyes.jpg", "eyes");
+  dir.write("hero/unrelated.png", "not named");
+  const BundleScan scan = scan_obj_bundle(dir.path() / "hero");
+  EXPECT_EQ(names(scan), (std::vector<std::string>{"hero.fbx", "skin.png", "textures/eyes.jpg"}));
+  EXPECT_TRUE(has_warning(scan, "'gone.tga' not found"));
+
+  dir.write("scene/scene.dae", "<library_images><image id=\"a\"><init_from>../../etc/secret.png</init_from></image>"
+                               "<image id=\"b\"><init_from>paint.png</init_from></image></library_images>");
+  dir.write("scene/paint.png", "paint");
+  dir.write("etc/secret.png", "must never be sent");
+  const BundleScan collada = scan_obj_bundle(dir.path() / "scene" / "scene.dae");
+  // The file name alone is looked up beside the model, where there is none.
+  EXPECT_EQ(names(collada), (std::vector<std::string>{"scene.dae", "paint.png"}));
+}
+
 TEST(BundleScan, MtllibWithSeveralNamesAndEscapedSpaces) {
   TempDir dir;
   dir.write("m.obj", "mtllib gone.mtl my\\ file.mtl\nmtllib two words.mtl\n");
