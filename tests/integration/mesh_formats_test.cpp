@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +26,48 @@ using Files = std::vector<std::pair<std::string, std::string>>;
 
 class MeshFormats : public SharedDaemonTest {
  protected:
+  // Uploads files of tests/exported/blender; the stored model's id.
+  std::string upload_exported(const std::vector<std::string>& names, const std::string& query,
+                              int triangles) {
+    auto client = daemon().client();
+    httplib::MultipartFormDataItems items;
+    for (const std::string& name : names) {
+      items.push_back({"file", read_file(kBlender / name), name, "application/octet-stream"});
+    }
+    auto res = client.Post("/models" + query, items);
+    EXPECT_TRUE(res && (res->status == 200 || res->status == 201)) << names.front() << ": " << (res ? res->body : "");
+    if (!res) return {};
+    const json info = json::parse(res->body);
+    EXPECT_EQ(info.at("triangles"), triangles) << names.front();
+    return info.at("id").get<std::string>();
+  }
+
+  // The default request at 128², with a clip's pose and a yaw when given.
+  image::Image render(const std::string& id, const std::string& output, const json& animation = nullptr,
+                      std::optional<double> yaw = std::nullopt) {
+    auto client = daemon().client();
+    json request = {{"model", id}, {"width", 128}, {"height", 128}, {"output", output}};
+    if (!animation.is_null()) request["animation"] = animation;
+    if (yaw) request["camera"] = {{"yaw", *yaw}};
+    return render_ok(client, request);
+  }
+
+  // Pixels with a channel more than 8 levels off, and pixels whose alpha
+  // differs by more than half.
+  static std::pair<std::size_t, std::size_t> differences(const image::Image& a, const image::Image& b) {
+    EXPECT_EQ(a.rgba.size(), b.rgba.size());
+    std::pair<std::size_t, std::size_t> off{0, 0};
+    for (std::size_t i = 0; i < std::min(a.rgba.size(), b.rgba.size()); i += 4) {
+      int worst = 0;
+      for (std::size_t k = 0; k < 4; ++k) worst = std::max(worst, std::abs(int(a.rgba[i + k]) - int(b.rgba[i + k])));
+      off.first += worst > 8 ? 1 : 0;
+      off.second += std::abs(int(a.rgba[i + 3]) - int(b.rgba[i + 3])) > 128 ? 1 : 0;
+    }
+    return off;
+  }
+
+  static inline const std::filesystem::path kBlender = TOOND_EXPORTED_DIR "/blender";
+
   image::Image upload_and_render(const Files& files, const std::string& output) {
     auto client = daemon().client();
     httplib::MultipartFormDataItems items;
@@ -84,32 +127,13 @@ TEST_F(MeshFormats, ASmoothSheetRendersAlikeFromEveryFormatThatSmoothsByAngle) {
 // fanned by the reader, Blender triangulates the others itself, and the
 // edge pass follows the triangles' edges (at most 0.2 % of the image).
 TEST_F(MeshFormats, BlenderExportsRenderAlike) {
-  const std::filesystem::path folder = TOOND_EXPORTED_DIR "/blender";
-  auto client = daemon().client();
-  const auto render = [&](const std::string& name, const std::string& query, const std::string& output) {
-    httplib::MultipartFormDataItems items = {{"file", read_file(folder / name), name, "application/octet-stream"}};
-    auto res = client.Post("/models" + query, items);
-    EXPECT_TRUE(res && (res->status == 200 || res->status == 201)) << name << ": " << (res ? res->body : "");
-    const json info = json::parse(res->body);
-    EXPECT_EQ(info.at("triangles"), 200) << name;
-    return render_ok(client, {{"model", info.at("id")}, {"width", 128}, {"height", 128}, {"output", output}});
-  };
   for (const std::string output : {"color", "normal"}) {
-    const image::Image obj_image = render("part.obj", "", output);
+    const image::Image obj_image = render(upload_exported({"part.obj"}, "", 200), output);
     ASSERT_FALSE(obj_image.rgba.empty());
     for (const std::string name : {"part.stl", "part.ply"}) {
-      const image::Image other = render(name, "?up=z", output);
-      ASSERT_EQ(other.rgba.size(), obj_image.rgba.size()) << name;
-      std::size_t off = 0;  // pixels with a channel more than 8 levels off
-      for (std::size_t i = 0; i < other.rgba.size(); i += 4) {
-        for (std::size_t k = 0; k < 4; ++k) {
-          if (std::abs(int(other.rgba[i + k]) - int(obj_image.rgba[i + k])) > 8) {
-            ++off;
-            break;
-          }
-        }
-      }
-      EXPECT_LE(off, output == "normal" ? 0u : 128u * 128u / 500u) << name << " " << output;
+      const image::Image other = render(upload_exported({name}, "?up=z", 200), output);
+      EXPECT_LE(differences(other, obj_image).first, output == "normal" ? 0u : 128u * 128u / 500u)
+          << name << " " << output;
     }
   }
 }
@@ -123,62 +147,49 @@ TEST_F(MeshFormats, BlenderExportsRenderAlike) {
 // walk, FBX and COLLADA draw the glTF's pose (COLLADA off in 5 pixels of
 // the lines). The bound is 0.1 % of the image.
 TEST_F(MeshFormats, BlendersCharacterRendersAlikeInEveryFormat) {
-  const std::filesystem::path folder = TOOND_EXPORTED_DIR "/blender";
-  auto client = daemon().client();
-  const auto upload = [&](const std::vector<std::string>& names, const std::string& query) {
-    httplib::MultipartFormDataItems items;
-    for (const std::string& name : names) items.push_back({"file", read_file(folder / name), name, "application/octet-stream"});
-    auto res = client.Post("/models" + query, items);
-    EXPECT_TRUE(res && (res->status == 200 || res->status == 201)) << names.front() << ": " << (res ? res->body : "");
-    const json info = json::parse(res->body);
-    EXPECT_EQ(info.at("triangles"), 924) << names.front();
-    return info.at("id").get<std::string>();
-  };
-  const auto render = [&](const std::string& id, const std::string& output, const json& animation) {
-    json request = {{"model", id}, {"width", 128}, {"height", 128}, {"output", output}};
-    if (!animation.is_null()) request["animation"] = animation;
-    return render_ok(client, request);
-  };
-  // Pixels with a channel more than 8 levels off, and pixels whose alpha
-  // differs by more than half.
-  const auto differences = [](const image::Image& a, const image::Image& b) {
-    std::pair<std::size_t, std::size_t> off{0, 0};
-    for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
-      int worst = 0;
-      for (std::size_t k = 0; k < 4; ++k) worst = std::max(worst, std::abs(int(a.rgba[i + k]) - int(b.rgba[i + k])));
-      off.first += worst > 8 ? 1 : 0;
-      off.second += std::abs(int(a.rgba[i + 3]) - int(b.rgba[i + 3])) > 128 ? 1 : 0;
-    }
-    return off;
-  };
   const std::size_t bound = 128 * 128 / 1000;
-  const std::string glb = upload({"walker.glb"}, "");
-  const std::string fbx = upload({"walker.fbx"}, "");
-  const std::string dae = upload({"walker.dae"}, "");
-  const std::string obj = upload({"walker_rest.obj", "walker_rest.mtl"}, "");
-  const std::string stl = upload({"walker_rest.stl"}, "?up=z");
-  const std::string ply = upload({"walker_rest.ply"}, "?up=z");
+  const std::string glb = upload_exported({"walker.glb"}, "", 924);
+  const std::string fbx = upload_exported({"walker.fbx"}, "", 924);
+  const std::string dae = upload_exported({"walker.dae"}, "", 924);
+  const std::string obj = upload_exported({"walker_rest.obj", "walker_rest.mtl"}, "", 924);
+  const std::string stl = upload_exported({"walker_rest.stl"}, "?up=z", 924);
+  const std::string ply = upload_exported({"walker_rest.ply"}, "?up=z", 924);
   for (const std::string output : {"color", "normal"}) {
-    const image::Image reference = render(glb, output, nullptr);
+    const image::Image reference = render(glb, output);
     ASSERT_FALSE(reference.rgba.empty());
     for (const auto& [name, id] : {std::pair{"fbx", fbx}, {"dae", dae}, {"obj", obj}}) {
-      const image::Image other = render(id, output, nullptr);
-      ASSERT_EQ(other.rgba.size(), reference.rgba.size()) << name;
+      const image::Image other = render(id, output);
       EXPECT_LE(differences(other, reference).first, bound) << name << " " << output;
     }
     // The normal layer's background is clear: its alpha is the silhouette.
     for (const auto& [name, id] : {std::pair{"stl", stl}, {"ply", ply}}) {
       if (output != "normal") continue;
-      const image::Image other = render(id, output, nullptr);
-      ASSERT_EQ(other.rgba.size(), reference.rgba.size()) << name;
+      const image::Image other = render(id, output);
       EXPECT_LE(differences(other, reference).second, bound) << name << " " << output;
     }
   }
   const image::Image walking = render(glb, "color", {{"clip", "Walk"}, {"time", 0.25}});
-  const image::Image standing = render(glb, "color", nullptr);
+  const image::Image standing = render(glb, "color");
   EXPECT_GT(differences(walking, standing).first, 10 * bound);  // the pose shows
   EXPECT_LE(differences(render(fbx, "color", {{"clip", "Walk"}, {"time", 0.25}}), walking).first, bound);
   EXPECT_LE(differences(render(dae, "color", {{"clip", 0}, {"time", 0.25}}), walking).first, bound);
+}
+
+// Blender's textured cube (tests/exported/blender/make_textured.py) as glTF
+// (the image inside), FBX (the image embedded) and COLLADA (the image
+// beside it), from three sides: the FBX's embedded image and the COLLADA
+// file's referenced one arrive, and FBX's rule that a texture replaces the
+// diffuse colour holds (assimp keeps Blender's 0.8 grey beside it, which
+// darkened the FBX by up to 23 levels before). Measured: within 1 level.
+TEST_F(MeshFormats, BlendersTexturedCubeRendersAlikeInEveryFormat) {
+  const std::string glb = upload_exported({"textured.glb"}, "", 12);
+  const std::string fbx = upload_exported({"textured.fbx"}, "", 12);
+  const std::string dae = upload_exported({"textured.dae", "textured_checker.png"}, "", 12);
+  for (const double yaw : {0.0, 90.0, 180.0}) {
+    const image::Image reference = render(glb, "color", nullptr, yaw);
+    EXPECT_EQ(differences(render(fbx, "color", nullptr, yaw), reference).first, 0u) << "fbx, yaw " << yaw;
+    EXPECT_EQ(differences(render(dae, "color", nullptr, yaw), reference).first, 0u) << "dae, yaw " << yaw;
+  }
 }
 
 }  // namespace
