@@ -7,15 +7,17 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 
 jobs=$(nproc)
-echo "== build (warnings are errors)"
+# Each stage says how long it took: CI's whole run must stay within its hour.
+stage() { echo "== $* (at ${SECONDS} s)"; }
+stage "build (warnings are errors)"
 scripts/build.sh build -DTOOND_WERROR=ON -DTOOND_TESTS=ON
-echo "== tests"
+stage "tests"
 ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600
 
-echo "== build with ASan + UBSan"
+stage "build with ASan + UBSan"
 scripts/build.sh build-asan -DTOOND_WERROR=ON -DTOOND_TESTS=ON -DTOOND_SANITIZE=ON \
   -DCMAKE_BUILD_TYPE=Debug
-echo "== tests under ASan + UBSan"
+stage "tests under ASan + UBSan"
 # Mesa's llvmpipe keeps some allocations for the life of the process; leaks
 # are checked in our code through the suppressions file, not switched off.
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
@@ -23,5 +25,6 @@ export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir build-asan --output-on-failure -j "$jobs" --timeout 900
 
-echo "== fuzzing (libFuzzer + ASan + UBSan, clang, 20 s per target)"
+stage "fuzzing (libFuzzer + ASan + UBSan, clang, 20 s per target)"
 scripts/fuzz.sh 20
+stage "done"
