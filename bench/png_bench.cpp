@@ -1,4 +1,4 @@
-// PNG encode time on real toon frames (README "Performance").
+// PNG encode time on real toon frames (docs/performance.md).
 //   toond_png_bench [--repeats N] [--save DIR] [--level L] [--threads T] [FRAME.png ...]
 // Without frame files it starts the toond built here, uploads models from
 // ../shared/models and renders them with default parameters: the bunny at

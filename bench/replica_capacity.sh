@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders per second one toond replica sustains for a 512x512 `spot` (the
-# README's capacity figure): starts a replica with the result cache off,
+# capacity figure in docs/deployment.md): starts a replica with the result cache off,
 # uploads ../shared/models/spot, then CLIENTS curl loops post
 # /models/{id}/render for SECONDS, each request at a slightly different yaw.
 #   bench/replica_capacity.sh [SECONDS=20] [CLIENTS=4] [TOOND=build/server/app/toond]

@@ -1,5 +1,5 @@
 # The container must be built by the same scripts CI runs, and keep what the
-# deployment relies on (README "Deploying", docker/README.md).
+# deployment relies on (docs/deployment.md, "Deploying", docker/README.md).
 file(READ ${DOCKERFILE} text)
 # Instructions only: a needle left in a comment does not count.
 string(REGEX REPLACE "(^|\n)[ \t]*#[^\n]*" "\\1" text "${text}")
@@ -13,7 +13,7 @@ foreach(needle
     "libegl1"                       # glvnd's libEGL: NVIDIA's EGL on a GPU host
     "NVIDIA_DRIVER_CAPABILITIES=graphics,utility"
     "HEALTHCHECK"
-    "/healthz"
+    "\"toon\", \"--server\", \"http://127.0.0.1:8080\", \"health\""  # GET /healthz
     "USER toond"
     "VOLUME /data")
   string(FIND "${text}" "${needle}" pos)

@@ -1,7 +1,7 @@
 // toond against three.js in one run, on the same machine, with three.js set
 // up the fast way: the shared anchor harness (../shared/anchors/threejs: a
 // detached canvas, cross-origin isolated page, frame → toBlob PNG; its
-// README says why). The Stanford bunny at 512², 3 bands, 1.5 px outline,
+// docs/performance.md says why). The Stanford bunny at 512², 3 bands, 1.5 px outline,
 // without AA and with MSAA 4 / antialias:true, on ANGLE over Mesa llvmpipe
 // and on SwiftShader. Rounds interleave the two sides so a slow spell of
 // the machine falls on both; medians over the rounds are compared.

@@ -18,7 +18,7 @@ namespace toond::gpu {
 // DMA (readback_buffer.h); a CPU rasterizer packs on the CPU inside
 // glReadPixels whatever the destination, and there reading straight into
 // the image and flipping it in place measured faster (Server-Timing's
-// `readback`, README "Performance").
+// `readback`, docs/performance.md).
 enum class ReadbackPath { PixelBuffer, ClientMemory };
 
 class RenderTarget {

@@ -81,7 +81,7 @@ class MessyMeshOracle : public SharedDaemonTest {
 // Targets at 512²: default MSAA mean ≤ 0.2 px and max ≤ 0.6 px; MSAA 1
 // mean ≤ 0.35 and max ≤ 1.0; no speck pixel. The default outline stays on,
 // so a crack shows its dark hull through the bands. Full detail is held to
-// the same targets and printed beside the default (README, Accuracy).
+// the same targets and printed beside the default (docs/accuracy.md).
 TEST_F(MessyMeshOracle, BandEdgesThroughTheDefaultRequest) {
   for (const Variant& v : kVariants) {
     const json params = banded(model_id(v.sphere));

@@ -297,8 +297,8 @@ TEST_F(FaceCullingRender, OpenMeshesDrawTheirInsideOnlyWhereAHoleShows) {
           // view (yaw 270, pitch 20) shows the holed sphere's inside through
           // a hole on the silhouette in one pixel: the hole's cap, seen
           // edge-on, covers no sample, so the cap check misses it. A known
-          // gap of the cap check, not hidden here: see the README's notes
-          // on face culling.
+          // gap of the cap check, not hidden here: see docs/performance.md on
+          // face culling.
           const nlohmann::json request = {{"width", 128},
                                           {"height", 128},
                                           {"outline", {{"method", method}, {"width", 3}}},
