@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The README's second command, and the whole of CI: installs what is
-# missing, builds with -Werror, runs every test, then builds again with
-# AddressSanitizer + UndefinedBehaviorSanitizer and runs every test there.
+# missing, builds with -Werror, runs every test, builds and checks the
+# container image (scripts/container-test.sh), then builds again with
+# AddressSanitizer + UndefinedBehaviorSanitizer and runs every test there,
+# and fuzzes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -13,6 +15,9 @@ stage "build (warnings are errors)"
 scripts/build.sh build -DTOOND_WERROR=ON -DTOOND_TESTS=ON
 stage "tests"
 ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600
+
+stage "the container image, one container and three behind nginx (podman)"
+scripts/container-test.sh build
 
 stage "build with ASan + UBSan"
 scripts/build.sh build-asan -DTOOND_WERROR=ON -DTOOND_TESTS=ON -DTOOND_SANITIZE=ON \

@@ -1,6 +1,6 @@
 // Scale-out as deployed: three toond replicas sharing one data directory
 // behind Debian's nginx, configured with the shipped docker/nginx snippets
-// (consistent hashing on the model id of /models/{id}/render, retry on the
+// (hashing on the model id of /models/{id}/render, retry on the
 // next replica when one is gone).
 #include <gtest/gtest.h>
 
@@ -152,7 +152,7 @@ TEST(ScaleOut, ReplicasBehindNginxShareModelsKeepEachOnOneReplicaAndSurviveLosin
     for (const std::string& id : ids) {
       const int now = replica_serving(balancer, id, 2, replicas, png[id]);
       EXPECT_NE(now, lost);
-      // Consistent hashing moves only the lost replica's models.
+      // A failed server is skipped: only the lost replica's models move.
       if (owner[id] != lost) {
         EXPECT_EQ(now, owner[id]) << id;
       }

@@ -70,7 +70,8 @@ std::string config(const fs::path& prefix, const std::vector<std::string>& upstr
     << "  scgi_temp_path " << p << "/scgi;\n"
     << "  include " << (snippets / "toond-model-hash.conf").string() << ";\n"
     << "  upstream toond {\n"
-    << "    hash $toond_model_id consistent;\n";
+    // As docker/nginx/nginx.conf hashes (not `consistent`; it says why).
+    << "    hash $toond_model_id;\n";
   for (const std::string& u : upstreams) c << "    server " << u << " max_fails=1 fail_timeout=30s;\n";
   c << "    keepalive 8;\n"
     << "  }\n"
