@@ -2,7 +2,12 @@
 # Installs every Debian package toond needs to build, run and test.
 # Idempotent: packages already present are left alone. Used by the README's
 # commands, by CI (.ci/run) and by docker/Dockerfile, so all three agree.
+#   scripts/install-deps.sh [--build-only]
+# --build-only (the container's build stage) leaves out what only the tests,
+# benchmarks, fuzzing and the browser test need.
 set -euo pipefail
+build_only=false
+if [ "${1:-}" = --build-only ]; then build_only=true; fi
 
 packages=(
   # toolchain
@@ -21,6 +26,8 @@ packages=(
   libassimp-dev
   # HTTP + JSON + schema validation
   libcpp-httplib-dev libssl-dev nlohmann-json3-dev libvalijson-dev
+)
+test_packages=(
   # tests, shader checks, benchmarks; Pillow decodes our PNGs as a second opinion
   libgtest-dev libgmock-dev glslang-tools libbenchmark-dev python3-pil
   # libFuzzer targets (scripts/fuzz.sh): clang and its fuzzer runtime
@@ -31,11 +38,13 @@ packages=(
   chromium
 )
 
+if ! $build_only; then packages+=("${test_packages[@]}"); fi
+
 # Node.js and npm are wanted as commands, not as Debian packages: machines that
 # already carry NodeSource's nodejs (which bundles npm) cannot also take Debian's
 # npm package ("held broken packages"), so Debian's pair is installed only where
 # the commands are missing.
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+if ! $build_only && { ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; }; then
   packages+=(nodejs npm)
 fi
 
