@@ -18,7 +18,7 @@
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
 
-#include "assimp_convert/fbx_materials.h"
+#include "assimp_convert/format_materials.h"
 #include "assimp_convert/morph_weight_channels.h"
 #include "assimp_convert/reading_report.h"
 #include "assimp_convert/scene_reading.h"
@@ -82,8 +82,9 @@ int convert(const Options& options) {
   assimp_convert::read_scene(importer, input, options.format);
   const std::size_t over_four = assimp_convert::keep_four_influences(importer);
   const std::unique_ptr<aiScene> scene(importer.GetOrphanedScene());
-  std::vector<std::string> notes = assimp_convert::make_upright_metres(*scene);
+  std::vector<std::string> notes = assimp_convert::make_upright_metres(*scene, options.format);
   if (options.format == "fbx") assimp_convert::let_textures_replace_colours(*scene);
+  if (options.format == "3mf") assimp_convert::linearise_display_colours(*scene);
   for (std::string& note : assimp_convert::not_carried(*scene, over_four)) notes.push_back(std::move(note));
   const std::string glb = assimp_convert::with_morph_weight_channels(as_glb(*scene), *scene, notes);
   if (!helper_process::write_all_stdout(glb)) return fail("cannot write the answer");

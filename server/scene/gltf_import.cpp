@@ -266,12 +266,14 @@ class GltfImporter {
   }
 
   void warn_unread_extensions() {
+    // A converted file's extensions are the converter's choice; what the
+    // original held and the model lacks the converter says itself.
+    if (origin_ == GltfOrigin::Converted) return;
     const json& used = member(doc_, "extensionsUsed");
     if (!used.is_array()) return;
     std::string names;
     for (const json& name : used) {
-      if (name.is_string() && !reads_extension(name.get<std::string>()) &&
-          !(origin_ == GltfOrigin::Converted && written_by_converter(name.get<std::string>()))) {
+      if (name.is_string() && !reads_extension(name.get<std::string>())) {
         names += (names.empty() ? "" : ", ") + name.get<std::string>();
       }
     }
@@ -308,10 +310,6 @@ class GltfImporter {
                     in_quotes(*path));
     }
     return path;
-  }
-
-  static bool written_by_converter(std::string_view extension) {
-    return extension == "FB_ngon_encoding" || extension == "KHR_materials_pbrSpecularGlossiness";
   }
 
   bool uses_extension(std::string_view name) const {

@@ -47,8 +47,9 @@ namespace toond::scene {
 // (`choices.smooth_angle`) as any file without normals; an image URI is the
 // path the original file gave (often the artist's absolute or Windows path),
 // found in the bundle relative to the file or else by its file name alone,
-// with a warning; and the extensions the converter writes on its own
-// (FB_ngon_encoding, KHR_materials_pbrSpecularGlossiness) are not reported.
+// with a warning; and the glTF extensions the converter chose to write are
+// not reported (the converter reports what the original held and the
+// answer does not carry).
 enum class GltfOrigin { File, Converted };
 
 Model import_gltf_bundle(const Bundle& bundle, const std::string& path, const ImportLimits& limits = {},

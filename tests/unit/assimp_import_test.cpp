@@ -20,6 +20,7 @@
 #include "scene/import_error.h"
 #include "scene/mesh_processing.h"
 #include "scene/pose.h"
+#include "support/stored_zip.h"
 
 namespace toond::scene {
 namespace {
@@ -230,6 +231,57 @@ TEST_F(AssimpImport, AFileWithoutNormalsIsShadedByAngle) {
   smooth.smooth_angle = 120.0;
   const Model rounded = import_bundle(make_bundle({{"cube.off", kOffCube}}), {}, smooth);
   EXPECT_EQ(rounded.mesh.positions.size(), 8u);
+}
+
+// A 3MF package as slicers write one: a 10 x 10 x 30 mm column standing on
+// the build plate (3MF is Z-up by its specification), one red base
+// material.
+std::string column_3mf() {
+  const std::string model = R"(<?xml version="1.0" encoding="UTF-8"?>
+<model unit="millimeter" xml:lang="en-US" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">
+ <resources>
+  <basematerials id="1"><base name="Red" displaycolor="#CC2020FF"/></basematerials>
+  <object id="2" type="model" pid="1" pindex="0"><mesh>
+   <vertices>
+    <vertex x="0" y="0" z="0"/><vertex x="10" y="0" z="0"/><vertex x="10" y="10" z="0"/><vertex x="0" y="10" z="0"/>
+    <vertex x="0" y="0" z="30"/><vertex x="10" y="0" z="30"/><vertex x="10" y="10" z="30"/><vertex x="0" y="10" z="30"/>
+   </vertices>
+   <triangles>
+    <triangle v1="0" v2="2" v3="1"/><triangle v1="0" v2="3" v3="2"/><triangle v1="4" v2="5" v3="6"/>
+    <triangle v1="4" v2="6" v3="7"/><triangle v1="0" v2="1" v3="5"/><triangle v1="0" v2="5" v3="4"/>
+    <triangle v1="1" v2="2" v3="6"/><triangle v1="1" v2="6" v3="5"/><triangle v1="2" v2="3" v3="7"/>
+    <triangle v1="2" v2="7" v3="6"/><triangle v1="3" v2="0" v3="4"/><triangle v1="3" v2="4" v3="7"/>
+   </triangles>
+  </mesh></object>
+ </resources>
+ <build><item objectid="2"/></build>
+</model>
+)";
+  return test::stored_zip(
+      {{"[Content_Types].xml",
+        R"(<?xml version="1.0" encoding="UTF-8"?><Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types">)"
+        R"(<Default Extension="rels" ContentType="application/vnd.openxmlformats-package.relationships+xml"/>)"
+        R"(<Default Extension="model" ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/></Types>)"},
+       {"_rels/.rels",
+        R"(<?xml version="1.0" encoding="UTF-8"?><Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">)"
+        R"(<Relationship Target="/3D/3dmodel.model" Id="rel0" Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/>)"
+        R"(</Relationships>)"},
+       {"3D/3dmodel.model", model}});
+}
+
+TEST_F(AssimpImport, A3mfColumnStandsUpright) {
+  const Model model = import_bundle(make_bundle({{"column.3mf", column_3mf()}}));
+  expect_well_formed(model);
+  EXPECT_EQ(model.mesh.triangle_count(), 12u);
+  const glm::vec3 size = model.mesh.bounds.max - model.mesh.bounds.min;
+  EXPECT_NEAR(size.y, 30.0f, 1e-4f);  // the file's +Z
+  EXPECT_NEAR(size.x, 10.0f, 1e-4f);
+  EXPECT_NEAR(size.z, 10.0f, 1e-4f);
+  EXPECT_TRUE(has_warning(model, "column.3mf: turned from +Z up (3MF's axes) to +Y up")) << warnings_of(model);
+  // #CC2020 is sRGB; materials hold linear colour.
+  ASSERT_EQ(model.materials.size(), 1u);
+  EXPECT_NEAR(model.materials[0].diffuse.r, 0.6038f, 1e-3f);
+  EXPECT_NEAR(model.materials[0].diffuse.g, 0.0144f, 1e-3f);
 }
 
 TEST_F(AssimpImport, UpZTurnsAFileWithoutAxes) {
