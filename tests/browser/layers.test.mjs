@@ -74,6 +74,14 @@ async function checkLightType(page, requests) {
     await box.fill(String(v));
     await box.press('Enter');
   }
+  // Each Enter may send a render: one with only x and y typed ([2,3,0]) is
+  // valid too, and on a slow daemon it can finish and settle the view before
+  // the last one is sent. Wait for the request with all three, then for it
+  // to settle.
+  const typedDeadline = Date.now() + STEP_TIMEOUT_MS;
+  while (JSON.stringify(lastRender(requests)?.lights?.[0]?.position) !== '[2,3,4]' && Date.now() < typedDeadline) {
+    await page.waitForTimeout(50);
+  }
   await page.waitForFunction((n) => {
     const view = document.getElementById('view');
     return Number(view.dataset.renders) > n && view.dataset.settled === 'yes'
