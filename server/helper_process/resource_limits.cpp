@@ -21,7 +21,8 @@ void apply_resource_limits(const ResourceLimits& limits) {
 #if !defined(__SANITIZE_ADDRESS__)
   // AddressSanitizer reserves terabytes of address space for its shadow, so
   // a sanitizer build runs without this one (the daemon's wall-clock limit
-  // and output cap still hold).
+  // and output cap still hold, and __asan_default_options below bounds each
+  // allocation).
   const rlim_t bytes = static_cast<rlim_t>(limits.memory_mb) << 20;
   set_limit(RLIMIT_AS, bytes, bytes);
 #endif
@@ -35,3 +36,13 @@ std::optional<unsigned long long> parse_count(std::string_view text) {
 }
 
 }  // namespace toond::helper_process
+
+#if defined(__SANITIZE_ADDRESS__)
+// A helper under AddressSanitizer has no RLIMIT_AS, so a file claiming four
+// billion vertices would have the reader construct them all (48 GB written)
+// before the wall-clock kill. With each allocation bounded, such a request
+// ends the helper at once with the sanitizer's report, which the daemon
+// answers as the 422 it gives any crash of a helper. Read by the sanitizer
+// runtime at start-up; ASAN_OPTIONS from the environment still override.
+extern "C" const char* __asan_default_options() { return "max_allocation_size_mb=2048:abort_on_error=1"; }
+#endif
