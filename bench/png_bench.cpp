@@ -1,12 +1,14 @@
 // PNG encode time on real toon frames (docs/performance.md).
-//   toond_png_bench [--repeats N] [--save DIR] [--level L] [--threads T] [FRAME.png ...]
+//   toond_png_bench [--repeats N] [--save DIR] [--level L] [--threads T] [--libdeflate] [FRAME.png ...]
 // Without frame files it starts the toond built here, uploads models from
 // ../shared/models and renders them with default parameters: the bunny at
 // 512² and 1024² (the frames the encode budget is set for) and a spread of
 // models and angles at 512², to count how many default frames fit a palette.
 // Each frame is then encoded in this process, and the median encode time
 // (wall clock, and CPU time over all threads), the PNG size and the colour
-// type written are printed, one line a frame.
+// type written are printed, one line a frame. With --libdeflate each frame's
+// filtered scanlines are also compressed whole on one thread by zlib and by
+// libdeflate at the same level (deflate_compare.h).
 #include <algorithm>
 #include <chrono>
 #include <ctime>
@@ -23,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_http.h"
+#include "deflate_compare.h"
 #include "image/png_codec.h"
 #include "stats.h"
 #include "support/daemon.h"
@@ -43,6 +46,7 @@ struct Options {
   int threads = toond::image::PngOptions{}.threads;
   std::filesystem::path save_dir;
   std::vector<std::filesystem::path> inputs;
+  bool libdeflate = false;
 };
 
 Options parse_options(int argc, char** argv) {
@@ -56,12 +60,15 @@ Options parse_options(int argc, char** argv) {
       options.level = std::stoi(argv[++i]);
     } else if (arg == "--threads" && has_value) {
       options.threads = std::stoi(argv[++i]);
+    } else if (arg == "--libdeflate") {
+      options.libdeflate = true;
     } else if (arg == "--save" && has_value) {
       options.save_dir = argv[++i];
     } else if (!arg.empty() && arg[0] != '-') {
       options.inputs.emplace_back(arg);
     } else {
-      throw std::runtime_error("usage: toond_png_bench [--repeats N] [--save DIR] [--level L] [--threads T] [FRAME.png ...]");
+      throw std::runtime_error("usage: toond_png_bench [--repeats N] [--save DIR] [--level L] [--threads T] [--libdeflate] "
+                               "[FRAME.png ...]");
     }
   }
   return options;
@@ -171,6 +178,9 @@ int main(int argc, char** argv) {
     int fitting = 0;
     for (const Frame& frame : frames) {
       bench_frame(frame, options);
+      if (options.libdeflate) {
+        toond::bench::compare_deflaters(frame.name.c_str(), frame.image, options.level, options.repeats);
+      }
       fitting += distinct_colours(frame.image) <= 256;
     }
     std::printf("%d of %zu frames have at most 256 colours\n", fitting, frames.size());

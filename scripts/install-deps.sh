@@ -30,6 +30,8 @@ packages=(
 test_packages=(
   # tests, shader checks, benchmarks; Pillow decodes our PNGs as a second opinion
   libgtest-dev libgmock-dev glslang-tools libbenchmark-dev python3-pil
+  # the PNG benchmark's comparison of zlib with libdeflate (bench/deflate_compare.cpp)
+  libdeflate-dev
   # libFuzzer targets (scripts/fuzz.sh): clang and its fuzzer runtime
   clang libclang-rt-14-dev
   # the scale-out test's load balancer (tests/integration/scale_out_test.cpp)
