@@ -15,6 +15,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "gltf_import_checks.h"
+#include "pose_checks.h"
 #include "scene/clip_sampling.h"
 #include "scene/pose.h"
 #include "support/gltf_rig_writer.h"
@@ -330,39 +331,22 @@ TEST(GltfRig, AClipsFramingHoldsEveryPose) {
 
 // ---- a file from a real exporter ------------------------------------------
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Blender's glTF of a bending bar (3 bones, blended weights, a shape key
 // animated with them) posed here, against the OBJ Blender wrote of the same
 // moment from its own armature deform: tests/exported/blender/make_rigged.py.
 TEST(BlenderRig, BendAtHalfASecondIsWhereBlenderPutIt) {
   const std::filesystem::path folder = TOOND_EXPORTED_DIR "/blender";
-  const Model model = import_files({{"rigged.gltf", read_text(folder / "rigged.gltf")},
-                                    {"rigged.bin", read_text(folder / "rigged.bin")}});
+  const Model model = import_files({{"rigged.gltf", test::read_file(folder / "rigged.gltf")},
+                                    {"rigged.bin", test::read_file(folder / "rigged.bin")}});
   ASSERT_TRUE(model.rig);
   const Rig& rig = *model.rig;
   EXPECT_EQ(rig.clip_names(), "\"Bend\", \"Twist\"");
   EXPECT_EQ(rig.joint_count, 3u);
   EXPECT_EQ(rig.morph_target_count, 1u);
-  std::vector<glm::dvec3> blender;
-  std::istringstream obj(read_text(folder / "rigged_pose_bend_0_5.obj"));
-  for (std::string line; std::getline(obj, line);) {
-    glm::dvec3 v;
-    if (std::sscanf(line.c_str(), "v %lf %lf %lf", &v.x, &v.y, &v.z) == 3) blender.push_back(v);
-  }
+  const std::vector<glm::dvec3> blender =
+      test_checks::obj_positions(test::read_file(folder / "rigged_pose_bend_0_5.obj"));
   ASSERT_EQ(blender.size(), 72u);
-  const auto posed_at = [&](double t) {
-    const std::size_t bend = *rig.find_clip("Bend");
-    const PosedVertices posed = pose_vertices(model.mesh, rig, pose_nodes(rig, &rig.clips[bend], t));
-    std::vector<glm::dvec3> points;
-    for (const glm::vec3& p : posed.positions) points.push_back(glm::dvec3(p) + model.mesh.origin);
-    return points;
-  };
+  const auto posed_at = [&](double t) { return test_checks::posed_points(model, *rig.find_clip("Bend"), t); };
   // The OBJ's six decimals round by 5e-7; a neighbouring frame (1/24 s
   // away) is 0.03 off.
   const std::vector<glm::dvec3> ours = posed_at(0.5);
