@@ -146,18 +146,7 @@ class Scanner {
       for (const std::string& line : split_lines(mtl_text)) {
         const auto [keyword, rest] = split_statement(line);
         if (!is_texture_keyword(keyword)) continue;
-        const std::vector<bundle_paths::TextureName> candidates = bundle_paths::texture_names(rest);
-        if (candidates.empty()) continue;
-        std::optional<Lookup> chosen;
-        for (const bundle_paths::TextureName& candidate : candidates) {
-          Lookup l = lookup(mtl_name, candidate.name);
-          if (l.kind == Lookup::found) {
-            chosen = std::move(l);
-            break;
-          }
-          if (!chosen) chosen = std::move(l);  // report on the first, fullest reading
-        }
-        include_lookup(mtl_name, keyword, candidates.front().name, *chosen);
+        include_first_found(mtl_name, keyword, bundle_paths::texture_names(rest));
       }
     }
     return std::move(result_);
@@ -188,11 +177,25 @@ class Scanner {
   // file name alone beside the model.
   void include_named_images(const std::string& name, const std::string& content) {
     for (const std::string& written : image_names_in(content)) {
-      const std::string file_name = written.substr(written.find_last_of("/\\") + 1);
-      Lookup found = lookup(name, written);
-      if (found.kind != Lookup::found && !file_name.empty()) found = lookup(name, file_name);
-      include_lookup(name, "texture", written, found);
+      include_first_found(name, "texture", bundle_paths::path_names(written));
     }
+  }
+
+  // Adds the first of `candidates` (the readings of one reference, fullest
+  // first) found beside `from`; reports on the first when none is.
+  void include_first_found(const std::string& from, std::string_view keyword,
+                           const std::vector<bundle_paths::TextureName>& candidates) {
+    if (candidates.empty()) return;
+    std::optional<Lookup> chosen;
+    for (const bundle_paths::TextureName& candidate : candidates) {
+      Lookup l = lookup(from, candidate.name);
+      if (l.kind == Lookup::found) {
+        chosen = std::move(l);
+        break;
+      }
+      if (!chosen) chosen = std::move(l);  // report on the first, fullest reading
+    }
+    include_lookup(from, keyword, candidates.front().name, *chosen);
   }
 
   // Looks up `ref` relative to bundle file `from` and adds the file.

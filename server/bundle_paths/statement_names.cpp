@@ -133,4 +133,12 @@ std::vector<TextureName> texture_names(std::string_view rest_of_line) {
   return out;
 }
 
+std::vector<TextureName> path_names(std::string_view path) {
+  if (path.empty()) return {};
+  std::vector<TextureName> names = {{std::string(path), false}};
+  std::string file_name = file_name_of(path);
+  if (!file_name.empty() && file_name != path) names.push_back({std::move(file_name), true});
+  return names;
+}
+
 }  // namespace toond::bundle_paths

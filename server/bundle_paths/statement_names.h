@@ -32,4 +32,9 @@ struct TextureName {
 // in matching quotes is meant whole. Empty when the statement names nothing.
 std::vector<TextureName> texture_names(std::string_view rest_of_line);
 
+// The names a texture path written inside a model file (FBX, COLLADA, 3DS:
+// no options, no quoting) may mean: the path as written, then its file name
+// alone when it has folders. Empty when `path` is.
+std::vector<TextureName> path_names(std::string_view path);
+
 }  // namespace toond::bundle_paths

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bundle_paths/bundle_path.h"
+#include "bundle_paths/statement_names.h"
 #include "scene/data_uri.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_container.h"
@@ -301,15 +302,16 @@ class GltfImporter {
   // original file wrote it, relative to the file, or else its file name
   // alone anywhere beside the file (with a warning).
   std::optional<std::string> find_converted_image(const std::string& written, const std::string& role) {
-    if (auto path = bundle_.resolve(path_, written)) return path;
-    const std::string file_name = written.substr(written.find_last_of("/\\") + 1);
-    if (file_name.empty() || file_name == written) return std::nullopt;
-    auto path = bundle_.resolve(path_, file_name);
-    if (path) {
-      warnings_.add(path_ + ": " + role + " " + in_quotes(written) + " was found by its file name alone, as " +
-                    in_quotes(*path));
+    for (const bundle_paths::TextureName& candidate : bundle_paths::path_names(written)) {
+      auto path = bundle_.resolve(path_, candidate.name);
+      if (!path) continue;
+      if (candidate.file_name_only) {
+        warnings_.add(path_ + ": " + role + " " + in_quotes(written) + " was found by its file name alone, as " +
+                      in_quotes(*path));
+      }
+      return path;
     }
-    return path;
+    return std::nullopt;
   }
 
   bool uses_extension(std::string_view name) const {

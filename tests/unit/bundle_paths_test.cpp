@@ -105,5 +105,16 @@ TEST(MtllibNames, WordsUnlessTheWholeLineIsAFile) {
   EXPECT_EQ(mtllib_names("one.mtl", spaced), V{"one.mtl"});
 }
 
+TEST(PathNames, AsWrittenThenTheFileNameAlone) {
+  const auto names = path_names("C:\\Users\\me\\maps\\Skin.png");
+  ASSERT_EQ(names.size(), 2u);
+  EXPECT_EQ(names[0].name, "C:\\Users\\me\\maps\\Skin.png");
+  EXPECT_FALSE(names[0].file_name_only);
+  EXPECT_EQ(names[1].name, "Skin.png");
+  EXPECT_TRUE(names[1].file_name_only);
+  ASSERT_EQ(path_names("skin.png").size(), 1u);  // no folders: nothing else to try
+  EXPECT_TRUE(path_names("").empty());
+  EXPECT_EQ(path_names("maps/").size(), 1u);  // a folder names no file alone
+}
 }  // namespace
 }  // namespace toond::bundle_paths
