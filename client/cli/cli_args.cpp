@@ -29,10 +29,6 @@ bool iequals(std::string_view a, std::string_view b) {
   return true;
 }
 
-bool is_index(std::string_view s) {
-  return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
-}
-
 // One value-taking option as the user may write it: `--name value` or
 // `--name=value`.
 class ArgCursor {

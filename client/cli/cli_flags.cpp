@@ -8,10 +8,6 @@ namespace {
 
 using Value = const std::string&;
 
-bool is_index(std::string_view s) {
-  return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
-}
-
 int parse_size(const std::string& text) {
   const bool digits = is_index(text) && text.size() <= 5;
   const long value = digits ? std::strtol(text.c_str(), nullptr, 10) : 0;
@@ -200,6 +196,10 @@ the exit status is then 1.
 };
 
 }  // namespace
+
+bool is_index(std::string_view s) {
+  return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
+}
 
 std::span<const Flag> flags() { return kFlags; }
 

@@ -37,6 +37,9 @@ struct Flag {
 // has a row for each.
 std::span<const Flag> flags();
 
+// Digits only, at least one: a port, a scene's index, a size.
+bool is_index(std::string_view s);
+
 // How an error names a flag: "-o/--out", "--set".
 std::string flag_display(const text::OptionHelp& flag);
 

@@ -40,16 +40,16 @@ class Fd {
 // A connected pair: `ours` stays here, `theirs` becomes a standard stream
 // of the child. Both close on exec; the spawn's dup2 makes a copy that
 // does not.
-struct Channel {
+struct StdioLink {
   Fd ours;
   Fd theirs;
 };
 
-bool make_channel(Channel& channel) {
+bool make_stdio_link(StdioLink& stdio_link) {
   int fds[2];
   if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0) return false;
-  channel.ours.reset(fds[0]);
-  channel.theirs.reset(fds[1]);
+  stdio_link.ours.reset(fds[0]);
+  stdio_link.theirs.reset(fds[1]);
   return fcntl(fds[0], F_SETFL, fcntl(fds[0], F_GETFL) | O_NONBLOCK) == 0;
 }
 
@@ -102,7 +102,7 @@ class ChildGuard {
   pid_t pid_;
 };
 
-pid_t spawn(const ChildRun& run, Channel& in, Channel& out, Channel& err, int& error) {
+pid_t spawn(const ChildRun& run, StdioLink& in, StdioLink& out, StdioLink& err, int& error) {
   std::vector<std::string> words = {run.program};
   words.insert(words.end(), run.arguments.begin(), run.arguments.end());
   std::vector<char*> argv;
@@ -170,10 +170,10 @@ ChildResult ended(ChildResult result, int status) {
 
 ChildResult run_child(const ChildRun& run) {
   ChildResult result;
-  Channel in;
-  Channel out;
-  Channel err;
-  if (!make_channel(in) || !make_channel(out) || !make_channel(err)) {
+  StdioLink in;
+  StdioLink out;
+  StdioLink err;
+  if (!make_stdio_link(in) || !make_stdio_link(out) || !make_stdio_link(err)) {
     result.code = errno;
     return result;
   }

@@ -9,7 +9,7 @@ namespace toond::scene {
 namespace {
 
 // Points of a golden-angle spiral: nearly even spacing for any count.
-std::array<glm::dvec3, kExtremeDirections> spread_directions() {
+std::array<glm::dvec3, kExtremeDirections> sphere_spiral_directions() {
   std::array<glm::dvec3, kExtremeDirections> dirs{};
   const double golden_angle = std::acos(-1.0) * (3.0 - std::sqrt(5.0));
   for (int i = 0; i < kExtremeDirections; ++i) {
@@ -25,7 +25,7 @@ std::array<glm::dvec3, kExtremeDirections> spread_directions() {
 
 std::vector<glm::vec3> extreme_points(std::span<const glm::vec3> positions) {
   if (positions.empty()) return {};
-  static const std::array<glm::dvec3, kExtremeDirections> dirs = spread_directions();
+  static const std::array<glm::dvec3, kExtremeDirections> dirs = sphere_spiral_directions();
   std::array<double, kExtremeDirections> best;
   best.fill(-std::numeric_limits<double>::infinity());
   std::array<std::size_t, kExtremeDirections> best_index{};

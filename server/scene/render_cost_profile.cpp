@@ -32,7 +32,7 @@ double box_projected_area(const glm::dvec3& extent, const glm::dvec3& v) {
 // Evenly spread directions on the half sphere z ≥ 0 (a Fibonacci spiral),
 // with the axes among them: a flat model lying in a coordinate plane is
 // seen face on from one of them, where its layers are densest.
-std::array<glm::dvec3, 48> spread_directions() {
+std::array<glm::dvec3, 48> half_sphere_spiral_directions() {
   std::array<glm::dvec3, 48> dirs{};
   const double golden_angle = std::numbers::pi * (3.0 - std::sqrt(5.0));
   for (std::size_t i = 0; i < dirs.size(); ++i) {
@@ -53,7 +53,7 @@ RenderCostProfile::RenderCostProfile(const std::array<glm::dvec3, kBins>& area_b
                                      double edge_span)
     : extent_(extent), edge_span_(edge_span) {
   for (std::size_t i = 0; i < area_bins_.size(); ++i) area_bins_[i] = glm::vec3(area_bins[i]);
-  static const std::array<glm::dvec3, 48> dirs = spread_directions();
+  static const std::array<glm::dvec3, 48> dirs = half_sphere_spiral_directions();
   for (const glm::dvec3& d : dirs) max_layers_ = std::max(max_layers_, layers_toward(d));
 }
 

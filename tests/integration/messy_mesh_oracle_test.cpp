@@ -26,7 +26,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr int kSize = 512;
+constexpr int kOracleSize = 512;
 constexpr int kSteps = 5;
 
 struct Variant {
@@ -59,8 +59,8 @@ class MessyMeshOracle : public SharedDaemonTest {
   // light, white, no ambient, an orthographic front view.
   static json banded(const std::string& id) {
     return {{"model", id},
-            {"width", kSize},
-            {"height", kSize},
+            {"width", kOracleSize},
+            {"height", kOracleSize},
             {"background", {0, 0, 1}},
             {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}},
             {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}}}},
@@ -121,8 +121,8 @@ TEST_F(MessyMeshOracle, PerFaceNormalsLeaveNoSpecks) {
 TEST_F(MessyMeshOracle, OutlineRingIsTheWidthAllRound) {
   for (const Variant& v : kVariants) {
     json params = {{"model", model_id(v.sphere)},
-                   {"width", kSize},
-                   {"height", kSize},
+                   {"width", kOracleSize},
+                   {"height", kOracleSize},
                    {"background", {0, 0, 1}},
                    {"shading", {{"mode", "flat"}, {"base", "white"}}}};
     const DiskEstimate disk = silhouette(params);
@@ -144,8 +144,8 @@ TEST_F(MessyMeshOracle, OutlineRingIsTheWidthAllRound) {
 // shows, and well apart in brightness from the band it lies on.
 TEST_F(MessyMeshOracle, DefaultRimIsAVisibleContrastingRing) {
   json params = {{"model", model_id({})},
-                 {"width", kSize},
-                 {"height", kSize},
+                 {"width", kOracleSize},
+                 {"height", kOracleSize},
                  {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}}};
   const DiskEstimate disk = silhouette(params);
   auto client = daemon().client();

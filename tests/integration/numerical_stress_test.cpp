@@ -21,7 +21,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr int kSize = 256;
+constexpr int kStressSize = 256;
 
 class NumericalStress : public SharedDaemonTest {
  public:
@@ -46,8 +46,8 @@ class NumericalStress : public SharedDaemonTest {
   // undefined value in the framebuffer).
   static json grey_params(const std::string& model) {
     return {{"model", model},
-            {"width", kSize},
-            {"height", kSize},
+            {"width", kStressSize},
+            {"height", kStressSize},
             {"background", {0.6, 0.6, 0.6}},
             {"ambient", 0.25},
             {"shading", {{"base", "white"}}},
@@ -93,7 +93,7 @@ double fraction_differing(const image::Image& a, const image::Image& b) {
 // default light and camera).
 TEST_F(NumericalStress, FarAndTinyAndHugeSpheresRenderLikeTheUnitSphere) {
   auto client = daemon().client();
-  const json base = {{"width", kSize}, {"height", kSize}};
+  const json base = {{"width", kStressSize}, {"height", kStressSize}};
   json params = base;
   params["model"] = unit_sphere();
   const auto reference = render_ok(client, params);
@@ -207,8 +207,8 @@ TEST_F(NumericalStress, NoSelfShadowOnTheLitSideOfAConvexModel) {
       // The lit half: above the first band, so clear of the terminator
       // where the shadow map and N·L both say "dark" anyway.
       std::size_t darkened = 0, lit = 0;
-      for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
+      for (int y = 0; y < kStressSize; ++y)
+        for (int x = 0; x < kStressSize; ++x) {
           if (plain.at(x, y) < 0.25 + 0.75 * 0.5 || plain.at(x, y) > 0.999) continue;
           ++lit;
           darkened += shadowed.at(x, y) < plain.at(x, y) - 1e-3 ? 1 : 0;

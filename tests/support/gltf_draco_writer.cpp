@@ -12,7 +12,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr const char* kExtension = "KHR_draco_mesh_compression";
+constexpr const char* kDracoExtension = "KHR_draco_mesh_compression";
 
 std::string draco_type_of(const std::string& semantic) {
   if (semantic == "POSITION") return "position";
@@ -22,20 +22,10 @@ std::string draco_type_of(const std::string& semantic) {
   return "generic";
 }
 
-std::uint32_t components_of(const std::string& type) {
-  return type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : 4;
-}
-
 // The bytes of an accessor of `plain` (tightly packed, as build_gltf writes them).
 const char* accessor_bytes(const GltfParts& plain, const json& accessor) {
   const json& view = plain.json["bufferViews"][accessor["bufferView"].get<std::size_t>()];
   return plain.bin.data() + view["byteOffset"].get<std::size_t>() + accessor.value("byteOffset", std::size_t{0});
-}
-
-void list_extension(json& doc, const char* list) {
-  json& names = doc[list];
-  if (!names.is_array()) names = json::array();
-  if (std::find(names.begin(), names.end(), kExtension) == names.end()) names.push_back(kExtension);
 }
 
 std::uint32_t u32_at(const std::string& bytes, std::size_t at) {
@@ -103,7 +93,7 @@ GltfParts draco_compress(const GltfParts& plain, const DracoOptions& options) {
       out.json["bufferViews"].push_back(
           {{"buffer", 0}, {"byteOffset", out.bin.size()}, {"byteLength", encoded.bytes.size()}});
       out.bin += encoded.bytes;
-      primitive["extensions"][kExtension] = {{"bufferView", out.json["bufferViews"].size() - 1},
+      primitive["extensions"][kDracoExtension] = {{"bufferView", out.json["bufferViews"].size() - 1},
                                              {"attributes", encoded.ids}};
       const auto describe_decoded = [&](const json& index, std::size_t count) {
         json& accessor = out.json["accessors"][index.get<std::size_t>()];
@@ -123,8 +113,8 @@ GltfParts draco_compress(const GltfParts& plain, const DracoOptions& options) {
   }
   while (out.bin.size() % 4 != 0) out.bin.push_back('\0');
   out.json["buffers"][0]["byteLength"] = out.bin.size();
-  list_extension(out.json, "extensionsUsed");
-  if (!options.keep_fallback) list_extension(out.json, "extensionsRequired");
+  list_extension(out.json, "extensionsUsed", kDracoExtension);
+  if (!options.keep_fallback) list_extension(out.json, "extensionsRequired", kDracoExtension);
   return out;
 }
 

@@ -12,16 +12,10 @@ namespace {
 
 using nlohmann::json;
 
-constexpr const char* kExtension = "EXT_meshopt_compression";
+constexpr const char* kMeshoptExtension = "EXT_meshopt_compression";
 
 void pad_to_four(std::string& bytes) {
   while (bytes.size() % 4 != 0) bytes.push_back('\0');
-}
-
-void list_extension(json& doc, const char* list) {
-  json& names = doc[list];
-  if (!names.is_array()) names = json::array();
-  if (std::find(names.begin(), names.end(), kExtension) == names.end()) names.push_back(kExtension);
 }
 
 std::vector<unsigned int> indices_of(const void* elements, std::size_t count, std::size_t stride) {
@@ -66,7 +60,7 @@ json compressed_view(GltfParts& parts, const void* elements, std::size_t count, 
                      const std::string& mode, const std::string& filter) {
   json& buffers = parts.json["buffers"];
   if (buffers.size() < 2) {
-    buffers.push_back({{"byteLength", 0}, {"extensions", {{kExtension, {{"fallback", true}}}}}});
+    buffers.push_back({{"byteLength", 0}, {"extensions", {{kMeshoptExtension, {{"fallback", true}}}}}});
   }
   const std::string stream = encode_stream(elements, count, stride, mode);
   pad_to_four(parts.bin);
@@ -76,13 +70,13 @@ json compressed_view(GltfParts& parts, const void* elements, std::size_t count, 
   std::size_t view_offset = buffers[1]["byteLength"].get<std::size_t>();
   view_offset += (4 - view_offset % 4) % 4;
   buffers[1]["byteLength"] = view_offset + count * stride;
-  list_extension(parts.json, "extensionsUsed");
-  list_extension(parts.json, "extensionsRequired");
+  list_extension(parts.json, "extensionsUsed", kMeshoptExtension);
+  list_extension(parts.json, "extensionsRequired", kMeshoptExtension);
   json view = {{"buffer", 1}, {"byteOffset", view_offset}, {"byteLength", count * stride}};
   json extension = {{"buffer", 0},    {"byteOffset", stream_offset}, {"byteLength", stream.size()},
                     {"byteStride", stride}, {"count", count},         {"mode", mode}};
   if (filter != "NONE") extension["filter"] = filter;
-  view["extensions"] = {{kExtension, extension}};
+  view["extensions"] = {{kMeshoptExtension, extension}};
   return view;
 }
 
@@ -148,7 +142,7 @@ GltfParts meshopt_compress(const GltfParts& plain, MeshoptFallback fallback) {
   if (fallback == MeshoptFallback::Zeros) {
     stand_in["uri"] = data_uri(std::string(stand_in["byteLength"].get<std::size_t>(), '\0'), "application/octet-stream");
     json& required = out.json["extensionsRequired"];
-    required.erase(std::remove(required.begin(), required.end(), kExtension), required.end());
+    required.erase(std::remove(required.begin(), required.end(), kMeshoptExtension), required.end());
     if (required.empty()) out.json.erase("extensionsRequired");
   }
   return out;

@@ -19,10 +19,6 @@ int append_accessor(GltfParts& parts, const void* bytes, std::size_t size, std::
   return static_cast<int>(doc["accessors"].size()) - 1;
 }
 
-std::size_t components_of(const std::string& type) {
-  return type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : type == "VEC4" ? 4 : 16;
-}
-
 }  // namespace
 
 int append_float_accessor(GltfParts& parts, const std::vector<float>& values, const std::string& type) {

@@ -1,5 +1,6 @@
 #include "support/gltf_writer.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include <openssl/evp.h>
@@ -55,6 +56,16 @@ std::string base64(const std::string& bytes) {
 }
 
 }  // namespace
+
+std::size_t components_of(const std::string& type) {
+  return type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : type == "VEC4" ? 4 : 16;
+}
+
+void list_extension(json& doc, const char* list, const char* extension) {
+  json& names = doc[list];
+  if (!names.is_array()) names = json::array();
+  if (std::find(names.begin(), names.end(), extension) == names.end()) names.push_back(extension);
+}
 
 std::string data_uri(const std::string& bytes, const std::string& media_type) {
   return "data:" + media_type + ";base64," + base64(bytes);

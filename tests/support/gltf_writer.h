@@ -77,5 +77,11 @@ GltfFiles write_gltf(const GltfDocument& document, GltfForm form, const std::str
 // `bytes` as a base64 data: URI of `media_type`.
 std::string data_uri(const std::string& bytes, const std::string& media_type);
 
+// Numbers per element of an accessor `type` ("SCALAR" 1 ... "MAT4" 16).
+std::size_t components_of(const std::string& type);
+
+// Adds `extension` to the document's `list` ("extensionsUsed",
+// "extensionsRequired") unless it is there.
+void list_extension(nlohmann::json& doc, const char* list, const char* extension);
 
 }  // namespace toond::test

@@ -92,7 +92,7 @@ class AssimpImport : public ::testing::Test {
 };
 using AssimpImportErrors = AssimpImport;
 
-std::string import_error(const Files& files, const ImportLimits& limits = {}) {
+std::string conversion_error(const Files& files, const ImportLimits& limits = {}) {
   try {
     import_bundle(make_bundle(files), limits);
   } catch (const ImportError& e) {
@@ -270,16 +270,16 @@ TEST_F(AssimpImport, UpZTurnsAFileWithoutAxes) {
 }
 
 TEST_F(AssimpImportErrors, BrokenFilesAreRefusedWithTheirReason) {
-  EXPECT_NE(import_error({{"empty.fbx", ""}}).find("empty.fbx: the file is empty"), std::string::npos);
+  EXPECT_NE(conversion_error({{"empty.fbx", ""}}).find("empty.fbx: the file is empty"), std::string::npos);
   // The reader's own reasons, not a crash or a stop.
-  const std::string garbage = import_error({{"noise.fbx", std::string(1000, '\x7f')}});
+  const std::string garbage = conversion_error({{"noise.fbx", std::string(1000, '\x7f')}});
   EXPECT_NE(garbage.find("noise.fbx: FBX-Parser"), std::string::npos) << garbage;
   const std::string fbx = read_file(kBlender / "rigged.fbx");
-  const std::string cut = import_error({{"cut.fbx", fbx.substr(0, fbx.size() / 2)}});
+  const std::string cut = conversion_error({{"cut.fbx", fbx.substr(0, fbx.size() / 2)}});
   EXPECT_NE(cut.find("cut.fbx: FBX-Tokenize"), std::string::npos) << cut;
   // Four billion vertices: the memory limit, or under AddressSanitizer
   // (no RLIMIT_AS) its bound on one allocation, which ends the helper.
-  const std::string off = import_error({{"lie.off", "OFF\n4000000000 1 0\n0 0 0\n"}});
+  const std::string off = conversion_error({{"lie.off", "OFF\n4000000000 1 0\n0 0 0\n"}});
   EXPECT_TRUE(off.find("lie.off: reading it needs more than the memory limit") != std::string::npos ||
               off.find("lie.off: the OFF reader crashed (SIGABRT)") != std::string::npos)
       << off;
@@ -288,7 +288,7 @@ TEST_F(AssimpImportErrors, BrokenFilesAreRefusedWithTheirReason) {
 // Blender 3.4 writes a skinned mesh with a shape key as a <skin> and a
 // <morph> of one geometry; Debian's assimp (5.2.5) cannot resolve that pair.
 TEST_F(AssimpImportErrors, BlendersColladaSkinWithAShapeKeyIsRefusedWithAssimpsReason) {
-  const std::string error = import_error({{"rigged.dae", read_file(kBlender / "rigged.dae")}});
+  const std::string error = conversion_error({{"rigged.dae", read_file(kBlender / "rigged.dae")}});
   EXPECT_NE(error.find("rigged.dae: Unable to resolve library reference"), std::string::npos) << error;
 }
 
@@ -297,20 +297,20 @@ TEST_F(AssimpImportErrors, AHelperThatCrashesHangsOrBabblesIsARefusalNotACrash) 
   test_checks::FakeHelpers fakes;
 
   setenv("TOOND_ASSIMP_CONVERTER", fakes.make("crash", "kill -SEGV $$").c_str(), 1);
-  std::string error = import_error(files);
+  std::string error = conversion_error(files);
   EXPECT_NE(error.find("cube.off: the OFF reader crashed (SIGSEGV)"), std::string::npos) << error;
 
   setenv("TOOND_ASSIMP_CONVERTER", fakes.make("babble", "cat >/dev/null; printf 'not glTF at all'").c_str(), 1);
-  error = import_error(files);
+  error = conversion_error(files);
   EXPECT_NE(error.find("the OFF reader answered something other than glTF"), std::string::npos) << error;
 
   setenv("TOOND_ASSIMP_CONVERTER",
          fakes.make("liar", "cat >/dev/null; printf 'glTF\\002\\000\\000\\000\\377\\377\\000\\000'").c_str(), 1);
-  error = import_error(files);
+  error = conversion_error(files);
   EXPECT_NE(error.find("cube.off: not a valid glTF binary"), std::string::npos) << error;
 
   setenv("TOOND_ASSIMP_CONVERTER", fakes.make("refuse", "cat >/dev/null; echo 'no such thing' >&2; exit 1").c_str(), 1);
-  error = import_error(files);
+  error = conversion_error(files);
   EXPECT_NE(error.find("cube.off: no such thing"), std::string::npos) << error;
 
   // A hang ends at the import's own time limit.
@@ -318,12 +318,12 @@ TEST_F(AssimpImportErrors, AHelperThatCrashesHangsOrBabblesIsARefusalNotACrash) 
   ImportLimits limits;
   limits.max_seconds = 1.0;
   const auto started = std::chrono::steady_clock::now();
-  error = import_error(files, limits);
+  error = conversion_error(files, limits);
   EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(10));
   EXPECT_NE(error.find("took longer than"), std::string::npos) << error;
 
   setenv("TOOND_ASSIMP_CONVERTER", "/nonexistent/toond-assimp-convert", 1);
-  error = import_error(files);
+  error = conversion_error(files);
   EXPECT_NE(error.find("cannot be started"), std::string::npos) << error;
 }
 

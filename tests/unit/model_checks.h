@@ -10,6 +10,7 @@
 
 #include "image/png_codec.h"
 #include "scene/bundle.h"
+#include "scene/import_error.h"
 #include "scene/model.h"
 
 namespace toond::scene::test_checks {
@@ -118,6 +119,21 @@ inline void expect_well_formed(const Model& m) {
     EXPECT_TRUE(glm::all(glm::greaterThanEqual(mat.specular, glm::vec3(0.0f))) &&
                 glm::all(glm::lessThanEqual(mat.specular, glm::vec3(1.0f))));
     EXPECT_TRUE(mat.shininess >= 0.0f && mat.shininess <= 1000.0f) << mat.shininess;
+  }
+}
+
+// `import` (an importer taking only the bundle) refuses `bundle` with an
+// ImportError that names `file` and whose message holds `needle` and `needle2`.
+template <class Import>
+void expect_import_error(Import&& import, const Bundle& bundle, const std::string& file, const std::string& needle,
+                         const std::string& needle2 = {}) {
+  try {
+    import(bundle);
+    ADD_FAILURE() << "no ImportError";
+  } catch (const ImportError& e) {
+    EXPECT_EQ(e.file(), file);
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(needle2), std::string::npos) << e.what();
   }
 }
 
