@@ -15,7 +15,7 @@ targets=(bundle_import render_params multipart gltf_import)
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
-  -DTOOND_TESTS=OFF -DTOOND_BENCH=OFF -DTOOND_FUZZ=ON "${launcher[@]}" >/dev/null
+  -DTOOND_TESTS=OFF -DTOOND_BENCH=OFF -DTOOND_FUZZ=ON -DCMAKE_UNITY_BUILD=ON "${launcher[@]}" >/dev/null
 cmake --build "$build_dir" -j "$(nproc)" --target "${targets[@]/#/fuzz_}" make_gltf_seeds
 # The glTF seeds are generated, not stored (tests/fuzz/make_gltf_seeds.cpp).
 "$build_dir/tests/fuzz/make_gltf_seeds" "$build_dir/corpus/gltf_import.seeds" >/dev/null
