@@ -12,12 +12,21 @@
 // where it crosses them. CREASES_ONLY (another pass draws the silhouette)
 // leaves the silhouette's work out. The depth threshold is a fraction of
 // the model's size, so the test does not depend on how large the model is.
+// With u_readable_area_px (pixel-art sprites) a line between two surface
+// pixels is drawn only where the areas on both sides run on that far along
+// the axis walked: a part narrower than that would be all line. With
+// u_whole_pixels (pixel art again) a line is whole pixels, not shares: the
+// one pixel after each edge along x and along y, fully covered (a line
+// centred on the border between two pixels would cover half of each, a grey
+// that the palette then snaps to a stray colour).
 layout(binding = 0) uniform sampler2D u_normal_depth;  // xyz normal, w distance from the eye; w = 0: background
 layout(binding = 1) uniform sampler2D u_coverage;  // the share of each pixel the model covers
 uniform float u_half_width;        // pixels: half the line width
 uniform float u_depth_threshold;   // scene units
 uniform float u_cos_crease;
 uniform vec3 u_edge_color;         // linear
+uniform int u_readable_area_px;    // 0: every edge
+uniform bool u_whole_pixels;
 
 layout(location = 0) out vec4 o_color;
 
@@ -44,6 +53,24 @@ bool edge_between(vec4 before, vec4 a, vec4 b) {
   if (!is_background(before) && abs((b.w - a.w) - (a.w - before.w)) > u_depth_threshold) return true;
 #endif
   return dot(a.xyz, b.xyz) < u_cos_crease;
+}
+
+// Whether the area of `first` (at `at`) runs on for u_readable_area_px
+// pixels along `step` without meeting the background or another turn.
+bool area_runs_on(ivec2 at, ivec2 step, vec4 first) {
+  for (int k = 1; k < u_readable_area_px; ++k) {
+    vec4 t = texel_at(at + k * step);
+    if (is_background(t) || dot(t.xyz, first.xyz) < u_cos_crease) return false;
+  }
+  return true;
+}
+
+// Whether the edge between a (at `at`) and b, its neighbour along `step`,
+// is one to draw: silhouettes always, lines between two surface pixels
+// only between areas wide enough to read.
+bool readable(ivec2 at, ivec2 step, vec4 a, vec4 b) {
+  if (u_readable_area_px <= 1 || is_background(a) || is_background(b)) return true;
+  return area_runs_on(at, -step, a) && area_runs_on(at + step, step, b);
 }
 
 #ifndef CREASES_ONLY
@@ -79,7 +106,7 @@ float edge_distance_along(ivec2 p, ivec2 step, int reach) {
   int found = 0;
   for (int k = 1; k <= reach; ++k) {
     b = texel_at(p + k * step);
-    if (edge_between(before, a, b)) {
+    if (edge_between(before, a, b) && readable(p + (k - 1) * step, step, a, b)) {
       found = k;
       break;
     }
@@ -99,6 +126,10 @@ float edge_distance_along(ivec2 p, ivec2 step, int reach) {
 // The nearest edge along one axis (`along`), in either direction; `toward`
 // is the direction it lies in.
 float nearest_along(ivec2 p, ivec2 along, int reach, out ivec2 toward) {
+  if (u_whole_pixels) {
+    toward = -along;
+    return edge_distance_along(p, -along, reach);
+  }
   float ahead = edge_distance_along(p, along, reach);
   float behind = edge_distance_along(p, -along, reach);
   toward = ahead <= behind ? along : -along;
@@ -135,9 +166,9 @@ void main() {
   // from the pixel.
   float d = min(dx, dy);
   if (dx < kNone && dy < kNone) d = dx * dy / max(sqrt(dx * dx + dy * dy), 1e-6);
-  else if (dx < kNone) d = distance_by_slope(p, toward_x, dx, reach);
-  else if (dy < kNone) d = distance_by_slope(p, toward_y, dy, reach);
-  float coverage = clamp(u_half_width - d + 0.5, 0.0, 1.0);
+  else if (dx < kNone && !u_whole_pixels) d = distance_by_slope(p, toward_x, dx, reach);
+  else if (dy < kNone && !u_whole_pixels) d = distance_by_slope(p, toward_y, dy, reach);
+  float coverage = u_whole_pixels ? float(d <= u_half_width) : clamp(u_half_width - d + 0.5, 0.0, 1.0);
   if (coverage <= 0.0) discard;
   o_color = vec4(u_edge_color, coverage);
 }

@@ -97,7 +97,7 @@ void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
   // pixel; a data layer draws one sample a pixel, unsupersampled (the pass
   // plan gives it the Layer pass alone), whatever msaa and supersample say.
   const bool pixel_art = p.sheet && p.sheet->pixel_art;
-  RenderParams drawn = pixel_art ? render::pixel_art_frame_params(p, p.sheet->pixel_art->scale) : p;
+  RenderParams drawn = pixel_art ? render::pixel_art_frame_params(p, *p.sheet->pixel_art) : p;
   if (render::is_data_layer(p.output)) {
     drawn.msaa = 1;
     drawn.supersample = 1;

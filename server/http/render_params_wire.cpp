@@ -35,6 +35,8 @@ SheetParams::PixelArt pixel_art_of(const json& a) {
     }
   }
   art.dither = a.at("dither").get<bool>();
+  art.lines = a.at("lines").get<std::string>() == "as_given" ? SheetParams::PixelArt::Lines::AsGiven
+                                                             : SheetParams::PixelArt::Lines::Sprite;
   return art;
 }
 

@@ -25,7 +25,7 @@ std::vector<RenderParams> drawn_frames(const RenderParams& params) {
   std::vector<RenderParams> frames;
   for (const render::SheetFrame& frame : layout.frames) {
     RenderParams one = render::frame_params(params, layout, frame);
-    if (params.sheet->pixel_art) one = render::pixel_art_frame_params(std::move(one), params.sheet->pixel_art->scale);
+    if (params.sheet->pixel_art) one = render::pixel_art_frame_params(std::move(one), *params.sheet->pixel_art);
     frames.push_back(std::move(one));
   }
   return frames;

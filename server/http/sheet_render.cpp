@@ -111,7 +111,7 @@ render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJ
     one.objects = job.objects;
     if (!poses.empty()) one.objects.front().pose = poses[static_cast<std::size_t>(frame.index)];
     one.params = render::frame_params(job.params, layout, frame);
-    if (pixel_art) one.params = render::pixel_art_frame_params(std::move(one.params), pixel_art->scale);
+    if (pixel_art) one.params = render::pixel_art_frame_params(std::move(one.params), *pixel_art);
     one.deadline = deadline;
     // The sheet waits in the lane its whole price says, its client's turn.
     one.client = job.client;

@@ -86,6 +86,9 @@ struct SheetParams {
     int colors = 16;    // size of the computed palette when `palette` is empty
     std::vector<std::array<std::uint8_t, 3>> palette;  // sRGB; empty: computed over the sheet
     bool dither = false;  // ordered 4×4 Bayer dithering
+    // sprite: 1-art-pixel outline, only readable inner lines, no contour;
+    // as_given: the request's line settings as they are.
+    enum class Lines { Sprite, AsGiven } lines = Lines::Sprite;
   };
   std::optional<PixelArt> pixel_art;
   bool animate = false;  // answer an animated WebP of the frames instead of the sheet's PNG
@@ -182,6 +185,14 @@ struct OutlineParams {
   OutlineCreases creases = OutlineCreases::Auto;
   float crease_angle_deg = 40;
   float depth_threshold = 0.02f;  // fraction of the model's size
+  // Crease lines and the edges method's inner lines only between areas at
+  // least this many pixels across on both sides; 0: wherever they are.
+  // Not on the wire: pixel-art sprites set it (pixel_art_frame.h).
+  int readable_area_px = 0;
+  // Screen-space lines as whole pixels (one after each edge along each
+  // axis, fully covered) instead of the share of each pixel the line
+  // covers. Not on the wire: pixel-art sprites set it.
+  bool whole_pixel_lines = false;
   bool any() const { return enabled && width > 0.0f && (hull || wireframe || edges); }
 };
 

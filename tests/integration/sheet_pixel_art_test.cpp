@@ -9,10 +9,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <set>
 
 #include "image/png_codec.h"
+#include "support/generated_models.h"
 #include "support/shared_models.h"
 #include "support/webp_frames.h"
 #include "test_client.h"
@@ -121,7 +123,8 @@ TEST_F(PixelArtSheet, AGivenPaletteIsAllThereIsAndEachBlockItsNearestColour) {
   const json params = {{"width", 64},
                        {"height", 64},
                        {"background", kTransparent},
-                       {"sheet", {{"frames", 4}, {"pixel_art", {{"scale", k}, {"palette", hex}}}}}};
+                       // Lines as given: the small renders below draw the request's own.
+                       {"sheet", {{"frames", 4}, {"pixel_art", {{"scale", k}, {"palette", hex}, {"lines", "as_given"}}}}}};
   const std::string png = body_of(params, "image/png");
   ASSERT_FALSE(png.empty());
   const image::Image sheet = image::decode_png(png);
@@ -161,6 +164,139 @@ TEST_F(PixelArtSheet, AGivenPaletteIsAllThereIsAndEachBlockItsNearestColour) {
   }
   ASSERT_GT(visible, 50u);
   EXPECT_EQ(mismatched, 0u) << "of " << visible << " visible art pixels";
+}
+
+// Art pixels of one tile of a pixel-art sheet (one per scale×scale block),
+// sorted into background, line colour and the rest.
+struct ArtPixels {
+  int width = 0, height = 0;
+  std::vector<char> kind;  // ' ' background, '#' line, 'o' other
+  char at(int x, int y) const {
+    if (x < 0 || y < 0 || x >= width || y >= height) return ' ';
+    return kind[static_cast<std::size_t>(y) * width + x];
+  }
+};
+
+ArtPixels art_pixels(const image::Image& tile, int scale) {
+  ArtPixels art{tile.width / scale, tile.height / scale, {}};
+  for (int y = 0; y < art.height; ++y) {
+    for (int x = 0; x < art.width; ++x) {
+      const std::uint8_t* p = tile.pixel(x * scale, y * scale);
+      // The outline's colour is sRGB (15, 13, 20); the characters' darkest
+      // shades are far lighter.
+      art.kind.push_back(p[3] == 0 ? ' ' : std::max({p[0], p[1], p[2]}) < 40 ? '#' : 'o');
+    }
+  }
+  return art;
+}
+
+// Line pixels with no background among their 8 neighbours: crease and
+// inner lines, not the silhouette's ring.
+int inner_line_pixels(const ArtPixels& art) {
+  int inner = 0;
+  for (int y = 0; y < art.height; ++y) {
+    for (int x = 0; x < art.width; ++x) {
+      if (art.at(x, y) != '#') continue;
+      bool by_background = false;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) by_background |= art.at(x + dx, y + dy) == ' ';
+      }
+      inner += !by_background;
+    }
+  }
+  return inner;
+}
+
+// How a pixel-art tile's lines read: the share of the covered art pixels
+// that are line, over the whole figure and over its top quarter (a
+// character's head), and whether the silhouette is closed.
+struct LineShares {
+  double whole = 0, top = 0;
+  int inner = 0;
+  int open_border = 0;  // covered pixels by the background that are not line
+};
+
+LineShares line_shares(const ArtPixels& art) {
+  int first = art.height, last = -1;
+  for (int y = 0; y < art.height; ++y) {
+    for (int x = 0; x < art.width; ++x) {
+      if (art.at(x, y) != ' ') first = std::min(first, y), last = std::max(last, y);
+    }
+  }
+  LineShares shares;
+  int covered = 0, lines = 0, top_covered = 0, top_lines = 0;
+  const int top_end = first + (last - first + 1) / 4;
+  for (int y = first; y <= last; ++y) {
+    for (int x = 0; x < art.width; ++x) {
+      const char k = art.at(x, y);
+      if (k == ' ') continue;
+      ++covered;
+      lines += k == '#';
+      if (y < top_end) ++top_covered, top_lines += k == '#';
+      const bool by_background = art.at(x - 1, y) == ' ' || art.at(x + 1, y) == ' ' || art.at(x, y - 1) == ' ' ||
+                                 art.at(x, y + 1) == ' ';
+      shares.open_border += by_background && k != '#';
+    }
+  }
+  shares.whole = covered ? double(lines) / covered : 0;
+  shares.top = top_covered ? double(top_lines) / top_covered : 0;
+  shares.inner = inner_line_pixels(art);
+  return shares;
+}
+
+// At 32 art pixels, isometric, Blender's blocky walker: sprite lines (the
+// default) give a one-pixel silhouette and keep its head mostly its own
+// colours, where the request's lines counted in art pixels (a 2-pixel
+// outline, crease lines on every block) darkened most of it. Crease lines
+// between areas wide enough still show: a big cube keeps its inner edges.
+// Measured 0.48-0.56 on the head (a one-pixel ring round a head 4-5 art
+// pixels wide is half of it) and 0.41-0.42 overall; the request's own lines
+// gave 0.85-0.89 and 0.93.
+constexpr double kSpriteHeadLineShare = 0.6;
+constexpr double kSpriteLineShare = 0.5;
+// The cube's three crease lines, whole black pixels: 69 measured (as a
+// line's share of two pixels they were grey, and none counted).
+constexpr int kCubeInnerLines = 40;
+
+TEST_F(PixelArtSheet, SpriteLinesKeepASmallCharacterReadable) {
+  auto client = daemon().client();
+  const auto uploaded = upload_files(client, TOOND_EXPORTED_DIR "/blender", {"walker.glb"});
+  ASSERT_TRUE(uploaded && (uploaded->status == 200 || uploaded->status == 201)) << (uploaded ? uploaded->body : "");
+  const std::string walker = json::parse(uploaded->body)["id"];
+  const int k = 4;
+  auto tiles_of = [&](const std::string& model, const std::string& lines) {
+    const json params = {{"model", model},
+                         {"width", 128},
+                         {"height", 128},
+                         {"background", kTransparent},
+                         {"camera", {{"preset", "isometric"}}},
+                         {"sheet", {{"frames", 4}, {"pixel_art", {{"scale", k}, {"lines", lines}}}}}};
+    const image::Image sheet = image::decode_png(body_of(params, "image/png"));
+    const json atlas = atlas_of(params);
+    std::vector<ArtPixels> tiles;
+    for (const auto& [name, frame] : atlas["frames"].items()) {
+      tiles.push_back(art_pixels(tile_of(sheet, frame["frame"]), k));
+    }
+    return tiles;
+  };
+  const std::vector<ArtPixels> sprite = tiles_of(walker, "sprite");
+  const std::vector<ArtPixels> given = tiles_of(walker, "as_given");
+  ASSERT_EQ(sprite.size(), 4u);
+  ASSERT_EQ(given.size(), 4u);
+  for (std::size_t i = 0; i < sprite.size(); ++i) {
+    const LineShares s = line_shares(sprite[i]), g = line_shares(given[i]);
+    std::printf("walker frame %zu: line share %.2f (head %.2f, inner %d) sprite, %.2f (head %.2f, inner %d) as given\n",
+                i, s.whole, s.top, s.inner, g.whole, g.top, g.inner);
+    EXPECT_LE(s.top, kSpriteHeadLineShare) << "frame " << i;
+    EXPECT_LE(s.whole, kSpriteLineShare) << "frame " << i;
+    EXPECT_LT(s.whole, g.whole) << "frame " << i;
+    EXPECT_EQ(s.open_border, 0) << "frame " << i << ": the silhouette is closed";
+  }
+
+  const std::string cube = upload_obj_text(client, cube_obj(), "cube.obj");
+  for (const ArtPixels& tile : tiles_of(cube, "sprite")) {
+    EXPECT_GE(inner_line_pixels(tile), kCubeInnerLines) << "the cube's faces are wide enough for their crease lines";
+  }
 }
 
 TEST_F(PixelArtSheet, BadValuesAndLimitsAreRefusedBeforeRendering) {

@@ -235,12 +235,36 @@ TEST(PixelArtParams, WireFieldsParseAndDrawSmallWithoutAntialiasing) {
   EXPECT_FALSE(params_of({{"sheet", {{"frames", 2}}}}).sheet->pixel_art) << "no pixel art unless asked";
   EXPECT_FALSE(params_of({{"sheet", {{"frames", 2}}}}).sheet->animate);
 
-  const render::RenderParams drawn = render::pixel_art_frame_params(p, 8);
+  const render::RenderParams drawn = render::pixel_art_frame_params(p, *p.sheet->pixel_art);
   EXPECT_EQ(drawn.width, 8);
   EXPECT_EQ(drawn.height, 4);
   EXPECT_EQ(drawn.msaa, 1);
   EXPECT_EQ(drawn.supersample, 1);
   EXPECT_FALSE(drawn.band_aa);
+}
+
+TEST(PixelArtParams, SpriteLinesByDefaultAndTheRequestsOwnWhenAsked) {
+  const json lines = {{"outline", {{"width", 3.5}, {"units", "world"}}}, {"contour", {{"enabled", true}}}};
+  json request = lines;
+  request["sheet"] = {{"frames", 2}, {"pixel_art", {{"scale", 2}}}};
+  const render::RenderParams sprite = params_of(request);
+  EXPECT_EQ(sprite.sheet->pixel_art->lines, render::SheetParams::PixelArt::Lines::Sprite) << "the default";
+  const render::RenderParams drawn = render::pixel_art_frame_params(sprite, *sprite.sheet->pixel_art);
+  EXPECT_EQ(drawn.outline.width, 1.0f) << "a silhouette one art pixel wide";
+  EXPECT_EQ(drawn.outline.units, render::OutlineUnits::Pixels);
+  EXPECT_EQ(drawn.outline.readable_area_px, render::kReadableAreaArtPx);
+  EXPECT_TRUE(drawn.outline.whole_pixel_lines);
+  EXPECT_FALSE(drawn.contour.enabled);
+  EXPECT_EQ(params_of(lines).outline.readable_area_px, 0) << "only pixel art leaves lines out";
+
+  request["sheet"]["pixel_art"]["lines"] = "as_given";
+  const render::RenderParams given = params_of(request);
+  const render::RenderParams drawn_as_given = render::pixel_art_frame_params(given, *given.sheet->pixel_art);
+  EXPECT_EQ(drawn_as_given.outline.width, 3.5f);
+  EXPECT_EQ(drawn_as_given.outline.units, render::OutlineUnits::World);
+  EXPECT_EQ(drawn_as_given.outline.readable_area_px, 0);
+  EXPECT_FALSE(drawn_as_given.outline.whole_pixel_lines);
+  EXPECT_TRUE(drawn_as_given.contour.enabled);
 }
 
 TEST(PixelArtParams, BadInputsAreRefusedWithTheirPath) {
@@ -263,6 +287,7 @@ TEST(PixelArtParams, BadInputsAreRefusedWithTheirPath) {
   EXPECT_EQ(path_of({{"palette", {"#fffffff"}}}), "/sheet/pixel_art/palette/0");
   EXPECT_EQ(path_of({{"colors", 1}}), "/sheet/pixel_art/colors");
   EXPECT_EQ(path_of({{"dither", "yes"}}), "/sheet/pixel_art/dither");
+  EXPECT_EQ(path_of({{"lines", "thin"}}), "/sheet/pixel_art/lines");
   EXPECT_EQ(path_of({{"shades", 4}}), "/sheet/pixel_art/shades");
   EXPECT_EQ(path_of({{"scale", 6}, {"palette", {"#123456"}}, {"dither", true}}), "(accepted)");
   auto layer_path = [&](const std::string& output, const json& sheet) {

@@ -22,6 +22,8 @@ void draw_edge_pass(PassContext& context) {
   edges.set("u_depth_threshold", outline.depth_threshold * 2.0f * frame.scene.bounds.radius());
   edges.set("u_cos_crease", static_cast<float>(std::cos(glm::radians(outline.crease_angle_deg))));
   edges.set("u_edge_color", outline.color);
+  edges.set("u_readable_area_px", outline.readable_area_px);
+  edges.set("u_whole_pixels", static_cast<int>(outline.whole_pixel_lines));
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   context.resources.draw_fullscreen_triangle();
