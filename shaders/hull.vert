@@ -13,6 +13,7 @@
 #include "attributes.glsl"
 #include "view.glsl"
 #include "object.glsl"
+#include "skinning.glsl"
 #include "outline_style.glsl"
 
 out vec2 v_texcoord;
@@ -38,7 +39,8 @@ float obliquity_correction(vec3 position, vec4 clip, vec3 offset, float distance
 
 void main() {
   v_texcoord = a_texcoord;
-  vec3 position = (u_model * vec4(a_position, 1.0)).xyz;
+  PosedVertex posed = posed_vertex();
+  vec3 position = (u_model * vec4(posed.position, 1.0)).xyz;
   // The offset turns with the surface (the normal matrix), then gets back
   // its own length, so the ring stays `u_width` wide whatever the object's
   // scale. Exact where the offset is the smooth normal (length 1) under any
@@ -47,8 +49,8 @@ void main() {
   // than `u_width` (an exact mitre would need the face normals). Scaling
   // the offset by the 3×3 instead would widen the outline of a scaled-up
   // object and tilt smooth normals off the surface.
-  float len = length(a_outline_offset);
-  vec3 turned = u_normal_matrix * a_outline_offset;
+  float len = length(posed.outline_offset);
+  vec3 turned = u_normal_matrix * posed.outline_offset;
   float turned_len = length(turned);
   vec3 offset = turned_len > 0.0 ? turned * (len / turned_len) : vec3(0.0);
   vec4 clip = u_view_projection * vec4(position, 1.0);

@@ -7,6 +7,7 @@
 #include "attributes.glsl"
 #include "view.glsl"
 #include "object.glsl"
+#include "skinning.glsl"
 
 out vec3 v_position;
 out vec3 v_normal;
@@ -15,12 +16,13 @@ out vec4 v_tangent;
 out vec3 v_color;
 
 void main() {
-  vec4 world = u_model * vec4(a_position, 1.0);
+  PosedVertex posed = posed_vertex();
+  vec4 world = u_model * vec4(posed.position, 1.0);
   v_position = world.xyz;
-  v_normal = u_normal_matrix * a_normal;
+  v_normal = u_normal_matrix * posed.normal;
   v_texcoord = a_texcoord;
   // Tangents lie in the surface: they follow the model matrix itself.
-  v_tangent = vec4(mat3(u_model) * a_tangent.xyz, a_tangent.w);
+  v_tangent = vec4(mat3(u_model) * posed.tangent.xyz, posed.tangent.w);
   v_color = a_color;
   gl_Position = u_view_projection * world;
 }

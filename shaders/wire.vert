@@ -4,6 +4,7 @@
 #include "attributes.glsl"
 #include "view.glsl"
 #include "object.glsl"
+#include "skinning.glsl"
 
 out vec2 g_texcoord;
 // How much the shading normal faces the viewer (N·V): the geometry stage
@@ -12,7 +13,8 @@ out float g_facing;
 
 void main() {
   g_texcoord = a_texcoord;
-  vec3 position = (u_model * vec4(a_position, 1.0)).xyz;
-  g_facing = dot(normalize(u_normal_matrix * a_normal), toward_viewer(position));
+  PosedVertex posed = posed_vertex();
+  vec3 position = (u_model * vec4(posed.position, 1.0)).xyz;
+  g_facing = dot(normalize(u_normal_matrix * posed.normal), toward_viewer(position));
   gl_Position = u_view_projection * vec4(position, 1.0);
 }

@@ -90,6 +90,9 @@ int run(const toond::app::Options& options) {
   render_options.shader_dir = options.shader_dir;
   render_options.gpu_model_bytes = options.gpu_cache_bytes;
   render_options.simulate_reset_every = options.simulate_gpu_reset;
+  using Skinning = toond::app::Options::Skinning;
+  if (options.skinning == Skinning::Gpu) render_options.skinning = toond::scene::Skinning::VertexStage;
+  if (options.skinning == Skinning::Cpu) render_options.skinning = toond::scene::Skinning::Cpu;
   toond::render::RenderService renderer(render_options);
   toond::scene::ModelLibrary library(store, 16);
 

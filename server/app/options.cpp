@@ -94,6 +94,19 @@ const Flag kGeneralFlags[] = {
      [](Options& o, Value flag, Value v) {
        o.simulate_gpu_reset = static_cast<std::size_t>(parse_count(flag, v, 1, 1'000'000'000));
      }},
+    {{"", "--skinning", "WHERE",
+      "where a request's `animation` moves the vertices: gpu (in\n"
+      "the vertex stage of every pass, from the pose's joint\n"
+      "matrices), cpu (once per request, then uploaded), or\n"
+      "auto (default): gpu on a GPU, cpu on a software\n"
+      "rasterizer such as llvmpipe, whose vertex stage runs on\n"
+      "the CPU again for every pass"},
+     [](Options& o, Value flag, Value v) {
+       if (v == "gpu") o.skinning = Options::Skinning::Gpu;
+       else if (v == "cpu") o.skinning = Options::Skinning::Cpu;
+       else if (v == "auto") o.skinning = Options::Skinning::Auto;
+       else throw std::invalid_argument(flag + " expects gpu, cpu or auto, got '" + v + "'");
+     }},
     {{"", "--version", "", "print the version and exit"}, [](Options& o, Value, Value) { o.version = true; }},
     {{"-h", "--help", "", "this text"}, [](Options& o, Value, Value) { o.help = true; }},
 };

@@ -11,11 +11,12 @@
 namespace toond::http {
 namespace {
 
-// A pose whose vertices left float range (joints scaled past it) cannot be
-// framed or drawn.
-void check_finite(const scene::Bounds& bounds, const std::string& pointer) {
-  bool finite = true;
-  for (int axis = 0; axis < 3; ++axis) finite = finite && std::isfinite(bounds.min[axis]) && std::isfinite(bounds.max[axis]);
+// A pose whose joints or vertices left float range (joints scaled past it)
+// cannot be framed or drawn. The clip's framing posed every vertex at many
+// times of it, so a clip that throws vertices out of range shows there.
+void check_finite(const scene::SkinPose& pose, const scene::Bounds& framing, const std::string& pointer) {
+  bool finite = pose.finite();
+  for (int axis = 0; axis < 3; ++axis) finite = finite && std::isfinite(framing.min[axis]) && std::isfinite(framing.max[axis]);
   if (!finite) {
     throw RequestError(422, "bad_pose", pointer + ": the clip moves vertices beyond the range of numbers drawn",
                        pointer);
@@ -74,13 +75,13 @@ scene::ClipFraming framing_of_all(ClipFramings& framings, const render::JobObjec
 
 // The model posed at `time` of clip `clip`, framed as `framing` says (a
 // whole clip's reach, or a whole sheet's).
-std::shared_ptr<const scene::PosedVertices> posed_at(const scene::Model& model, std::size_t clip, double time,
-                                                     const scene::ClipFraming& framing, const std::string& pointer) {
+std::shared_ptr<const scene::SkinPose> posed_at(const scene::Model& model, std::size_t clip, double time,
+                                                const scene::ClipFraming& framing, const std::string& pointer,
+                                                scene::Skinning where) {
   const scene::Rig& rig = *model.rig;
-  auto posed = std::make_shared<scene::PosedVertices>(
-      scene::pose_vertices(model.mesh, rig, scene::pose_nodes(rig, &rig.clips[clip], time)));
-  check_finite(posed->bounds, pointer);
-  check_finite(framing.bounds, pointer);
+  auto posed = std::make_shared<scene::SkinPose>(
+      scene::skin_pose(model.mesh, rig, scene::pose_nodes(rig, &rig.clips[clip], time), where));
+  check_finite(*posed, framing.bounds, pointer);
   posed->bounds = framing.bounds;
   posed->extremes = framing.extremes;
   return posed;
@@ -139,7 +140,7 @@ void resolve_sheet_clips(render::RenderJob& job) {
   }
 }
 
-void pose_for_animation(ClipFramings& framings, render::RenderJob& job) {
+void pose_for_animation(ClipFramings& framings, render::RenderJob& job, scene::Skinning where) {
   if (!job.params.animation) return;
   if (!job.params.objects.empty()) {
     throw RequestError(400, "invalid_parameter",
@@ -151,24 +152,25 @@ void pose_for_animation(ClipFramings& framings, render::RenderJob& job) {
   const render::AnimationParams& animation = *job.params.animation;
   const std::size_t clip = find_clip(model, animation.clip, animation.clip_index, "/animation/clip");
   const double time = scene::clip_time(model.rig->clips[clip], animation.time);
-  object.pose = posed_at(model, clip, time, *framings.get(object.model_key, model, clip), "/animation/clip");
+  object.pose = posed_at(model, clip, time, *framings.get(object.model_key, model, clip), "/animation/clip", where);
 }
 
-std::vector<std::shared_ptr<const scene::PosedVertices>> pose_sheet_frames(ClipFramings& framings,
-                                                                           render::RenderJob& job,
-                                                                           const render::SheetLayout& layout) {
+std::vector<std::shared_ptr<const scene::SkinPose>> pose_sheet_frames(ClipFramings& framings,
+                                                                      render::RenderJob& job,
+                                                                      const render::SheetLayout& layout,
+                                                                      scene::Skinning where) {
   const render::SheetParams& sheet = *job.params.sheet;
   render::JobObject& object = job.objects.front();
   const scene::Model& model = *object.model;
   const scene::ClipFraming framing = framing_of_all(framings, object, sheet.clips);
   // Every direction of one time shares one pose.
-  std::map<std::pair<int, double>, std::shared_ptr<const scene::PosedVertices>> by_time;
-  std::vector<std::shared_ptr<const scene::PosedVertices>> poses;
+  std::map<std::pair<int, double>, std::shared_ptr<const scene::SkinPose>> by_time;
+  std::vector<std::shared_ptr<const scene::SkinPose>> poses;
   for (const render::SheetFrame& frame : layout.frames) {
     auto& pose = by_time[{frame.clip, frame.time}];
     if (!pose) {
       pose = posed_at(model, sheet.clips[static_cast<std::size_t>(frame.clip)].index, frame.time, framing,
-                      "/sheet/animation");
+                      "/sheet/animation", where);
     }
     poses.push_back(pose);
   }

@@ -1,7 +1,8 @@
 #pragma once
 // A request's `animation` applied to its model: the clip looked up (by
 // name, by the part after '|', or by index), the time wrapped onto the
-// clip's loop, the vertices posed on the request's thread, and the whole
+// clip's loop, the pose's joints and weights worked out on the request's
+// thread (the vertex stages move the vertices), and the whole
 // clip's framing (computed once per model and clip, then kept) put on the
 // pose so that every time of one clip is framed alike.
 #include <cstddef>
@@ -45,14 +46,16 @@ void resolve_sheet_clips(render::RenderJob& job);
 // asks nothing). RequestError 400 when the job is a scene of objects, 422
 // (path /animation/clip) when the model has no such clip, 422 bad_pose
 // when the pose leaves float range.
-void pose_for_animation(ClipFramings& framings, render::RenderJob& job);
+// `where`: the render service's skinning().
+void pose_for_animation(ClipFramings& framings, render::RenderJob& job, scene::Skinning where);
 
 // An animated sheet's (resolved clips, laid out as `layout`) pose of each
 // frame, by frame index, all framed over every pose of every clip of the
 // sheet. The object itself gets the first frame's, whose framing the atlas
 // then uses.
-std::vector<std::shared_ptr<const scene::PosedVertices>> pose_sheet_frames(ClipFramings& framings,
-                                                                           render::RenderJob& job,
-                                                                           const render::SheetLayout& layout);
+std::vector<std::shared_ptr<const scene::SkinPose>> pose_sheet_frames(ClipFramings& framings,
+                                                                      render::RenderJob& job,
+                                                                      const render::SheetLayout& layout,
+                                                                      scene::Skinning where);
 
 }  // namespace toond::http

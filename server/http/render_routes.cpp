@@ -236,14 +236,14 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     if (job.params.sheet) layout = render::layout_sheet(*job.params.sheet, job.params.width, job.params.height);
     // A sheet is posed before its atlas, which frames it as its frames
     // are; a single image after the result cache had its chance.
-    std::vector<std::shared_ptr<const scene::PosedVertices>> sheet_poses;
+    std::vector<std::shared_ptr<const scene::SkinPose>> sheet_poses;
     double pose_ms = 0;
     const auto pose = [&] {
       const auto start = Clock::now();
       if (layout && !job.params.sheet->clips.empty()) {
-        sheet_poses = pose_sheet_frames(context.clip_framings, job, *layout);
+        sheet_poses = pose_sheet_frames(context.clip_framings, job, *layout, context.renderer.skinning());
       } else if (job.params.animation) {
-        pose_for_animation(context.clip_framings, job);
+        pose_for_animation(context.clip_framings, job, context.renderer.skinning());
       } else {
         return;
       }

@@ -102,7 +102,7 @@ render::SceneFrame scene_of(const render::RenderJob& job) {
 
 render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJob& job,
                                   const render::SheetLayout& layout,
-                                  const std::vector<std::shared_ptr<const scene::PosedVertices>>& poses,
+                                  const std::vector<std::shared_ptr<const scene::SkinPose>>& poses,
                                   std::chrono::steady_clock::time_point deadline) {
   const std::optional<render::SheetParams::PixelArt>& pixel_art = job.params.sheet->pixel_art;
   std::vector<render::RenderJob> frames;

@@ -29,7 +29,7 @@ render::SceneFrame scene_of(const render::RenderJob& job);
 // `poses`: every frame in the job's own.
 render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJob& job,
                                   const render::SheetLayout& layout,
-                                  const std::vector<std::shared_ptr<const scene::PosedVertices>>& poses,
+                                  const std::vector<std::shared_ptr<const scene::SkinPose>>& poses,
                                   std::chrono::steady_clock::time_point deadline);
 
 }  // namespace toond::http

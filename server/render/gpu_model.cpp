@@ -94,7 +94,6 @@ GpuModel::GpuModel(const scene::Model& model)
   auto add_caps = [&](Level& level, const std::vector<std::uint32_t>& cap_indices) {
     level.first_cap_index = indices.size();
     level.cap_index_count = cap_indices.size();
-    if (model.rig) level.cap_indices = cap_indices;
     indices.insert(indices.end(), cap_indices.begin(), cap_indices.end());
   };
   add_caps(levels_[0], mesh.cap_indices);
@@ -123,6 +122,10 @@ GpuModel::GpuModel(const scene::Model& model)
   attribute(kTangentAttribute, 4, offsetof(Vertex, tangent));
   attribute(kColorAttribute, 3, offsetof(Vertex, color));
 
+  if (model.rig) {
+    skin_ = std::make_unique<GpuSkin>(mesh, *model.rig);
+    gpu_bytes_ += skin_->gpu_bytes();
+  }
   for (const scene::Texture& tex : model.textures) textures_.push_back(upload_texture(tex, gpu_bytes_));
   for (const scene::Material& m : model.materials) {
     materials_.push_back({m.name, m.diffuse_texture, m.normal_texture, m.alpha_cutoff, m.unlit});
@@ -136,27 +139,33 @@ GpuModel::GpuModel(const scene::Model& model)
   material_arena_.upload();
 }
 
-void GpuModel::apply_pose(const scene::PosedVertices* pose) {
-  if (!pose) {
-    // Every render of every model comes through here: a model never posed
-    // costs no GL call.
-    if (posed_) glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
-    posed_ = false;
-    return;
-  }
-  posed_ = true;
+void GpuModel::bind() const {
+  glBindVertexArray(vao_.id());
+  if (skinned_) skin_->bind();
+}
+
+void GpuModel::apply_pose(const scene::SkinPose* pose) {
+  const bool was_cpu_posed = posed_ && !skinned_;
+  posed_ = pose != nullptr && skin_ != nullptr;
+  skinned_ = posed_ && !pose->vertices;
+  const bool cpu_posed = posed_ && !skinned_;
+  // A model never posed on the CPU costs no GL call here.
+  if (was_cpu_posed && !cpu_posed) glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
+  if (!posed_) return;
+  if (skinned_) skin_->upload(*pose);
+  if (cpu_posed) upload_posed_vertices(*pose->vertices);
+  posed_bounds_ = pose->bounds;
+  posed_extremes_ = pose->extremes;
+  for (std::size_t i = 0; i < levels_.size(); ++i) levels_[i].posed_caps = pose->caps[i];
+}
+
+void GpuModel::upload_posed_vertices(const scene::PosedVertices& posed) {
   const std::vector<Vertex> vertices =
-      interleave(pose->positions, pose->normals, texcoords_, pose->outline_normals, pose->tangents, colors_);
+      interleave(posed.positions, posed.normals, texcoords_, posed.outline_normals, posed.tangents, colors_);
   if (!posed_vertices_) posed_vertices_ = gpu::Buffer::create();
   glNamedBufferData(posed_vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(),
                     GL_STREAM_DRAW);
   glVertexArrayVertexBuffer(vao_.id(), 0, posed_vertices_.id(), 0, sizeof(Vertex));
-  posed_bounds_ = pose->bounds;
-  posed_extremes_ = pose->extremes;
-  for (Level& level : levels_) {
-    level.posed_caps.clear();
-    for (const std::uint32_t v : level.cap_indices) level.posed_caps.push_back(pose->positions[v]);
-  }
 }
 
 void GpuModel::bind_material(int index) const {

@@ -1,13 +1,16 @@
 #pragma once
 // A model's GPU copy: one interleaved vertex buffer, one index buffer (the
 // full mesh, then each coarser level of detail, then every level's caps),
-// its textures (sRGB, mipmapped, repeating), per-material draw ranges and
-// one uniform block per material.
+// its textures (sRGB, mipmapped, repeating), per-material draw ranges, one
+// uniform block per material and, for a rigged model, its skinning
+// (render/gpu_skin.h).
 // Created and destroyed on the render thread only.
+#include <memory>
 #include <vector>
 
 #include "gpu/gl_object.h"
 #include "gpu/uniform_arena.h"
+#include "render/gpu_skin.h"
 #include "render/uniform_blocks.h"
 #include "scene/model.h"
 #include "scene/pose.h"
@@ -28,12 +31,18 @@ class GpuModel {
  public:
   explicit GpuModel(const scene::Model& model);
 
-  void bind() const { glBindVertexArray(vao_.id()); }
-  // Draws the model in `pose` (its vertex streams uploaded into a buffer of
-  // their own, indices and textures shared with the rest pose) until the
-  // next call; nullptr: the rest pose. Set before every render, since the
-  // copy is cached between renders.
-  void apply_pose(const scene::PosedVertices* pose);
+  // Binds the vertex array and, when posed, the skinning blocks.
+  void bind() const;
+  // Draws the model in `pose` until the next call; nullptr: the rest pose.
+  // A pose of joints and morph weights is uploaded as such and the vertex
+  // stages move the rest vertices; a pose posed on the CPU
+  // (SkinPose::vertices) is uploaded into a vertex buffer of its own, with
+  // indices and textures shared with the rest. Set before every render,
+  // since the copy is cached between renders. A model without a rig takes
+  // only nullptr.
+  void apply_pose(const scene::SkinPose* pose);
+  // Whether the vertex stages pose it (ObjectBlock::skinned).
+  bool skinned() const { return skinned_; }
   // Binds a material's uniform block (shaders/material.glsl), made once
   // when the model was uploaded.
   void bind_material(int index) const;
@@ -89,12 +98,15 @@ class GpuModel {
  private:
   gpu::VertexArray vao_;
   gpu::Buffer vertices_;
-  gpu::Buffer posed_vertices_;  // created by the first apply_pose
+  std::unique_ptr<GpuSkin> skin_;  // a rigged model's
   bool posed_ = false;
+  bool skinned_ = false;        // posed by the vertex stages
+  gpu::Buffer posed_vertices_;  // made by the first pose posed on the CPU
+  // What a CPU pose's upload keeps of the rest streams (empty: none).
+  std::vector<glm::vec2> texcoords_;
+  std::vector<glm::vec3> colors_;
   scene::Bounds posed_bounds_;
   std::vector<glm::vec3> posed_extremes_;
-  std::vector<glm::vec2> texcoords_;  // what a posed upload keeps of the rest
-  std::vector<glm::vec3> colors_;     // streams (empty: none)
   gpu::Buffer indices_;
   std::vector<gpu::Texture> textures_;
   std::vector<GpuMaterial> materials_;
@@ -106,12 +118,12 @@ class GpuModel {
     std::size_t index_count = 0;
     scene::Enclosure enclosure = scene::Enclosure::Open;
     std::vector<glm::vec3> caps;
-    std::vector<std::uint32_t> cap_indices{};  // kept for a rigged model: the caps of a pose
     std::vector<glm::vec3> posed_caps{};
     std::size_t first_cap_index = 0;  // the caps' range of the index buffer
     std::size_t cap_index_count = 0;
   };
   std::vector<Level> levels_;
+  void upload_posed_vertices(const scene::PosedVertices& posed);
   std::vector<double> lod_errors_;
   scene::Bounds bounds_;
   std::vector<glm::vec3> extremes_;

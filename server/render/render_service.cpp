@@ -61,6 +61,11 @@ void RenderService::stop() {
   }
 }
 
+scene::Skinning RenderService::skinning() const {
+  if (options_.skinning) return *options_.skinning;
+  return gpu::software_rasterizer(gl_info_.renderer) ? scene::Skinning::Cpu : scene::Skinning::VertexStage;
+}
+
 bool RenderService::is_long(double cost) const {
   return options_.long_render_cost > 0 && cost >= options_.long_render_cost;
 }

@@ -19,7 +19,6 @@
 #include <string>
 #include <thread>
 
-#include "scene/pose.h"
 #include <vector>
 
 #include "gpu/egl_context.h"
@@ -28,6 +27,7 @@
 #include "render/render_params.h"
 #include "render/renderer.h"
 #include "scene/model.h"
+#include "scene/pose.h"
 
 namespace toond::render {
 
@@ -36,8 +36,9 @@ struct JobObject {
   std::string model_key;  // GPU cache key: the model id, or "demo"
   std::shared_ptr<const scene::Model> model;
   glm::dmat4 transform{1.0};  // model → scene coordinates
-  // The model's vertices in the request's pose (scene/pose.h); null: at rest.
-  std::shared_ptr<const scene::PosedVertices> pose;
+  // The model's joints and morph weights in the request's pose
+  // (scene/pose.h); null: at rest.
+  std::shared_ptr<const scene::SkinPose> pose;
 };
 
 struct RenderJob {
@@ -95,6 +96,10 @@ class RenderService {
     // Testing aid for the lost-context path (--simulate-gpu-reset): every
     // Nth render acts as if the GL context had been lost. 0: never.
     std::size_t simulate_reset_every = 0;
+    // Where poses move vertices (--skinning); unset: in the vertex stage on
+    // a GPU, on the CPU on a software rasterizer, whose vertex stage is
+    // this CPU too and runs again for every pass (docs/animation.md).
+    std::optional<scene::Skinning> skinning;
   };
 
   // Starts the threads and waits until their contexts exist. Throws
@@ -105,6 +110,8 @@ class RenderService {
   RenderService& operator=(const RenderService&) = delete;
 
   const gpu::GlInfo& gl_info() const { return gl_info_; }
+  // Where a request's pose should move the vertices (Options::skinning).
+  scene::Skinning skinning() const;
 
   std::future<RenderOutput> submit(RenderJob job);
   // Whether a job of this cost waits in the long lane.

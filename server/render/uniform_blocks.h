@@ -32,8 +32,10 @@ struct ObjectBlock {
   static constexpr int kBinding = 2;
   glm::mat4 model{1.0f};
   glm::vec4 normal_matrix[3] = {glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0)};  // columns
+  std::int32_t skinned = 0;  // the object's model is drawn in a pose (shaders/skinning.glsl)
+  float padding[3] = {};
 
-  static ObjectBlock placing(const glm::mat4& model, const glm::mat3& normal_matrix);
+  static ObjectBlock placing(const glm::mat4& model, const glm::mat3& normal_matrix, bool skinned);
 };
 
 // One material of a model (binding 3).

@@ -28,17 +28,17 @@ glm::dmat4 matrix_of(const Trs& trs) {
          glm::scale(glm::dmat4(1.0), trs.scale);
 }
 
-// Each binding joint's matrix from the rest mesh's space to the posed
-// mesh's: the file's skinning (joint world · inverse bind) taken from the
-// mesh's space and back. At rest it is the identity for a mesh bound as it
-// was drawn, so an unanimated vertex stays where the import put it.
-std::vector<std::vector<glm::mat4>> joint_matrices(const Rig& rig, const NodePose& pose) {
-  std::vector<std::vector<glm::mat4>> matrices(rig.bindings.size());
-  for (std::size_t b = 0; b < rig.bindings.size(); ++b) {
-    const Binding& binding = rig.bindings[b];
+// Each joint's matrix from the rest mesh's space to the posed mesh's, in
+// binding_joint_offsets' order: the file's skinning (joint world · inverse
+// bind) taken from the mesh's space and back. At rest it is the identity
+// for a mesh bound as it was drawn, so an unanimated vertex stays where the
+// import put it.
+std::vector<glm::mat4> joint_matrices(const Rig& rig, const NodePose& pose) {
+  std::vector<glm::mat4> matrices;
+  for (const Binding& binding : rig.bindings) {
     for (std::size_t j = 0; j < binding.joints.size(); ++j) {
       const glm::dmat4 skin = pose.world[static_cast<std::size_t>(binding.joints[j])] * binding.inverse_binds[j];
-      matrices[b].push_back(glm::mat4(rig.file_to_mesh * skin * binding.mesh_to_local));
+      matrices.push_back(glm::mat4(rig.file_to_mesh * skin * binding.mesh_to_local));
     }
   }
   return matrices;
@@ -108,19 +108,24 @@ namespace {
 
 constexpr std::size_t kPoseRun = 16384;
 
+// One motion's blend of its joints' matrices.
+glm::mat4 blend_of(const Rig& rig, const std::vector<glm::mat4>& joints, const std::vector<std::uint32_t>& offsets,
+                   const VertexMotion& motion) {
+  glm::mat4 blend(0.0f);
+  for (std::uint32_t k = 0; k < motion.influence_count; ++k) {
+    const Influence& influence = rig.influences[motion.first_influence + k];
+    blend += influence.weight * joints[offsets[motion.binding] + influence.joint];
+  }
+  return blend;
+}
+
 // Each motion's blended joint matrix in one pose: vertices that move alike
 // share it (a flat-shaded mesh has several vertices per position).
 std::vector<glm::mat4> motion_matrices(const Rig& rig, const NodePose& pose) {
-  const std::vector<std::vector<glm::mat4>> joints = joint_matrices(rig, pose);
-  std::vector<glm::mat4> blends(rig.motions.size(), glm::mat4(0.0f));
-  for (std::size_t m = 0; m < rig.motions.size(); ++m) {
-    const VertexMotion& motion = rig.motions[m];
-    const std::vector<glm::mat4>& binding = joints[motion.binding];
-    for (std::uint32_t k = 0; k < motion.influence_count; ++k) {
-      const Influence& influence = rig.influences[motion.first_influence + k];
-      blends[m] += influence.weight * binding[influence.joint];
-    }
-  }
+  const std::vector<glm::mat4> joints = joint_matrices(rig, pose);
+  const std::vector<std::uint32_t> offsets = binding_joint_offsets(rig);
+  std::vector<glm::mat4> blends(rig.motions.size());
+  for (std::size_t m = 0; m < rig.motions.size(); ++m) blends[m] = blend_of(rig, joints, offsets, rig.motions[m]);
   return blends;
 }
 
@@ -177,6 +182,63 @@ PosedVertices pose_vertices(const Mesh& rest, const Rig& rig, const NodePose& po
     }
   });
   out.bounds = compute_bounds(out.positions);
+  return out;
+}
+
+std::vector<std::uint32_t> binding_joint_offsets(const Rig& rig) {
+  std::vector<std::uint32_t> offsets;
+  std::uint32_t next = 0;
+  for (const Binding& binding : rig.bindings) {
+    offsets.push_back(next);
+    next += static_cast<std::uint32_t>(binding.joints.size());
+  }
+  return offsets;
+}
+
+bool SkinPose::finite() const {
+  const auto finite_matrix = [](const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        if (!std::isfinite(m[c][r])) return false;
+    return true;
+  };
+  const auto finite_weights = [](const std::vector<float>& w) {
+    return std::all_of(w.begin(), w.end(), [](float x) { return std::isfinite(x); });
+  };
+  return std::all_of(joints.begin(), joints.end(), finite_matrix) &&
+         std::all_of(morph_weights.begin(), morph_weights.end(), finite_weights);
+}
+
+namespace {
+
+// The vertices `indices` names, posed on the CPU (a few: the hole caps).
+std::vector<glm::vec3> pose_some(const Mesh& rest, const Rig& rig, const std::vector<glm::mat4>& joints,
+                                 const std::vector<std::vector<double>>& weights,
+                                 const std::vector<std::uint32_t>& indices) {
+  const std::vector<std::uint32_t> offsets = binding_joint_offsets(rig);
+  std::vector<glm::vec3> posed;
+  posed.reserve(indices.size());
+  for (const std::uint32_t v : indices) {
+    const VertexMotion& motion = rig.motions[rest.motion[v]];
+    glm::vec3 position = rest.positions[v];
+    add_morphs(rig, weights, motion, position, nullptr);
+    posed.push_back(glm::vec3(blend_of(rig, joints, offsets, motion) * glm::vec4(position, 1.0f)));
+  }
+  return posed;
+}
+
+}  // namespace
+
+SkinPose skin_pose(const Mesh& rest, const Rig& rig, const NodePose& pose, Skinning where) {
+  SkinPose out;
+  if (where == Skinning::Cpu) out.vertices = std::make_shared<const PosedVertices>(pose_vertices(rest, rig, pose));
+  out.joints = joint_matrices(rig, pose);
+  const std::vector<std::vector<double>> weights = morph_weights(rig, pose);
+  for (const std::vector<double>& w : weights) out.morph_weights.emplace_back(w.begin(), w.end());
+  out.caps.push_back(pose_some(rest, rig, out.joints, weights, rest.cap_indices));
+  for (const MeshLod& lod : rest.lods) out.caps.push_back(pose_some(rest, rig, out.joints, weights, lod.cap_indices));
+  out.bounds = rest.bounds;
+  out.extremes = rest.extremes;
   return out;
 }
 

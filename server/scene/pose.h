@@ -1,9 +1,14 @@
 #pragma once
 // A rigged model at one time of one clip: its nodes' world matrices, then
-// its vertices moved by them (skins and morph targets). Posing runs on the
-// CPU once per request, before the render thread sees the job, so every
-// pass draws the same posed vertices and none of them needs a variant.
+// what moves its vertices (skins and morph targets). A render draws a pose
+// from a SkinPose: the few matrices and weights of that time, with which
+// every vertex stage moves the rest vertices on the GPU
+// (shaders/skinning.glsl); or, where the vertex stage is itself the CPU (a
+// software rasterizer runs it again for every pass), the vertices posed
+// once on the CPU by pose_vertices, the same sum. pose_vertices also frames
+// a clip and is the reference the GPU is checked against.
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -39,6 +44,36 @@ struct PosedVertices {
 };
 
 PosedVertices pose_vertices(const Mesh& rest, const Rig& rig, const NodePose& pose);
+
+// Where each binding's joints start in one list of every binding's joints,
+// binding after binding: SkinPose::joints and the GPU's influences index
+// that list.
+std::vector<std::uint32_t> binding_joint_offsets(const Rig& rig);
+
+// What the GPU needs to draw the rest mesh in a pose: each joint's matrix
+// (rest mesh space → posed mesh space) in binding_joint_offsets' order, and
+// each morph set's target weights. Bounds and extremes are the framing's,
+// set by whoever frames the pose (a whole clip's reach); caps are the
+// mesh's hole caps posed on the CPU, per level of detail (full mesh first),
+// for the culling decision made before drawing.
+struct SkinPose {
+  // Set by skin_pose when asked to pose on the CPU: the streams the GPU copy
+  // then draws as they are.
+  std::shared_ptr<const PosedVertices> vertices;
+  std::vector<glm::mat4> joints;
+  std::vector<std::vector<float>> morph_weights;
+  std::vector<std::vector<glm::vec3>> caps;
+  Bounds bounds;
+  std::vector<glm::vec3> extremes;
+  // Whether every joint matrix and weight is a finite float: a joint scaled
+  // past float range cannot be drawn.
+  bool finite() const;
+};
+
+// Where a pose's vertices are moved.
+enum class Skinning { VertexStage, Cpu };
+
+SkinPose skin_pose(const Mesh& rest, const Rig& rig, const NodePose& pose, Skinning where = Skinning::VertexStage);
 
 // Where a clip's poses reach: bounds and extreme points over poses sampled
 // at every key time of the clip, at three times evenly between each two

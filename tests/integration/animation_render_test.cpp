@@ -20,7 +20,12 @@ namespace {
 
 using json = nlohmann::json;
 
+// The daemon poses in the vertex stage, as on a GPU (on llvmpipe its
+// default is the CPU, which the other suites' daemons use).
 class AnimatedModel : public SharedDaemonTest {
+ public:
+  static void SetUpTestSuite() { daemon_ = std::make_unique<Daemon>(std::filesystem::path{}, std::vector<std::string>{"--skinning", "gpu"}); }
+
  protected:
   static httplib::Client daemon_client() { return daemon().client(); }
   // The atlas alone (?atlas=json) of a sheet request that must succeed.
@@ -180,6 +185,44 @@ TEST_F(AnimatedModel, TheCliListsTheClipsAndRendersAPose) {
                                    "--server", daemon().url()});
   ASSERT_EQ(render.status, 0) << render.err;
   EXPECT_EQ(image::decode_png(read_file(png)).rgba, pose(0.25).rgba);
+}
+
+// The same walk drawn by a daemon that poses on the CPU: the same pixels,
+// single frames and a sheet alike.
+TEST_F(AnimatedModel, PosingOnTheCpuDrawsWhatTheVertexStageDraws) {
+  Daemon on_cpu({}, {"--skinning", "cpu"});
+  const auto upload_walker = [](const Daemon& d) {
+    auto client = d.client();
+    const auto res = upload_files(client, TOOND_EXPORTED_DIR "/blender", {"walker.glb"});
+    return res && (res->status == 200 || res->status == 201) ? json::parse(res->body).value("id", "") : "";
+  };
+  const std::string in_vertex_stage_id = upload_walker(daemon());
+  const std::string on_cpu_id = upload_walker(on_cpu);
+  ASSERT_FALSE(in_vertex_stage_id.empty());
+  ASSERT_EQ(on_cpu_id, in_vertex_stage_id);
+  const json requests[] = {
+      {{"width", 128}, {"height", 128}, {"animation", {{"clip", "Walk"}, {"time", 0.3}}}},
+      {{"width", 128}, {"height", 128}, {"output", "normal"}, {"animation", {{"clip", "Walk"}, {"time", 0.7}}}},
+      {{"width", 256}, {"height", 128}, {"sheet", {{"frames", 2}, {"animation", {{"clip", "Walk"}, {"frames", 2}}}}}},
+  };
+  for (json request : requests) {
+    request["model"] = on_cpu_id;
+    auto gpu_client = daemon().client();
+    auto cpu_client = on_cpu.client();
+    const image::Image a = render_ok(gpu_client, request);
+    const image::Image b = render_ok(cpu_client, request);
+    ASSERT_EQ(a.rgba.size(), b.rgba.size()) << request.dump();
+    int differing = 0;
+    for (std::size_t k = 0; k < a.rgba.size(); k += 4) {
+      for (std::size_t c = 0; c < 4; ++c) {
+        if (std::abs(a.rgba[k + c] - b.rgba[k + c]) > 8) {
+          ++differing;
+          break;
+        }
+      }
+    }
+    EXPECT_LE(differing, 4) << request.dump();
+  }
 }
 
 // ---- animated sheets -------------------------------------------------------

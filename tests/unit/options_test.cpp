@@ -59,6 +59,20 @@ TEST(DaemonOptions, RenderThreadsDefaultToOne) {
   EXPECT_THROW(parse_options({"--render-threads", "two"}), std::invalid_argument);
 }
 
+TEST(DaemonOptions, SkinningIsChosenByTheRasterizerUnlessGiven) {
+  using Skinning = Options::Skinning;
+  EXPECT_EQ(parse_options({}).skinning, Skinning::Auto);
+  EXPECT_EQ(parse_options({"--skinning", "gpu"}).skinning, Skinning::Gpu);
+  EXPECT_EQ(parse_options({"--skinning", "cpu"}).skinning, Skinning::Cpu);
+  EXPECT_EQ(parse_options({"--skinning", "cpu", "--skinning", "auto"}).skinning, Skinning::Auto);
+  try {
+    parse_options({"--skinning", "vertex"});
+    ADD_FAILURE() << "--skinning vertex was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "--skinning expects gpu, cpu or auto, got 'vertex'");
+  }
+}
+
 // --help and the parser read one table; this checks that what they make of
 // it agrees: every flag the parser reads opens a line of --help, and every
 // option --help names anywhere is one the parser reads.
