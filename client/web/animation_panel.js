@@ -11,7 +11,8 @@ export class AnimationPanel {
   // `root` holds #clip-select, #clip-time, #clip-time-label, #clip-play and
   // #clip-sheet; `hooks.get()` is the current `animation` (or undefined),
   // `hooks.set(animation, final)` replaces it (undefined: rest pose) and
-  // `hooks.sheetOfClip(name)` asks for an animated sprite sheet of a clip.
+  // `hooks.sheetOfClip(name)` asks for an animated sprite sheet of a clip,
+  // `hooks.clipsChanged()` says the model's clips (this.clips) were replaced.
   constructor(root, hooks) {
     this.root = root;
     this.hooks = hooks;
@@ -50,6 +51,7 @@ export class AnimationPanel {
     }
     if (id !== this.modelId) return;  // another model was chosen meanwhile
     this.clips = clips;
+    this.hooks.clipsChanged?.();
     this.root.hidden = clips.length === 0;
     this.select.replaceChildren(new Option('rest pose', ''),
       ...clips.map((c) => new Option(`${c.name} (${c.duration.toFixed(2)} s)`, c.name)));

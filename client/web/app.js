@@ -478,7 +478,7 @@ function installSheet() {
     change,
     addItem: () => {},
     removeItem: () => {},
-  }, { only: ['sheet'] });
+  }, { only: ['sheet'], clips: () => studio.animation?.clips ?? [] });
   studio.sheet = new SheetPreview({
     bodyFor: () => (sheetOn() ? sheetBody() : null),
     onSheet: showSheet,
@@ -563,6 +563,7 @@ async function start() {
     get: () => studio.params.animation,
     set: (animation, final) => change('/animation', animation, final),
     sheetOfClip,
+    clipsChanged: () => syncSheet(effective()),
   });
   installUpload();
   installOrbit();

@@ -5,6 +5,7 @@
 // A control whose field the render would ignore (the schema's
 // x-applies-when) is hidden until it matters again.
 import { applies } from './applies.js';
+import { buildClipList } from './clip_list_field.js';
 import { getPointer, isPlainObject } from './params.js';
 
 // Chosen elsewhere on the page: the model list, the preset menu, scenes
@@ -113,12 +114,14 @@ export class ControlPanel {
   // handlers.change(pointer, value, final): a control moved (final: released).
   // handlers.addItem(pointer, item) / handlers.removeItem(pointer).
   // options.only: build just these top-level blocks, without their group
-  // boxes (the sprite-sheet section's own controls).
+  // boxes (the sprite-sheet section's own controls). options.clips(): the
+  // shown model's clips ({name, duration}), for an x-control "clips" field.
   constructor(root, schema, handlers, options = {}) {
     this.root = root;
     this.schema = schema;
     this.handlers = handlers;
     this.only = options.only ?? null;
+    this.clips = options.clips ?? (() => []);
     this.updaters = [];
     this.shape = null;
     this.openGroups = new Set(['camera', 'lights', 'outline']);
@@ -217,7 +220,11 @@ export class ControlPanel {
   buildControl(parent, name, schema, pointer, effective) {
     const multi = multiEnumOf(schema);
     const values = enumOf(schema);
-    if (schema.type === 'object' && schema.properties) {
+    if (schema['x-control'] === 'clips') {
+      const { update } = buildClipList(parent, name, schema, pointer,
+        { make: el, send: (...args) => this.handlers.change(...args), clips: this.clips });
+      this.updaters.push(update);
+    } else if (schema.type === 'object' && schema.properties) {
       const box = el('fieldset', { class: 'sub', 'data-path': pointer }, el('legend', { text: labelText(name) }));
       this.buildProperties(box, schema, pointer, effective);
       parent.append(box);

@@ -97,6 +97,46 @@ try {
   check(/64 frames/.test(await page.textContent('#sheet-status')), 'eight directions of eight frames',
     await page.textContent('#sheet-status'));
   await page.screenshot({ path: path.join(artifacts, '22-animation-sheet.png'), fullPage: true });
+
+  // The sheet's clips are controls, not a JSON box: a clip choice and a
+  // frame count per clip, clips added and removed.
+  const clipsBox = page.locator('#sheet-controls fieldset.clips');
+  check(await clipsBox.isVisible(), 'the sheet shows its clips as a list');
+  check(await page.locator('#sheet-controls [data-path="/sheet/animation"] input.json').count() === 0
+        && await clipsBox.getAttribute('data-path') === '/sheet/animation', 'sheet.animation is not a JSON box');
+  check(await clipsBox.locator('select').inputValue() === 'Bend'
+        && await clipsBox.locator('input[type=number]').inputValue() === '8',
+  'the clip row shows the clip and its frames');
+  // Waits for a sheet newer than the one shown when the step began.
+  const sheetsShown = () => page.evaluate(() => Number(document.getElementById('sheet-view').dataset.sheets || 0));
+  const sheetShown = async (frames, before) => page.waitForFunction(([n, seen]) => {
+    const view = document.getElementById('sheet-view');
+    return Number(view.dataset.sheets) > seen && view.dataset.frames === String(n)
+      && !document.getElementById('sheet').classList.contains('busy');
+  }, [frames, before], { timeout: STEP_TIMEOUT_MS });
+  const lastSheet = () => requests.filter((r) => r.body.sheet).at(-1)?.body.sheet.animation;
+  let before = await sheetsShown();
+  await clipsBox.locator('input[type=number]').fill('4');
+  await clipsBox.locator('input[type=number]').press('Tab');
+  await sheetShown(32, before);
+  check(JSON.stringify(lastSheet()) === JSON.stringify({ clip: 'Bend', frames: 4 }), 'the frame count asks for 4 frames',
+    JSON.stringify(lastSheet()));
+  before = await sheetsShown();
+  await clipsBox.locator('button.add').click();
+  await sheetShown(32 + 64, before);
+  check(JSON.stringify(lastSheet()) === JSON.stringify([{ clip: 'Bend', frames: 4 }, { clip: 'Twist', frames: 8 }]),
+    'adding a clip asks for both, the new one a clip not yet in the sheet', JSON.stringify(lastSheet()));
+  before = await sheetsShown();
+  await clipsBox.locator('select').nth(1).selectOption('Bend');
+  await sheetShown(32 + 64, before);
+  check(JSON.stringify(lastSheet()) === JSON.stringify([{ clip: 'Bend', frames: 4 }, { clip: 'Bend', frames: 8 }]),
+    'a clip row chooses its clip', JSON.stringify(lastSheet()));
+  await page.screenshot({ path: path.join(artifacts, '23-animation-sheet-clips.png'), fullPage: true });
+  before = await sheetsShown();
+  await clipsBox.locator('button.remove').first().click();
+  await sheetShown(64, before);
+  check(JSON.stringify(lastSheet()) === JSON.stringify({ clip: 'Bend', frames: 8 }), 'removing a clip leaves the other',
+    JSON.stringify(lastSheet()));
   await page.uncheck('#sheet-toggle');
 
   requests.length = 0;
