@@ -251,7 +251,8 @@ LineShares line_shares(const ArtPixels& art) {
 // between areas wide enough still show: a big cube keeps its inner edges.
 // Measured 0.48-0.56 on the head (a one-pixel ring round a head 4-5 art
 // pixels wide is half of it) and 0.41-0.42 overall; the request's own lines
-// gave 0.85-0.89 and 0.93.
+// gave 0.85-0.89 and 0.93, and sprite lines without the 3-pixel rule for
+// creases 0.73-0.78 and 0.73-0.74.
 constexpr double kSpriteHeadLineShare = 0.6;
 constexpr double kSpriteLineShare = 0.5;
 // The cube's three crease lines, whole black pixels: 69 measured (as a
@@ -297,6 +298,71 @@ TEST_F(PixelArtSheet, SpriteLinesKeepASmallCharacterReadable) {
   for (const ArtPixels& tile : tiles_of(cube, "sprite")) {
     EXPECT_GE(inner_line_pixels(tile), kCubeInnerLines) << "the cube's faces are wide enough for their crease lines";
   }
+}
+
+// A square rod 0.035 wide and 1 long seen isometrically at 32 art pixels:
+// each of its two long faces is about 2 art pixels across, too narrow for
+// a crease line between them, so sprite lines leave the rod's own colours
+// a run at least 3 art pixels long in every row it crosses. Without that
+// rule the crease runs down the whole rod and splits or covers those runs:
+// 16 of its rows fall short, and line pixels are 0.81 of it (0.64
+// with the rule).
+std::string thin_rod_obj() {
+  const double half_width = 0.0175, half_length = 0.5;
+  std::string obj;
+  for (const double x : {-half_length, half_length}) {
+    for (const double y : {-half_width, half_width}) {
+      for (const double z : {-half_width, half_width}) {
+        obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+      }
+    }
+  }
+  // Corner (i, j, k) of x, y, z is vertex 4i + 2j + k + 1; faces wound outward.
+  obj += "f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n";
+  return obj;
+}
+
+// Rows that show some of the figure's own colours but no run of
+// kReadableRun of them side by side.
+constexpr int kReadableRun = 3;
+int rows_without_a_readable_run(const ArtPixels& art) {
+  int short_rows = 0;
+  for (int y = 0; y < art.height; ++y) {
+    int run = 0, longest = 0;
+    for (int x = 0; x < art.width; ++x) {
+      run = art.at(x, y) == 'o' ? run + 1 : 0;
+      longest = std::max(longest, run);
+    }
+    short_rows += longest > 0 && longest < kReadableRun;
+  }
+  return short_rows;
+}
+
+TEST_F(PixelArtSheet, SpriteLinesLeaveOutCreasesBetweenAreasTooNarrowToRead) {
+  auto client = daemon().client();
+  const std::string rod = upload_obj_text(client, thin_rod_obj(), "rod.obj");
+  const int k = 4;
+  const json params = {{"model", rod},
+                       {"width", 128},
+                       {"height", 128},
+                       {"background", kTransparent},
+                       {"camera", {{"preset", "isometric"}}},
+                       {"sheet", {{"frames", 1}, {"pixel_art", {{"scale", k}}}}}};
+  const image::Image sheet = image::decode_png(body_of(params, "image/png"));
+  const ArtPixels art = art_pixels(sheet, k);
+  const LineShares shares = line_shares(art);
+  const int short_rows = rows_without_a_readable_run(art);
+  std::printf("thin rod: %d rows without %d own-colour pixels in a row, line share %.2f\n", short_rows,
+              kReadableRun, shares.whole);
+  int covered = 0;
+  for (const char c : art.kind) covered += c != ' ';
+  ASSERT_GT(covered, 60) << "the rod is drawn along the tile";
+  std::string picture;
+  for (int y = 0; y < art.height; ++y) {
+    picture += std::string(art.kind.begin() + y * art.width, art.kind.begin() + (y + 1) * art.width) + "|\n";
+  }
+  EXPECT_EQ(short_rows, 0) << "no crease line between faces 2 art pixels across:\n" << picture;
+  EXPECT_EQ(shares.open_border, 0) << "the silhouette is closed";
 }
 
 TEST_F(PixelArtSheet, BadValuesAndLimitsAreRefusedBeforeRendering) {
