@@ -89,9 +89,8 @@ std::shared_ptr<const scene::SkinPose> posed_at(const scene::Model& model, std::
 
 }  // namespace
 
-std::shared_ptr<const scene::ClipFraming> ClipFramings::get(const std::string& model_id, const scene::Model& model,
-                                                            std::size_t clip) {
-  const std::string key = model_id + "/" + std::to_string(clip);
+template <class Compute>
+std::shared_ptr<const scene::ClipFraming> ClipFramings::cached(const std::string& key, Compute compute) {
   {
     std::lock_guard lock(mutex_);
     const auto it = std::find_if(recent_.begin(), recent_.end(), [&](const Entry& e) { return e.first == key; });
@@ -102,11 +101,21 @@ std::shared_ptr<const scene::ClipFraming> ClipFramings::get(const std::string& m
   }
   // Computed outside the lock: two requests for the same new clip may both
   // compute it, which costs time but gives the same framing.
-  auto framing = std::make_shared<const scene::ClipFraming>(scene::frame_clip(model.mesh, *model.rig, clip));
+  auto framing = std::make_shared<const scene::ClipFraming>(compute());
   std::lock_guard lock(mutex_);
   recent_.emplace_front(key, framing);
   if (recent_.size() > kCapacity) recent_.pop_back();
   return framing;
+}
+
+std::shared_ptr<const scene::ClipFraming> ClipFramings::get(const std::string& model_id, const scene::Model& model,
+                                                            std::size_t clip) {
+  return cached(model_id + "/" + std::to_string(clip),
+                [&] { return scene::frame_clip(model.mesh, *model.rig, clip); });
+}
+
+std::shared_ptr<const scene::ClipFraming> ClipFramings::rest(const std::string& model_id, const scene::Model& model) {
+  return cached(model_id + "/rest", [&] { return scene::frame_rest_pose(model.mesh, *model.rig); });
 }
 
 void resolve_sheet_clips(render::RenderJob& job) {
@@ -138,6 +147,23 @@ void resolve_sheet_clips(render::RenderJob& job) {
                            "directions × frames per clip), more than " + std::to_string(kMaxAnimatedSheetFrames),
                        "/sheet/animation");
   }
+}
+
+bool pose_at_rest(ClipFramings& framings, render::RenderJob& job, scene::Skinning where) {
+  bool posed = false;
+  for (render::JobObject& object : job.objects) {
+    const scene::Model& model = *object.model;
+    if (!model.rig || !scene::rest_pose_moves_vertices(*model.rig)) continue;
+    const std::shared_ptr<const scene::ClipFraming> framing = framings.rest(object.model_key, model);
+    auto pose = std::make_shared<scene::SkinPose>(
+        scene::skin_pose(model.mesh, *model.rig, scene::pose_nodes(*model.rig, nullptr, 0.0), where));
+    check_finite(*pose, framing->bounds, "/model");
+    pose->bounds = framing->bounds;
+    pose->extremes = framing->extremes;
+    object.pose = std::move(pose);
+    posed = true;
+  }
+  return posed;
 }
 
 void pose_for_animation(ClipFramings& framings, render::RenderJob& job, scene::Skinning where) {

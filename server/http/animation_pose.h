@@ -18,14 +18,18 @@
 
 namespace toond::http {
 
-// The framings of recently used clips, by model id and clip index.
+// The framings of recently used clips, by model id and clip index, and of
+// rest poses (scene::rest_pose_moves_vertices), by model id.
 class ClipFramings {
  public:
   static constexpr std::size_t kCapacity = 64;
   std::shared_ptr<const scene::ClipFraming> get(const std::string& model_id, const scene::Model& model,
                                                 std::size_t clip);
+  std::shared_ptr<const scene::ClipFraming> rest(const std::string& model_id, const scene::Model& model);
 
  private:
+  template <class Compute>
+  std::shared_ptr<const scene::ClipFraming> cached(const std::string& key, Compute compute);
   using Entry = std::pair<std::string, std::shared_ptr<const scene::ClipFraming>>;
   std::mutex mutex_;
   std::list<Entry> recent_;  // most recently used first
@@ -41,6 +45,11 @@ inline constexpr std::size_t kMaxAnimatedSheetFrames = 1024;
 // such clip; 400 for a scene of objects, for a top-level `animation` beside
 // it, for frames and fps together, and beyond kMaxAnimatedSheetFrames.
 void resolve_sheet_clips(render::RenderJob& job);
+
+// Poses each object whose model's rest pose is not where the import put
+// its vertices (scene::rest_pose_moves_vertices) in that rest pose, framed
+// by it: a render without `animation`. Returns whether any was posed.
+bool pose_at_rest(ClipFramings& framings, render::RenderJob& job, scene::Skinning where);
 
 // Poses the job's one object as job.params.animation asks (nothing when it
 // asks nothing). RequestError 400 when the job is a scene of objects, 422

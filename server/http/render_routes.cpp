@@ -244,7 +244,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
         sheet_poses = pose_sheet_frames(context.clip_framings, job, *layout, context.renderer.skinning());
       } else if (job.params.animation) {
         pose_for_animation(context.clip_framings, job, context.renderer.skinning());
-      } else {
+      } else if (!pose_at_rest(context.clip_framings, job, context.renderer.skinning())) {
         return;
       }
       pose_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();

@@ -387,4 +387,35 @@ ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip_index)
   return framing;
 }
 
+bool rest_pose_moves_vertices(const Rig& rig) {
+  const NodePose rest = pose_nodes(rig, nullptr, 0.0);
+  // A joint matrix is the identity up to float rounding of the products
+  // that make it (each entry about 1e-7 of the matrix's scale).
+  constexpr float kTolerance = 1e-5f;
+  for (const glm::mat4& m : joint_matrices(rig, rest)) {
+    float scale = 0;
+    for (int c = 0; c < 4; ++c) scale = std::max(scale, glm::length(m[c]));
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) {
+        const float identity = c == r ? 1.0f : 0.0f;
+        if (!(std::abs(m[c][r] - identity) <= kTolerance * std::max(scale, 1.0f))) return true;
+      }
+    }
+  }
+  for (const std::vector<double>& weights : morph_weights(rig, rest)) {
+    if (std::any_of(weights.begin(), weights.end(), [](double w) { return w != 0.0; })) return true;
+  }
+  return false;
+}
+
+ClipFraming frame_rest_pose(const Mesh& rest, const Rig& rig) {
+  const FramingPoints points = framing_points(rest);
+  const std::vector<glm::vec3> posed = pose_points(points, rig, pose_nodes(rig, nullptr, 0.0));
+  ClipFraming framing;
+  framing.poses = 1;
+  framing.bounds = compute_bounds(posed);
+  framing.extremes = extreme_points(posed);
+  return framing;
+}
+
 }  // namespace toond::scene

@@ -91,4 +91,15 @@ struct ClipFraming {
 };
 ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip);
 
+// Whether the rig's rest pose (glTF's: skinned meshes placed by their
+// joints at their nodes' rest transforms, the mesh's default morph
+// weights) puts any vertex elsewhere than the import did (it bakes the
+// mesh node's transform, which glTF ignores for a skinned mesh, and draws
+// morph targets at weight 0). Most exports' rest pose is their bind pose:
+// then a render without `animation` needs no pose.
+bool rest_pose_moves_vertices(const Rig& rig);
+
+// The bounds and extreme points of the rest pose, for framing it.
+ClipFraming frame_rest_pose(const Mesh& rest, const Rig& rig);
+
 }  // namespace toond::scene

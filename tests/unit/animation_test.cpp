@@ -355,6 +355,67 @@ TEST(BlenderRig, BendAtHalfASecondIsWhereBlenderPutIt) {
   EXPECT_GT(test_checks::farthest_from(posed_at(0.5 - 1.0 / 24.0), blender), 1e-2);
 }
 
+// glTF places a skinned mesh by its joints and ignores its node's own
+// transform; the import bakes that transform like any node's, so a file
+// whose skinned node is scaled must be drawn at rest through its joints.
+// Blender's bar with its "Arm" node squashed to half its height, and with
+// its shape key weighted 1 by default.
+Model blenders_bar(const std::function<void(nlohmann::json&)>& change) {
+  const std::filesystem::path folder = TOOND_EXPORTED_DIR "/blender";
+  nlohmann::json gltf = nlohmann::json::parse(test::read_file(folder / "rigged.gltf"));
+  change(gltf);
+  return import_files({{"rigged.gltf", gltf.dump()}, {"rigged.bin", test::read_file(folder / "rigged.bin")}});
+}
+
+TEST(RestPose, AnExportWhoseRestIsItsBindNeedsNoPose) {
+  const Model bar = blenders_bar([](nlohmann::json&) {});
+  EXPECT_FALSE(rest_pose_moves_vertices(*bar.rig));
+  const std::filesystem::path folder = TOOND_EXPORTED_DIR "/blender";
+  const Model walker = import_files({{"walker.glb", test::read_file(folder / "walker.glb")}});
+  EXPECT_FALSE(rest_pose_moves_vertices(*walker.rig));
+  EXPECT_FALSE(rest_pose_moves_vertices(*import_bar(rigged_bar()).rig));
+}
+
+TEST(RestPose, ASkinnedMeshsOwnNodeTransformIsIgnoredAtRest) {
+  const Model plain = blenders_bar([](nlohmann::json&) {});
+  const Model squashed = blenders_bar([](nlohmann::json& gltf) { gltf["nodes"][3]["scale"] = {1.0, 0.5, 1.0}; });
+  ASSERT_TRUE(squashed.rig);
+  EXPECT_TRUE(rest_pose_moves_vertices(*squashed.rig));
+  // The import baked the squash; the rest pose undoes it.
+  std::vector<glm::dvec3> where_glTF_puts_it;
+  for (const glm::vec3& p : plain.mesh.positions) where_glTF_puts_it.push_back(glm::dvec3(p) + plain.mesh.origin);
+  const Rig& rig = *squashed.rig;
+  const PosedVertices rest = pose_vertices(squashed.mesh, rig, pose_nodes(rig, nullptr, 0.0));
+  std::vector<glm::dvec3> posed;
+  for (const glm::vec3& p : rest.positions) posed.push_back(glm::dvec3(p) + squashed.mesh.origin);
+  std::vector<glm::dvec3> imported;
+  for (const glm::vec3& p : squashed.mesh.positions) imported.push_back(glm::dvec3(p) + squashed.mesh.origin);
+  ASSERT_EQ(posed.size(), where_glTF_puts_it.size());
+  double posed_off = 0, imported_off = 0;
+  for (std::size_t i = 0; i < posed.size(); ++i) {
+    posed_off = std::max(posed_off, glm::length(posed[i] - where_glTF_puts_it[i]));
+    imported_off = std::max(imported_off, glm::length(imported[i] - where_glTF_puts_it[i]));
+  }
+  EXPECT_LT(posed_off, 1e-5);
+  EXPECT_GT(imported_off, 0.3);
+  // Normals turn back exactly (the blend's cofactor); the mitred outline
+  // offsets do not (a non-uniform scale moves each face plane by its own
+  // factor), so only their directions are drawn as close as that allows.
+  double normal_off = 0;
+  for (std::size_t i = 0; i < posed.size(); ++i) {
+    normal_off = std::max(normal_off, double(glm::length(rest.normals[i] - plain.mesh.normals[i])));
+  }
+  EXPECT_LT(normal_off, 1e-5);
+  // The rest framing is the rest pose's reach.
+  const ClipFraming framing = frame_rest_pose(squashed.mesh, rig);
+  EXPECT_NEAR(framing.bounds.max.y - framing.bounds.min.y, plain.mesh.bounds.max.y - plain.mesh.bounds.min.y, 1e-5);
+}
+
+TEST(RestPose, AMeshsDefaultMorphWeightsShowAtRest) {
+  const Model keyed = blenders_bar([](nlohmann::json& gltf) { gltf["meshes"][0]["weights"] = {1.0}; });
+  EXPECT_TRUE(rest_pose_moves_vertices(*keyed.rig));
+}
+
 // ---- what a file gets wrong -----------------------------------------------
 
 std::string bar_error(const std::function<void(nlohmann::json&)>& spoil) {
