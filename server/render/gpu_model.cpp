@@ -6,6 +6,7 @@
 #include <span>
 
 #include "render/draw_pacing.h"
+#include "gpu/gpu_error.h"
 #include "render/vertex_attribute.h"
 
 namespace toond::render {
@@ -20,23 +21,34 @@ struct Vertex {
   float color[3];    // sRGB-encoded vertex colour; white without one
 };
 
+void write_vertex(Vertex& v, const glm::vec3& position, const glm::vec3& normal, const glm::vec2& texcoord,
+                  const glm::vec3& outline_normal, const glm::vec4& tangent, const glm::vec3& color) {
+  std::memcpy(v.position, &position, sizeof v.position);
+  std::memcpy(v.normal, &normal, sizeof v.normal);
+  std::memcpy(v.texcoord, &texcoord, sizeof v.texcoord);
+  std::memcpy(v.outline_normal, &outline_normal, sizeof v.outline_normal);
+  std::memcpy(v.tangent, &tangent, sizeof v.tangent);
+  std::memcpy(v.color, &color, sizeof v.color);
+}
+
+// A stream's value at vertex i, or `absent` where the mesh has none.
+template <class T>
+T at_or(std::span<const T> stream, std::size_t i, const T& absent) {
+  return i < stream.size() ? stream[i] : absent;
+}
+
+const glm::vec2 kNoTexcoord(0.0f);
+const glm::vec4 kNoTangent(1, 0, 0, 1);
+const glm::vec3 kNoColor(1.0f);  // white
+
 // The interleaved vertices of a mesh's streams; texcoords, tangents and
 // colours may be empty (then (0,0), +X and white).
-std::vector<Vertex> interleave(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                               std::span<const glm::vec2> texcoords, std::span<const glm::vec3> outline_normals,
-                               std::span<const glm::vec4> tangents, std::span<const glm::vec3> colors) {
-  std::vector<Vertex> vertices(positions.size());
+std::vector<Vertex> interleave(const scene::Mesh& mesh) {
+  std::vector<Vertex> vertices(mesh.positions.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    Vertex& v = vertices[i];
-    std::memcpy(v.position, &positions[i], sizeof v.position);
-    std::memcpy(v.normal, &normals[i], sizeof v.normal);
-    const glm::vec2 uv = i < texcoords.size() ? texcoords[i] : glm::vec2(0.0f);
-    std::memcpy(v.texcoord, &uv, sizeof v.texcoord);
-    std::memcpy(v.outline_normal, &outline_normals[i], sizeof v.outline_normal);
-    const glm::vec4 t = i < tangents.size() ? tangents[i] : glm::vec4(1, 0, 0, 1);
-    std::memcpy(v.tangent, &t, sizeof v.tangent);
-    const glm::vec3 c = i < colors.size() ? colors[i] : glm::vec3(1.0f);
-    std::memcpy(v.color, &c, sizeof v.color);
+    write_vertex(vertices[i], mesh.positions[i], mesh.normals[i], at_or<glm::vec2>(mesh.texcoords, i, kNoTexcoord),
+                 mesh.outline_normals[i], at_or<glm::vec4>(mesh.tangents, i, kNoTangent),
+                 at_or<glm::vec3>(mesh.colors, i, kNoColor));
   }
   return vertices;
 }
@@ -72,13 +84,8 @@ gpu::Texture upload_texture(const scene::Texture& tex, std::size_t& bytes) {
 GpuModel::GpuModel(const scene::Model& model)
     : bounds_(model.mesh.bounds), extremes_(model.mesh.extremes), creases_(model.mesh.creases), origin_(model.mesh.origin) {
   const scene::Mesh& mesh = model.mesh;
-  const std::vector<Vertex> vertices =
-      interleave(mesh.positions, mesh.normals, mesh.texcoords, mesh.outline_normals, mesh.tangents, mesh.colors);
+  const std::vector<Vertex> vertices = interleave(mesh);
   has_vertex_colors_ = !mesh.colors.empty();
-  if (model.rig) {
-    texcoords_ = mesh.texcoords;
-    colors_ = mesh.colors;
-  }
   // Every level's indices in one buffer, full detail first; each level's
   // submesh ranges are moved to where its indices land.
   std::vector<std::uint32_t> indices = mesh.indices;
@@ -144,27 +151,42 @@ void GpuModel::bind() const {
   if (skinned_) skin_->bind();
 }
 
-void GpuModel::apply_pose(const scene::SkinPose* pose) {
+void GpuModel::apply_pose(const scene::SkinPose* pose, const scene::Model& model) {
   const bool was_cpu_posed = posed_ && !skinned_;
-  posed_ = pose != nullptr && skin_ != nullptr;
-  skinned_ = posed_ && !pose->vertices;
+  posed_ = pose != nullptr && skin_ != nullptr && model.rig != nullptr;
+  skinned_ = posed_ && !pose->cpu_sums;
   const bool cpu_posed = posed_ && !skinned_;
   // A model never posed on the CPU costs no GL call here.
   if (was_cpu_posed && !cpu_posed) glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
   if (!posed_) return;
   if (skinned_) skin_->upload(*pose);
-  if (cpu_posed) upload_posed_vertices(*pose->vertices);
+  if (cpu_posed) pose_into_vertex_buffer(model, *pose->cpu_sums);
   posed_bounds_ = pose->bounds;
   posed_extremes_ = pose->extremes;
   for (std::size_t i = 0; i < levels_.size(); ++i) levels_[i].posed_caps = pose->caps[i];
 }
 
-void GpuModel::upload_posed_vertices(const scene::PosedVertices& posed) {
-  const std::vector<Vertex> vertices =
-      interleave(posed.positions, posed.normals, texcoords_, posed.outline_normals, posed.tangents, colors_);
+void GpuModel::pose_into_vertex_buffer(const scene::Model& model, const scene::PoseSums& sums) {
+  const scene::Mesh& mesh = model.mesh;
+  const std::size_t count = mesh.positions.size();
   if (!posed_vertices_) posed_vertices_ = gpu::Buffer::create();
-  glNamedBufferData(posed_vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(),
-                    GL_STREAM_DRAW);
+  // Fresh storage each pose (the last one may still be drawn from), mapped
+  // and written in place by the cores: no copy of the posed vertices is
+  // made on the way, which on llvmpipe is most of what posing costs.
+  const auto bytes = static_cast<GLsizeiptr>(count * sizeof(Vertex));
+  glNamedBufferData(posed_vertices_.id(), bytes, nullptr, GL_STREAM_DRAW);
+  auto* out = static_cast<Vertex*>(
+      glMapNamedBufferRange(posed_vertices_.id(), 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT));
+  if (out == nullptr) throw gpu::GpuError("cannot map the posed vertex buffer");
+  const bool tangents = has_normal_maps();
+  scene::for_each_vertex_run(count, [&](std::size_t first, std::size_t end) {
+    for (std::size_t v = first; v < end; ++v) {
+      const scene::PosedVertex posed = scene::pose_vertex(mesh, *model.rig, sums, v, tangents);
+      write_vertex(out[v], posed.position, posed.normal, at_or<glm::vec2>(mesh.texcoords, v, kNoTexcoord),
+                   posed.outline_normal, posed.tangent, at_or<glm::vec3>(mesh.colors, v, kNoColor));
+    }
+  });
+  glUnmapNamedBuffer(posed_vertices_.id());
   glVertexArrayVertexBuffer(vao_.id(), 0, posed_vertices_.id(), 0, sizeof(Vertex));
 }
 

@@ -35,12 +35,13 @@ class GpuModel {
   void bind() const;
   // Draws the model in `pose` until the next call; nullptr: the rest pose.
   // A pose of joints and morph weights is uploaded as such and the vertex
-  // stages move the rest vertices; a pose posed on the CPU
-  // (SkinPose::vertices) is uploaded into a vertex buffer of its own, with
+  // stages move the rest vertices; a pose to pose on the CPU
+  // (SkinPose::cpu_sums) is posed from `model` (the one this copy was made
+  // from) by the cores straight into a vertex buffer of its own, with
   // indices and textures shared with the rest. Set before every render,
   // since the copy is cached between renders. A model without a rig takes
   // only nullptr.
-  void apply_pose(const scene::SkinPose* pose);
+  void apply_pose(const scene::SkinPose* pose, const scene::Model& model);
   // Whether the vertex stages pose it (ObjectBlock::skinned).
   bool skinned() const { return skinned_; }
   // Binds a material's uniform block (shaders/material.glsl), made once
@@ -102,9 +103,6 @@ class GpuModel {
   bool posed_ = false;
   bool skinned_ = false;        // posed by the vertex stages
   gpu::Buffer posed_vertices_;  // made by the first pose posed on the CPU
-  // What a CPU pose's upload keeps of the rest streams (empty: none).
-  std::vector<glm::vec2> texcoords_;
-  std::vector<glm::vec3> colors_;
   scene::Bounds posed_bounds_;
   std::vector<glm::vec3> posed_extremes_;
   gpu::Buffer indices_;
@@ -123,7 +121,7 @@ class GpuModel {
     std::size_t cap_index_count = 0;
   };
   std::vector<Level> levels_;
-  void upload_posed_vertices(const scene::PosedVertices& posed);
+  void pose_into_vertex_buffer(const scene::Model& model, const scene::PoseSums& sums);
   std::vector<double> lod_errors_;
   scene::Bounds bounds_;
   std::vector<glm::vec3> extremes_;

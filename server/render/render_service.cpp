@@ -295,11 +295,18 @@ bool RenderService::serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources
       std::vector<RenderObject> objects;
       std::vector<std::string> pinned;
       for (const JobObject& o : task.job.objects) pinned.push_back(o.model_key);
+      // Posing vertices on the CPU happens here, on this thread (the
+      // Server-Timing entry pose_vertices).
+      const auto posing = std::chrono::steady_clock::now();
+      bool posed_on_cpu = false;
       for (const JobObject& o : task.job.objects) {
         GpuModel& model = models.get(o.model_key, *o.model, pinned);
-        model.apply_pose(o.pose.get());
+        model.apply_pose(o.pose.get(), *o.model);
+        posed_on_cpu = posed_on_cpu || (o.pose && o.pose->cpu_sums);
         objects.push_back({model, o.transform});
       }
+      const double posing_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - posing).count();
       record_cache_use();
       std::optional<DrawPacing> pacing;
       if (task.job.paced_chunk_triangles > 0 && task.job.deadline) {
@@ -308,6 +315,9 @@ bool RenderService::serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources
         pacing.emplace(task.job.paced_chunk_triangles, *task.job.deadline, std::move(between_chunks));
       }
       output = renderer.render(objects, task.job.params, pacing ? &*pacing : nullptr);
+      if (posed_on_cpu) {
+        output->timings.insert(output->timings.begin(), PassTiming{"pose_vertices", posing_ms, false, posing_ms});
+      }
     } catch (...) {
       failure = std::current_exception();
     }

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <bit>
+#include <functional>
 #include <set>
 #include <unordered_map>
 
@@ -145,40 +146,60 @@ void add_morphs(const Rig& rig, const std::vector<std::vector<double>>& weights,
 
 }  // namespace
 
-PosedVertices pose_vertices(const Mesh& rest, const Rig& rig, const NodePose& pose) {
-  const std::vector<glm::mat4> blends = motion_matrices(rig, pose);
-  std::vector<glm::mat3> normal_matrices(blends.size());
-  for (std::size_t m = 0; m < blends.size(); ++m) normal_matrices[m] = cofactor(glm::mat3(blends[m]));
-  const std::vector<std::vector<double>> weights = morph_weights(rig, pose);
+PoseSums pose_sums(const Rig& rig, const NodePose& pose) {
+  PoseSums sums;
+  sums.blends = motion_matrices(rig, pose);
+  sums.normal_matrices.resize(sums.blends.size());
+  for (std::size_t m = 0; m < sums.blends.size(); ++m) sums.normal_matrices[m] = cofactor(glm::mat3(sums.blends[m]));
+  sums.morph_weights = morph_weights(rig, pose);
+  return sums;
+}
 
+PosedVertex pose_vertex(const Mesh& rest, const Rig& rig, const PoseSums& sums, std::size_t v, bool with_tangent) {
+  const std::uint32_t m = rest.motion[v];
+  glm::vec3 position = rest.positions[v];
+  glm::vec3 normal = rest.normals[v];
+  add_morphs(rig, sums.morph_weights, rig.motions[m], position, &normal);
+  const glm::mat4& blend = sums.blends[m];
+  const glm::mat3& normal_matrix = sums.normal_matrices[m];
+  PosedVertex out;
+  out.position = glm::vec3(blend * glm::vec4(position, 1.0f));
+  out.normal = unit_or(normal_matrix * normal, rest.normals[v]);
+  const glm::vec3 outline = rest.outline_normals[v];
+  out.outline_normal = unit_or(normal_matrix * outline, out.normal) * glm::length(outline);
+  const glm::vec4 tangent = rest.tangents[v];
+  if (!with_tangent) {
+    out.tangent = tangent;
+    return out;
+  }
+  const glm::vec3 along = glm::mat3(blend) * glm::vec3(tangent);
+  out.tangent = glm::vec4(unit_or(along - out.normal * glm::dot(out.normal, along), glm::vec3(tangent)), tangent.w);
+  return out;
+}
+
+void for_each_vertex_run(std::size_t count, const std::function<void(std::size_t first, std::size_t end)>& pose) {
+  const int runs = static_cast<int>((count + kPoseRun - 1) / kPoseRun);
+  image::run_tasks(runs, image::hardware_threads(), [&](int run) {
+    const std::size_t first = static_cast<std::size_t>(run) * kPoseRun;
+    pose(first, std::min(count, first + kPoseRun));
+  });
+}
+
+PosedVertices pose_vertices(const Mesh& rest, const Rig& rig, const NodePose& pose) {
+  const PoseSums sums = pose_sums(rig, pose);
   PosedVertices out;
   const std::size_t count = rest.positions.size();
   out.positions.resize(count);
   out.normals.resize(count);
   out.outline_normals.resize(count);
   out.tangents.resize(count);
-  // Over the cores in runs of kPoseRun vertices: posing runs on the
-  // request's thread, and for a large mesh it is most of the request's own
-  // work before the render thread's.
-  const int runs = static_cast<int>((count + kPoseRun - 1) / kPoseRun);
-  image::run_tasks(runs, image::hardware_threads(), [&](int run) {
-    const std::size_t end = std::min(count, (static_cast<std::size_t>(run) + 1) * kPoseRun);
-    for (std::size_t v = static_cast<std::size_t>(run) * kPoseRun; v < end; ++v) {
-      const std::uint32_t m = rest.motion[v];
-      glm::vec3 position = rest.positions[v];
-      glm::vec3 normal = rest.normals[v];
-      add_morphs(rig, weights, rig.motions[m], position, &normal);
-      const glm::mat4& blend = blends[m];
-      const glm::mat3& normal_matrix = normal_matrices[m];
-      out.positions[v] = glm::vec3(blend * glm::vec4(position, 1.0f));
-      out.normals[v] = unit_or(normal_matrix * normal, rest.normals[v]);
-      const glm::vec3 outline = rest.outline_normals[v];
-      out.outline_normals[v] = unit_or(normal_matrix * outline, out.normals[v]) * glm::length(outline);
-      const glm::vec4 tangent = rest.tangents[v];
-      const glm::vec3 along = glm::mat3(blend) * glm::vec3(tangent);
-      const glm::vec3 posed_normal = out.normals[v];
-      out.tangents[v] =
-          glm::vec4(unit_or(along - posed_normal * glm::dot(posed_normal, along), glm::vec3(tangent)), tangent.w);
+  for_each_vertex_run(count, [&](std::size_t first, std::size_t end) {
+    for (std::size_t v = first; v < end; ++v) {
+      const PosedVertex posed = pose_vertex(rest, rig, sums, v, true);
+      out.positions[v] = posed.position;
+      out.normals[v] = posed.normal;
+      out.outline_normals[v] = posed.outline_normal;
+      out.tangents[v] = posed.tangent;
     }
   });
   out.bounds = compute_bounds(out.positions);
@@ -231,7 +252,7 @@ std::vector<glm::vec3> pose_some(const Mesh& rest, const Rig& rig, const std::ve
 
 SkinPose skin_pose(const Mesh& rest, const Rig& rig, const NodePose& pose, Skinning where) {
   SkinPose out;
-  if (where == Skinning::Cpu) out.vertices = std::make_shared<const PosedVertices>(pose_vertices(rest, rig, pose));
+  if (where == Skinning::Cpu) out.cpu_sums = std::make_shared<const PoseSums>(pose_sums(rig, pose));
   out.joints = joint_matrices(rig, pose);
   const std::vector<std::vector<double>> weights = morph_weights(rig, pose);
   for (const std::vector<double>& w : weights) out.morph_weights.emplace_back(w.begin(), w.end());

@@ -8,6 +8,7 @@
 // once on the CPU by pose_vertices, the same sum. pose_vertices also frames
 // a clip and is the reference the GPU is checked against.
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -45,6 +46,30 @@ struct PosedVertices {
 
 PosedVertices pose_vertices(const Mesh& rest, const Rig& rig, const NodePose& pose);
 
+// One pose's sums per motion, what posing a vertex reads: each motion's
+// blended joint matrix and its cofactor (normals), each morph set's weights.
+struct PoseSums {
+  std::vector<glm::mat4> blends;
+  std::vector<glm::mat3> normal_matrices;
+  std::vector<std::vector<double>> morph_weights;
+};
+PoseSums pose_sums(const Rig& rig, const NodePose& pose);
+
+// Vertex v of `rest` in the pose (what pose_vertices writes for it);
+// without `with_tangent` the tangent is the rest one (a model without
+// normal maps never reads it).
+struct PosedVertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec3 outline_normal;
+  glm::vec4 tangent;
+};
+PosedVertex pose_vertex(const Mesh& rest, const Rig& rig, const PoseSums& sums, std::size_t v, bool with_tangent);
+
+// Calls pose(first, end) for runs of [0, count) over the cores: posing a
+// large mesh is most of a posed request's own work.
+void for_each_vertex_run(std::size_t count, const std::function<void(std::size_t first, std::size_t end)>& pose);
+
 // Where each binding's joints start in one list of every binding's joints,
 // binding after binding: SkinPose::joints and the GPU's influences index
 // that list.
@@ -57,9 +82,10 @@ std::vector<std::uint32_t> binding_joint_offsets(const Rig& rig);
 // mesh's hole caps posed on the CPU, per level of detail (full mesh first),
 // for the culling decision made before drawing.
 struct SkinPose {
-  // Set by skin_pose when asked to pose on the CPU: the streams the GPU copy
-  // then draws as they are.
-  std::shared_ptr<const PosedVertices> vertices;
+  // Set by skin_pose when asked to pose on the CPU: the GPU copy poses its
+  // rest vertices with these sums straight into its vertex buffer
+  // (render/gpu_model.h), and the vertex stages draw them as they are.
+  std::shared_ptr<const PoseSums> cpu_sums;
   std::vector<glm::mat4> joints;
   std::vector<std::vector<float>> morph_weights;
   std::vector<std::vector<glm::vec3>> caps;

@@ -223,6 +223,18 @@ TEST_F(AnimatedModel, PosingOnTheCpuDrawsWhatTheVertexStageDraws) {
     }
     EXPECT_LE(differing, 4) << request.dump();
   }
+  // Posing on the CPU is counted where it happens, on the render thread.
+  auto client = on_cpu.client();
+  const auto posed = post_json(client, "/render", {{"model", on_cpu_id}, {"width", 32}, {"height", 32},
+                                                   {"animation", {{"clip", "Walk"}, {"time", 0.1}}}});
+  ASSERT_TRUE(posed && posed->status == 200);
+  EXPECT_NE(posed->get_header_value("Server-Timing").find(", pose_vertices;dur="), std::string::npos)
+      << posed->get_header_value("Server-Timing");
+  auto gpu_client = daemon().client();
+  const auto skinned = post_json(gpu_client, "/render", {{"model", on_cpu_id}, {"width", 32}, {"height", 32},
+                                                         {"animation", {{"clip", "Walk"}, {"time", 0.1}}}});
+  ASSERT_TRUE(skinned && skinned->status == 200);
+  EXPECT_EQ(skinned->get_header_value("Server-Timing").find("pose_vertices"), std::string::npos);
 }
 
 // glTF ignores a skinned mesh's own node transform: Blender's bar with its

@@ -108,11 +108,11 @@ class GpuSkinning : public test::GlContextTest {
       RenderParams p = params(request);
       p.width = p.height = 160;
       const RenderOutput reference_image = renderer.render(reference_copy, p);
-      posed_copy.apply_pose(&skin);
+      posed_copy.apply_pose(&skin, model);
       const RenderOutput in_vertex_stage = renderer.render(posed_copy, p);
-      posed_copy.apply_pose(&skin_on_cpu);
+      posed_copy.apply_pose(&skin_on_cpu, model);
       const RenderOutput on_cpu = renderer.render(posed_copy, p);
-      posed_copy.apply_pose(nullptr);
+      posed_copy.apply_pose(nullptr, model);
       const RenderOutput rest = renderer.render(posed_copy, p);
       const Difference gpu_vs_cpu = compare(in_vertex_stage, reference_image);
       std::cout << clip << " at " << time << " s, " << request.dump() << ": " << gpu_vs_cpu.differing
