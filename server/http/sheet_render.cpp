@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -100,13 +101,34 @@ render::SceneFrame scene_of(const render::RenderJob& job) {
   return render::frame_scene(parts);
 }
 
+namespace {
+
+// The order the frames are drawn in: the layout's, except that frames
+// sharing a pose (an animated sheet's directions of one time) follow each
+// other, so the GPU copy poses once for all of them (GpuModel::apply_pose).
+std::vector<std::size_t> render_order(const render::SheetLayout& layout,
+                                      const std::vector<std::shared_ptr<const scene::SkinPose>>& poses) {
+  std::vector<std::size_t> order(layout.frames.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  if (poses.empty()) return order;
+  std::map<const scene::SkinPose*, std::size_t> first_use;
+  for (std::size_t i = 0; i < order.size(); ++i) first_use.emplace(poses[i].get(), i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return first_use[poses[a].get()] < first_use[poses[b].get()]; });
+  return order;
+}
+
+}  // namespace
+
 render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJob& job,
                                   const render::SheetLayout& layout,
                                   const std::vector<std::shared_ptr<const scene::SkinPose>>& poses,
                                   std::chrono::steady_clock::time_point deadline) {
   const std::optional<render::SheetParams::PixelArt>& pixel_art = job.params.sheet->pixel_art;
+  const std::vector<std::size_t> order = render_order(layout, poses);
   std::vector<render::RenderJob> frames;
-  for (const render::SheetFrame& frame : layout.frames) {
+  for (const std::size_t index : order) {
+    const render::SheetFrame& frame = layout.frames[index];
     render::RenderJob one;
     one.objects = job.objects;
     if (!poses.empty()) one.objects.front().pose = poses[static_cast<std::size_t>(frame.index)];
@@ -132,19 +154,22 @@ render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJ
   } else if (!animate) {
     sheet.image = {layout.width, layout.height, std::vector<std::uint8_t>(values, 0)};
   }
-  std::vector<image::Image> art_tiles;  // pixel art: the small frames, until all are in
+  // Pixel art: the small frames, until all are in; an animation: its frames.
+  std::vector<image::Image> art_tiles(pixel_art ? layout.frames.size() : 0);
+  if (animate && !pixel_art) sheet.frames.resize(layout.frames.size());
   for (std::size_t i = 0; i < futures.size(); ++i) {
     // Each tile goes into place as soon as it is done, and its own image
     // is let go while the next frame renders.
     render::RenderOutput frame = await_render(futures[i], wait_limit(job, deadline), context.render_deadline);
+    const std::size_t index = order[i];
     if (pixel_art) {
-      art_tiles.push_back(std::move(frame.image));
+      art_tiles[index] = std::move(frame.image);
     } else if (animate) {
-      sheet.frames.push_back(std::move(frame.image));
+      sheet.frames[index] = std::move(frame.image);
     } else if (render::is_data_layer(job.params.output)) {
-      copy_tile(frame.layer, layout.frames[i], sheet.layer);
+      copy_tile(frame.layer, layout.frames[index], sheet.layer);
     } else {
-      copy_tile(frame.image, layout.frames[i], sheet.image);
+      copy_tile(frame.image, layout.frames[index], sheet.image);
     }
     add_timings(frame.timings, sheet.timings);
     merge_lods(frame.lods, sheet.lods);

@@ -151,7 +151,9 @@ void GpuModel::bind() const {
   if (skinned_) skin_->bind();
 }
 
-void GpuModel::apply_pose(const scene::SkinPose* pose, const scene::Model& model) {
+void GpuModel::apply_pose(std::shared_ptr<const scene::SkinPose> pose, const scene::Model& model) {
+  if (pose && pose == applied_) return;
+  applied_ = pose;
   const bool was_cpu_posed = posed_ && !skinned_;
   posed_ = pose != nullptr && skin_ != nullptr && model.rig != nullptr;
   skinned_ = posed_ && !pose->cpu_sums;

@@ -40,8 +40,9 @@ class GpuModel {
   // from) by the cores straight into a vertex buffer of its own, with
   // indices and textures shared with the rest. Set before every render,
   // since the copy is cached between renders. A model without a rig takes
-  // only nullptr.
-  void apply_pose(const scene::SkinPose* pose, const scene::Model& model);
+  // only nullptr. The pose last applied is kept: applying it again (the
+  // frames of a sheet that share a time) costs nothing.
+  void apply_pose(std::shared_ptr<const scene::SkinPose> pose, const scene::Model& model);
   // Whether the vertex stages pose it (ObjectBlock::skinned).
   bool skinned() const { return skinned_; }
   // Binds a material's uniform block (shaders/material.glsl), made once
@@ -102,6 +103,7 @@ class GpuModel {
   std::unique_ptr<GpuSkin> skin_;  // a rigged model's
   bool posed_ = false;
   bool skinned_ = false;        // posed by the vertex stages
+  std::shared_ptr<const scene::SkinPose> applied_;  // what the buffers hold now
   gpu::Buffer posed_vertices_;  // made by the first pose posed on the CPU
   scene::Bounds posed_bounds_;
   std::vector<glm::vec3> posed_extremes_;

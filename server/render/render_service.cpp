@@ -301,7 +301,7 @@ bool RenderService::serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources
       bool posed_on_cpu = false;
       for (const JobObject& o : task.job.objects) {
         GpuModel& model = models.get(o.model_key, *o.model, pinned);
-        model.apply_pose(o.pose.get(), *o.model);
+        model.apply_pose(o.pose, *o.model);
         posed_on_cpu = posed_on_cpu || (o.pose && o.pose->cpu_sums);
         objects.push_back({model, o.transform});
       }

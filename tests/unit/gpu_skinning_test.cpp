@@ -84,14 +84,14 @@ class GpuSkinning : public test::GlContextTest {
     const scene::Rig& rig = *model.rig;
     const scene::NodePose nodes = scene::pose_nodes(rig, &rig.clips[*rig.find_clip(clip)], time);
     const scene::PosedVertices posed = scene::pose_vertices(model.mesh, rig, nodes);
-    scene::SkinPose skin = scene::skin_pose(model.mesh, rig, nodes);
-    skin.bounds = posed.bounds;
-    skin.extremes = scene::extreme_points(posed.positions);
-    const Model reference = cpu_posed_copy(model, posed, skin);
+    auto skin = std::make_shared<scene::SkinPose>(scene::skin_pose(model.mesh, rig, nodes));
+    skin->bounds = posed.bounds;
+    skin->extremes = scene::extreme_points(posed.positions);
+    const Model reference = cpu_posed_copy(model, posed, *skin);
 
-    scene::SkinPose skin_on_cpu = scene::skin_pose(model.mesh, rig, nodes, scene::Skinning::Cpu);
-    skin_on_cpu.bounds = skin.bounds;
-    skin_on_cpu.extremes = skin.extremes;
+    auto skin_on_cpu = std::make_shared<scene::SkinPose>(scene::skin_pose(model.mesh, rig, nodes, scene::Skinning::Cpu));
+    skin_on_cpu->bounds = skin->bounds;
+    skin_on_cpu->extremes = skin->extremes;
 
     gpu::ProgramCache programs([](const std::string& name) { return std::string(shader_files::find(name)); });
     Renderer renderer(programs);
@@ -108,9 +108,9 @@ class GpuSkinning : public test::GlContextTest {
       RenderParams p = params(request);
       p.width = p.height = 160;
       const RenderOutput reference_image = renderer.render(reference_copy, p);
-      posed_copy.apply_pose(&skin, model);
+      posed_copy.apply_pose(skin, model);
       const RenderOutput in_vertex_stage = renderer.render(posed_copy, p);
-      posed_copy.apply_pose(&skin_on_cpu, model);
+      posed_copy.apply_pose(skin_on_cpu, model);
       const RenderOutput on_cpu = renderer.render(posed_copy, p);
       posed_copy.apply_pose(nullptr, model);
       const RenderOutput rest = renderer.render(posed_copy, p);
