@@ -13,7 +13,7 @@ layout(std430, binding = 0) readonly buffer SkinVertexMotions { uint s_vertex_mo
 layout(std430, binding = 1) readonly buffer SkinMotions { uvec4 s_motion[]; };
 // Per influence: the joint (into s_joint), the weight's bits.
 layout(std430, binding = 2) readonly buffer SkinInfluences { uvec2 s_influence[]; };
-// Per morph target and vertex of a set: position delta, normal delta.
+// Per morph target and vertex of a set: position, normal and tangent deltas.
 layout(std430, binding = 3) readonly buffer SkinMorphDeltas { vec4 s_morph_delta[]; };
 // The pose: each joint's matrix, rest mesh space to posed mesh space.
 layout(std430, binding = 4) readonly buffer PoseJoints { mat4 s_joint[]; };
@@ -35,15 +35,16 @@ vec3 skin_unit_or(vec3 v, vec3 fallback) {
   return len > 1e-20 && !isinf(len) ? v / len : fallback;
 }
 
-void add_morph_targets(uint set_plus_one, uint vertex, inout vec3 position, inout vec3 normal) {
+void add_morph_targets(uint set_plus_one, uint vertex, inout vec3 position, inout vec3 normal, inout vec3 tangent) {
   if (set_plus_one == 0u) return;
   uvec4 set = s_pose_morph[set_plus_one - 1u];
   for (uint k = set.z; k < set.z + set.w; ++k) {
     uvec4 target = s_pose_morph[k];
     float weight = uintBitsToFloat(target.y);
-    uint at = 2u * (set.x + target.x * set.y + vertex);
+    uint at = 3u * (set.x + target.x * set.y + vertex);
     position += weight * s_morph_delta[at].xyz;
     normal += weight * s_morph_delta[at + 1u].xyz;
+    tangent += weight * s_morph_delta[at + 2u].xyz;
   }
 }
 
@@ -57,7 +58,8 @@ PosedVertex posed_vertex() {
   if (u_skinned == 0) return v;
   uvec4 motion = s_motion[s_vertex_motion[gl_VertexID]];
   vec3 normal = a_normal;
-  add_morph_targets(motion.z, motion.w, v.position, normal);
+  vec3 tangent = a_tangent.xyz;
+  add_morph_targets(motion.z, motion.w, v.position, normal, tangent);
   mat4 blend = mat4(0.0);
   for (uint k = motion.x; k < motion.x + motion.y; ++k) {
     uvec2 influence = s_influence[k];
@@ -68,7 +70,7 @@ PosedVertex posed_vertex() {
   v.position = (blend * vec4(v.position, 1.0)).xyz;
   v.normal = skin_unit_or(cofactor * normal, a_normal);
   v.outline_offset = skin_unit_or(cofactor * a_outline_offset, v.normal) * length(a_outline_offset);
-  vec3 along = turn * a_tangent.xyz;
+  vec3 along = turn * tangent;
   v.tangent = vec4(skin_unit_or(along - v.normal * dot(v.normal, along), a_tangent.xyz), a_tangent.w);
   return v;
 }

@@ -56,13 +56,17 @@ MotionTables motion_tables(const scene::Rig& rig) {
 
 GpuSkin::GpuSkin(const scene::Mesh& mesh, const scene::Rig& rig) {
   const MotionTables tables = motion_tables(rig);
-  std::vector<glm::vec4> deltas;  // pairs: position, normal
+  std::vector<glm::vec4> deltas;  // threes: position, normal, tangent
+  const auto delta_or_none = [](const std::vector<glm::vec3>& deltas_of_set, std::size_t i) {
+    return glm::vec4(deltas_of_set.empty() ? glm::vec3(0.0f) : deltas_of_set[i], 0.0f);
+  };
   for (const scene::MorphSet& set : rig.morph_sets) {
-    morph_first_delta_.push_back(static_cast<std::uint32_t>(deltas.size() / 2));
+    morph_first_delta_.push_back(static_cast<std::uint32_t>(deltas.size() / 3));
     morph_vertices_.push_back(static_cast<std::uint32_t>(set.vertices));
     for (std::size_t i = 0; i < set.position_deltas.size(); ++i) {
       deltas.emplace_back(set.position_deltas[i], 0.0f);
-      deltas.emplace_back(set.normal_deltas.empty() ? glm::vec3(0.0f) : set.normal_deltas[i], 0.0f);
+      deltas.push_back(delta_or_none(set.normal_deltas, i));
+      deltas.push_back(delta_or_none(set.tangent_deltas, i));
     }
   }
   vertex_motions_ = immutable_buffer(mesh.motion, gpu_bytes_);

@@ -221,9 +221,12 @@ std::int32_t GltfRigReader::morph_set_of(int node, const tinygltf::Primitive& pr
   const glm::dmat3 linear = turn_ * glm::dmat3(rest_world_[static_cast<std::size_t>(node)]);
   const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
   set.position_deltas.assign(set.targets() * count, glm::vec3(0.0f));
-  bool any_normals = false;
-  for (std::size_t t = 0; t < primitive.targets.size(); ++t) any_normals = any_normals || primitive.targets[t].count("NORMAL");
-  if (any_normals) set.normal_deltas.assign(set.targets() * count, glm::vec3(0.0f));
+  const auto any_target_has = [&](const char* attribute) {
+    return std::any_of(primitive.targets.begin(), primitive.targets.end(),
+                       [&](const auto& target) { return target.count(attribute) > 0; });
+  };
+  if (any_target_has("NORMAL")) set.normal_deltas.assign(set.targets() * count, glm::vec3(0.0f));
+  if (any_target_has("TANGENT")) set.tangent_deltas.assign(set.targets() * count, glm::vec3(0.0f));
   for (std::size_t t = 0; t < primitive.targets.size(); ++t) {
     const auto read = [&](const char* attribute, std::vector<glm::vec3>& into, const glm::dmat3& by) {
       const auto it = primitive.targets[t].find(attribute);
@@ -236,6 +239,8 @@ std::int32_t GltfRigReader::morph_set_of(int node, const tinygltf::Primitive& pr
     };
     read("POSITION", set.position_deltas, linear);
     read("NORMAL", set.normal_deltas, normal_matrix);
+    // A tangent lies in the surface: it turns as positions do.
+    read("TANGENT", set.tangent_deltas, linear);
   }
   if (meshes_with_targets_.insert(gltf_.nodes[static_cast<std::size_t>(node)].mesh).second) {
     rig_.morph_target_count += set.targets();

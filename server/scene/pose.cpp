@@ -130,17 +130,20 @@ std::vector<glm::mat4> motion_matrices(const Rig& rig, const NodePose& pose) {
   return blends;
 }
 
-// Adds the morph targets' weighted deltas of the vertex's motion.
+// Adds the morph targets' weighted deltas of the vertex's motion; normal
+// and tangent only where given.
 void add_morphs(const Rig& rig, const std::vector<std::vector<double>>& weights, const VertexMotion& motion,
-                glm::vec3& position, glm::vec3* normal) {
+                glm::vec3& position, glm::vec3* normal = nullptr, glm::vec3* tangent = nullptr) {
   if (motion.morph_set < 0) return;
   const MorphSet& set = rig.morph_sets[static_cast<std::size_t>(motion.morph_set)];
   const std::vector<double>& w = weights[static_cast<std::size_t>(motion.morph_set)];
   for (std::size_t t = 0; t < set.targets(); ++t) {
     if (w[t] == 0.0) continue;
     const std::size_t at = t * set.vertices + motion.morph_vertex;
-    position += static_cast<float>(w[t]) * set.position_deltas[at];
-    if (normal && !set.normal_deltas.empty()) *normal += static_cast<float>(w[t]) * set.normal_deltas[at];
+    const auto weight = static_cast<float>(w[t]);
+    position += weight * set.position_deltas[at];
+    if (normal && !set.normal_deltas.empty()) *normal += weight * set.normal_deltas[at];
+    if (tangent && !set.tangent_deltas.empty()) *tangent += weight * set.tangent_deltas[at];
   }
 }
 
@@ -159,7 +162,9 @@ PosedVertex pose_vertex(const Mesh& rest, const Rig& rig, const PoseSums& sums, 
   const std::uint32_t m = rest.motion[v];
   glm::vec3 position = rest.positions[v];
   glm::vec3 normal = rest.normals[v];
-  add_morphs(rig, sums.morph_weights, rig.motions[m], position, &normal);
+  const glm::vec4 tangent = rest.tangents[v];
+  glm::vec3 tangent_direction(tangent);
+  add_morphs(rig, sums.morph_weights, rig.motions[m], position, &normal, &tangent_direction);
   const glm::mat4& blend = sums.blends[m];
   const glm::mat3& normal_matrix = sums.normal_matrices[m];
   PosedVertex out;
@@ -167,12 +172,11 @@ PosedVertex pose_vertex(const Mesh& rest, const Rig& rig, const PoseSums& sums, 
   out.normal = unit_or(normal_matrix * normal, rest.normals[v]);
   const glm::vec3 outline = rest.outline_normals[v];
   out.outline_normal = unit_or(normal_matrix * outline, out.normal) * glm::length(outline);
-  const glm::vec4 tangent = rest.tangents[v];
   if (!with_tangent) {
     out.tangent = tangent;
     return out;
   }
-  const glm::vec3 along = glm::mat3(blend) * glm::vec3(tangent);
+  const glm::vec3 along = glm::mat3(blend) * tangent_direction;
   out.tangent = glm::vec4(unit_or(along - out.normal * glm::dot(out.normal, along), glm::vec3(tangent)), tangent.w);
   return out;
 }

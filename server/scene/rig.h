@@ -71,6 +71,7 @@ struct MorphSet {
   std::size_t vertices = 0;
   std::vector<glm::vec3> position_deltas;  // [target * vertices + vertex]
   std::vector<glm::vec3> normal_deltas;    // same layout, or empty
+  std::vector<glm::vec3> tangent_deltas;   // same layout, or empty
   std::size_t targets() const { return default_weights.size(); }
 };
 

@@ -284,6 +284,35 @@ TEST(GltfRig, PosedNormalsTurnWithTheJoints) {
   EXPECT_TRUE(found);
 }
 
+// A TANGENT target's delta is added to the tangent before the skin turns
+// it: at the clip's end (weight 1) the foot ring, which only moved, has
+// its rest tangent plus the delta, made square to the normal.
+TEST(GltfRig, MorphTargetsMoveTangentsToo) {
+  const glm::vec3 delta(0.0f, 3.0f, -4.0f);
+  RiggedBar bar = rigged_bar();
+  std::vector<float> tangent_deltas;
+  for (int k = 0; k < 12; ++k) tangent_deltas.insert(tangent_deltas.end(), {delta.x, delta.y, delta.z});
+  bar.parts.json["meshes"][0]["primitives"][0]["targets"][0]["TANGENT"] =
+      test::append_float_accessor(bar.parts, tangent_deltas, "VEC3");
+  const Model model = import_bar(bar);
+  const Rig& rig = *model.rig;
+  ASSERT_EQ(rig.morph_sets.size(), 1u);
+  ASSERT_EQ(rig.morph_sets[0].tangent_deltas.size(), rig.morph_sets[0].position_deltas.size());
+  const PosedVertices posed = pose_vertices(model.mesh, rig, pose_nodes(rig, &rig.clips[0], 1.0));
+  int foot = 0, turned = 0;
+  for (std::size_t v = 0; v < model.mesh.positions.size(); ++v) {
+    if (model.mesh.positions[v].y + model.mesh.origin.y > 0.5) continue;
+    ++foot;
+    const glm::vec3 n = model.mesh.normals[v];
+    const glm::vec3 moved = glm::vec3(model.mesh.tangents[v]) + delta;
+    const glm::vec3 expected = glm::normalize(moved - n * glm::dot(n, moved));
+    EXPECT_NEAR(glm::length(glm::vec3(posed.tangents[v]) - expected), 0.0f, 1e-5f) << "vertex " << v;
+    turned += glm::length(glm::vec3(posed.tangents[v]) - glm::vec3(model.mesh.tangents[v])) > 0.5f;
+  }
+  EXPECT_GT(foot, 0);
+  EXPECT_GT(turned, 0) << "the delta turned some tangent";
+}
+
 TEST(GltfRig, TheRestPoseIsTheImportAsBefore) {
   const Model model = import_bar(rigged_bar());
   const Rig& rig = *model.rig;
