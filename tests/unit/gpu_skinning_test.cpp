@@ -145,5 +145,25 @@ TEST_F(GpuSkinning, BlendersBarBendsWithItsShapeKeyLikeTheCpu) {
   expect_gpu_pose_is_cpu_pose(model, "Twist", 0.3);
 }
 
+// Tangents matter only under a normal map: Blender's bar given one (every
+// texel tilted toward the tangent) and a TANGENT target on its shape key,
+// so the bend's shading follows the morphed tangent frame.
+TEST_F(GpuSkinning, MorphedTangentsTurnANormalMapAlike) {
+  const std::filesystem::path folder = TOOND_EXPORTED_DIR "/blender";
+  Model model = scene::test_checks::import_files({{"rigged.gltf", test::read_file(folder / "rigged.gltf")},
+                                                  {"rigged.bin", test::read_file(folder / "rigged.bin")}});
+  ASSERT_TRUE(model.rig);
+  scene::Texture tilted;
+  tilted.width = tilted.height = 4;
+  tilted.color_space = scene::ColorSpace::Linear;
+  for (int i = 0; i < 16; ++i) tilted.rgba.insert(tilted.rgba.end(), {230, 128, 180, 255});  // (0.8, 0, 0.4) in tangent space
+  model.textures.push_back(tilted);
+  for (scene::Material& m : model.materials) m.normal_texture = static_cast<int>(model.textures.size() - 1);
+  auto rig = std::make_shared<scene::Rig>(*model.rig);
+  for (scene::MorphSet& set : rig->morph_sets) set.tangent_deltas.assign(set.position_deltas.size(), glm::vec3(0, 2, 1));
+  model.rig = rig;
+  expect_gpu_pose_is_cpu_pose(model, "Bend", 0.5);
+}
+
 }  // namespace
 }  // namespace toond::render
