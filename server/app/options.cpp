@@ -95,12 +95,12 @@ const Flag kGeneralFlags[] = {
        o.simulate_gpu_reset = static_cast<std::size_t>(parse_count(flag, v, 1, 1'000'000'000));
      }},
     {{"", "--skinning", "WHERE",
-      "where a request's `animation` moves the vertices: gpu (in\n"
-      "the vertex stage of every pass, from the pose's joint\n"
-      "matrices), cpu (once per request, then uploaded), or\n"
-      "auto (default): gpu on a GPU, cpu on a software\n"
-      "rasterizer such as llvmpipe, whose vertex stage runs on\n"
-      "the CPU again for every pass"},
+      "where a pose (a request's `animation`) moves the vertices:\n"
+      "gpu (in the vertex stage of every pass, from the pose's\n"
+      "joint matrices), cpu (once per render, over the cores,\n"
+      "straight into the vertex buffer), or auto (default): gpu\n"
+      "on a GPU, cpu on a software rasterizer such as llvmpipe,\n"
+      "whose vertex stage runs on the CPU again for every pass"},
      [](Options& o, Value flag, Value v) {
        if (v == "gpu") o.skinning = Options::Skinning::Gpu;
        else if (v == "cpu") o.skinning = Options::Skinning::Cpu;
