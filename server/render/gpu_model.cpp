@@ -153,7 +153,7 @@ void GpuModel::bind() const {
 
 void GpuModel::apply_pose(std::shared_ptr<const scene::SkinPose> pose, const scene::Model& model) {
   if (pose && pose == applied_) return;
-  applied_ = pose;
+  applied_.reset();  // until the buffers hold the new pose
   const bool was_cpu_posed = posed_ && !skinned_;
   posed_ = pose != nullptr && skin_ != nullptr && model.rig != nullptr;
   skinned_ = posed_ && !pose->cpu_sums;
@@ -166,6 +166,7 @@ void GpuModel::apply_pose(std::shared_ptr<const scene::SkinPose> pose, const sce
   posed_bounds_ = pose->bounds;
   posed_extremes_ = pose->extremes;
   for (std::size_t i = 0; i < levels_.size(); ++i) levels_[i].posed_caps = pose->caps[i];
+  applied_ = std::move(pose);
 }
 
 void GpuModel::pose_into_vertex_buffer(const scene::Model& model, const scene::PoseSums& sums) {
