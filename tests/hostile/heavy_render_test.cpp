@@ -139,7 +139,7 @@ TEST(HeavyRender, ALongSheetsFramesDoNotFillTheQueueForOthers) {
   }
   const auto long_sheet = sheet.get();
   ASSERT_TRUE(long_sheet);
-  EXPECT_EQ(long_sheet->status, 200) << long_sheet->body;
+  ASSERT_EQ(long_sheet->status, 200) << long_sheet->body;
   const std::string cost = long_sheet->get_header_value("X-Toond-Cost");
   EXPECT_GE(std::stod(cost.substr(5)), 20.0) << "the sheet must be priced into the long lane: " << cost;
   EXPECT_EQ(answered, 5);
