@@ -39,9 +39,6 @@ struct PosedVertices {
   std::vector<glm::vec3> outline_normals;
   std::vector<glm::vec4> tangents;
   Bounds bounds;
-  // Points for framing (scene/extreme_points.h): not made by pose_vertices
-  // (a request frames by its whole clip: frame_clip).
-  std::vector<glm::vec3> extremes;
 };
 
 PosedVertices pose_vertices(const Mesh& rest, const Rig& rig, const NodePose& pose);
