@@ -44,6 +44,7 @@ Options:
   --out DIR        where results go (default bench/results)
   --models DIR     the shared models (default: ../shared/models beside the checkout)
   --render-threads N  the daemon's --render-threads (default: its own default)
+  --frames-in-flight N  the daemon's --frames-in-flight (default: its own default)
   --toond PATH     ignored; the toond built with this driver is used
 )";
 
@@ -54,6 +55,7 @@ struct Args {
   fs::path out = "bench/results";
   fs::path models = TOOND_SHARED_MODELS;
   std::string render_threads;  // empty: the daemon's default
+  std::string frames_in_flight;  // empty: the daemon's default
   std::set<std::string> parts;
 };
 
@@ -71,6 +73,7 @@ Args parse(int argc, char** argv) {
     else if (arg == "--out") a.out = value();
     else if (arg == "--models") a.models = value();
     else if (arg == "--render-threads") a.render_threads = value();
+    else if (arg == "--frames-in-flight") a.frames_in_flight = value();
     else if (arg == "--toond") value();
     else if (arg == "-h" || arg == "--help") {
       std::cout << kUsage;
@@ -99,11 +102,15 @@ int main(int argc, char** argv) {
     // result cache would answer all but the first from memory.
     std::vector<std::string> daemon_args = {"--result-cache-mb", "0"};
     if (!args.render_threads.empty()) daemon_args.insert(daemon_args.end(), {"--render-threads", args.render_threads});
+    if (!args.frames_in_flight.empty()) {
+      daemon_args.insert(daemon_args.end(), {"--frames-in-flight", args.frames_in_flight});
+    }
     toond::test::Daemon daemon({}, daemon_args);
     httplib::Client client(daemon.url());
     client.set_read_timeout(300);
     client.set_write_timeout(300);
-    json summary = {{"quick", args.quick}, {"repeats", args.repeats}, {"render_threads", args.render_threads}};
+    json summary = {{"quick", args.quick}, {"repeats", args.repeats}, {"render_threads", args.render_threads},
+                    {"frames_in_flight", args.frames_in_flight}};
     if (auto health = client.Get("/healthz"); health && health->status == 200) {
       summary["gl"] = json::parse(health->body)["gl"];
     }

@@ -86,6 +86,7 @@ int run(const toond::app::Options& options) {
   render_options.gpu_index = options.gpu;
   render_options.queue_capacity = options.queue;
   render_options.render_threads = options.render_threads;
+  render_options.frames_in_flight = options.frames_in_flight;
   render_options.long_render_cost = options.long_render_cost;
   render_options.shader_dir = options.shader_dir;
   render_options.gpu_model_bytes = options.gpu_cache_bytes;

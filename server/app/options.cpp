@@ -41,6 +41,12 @@ const Flag kGeneralFlags[] = {
       "render threads, each with its own GL context and its\n"
       "own GPU copies of the models (default 1)"},
      [](Options& o, Value flag, Value v) { o.render_threads = static_cast<std::size_t>(parse_count(flag, v, 1, 64)); }},
+    {{"", "--frames-in-flight", "N",
+      "1 (default): each frame is read back before the next one\n"
+      "is drawn; 2: a render thread records the next queued frame\n"
+      "while the last one's pixels come back (a pixel buffer and\n"
+      "a fence), so a GPU draws while it packs; the same bytes"},
+     [](Options& o, Value flag, Value v) { o.frames_in_flight = static_cast<int>(parse_count(flag, v, 1, 2)); }},
     {{"", "--long-render-cost", "M",
       "renders predicted to cost M Msamples or more (see\n"
       "--max-render-cost) wait in a lane of their own, served\n"

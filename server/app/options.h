@@ -33,6 +33,8 @@ struct Options {
   std::string shader_dir;
   // Testing aid: every Nth render acts as if the GL context were lost.
   std::size_t simulate_gpu_reset = 0;
+  // RenderService::Options::frames_in_flight.
+  int frames_in_flight = 1;
   // Where poses move vertices (RenderService::Options::skinning).
   enum class Skinning { Auto, Gpu, Cpu } skinning = Skinning::Auto;
   // --max-* (server/app/limit_options.cpp); max_upload_bytes above wins

@@ -38,7 +38,8 @@ ReadbackBuffer::ReadbackBuffer(int width, int height)
   }
 }
 
-image::Image ReadbackBuffer::read(GLuint framebuffer) const {
+void ReadbackBuffer::start(GLuint framebuffer) {
+  if (packed_) throw GpuError("ReadbackBuffer: a second pack started before the first one was finished");
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, buffer_.id());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -48,7 +49,13 @@ image::Image ReadbackBuffer::read(GLuint framebuffer) const {
   // Without GL_MAP_COHERENT_BIT the pack must be made visible to the
   // mapping before the fence that says it is done.
   glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
-  wait_for(Fence());
+  packed_.emplace();
+}
+
+image::Image ReadbackBuffer::finish() {
+  if (!packed_) throw GpuError("ReadbackBuffer: finish() without a pack started");
+  wait_for(*packed_);
+  packed_.reset();
 
   image::Image img;
   img.width = width_;

@@ -127,13 +127,24 @@ void RenderTarget::bind_for_shrinking() const {
   glViewport(0, 0, width_ / shrink_, height_ / shrink_);
 }
 
-image::Image RenderTarget::read_back() const {
-  const GLuint source = shrink_ > 1 ? shrunk_fbo_.id() : resolve();
+GLuint RenderTarget::read_source() const { return shrink_ > 1 ? shrunk_fbo_.id() : resolve(); }
+
+void RenderTarget::start_read_back(ReadbackBuffer& into) const {
+  if (into.width() != read_width() || into.height() != read_height()) {
+    throw GpuError("RenderTarget: a readback buffer of " + std::to_string(into.width()) + "x" +
+                   std::to_string(into.height()) + " for an image of " + std::to_string(read_width()) + "x" +
+                   std::to_string(read_height()));
+  }
+  into.start(read_source());
+}
+
+image::Image RenderTarget::read_back() {
+  const GLuint source = read_source();
   if (pixel_buffer_) return pixel_buffer_->read(source);
 
   image::Image img;
-  img.width = width_ / shrink_;
-  img.height = height_ / shrink_;
+  img.width = read_width();
+  img.height = read_height();
   img.rgba.resize(static_cast<std::size_t>(img.width) * img.height * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

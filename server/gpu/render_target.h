@@ -48,7 +48,14 @@ class RenderTarget {
   // Reads the pixels back, top row first, the way the target was made
   // with: the shrunk image of a shrinking target (the downsample pass has
   // drawn it), else the drawn one, resolved when multisampled.
-  image::Image read_back() const;
+  image::Image read_back();
+  // The same image, packed into `into` (sized read_width() × read_height())
+  // without waiting: `into.finish()` returns it. The target may be drawn
+  // into again meanwhile; GL packs before it runs what comes after.
+  void start_read_back(ReadbackBuffer& into) const;
+  // The size of the image read back (the shrunk one when shrinking).
+  int read_width() const { return width_ / shrink_; }
+  int read_height() const { return height_ / shrink_; }
 
  private:
   void make_drawing_framebuffer();
@@ -57,6 +64,8 @@ class RenderTarget {
   // The framebuffer holding one sample a pixel: the multisampled drawing
   // resolved into it, or the drawing itself.
   GLuint resolve() const;
+  // The single-sample framebuffer the image is read from, resolved.
+  GLuint read_source() const;
 
   int width_;
   int height_;

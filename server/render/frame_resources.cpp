@@ -59,6 +59,20 @@ gpu::NormalDepthTarget& FrameResources::normal_depth_for(int width, int height, 
   return *normal_depth_;
 }
 
+std::unique_ptr<gpu::ReadbackBuffer> FrameResources::readback_buffer(int width, int height) {
+  // Buffers of another size will not be asked for again soon.
+  std::erase_if(spare_readback_buffers_, [&](const auto& b) { return b->width() != width || b->height() != height; });
+  if (spare_readback_buffers_.empty()) return std::make_unique<gpu::ReadbackBuffer>(width, height);
+  std::unique_ptr<gpu::ReadbackBuffer> buffer = std::move(spare_readback_buffers_.back());
+  spare_readback_buffers_.pop_back();
+  return buffer;
+}
+
+void FrameResources::give_back(std::unique_ptr<gpu::ReadbackBuffer> buffer) {
+  // Two frames are in flight at most: a third spare would never be used.
+  if (spare_readback_buffers_.size() < 2) spare_readback_buffers_.push_back(std::move(buffer));
+}
+
 const GpuModel& FrameResources::floor_for(const scene::Bounds& b, const FloorParams& params, bool textured) {
   const std::shared_ptr<const scene::Texture> image = textured ? params.image : nullptr;
   if (!floor_ || floor_size_ != params.size || floor_repeat_ != params.texture_repeat || floor_image_ != image ||

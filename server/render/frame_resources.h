@@ -6,6 +6,7 @@
 // Render thread only.
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "gpu/normal_depth_target.h"
 #include "gpu/render_target.h"
@@ -25,6 +26,11 @@ class FrameResources {
   gpu::RenderTarget& target_for(int width, int height, int samples, int shrink, bool real_gpu);
   gpu::ShadowMap& shadow_map_for(int size);
   gpu::NormalDepthTarget& normal_depth_for(int width, int height, int samples);
+  // A pixel buffer for a frame kept in flight, which holds it until its
+  // pixels are copied out and then hands it back: buffers of the size in
+  // use are kept (mapping a new one costs more than a frame's readback).
+  std::unique_ptr<gpu::ReadbackBuffer> readback_buffer(int width, int height);
+  void give_back(std::unique_ptr<gpu::ReadbackBuffer> buffer);
   // A square ground plane under `bounds`, rebuilt when they or the floor's
   // parameters change.
   const GpuModel& floor_for(const scene::Bounds& bounds, const FloorParams& floor, bool textured);
@@ -44,6 +50,7 @@ class FrameResources {
   std::optional<gpu::RenderTarget> target_;
   std::optional<gpu::ShadowMap> shadow_map_;
   std::optional<gpu::NormalDepthTarget> normal_depth_;
+  std::vector<std::unique_ptr<gpu::ReadbackBuffer>> spare_readback_buffers_;
   gpu::VertexArray fullscreen_vao_ = gpu::VertexArray::create();
   gpu::UniformArena frame_uniforms_;
   std::optional<GpuModel> floor_;

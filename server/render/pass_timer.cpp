@@ -27,18 +27,40 @@ void PassTimer::begin_query() {
 }
 
 void PassTimer::mark(Pass pass) {
-  const auto now = Clock::now();
-  const double cpu_ms = std::chrono::duration<double, std::milli>(now - start_).count();
-  out_.push_back({pass_name(pass), cpu_ms, false, cpu_ms});
-  start_ = now;
+  end_pass(pass);
   if (!running_) return;
-  glEndQuery(GL_TIME_ELAPSED);
-  ended_.emplace_back(std::move(running_), out_.size() - 1);
+  end_query();
   if (pass == Pass::Readback) {
     resolve_queries();
   } else {
     begin_query();
   }
+}
+
+void PassTimer::mark_in_flight(Pass pass) {
+  end_pass(pass);
+  if (running_) end_query();
+}
+
+void PassTimer::landed(double wait_ms) {
+  if (!out_.empty()) {
+    out_.back().cpu_ms += wait_ms;
+    out_.back().ms += wait_ms;  // a GPU figure, where there is one, replaces it below
+  }
+  start_ = Clock::now();
+  if (!ended_.empty()) resolve_queries();
+}
+
+void PassTimer::end_pass(Pass pass) {
+  const auto now = Clock::now();
+  const double cpu_ms = std::chrono::duration<double, std::milli>(now - start_).count();
+  out_.push_back({pass_name(pass), cpu_ms, false, cpu_ms});
+  start_ = now;
+}
+
+void PassTimer::end_query() {
+  glEndQuery(GL_TIME_ELAPSED);
+  ended_.emplace_back(std::move(running_), out_.size() - 1);
 }
 
 void PassTimer::resolve_queries() {

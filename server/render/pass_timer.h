@@ -24,13 +24,21 @@ class PassTimer {
   PassTimer& operator=(const PassTimer&) = delete;
 
   void mark(Pass pass);
+  // A frame kept in flight: marks its readback issued, without waiting for
+  // the GPU's figures; landed() adds the wait for the pixels (measured by
+  // the caller: the thread records another frame in between) and reads
+  // them. Later marks count from landed().
+  void mark_in_flight(Pass pass);
+  void landed(double wait_ms);
 
   // Whether this driver counts GPU time (checked once per thread).
   static bool gpu_timers_available();
 
  private:
   using Clock = std::chrono::steady_clock;
+  void end_pass(Pass pass);  // the entry for `pass`, wall time since the last mark
   void begin_query();
+  void end_query();  // the running query, to be read for the last entry
   void resolve_queries();
 
   std::vector<PassTiming>& out_;

@@ -240,105 +240,167 @@ void RenderService::fail_queued(const std::exception_ptr& error) {
   for (Task& task : failed) task.promise.set_exception(error);
 }
 
-bool RenderService::serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources> sources,
-                          std::promise<void>* started) {
-  gpu::ProgramCache programs(std::move(sources));
-  GpuModelCache models(options_.gpu_model_capacity, options_.gpu_model_bytes);
-  Renderer renderer(programs);
+// What one render thread draws with on its current context.
+struct RenderService::Worker {
+  Worker(std::size_t thread_index, std::unique_ptr<gpu::ShaderSources> sources, const Options& options)
+      : index(thread_index), programs(std::move(sources)), models(options.gpu_model_capacity, options.gpu_model_bytes),
+        renderer(programs) {
+    renderer.set_frames_in_flight(options.frames_in_flight > 1);
+  }
+  std::size_t index;
+  gpu::ProgramCache programs;
+  GpuModelCache models;
+  Renderer renderer;
   std::size_t renders = 0;
-  auto record_cache_use = [&] {
-    std::lock_guard lock(mutex_);
-    cache_use_[worker] = {models.size(), models.bytes()};
-  };
-  if (started) started->set_value();
+};
 
+// A task taken from the queue whose frame is recorded, or whose start
+// failed: it is answered once finished.
+struct RenderService::Started {
+  Task task;
+  std::unique_ptr<ShortTurn> turn;  // a short task counts as drawing until answered
+  std::size_t number = 0;  // the thread's renders when it started
+  std::unique_ptr<PendingFrame> frame;
+  std::exception_ptr failure;
+  std::optional<PassTiming> posing;  // pose_vertices, where the CPU posed
+};
+
+void RenderService::record_cache_use(const Worker& worker) {
+  std::lock_guard lock(mutex_);
+  cache_use_[worker.index] = {worker.models.size(), worker.models.bytes()};
+}
+
+bool RenderService::serve(std::size_t index, std::unique_ptr<gpu::ShaderSources> sources,
+                          std::promise<void>* started) {
+  Worker worker(index, std::move(sources), options_);
+  if (started) started->set_value();
+  // With frames in flight, the task whose pixels are on their way back.
+  std::optional<Started> in_flight;
   for (;;) {
-    Task task;
+    std::optional<Task> task;
     std::vector<std::string> forgotten;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stopping_ || has_work_for(worker) || !forgets_[worker].empty(); });
-      // A model deleted before this task was taken is gone for it too.
-      forgotten.swap(forgets_[worker]);
-      if (forgotten.empty()) {
-        // Work already accepted is finished before the thread stops.
-        if (!has_work_for(worker)) return false;
-        task = take_for(worker);
+      // A frame in flight is not kept waiting for work: the next task is
+      // started before it is finished, or it is finished now.
+      if (!in_flight) {
+        wake_.wait(lock, [&] { return stopping_ || has_work_for(index) || !forgets_[index].empty(); });
       }
+      // A model deleted before this task was taken is gone for it too.
+      forgotten.swap(forgets_[index]);
+      if (forgotten.empty() && has_work_for(index)) task = take_for(index);
+      // Work already accepted is finished before the thread stops.
+      if (forgotten.empty() && !task && !in_flight) return false;
     }
     if (!forgotten.empty()) {
-      for (const std::string& key : forgotten) models.forget(key);
-      record_cache_use();
+      for (const std::string& key : forgotten) worker.models.forget(key);
+      record_cache_use(worker);
       continue;
     }
-    // A short task counts as drawing until its turn ends, whichever way.
-    const ShortTurn turn(serves_long_lane(worker) ? nullptr : this);
-    if (task.job.deadline && std::chrono::steady_clock::now() > *task.job.deadline) {
-      task.promise.set_exception(std::make_exception_ptr(DeadlineExceeded()));
-      continue;
+    std::optional<Started> next;
+    if (task) next = start_task(std::move(*task), worker);
+    if (in_flight) {
+      if (answer(*in_flight, worker)) {
+        if (next) answer_lost(*next);
+        return true;
+      }
+      in_flight.reset();
     }
-    ++renders;
-    std::optional<RenderOutput> output;
-    std::exception_ptr failure;
-    try {
-      // With --shader-dir: pick up edited shader files (a stat per file
-      // when nothing changed; nothing at all for the embedded shaders).
-      const gpu::ProgramCache::Reload reload = programs.refresh();
-      if (!reload.files.empty()) {
-        std::cerr << "toond: reloaded";
-        for (const auto& f : reload.files) std::cerr << " " << f;
-        std::cerr << " (" << reload.programs << " program" << (reload.programs == 1 ? "" : "s") << " rebuilt)\n";
-      }
-      // Load them all first: references stay valid while the cache holds
-      // them, and a scene larger than the cache must not evict its own
-      // objects mid-way (see GpuModelCache::get's `pinned`).
-      std::vector<RenderObject> objects;
-      std::vector<std::string> pinned;
-      for (const JobObject& o : task.job.objects) pinned.push_back(o.model_key);
-      // Posing vertices on the CPU happens here, on this thread (the
-      // Server-Timing entry pose_vertices).
-      const auto posing = std::chrono::steady_clock::now();
-      bool posed_on_cpu = false;
-      for (const JobObject& o : task.job.objects) {
-        GpuModel& model = models.get(o.model_key, *o.model, pinned);
-        model.apply_pose(o.pose, *o.model);
-        posed_on_cpu = posed_on_cpu || (o.pose && o.pose->cpu_sums);
-        objects.push_back({model, o.transform});
-      }
-      const double posing_ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - posing).count();
-      record_cache_use();
-      std::optional<DrawPacing> pacing;
-      if (task.job.paced_chunk_triangles > 0 && task.job.deadline) {
-        std::function<void()> between_chunks;
-        if (serves_long_lane(worker)) between_chunks = [this] { yield_to_short_renders(); };
-        pacing.emplace(task.job.paced_chunk_triangles, *task.job.deadline, std::move(between_chunks));
-      }
-      output = renderer.render(objects, task.job.params, pacing ? &*pacing : nullptr);
-      if (posed_on_cpu) {
-        output->timings.insert(output->timings.begin(), PassTiming{"pose_vertices", posing_ms, false, posing_ms});
-      }
-    } catch (...) {
-      failure = std::current_exception();
-    }
-    // Whatever a lost context drew is not trusted, success or not: the
-    // request fails with a retryable error and everything starts over on a
-    // new context.
-    if (context_lost(renders)) {
-      task.promise.set_exception(std::make_exception_ptr(
-          gpu::GpuReset("the GL context was lost during this render; the daemon made a new one, retry")));
+    if (!next) continue;
+    if (next->frame && next->frame->readback) {
+      in_flight = std::move(next);
+    } else if (answer(*next, worker)) {
       return true;
     }
-    if (failure) {
-      // A failed render fails that request only; drain GL errors so the
-      // next one starts clean.
-      while (glGetError() != GL_NO_ERROR) {
-      }
-      task.promise.set_exception(failure);
-    } else {
-      task.promise.set_value(std::move(*output));
+  }
+}
+
+std::optional<RenderService::Started> RenderService::start_task(Task task, Worker& worker) {
+  Started started;
+  started.turn = std::make_unique<ShortTurn>(serves_long_lane(worker.index) ? nullptr : this);
+  if (task.job.deadline && std::chrono::steady_clock::now() > *task.job.deadline) {
+    task.promise.set_exception(std::make_exception_ptr(DeadlineExceeded()));
+    return std::nullopt;
+  }
+  started.number = ++worker.renders;
+  try {
+    // With --shader-dir: pick up edited shader files (a stat per file
+    // when nothing changed; nothing at all for the embedded shaders).
+    const gpu::ProgramCache::Reload reload = worker.programs.refresh();
+    if (!reload.files.empty()) {
+      std::cerr << "toond: reloaded";
+      for (const auto& f : reload.files) std::cerr << " " << f;
+      std::cerr << " (" << reload.programs << " program" << (reload.programs == 1 ? "" : "s") << " rebuilt)\n";
+    }
+    // Load them all first: references stay valid while the cache holds
+    // them, and a scene larger than the cache must not evict its own
+    // objects mid-way (see GpuModelCache::get's `pinned`).
+    std::vector<RenderObject> objects;
+    std::vector<std::string> pinned;
+    for (const JobObject& o : task.job.objects) pinned.push_back(o.model_key);
+    // Posing vertices on the CPU happens here, on this thread (the
+    // Server-Timing entry pose_vertices).
+    const auto posing = std::chrono::steady_clock::now();
+    bool posed_on_cpu = false;
+    for (const JobObject& o : task.job.objects) {
+      GpuModel& model = worker.models.get(o.model_key, *o.model, pinned);
+      model.apply_pose(o.pose, *o.model);
+      posed_on_cpu = posed_on_cpu || (o.pose && o.pose->cpu_sums);
+      objects.push_back({model, o.transform});
+    }
+    const double posing_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - posing).count();
+    if (posed_on_cpu) started.posing = PassTiming{"pose_vertices", posing_ms, false, posing_ms};
+    record_cache_use(worker);
+    std::optional<DrawPacing> pacing;
+    if (task.job.paced_chunk_triangles > 0 && task.job.deadline) {
+      std::function<void()> between_chunks;
+      if (serves_long_lane(worker.index)) between_chunks = [this] { yield_to_short_renders(); };
+      pacing.emplace(task.job.paced_chunk_triangles, *task.job.deadline, std::move(between_chunks));
+    }
+    started.frame = worker.renderer.start(objects, task.job.params, pacing ? &*pacing : nullptr);
+  } catch (...) {
+    started.failure = std::current_exception();
+    // A failed render fails that request only; drain GL errors now, so
+    // neither the frame in flight nor the next one takes them for its own.
+    while (glGetError() != GL_NO_ERROR) {
     }
   }
+  started.task = std::move(task);
+  return started;
+}
+
+bool RenderService::answer(Started& started, Worker& worker) {
+  std::optional<RenderOutput> output;
+  std::exception_ptr failure = started.failure;
+  if (!failure) {
+    try {
+      output = worker.renderer.finish(std::move(started.frame));
+      if (started.posing) output->timings.insert(output->timings.begin(), *started.posing);
+    } catch (...) {
+      failure = std::current_exception();
+      while (glGetError() != GL_NO_ERROR) {
+      }
+    }
+  }
+  // Whatever a lost context drew is not trusted, success or not: the
+  // request fails with a retryable error and everything starts over on a
+  // new context.
+  if (context_lost(started.number)) {
+    answer_lost(started);
+    return true;
+  }
+  if (failure) {
+    started.task.promise.set_exception(failure);
+  } else {
+    started.task.promise.set_value(std::move(*output));
+  }
+  return false;
+}
+
+void RenderService::answer_lost(Started& started) {
+  started.task.promise.set_exception(std::make_exception_ptr(
+      gpu::GpuReset("the GL context was lost during this render; the daemon made a new one, retry")));
 }
 
 }  // namespace toond::render

@@ -100,6 +100,11 @@ class RenderService {
     // a GPU, on the CPU on a software rasterizer, whose vertex stage is
     // this CPU too and runs again for every pass (docs/animation.md).
     std::optional<scene::Skinning> skinning;
+    // 2: each render thread records the next frame before it waits for the
+    // last one's pixels, which come back through a pixel buffer and a
+    // fence (render/pending_frame.h); 1: every frame is read back before
+    // the next one starts (--frames-in-flight).
+    int frames_in_flight = 1;
   };
 
   // Starts the threads and waits until their contexts exist. Throws
@@ -171,6 +176,16 @@ class RenderService {
   // Serves tasks on the current context until the service stops (false) or
   // the context is lost (true). Sets `started` once the caches exist.
   bool serve(std::size_t worker, std::unique_ptr<gpu::ShaderSources> sources, std::promise<void>* started);
+  struct Worker;
+  struct Started;
+  // Takes a task's turn and records its frame; nothing when it was past its
+  // deadline (answered already).
+  std::optional<Started> start_task(Task task, Worker& worker);
+  // Finishes a started task's frame and answers it; true when the context
+  // was lost (the task is answered with GpuReset).
+  bool answer(Started& started, Worker& worker);
+  void answer_lost(Started& started);
+  void record_cache_use(const Worker& worker);
   bool context_lost(std::size_t renders) const;
   // Fails every queued render with `error` (the context could not be made).
   void fail_queued(const std::exception_ptr& error);

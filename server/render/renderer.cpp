@@ -1,5 +1,7 @@
 #include "render/renderer.h"
 
+#include <chrono>
+
 #include "gpu/egl_context.h"
 #include "gpu/gpu_error.h"
 #include "image/unpremultiply.h"
@@ -36,19 +38,19 @@ bool Renderer::real_gpu() {
   return *real_gpu_;
 }
 
-RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const RenderParams& params,
-                              DrawPacing* pacing) {
+std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& objects, const RenderParams& params,
+                                             DrawPacing* pacing) {
   if (objects.empty()) throw gpu::GpuError("a render needs at least one object");
   const PacingScope paced(pacing);
   const FrameContext frame = build_frame_context(objects, params, face_culling_);
-  RenderOutput out;
-  out.plan = frame.plan.describe();
-  out.lods = frame.lods;
   // GPU time only on a GPU: a CPU rasterizer's queries do not see its
   // raster threads (they stamp commands as they are recorded), and llvmpipe
   // records a query into every screen tile, which costs a pass over the
   // image per query (toond_bench sweep shows it).
-  PassTimer timer(out.timings, real_gpu());
+  auto pending = std::make_unique<PendingFrame>(real_gpu());
+  RenderOutput& out = pending->out;
+  out.plan = frame.plan.describe();
+  out.lods = frame.lods;
   const bool data_layer = frame.plan.has(Pass::Layer);
   // A data layer leaves the colour target as it is: a compositor asking for
   // colour and depth in turn would otherwise reallocate it every time.
@@ -68,7 +70,7 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     // Each pass goes to the driver as soon as it is recorded: llvmpipe then
     // rasterizes it on its threads while this one records the next.
     glFlush();
-    timer.mark(pass);
+    pending->timer.mark(pass);
   }
   glBindVertexArray(0);
   glDisable(GL_STENCIL_TEST);
@@ -76,19 +78,43 @@ RenderOutput Renderer::render(const std::vector<RenderObject>& objects, const Re
     throw RenderAborted("the render was stopped at its deadline after " + std::to_string(pacing->chunks_drawn()) +
                         " chunks of triangles");
   }
+  pending->cap_checks = std::move(context.main_cap_checks);
+  pending->unpremultiply = frame.plan.has(Pass::Unpremultiply);
   // Without supersampling the multisample resolve is a blit inside
   // read_back(); its time is part of the readback figure, since the
   // readback waits for it anyway (with it, the downsample pass resolves).
-  if (data_layer) out.layer = resources_.normal_depth().read_pixels();
-  else out.image = target->read_back();
-  report_cap_checks(context.main_cap_checks, out.lods);
-  check_gl("readback");
-  timer.mark(Pass::Readback);
-  if (frame.plan.has(Pass::Unpremultiply)) {
-    image::unpremultiply_linear(out.image);
-    timer.mark(Pass::Unpremultiply);
+  if (data_layer) {
+    out.layer = resources_.normal_depth().read_pixels();
+  } else if (frames_in_flight_) {
+    pending->readback = resources_.readback_buffer(target->read_width(), target->read_height());
+    target->start_read_back(*pending->readback);
+    check_gl("readback");
+    glFlush();  // the pack must reach the driver before this thread waits on anything else
+    pending->timer.mark_in_flight(Pass::Readback);
+    return pending;
+  } else {
+    out.image = target->read_back();
   }
-  return out;
+  check_gl("readback");
+  pending->timer.mark(Pass::Readback);
+  return pending;
+}
+
+RenderOutput Renderer::finish(std::unique_ptr<PendingFrame> pending) {
+  RenderOutput& out = pending->out;
+  if (pending->readback) {
+    const auto waiting = std::chrono::steady_clock::now();
+    out.image = pending->readback->finish();
+    resources_.give_back(std::move(pending->readback));
+    pending->timer.landed(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - waiting).count());
+  }
+  report_cap_checks(pending->cap_checks, out.lods);
+  if (pending->unpremultiply) {
+    image::unpremultiply_linear(out.image);
+    pending->timer.mark(Pass::Unpremultiply);
+  }
+  return std::move(out);
 }
 
 }  // namespace toond::render

@@ -7,31 +7,14 @@
 #include <vector>
 
 #include "gpu/program_cache.h"
-#include "image/float_image.h"
-#include "image/image.h"
 #include "render/draw_pacing.h"
 #include "render/frame_context.h"
 #include "render/frame_resources.h"
-#include "render/pass_timing.h"
+#include "render/pending_frame.h"
+#include "render/render_output.h"
 #include "render/render_params.h"
 
 namespace toond::render {
-
-struct RenderOutput {
-  image::Image image;  // empty for a data layer
-  // A data layer's values (output depth, normal or id), turned into its
-  // PNG by the caller, who knows what the ids stand for.
-  image::FloatImage layer;
-  // An animated sheet's frames, in the atlas's order, each tile-sized (no
-  // sheet is laid out: the animation holds them one by one).
-  std::vector<image::Image> frames;
-  std::vector<PassTiming> timings;
-  std::string plan;  // PassPlan::describe()
-  std::vector<LodUse> lods;  // one per object, in order
-  // Samples per pixel the target really has: `msaa` clamped to the
-  // driver's GL_MAX_SAMPLES (llvmpipe: 4).
-  int samples = 1;
-};
 
 class Renderer {
  public:
@@ -46,16 +29,33 @@ class Renderer {
   // `pacing` the meshes are drawn in its chunks, and a render whose
   // deadline passes throws RenderAborted (render/draw_pacing.h).
   RenderOutput render(const std::vector<RenderObject>& objects, const RenderParams& params,
-                      DrawPacing* pacing = nullptr);
+                      DrawPacing* pacing = nullptr) {
+    return finish(start(objects, params, pacing));
+  }
   RenderOutput render(const GpuModel& model, const RenderParams& params) {
     return render({RenderObject{model, glm::dmat4(1.0)}}, params);
   }
+
+  // The same in two halves: start() records the passes and queues the
+  // readback; finish() waits for the pixels. Without frames in flight the
+  // pixels are read in start() and finish() only tidies up; with them, a
+  // colour image is packed into a pixel buffer of its own (on a CPU
+  // rasterizer too, so tests there cover the path) and the thread may start
+  // other frames before it finishes this one. A data layer is always read
+  // in start(). A frame that throws in start() leaves nothing to finish.
+  std::unique_ptr<PendingFrame> start(const std::vector<RenderObject>& objects, const RenderParams& params,
+                                      DrawPacing* pacing = nullptr);
+  RenderOutput finish(std::unique_ptr<PendingFrame> frame);
+
+  // Off by default (RenderService::Options::frames_in_flight).
+  void set_frames_in_flight(bool on) { frames_in_flight_ = on; }
 
  private:
   bool real_gpu();
 
   gpu::ProgramCache& programs_;
   bool face_culling_ = true;
+  bool frames_in_flight_ = false;
   // Asked of the context at the first render: whether it rasterizes on a
   // GPU or on this CPU's threads (gpu::software_rasterizer). That decides
   // whether GPU time is counted and how pixels come back.

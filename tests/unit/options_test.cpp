@@ -59,6 +59,15 @@ TEST(DaemonOptions, RenderThreadsDefaultToOne) {
   EXPECT_THROW(parse_options({"--render-threads", "two"}), std::invalid_argument);
 }
 
+TEST(DaemonOptions, FramesInFlightAreOneOrTwo) {
+  EXPECT_EQ(parse_options({}).frames_in_flight, 1);
+  EXPECT_EQ(parse_options({"--frames-in-flight", "2"}).frames_in_flight, 2);
+  EXPECT_EQ(parse_options({"--frames-in-flight", "1"}).frames_in_flight, 1);
+  EXPECT_THROW(parse_options({"--frames-in-flight", "0"}), std::invalid_argument);
+  EXPECT_THROW(parse_options({"--frames-in-flight", "3"}), std::invalid_argument);
+  EXPECT_THROW(parse_options({"--frames-in-flight", "two"}), std::invalid_argument);
+}
+
 TEST(DaemonOptions, SkinningIsChosenByTheRasterizerUnlessGiven) {
   using Skinning = Options::Skinning;
   EXPECT_EQ(parse_options({}).skinning, Skinning::Auto);

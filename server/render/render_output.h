@@ -1,0 +1,30 @@
+#pragma once
+// What a render hands back: the image (or a data layer's values), how long
+// each pass took, the plan it ran and the detail each object was drawn at.
+#include <string>
+#include <vector>
+
+#include "image/float_image.h"
+#include "image/image.h"
+#include "render/frame_context.h"
+#include "render/pass_timing.h"
+
+namespace toond::render {
+
+struct RenderOutput {
+  image::Image image;  // empty for a data layer
+  // A data layer's values (output depth, normal or id), turned into its
+  // PNG by the caller, who knows what the ids stand for.
+  image::FloatImage layer;
+  // An animated sheet's frames, in the atlas's order, each tile-sized (no
+  // sheet is laid out: the animation holds them one by one).
+  std::vector<image::Image> frames;
+  std::vector<PassTiming> timings;
+  std::string plan;  // PassPlan::describe()
+  std::vector<LodUse> lods;  // one per object, in order
+  // Samples per pixel the target really has: `msaa` clamped to the
+  // driver's GL_MAX_SAMPLES (llvmpipe: 4).
+  int samples = 1;
+};
+
+}  // namespace toond::render
