@@ -15,6 +15,7 @@
 #include "scaling.h"
 #include "support/daemon.h"
 #include "throughput.h"
+#include "floor_ratios.h"
 #include "versus.h"
 
 namespace {
@@ -37,6 +38,10 @@ Parts (default: sweep scaling load):
             pixels (256^2-2048^2), fitted exponents; scaling.csv/.json
   load      requests/s and p50/p99 at 1, 4 and 16 clients; load.json
   versus    toond's half of bench/threejs/compare.mjs; versus.json
+  floor     the default request over its geometry floor (bunny and spot
+            512², interleaved), the PNG encode at 512² and 1024², and
+            renders/s at 1 and 16 clients against a second daemon with
+            --frames-in-flight 2; floor.json
 Options:
   --quick          fewer points and repeats (about a minute)
   --smoke          one tiny render per part that has one (a test of the driver)
@@ -78,8 +83,9 @@ Args parse(int argc, char** argv) {
     else if (arg == "-h" || arg == "--help") {
       std::cout << kUsage;
       std::exit(0);
-    } else if (arg == "sweep" || arg == "scaling" || arg == "load" || arg == "versus") a.parts.insert(arg);
-    else throw std::invalid_argument("unknown argument " + arg);
+    } else if (arg == "sweep" || arg == "scaling" || arg == "load" || arg == "versus" || arg == "floor") {
+      a.parts.insert(arg);
+    } else throw std::invalid_argument("unknown argument " + arg);
   }
   if (a.parts.empty()) a.parts = a.smoke ? std::set<std::string>{"sweep"} : std::set<std::string>{"sweep", "scaling", "load"};
   if (a.repeats <= 0) a.repeats = a.smoke ? 1 : a.quick ? 2 : 5;
@@ -140,6 +146,11 @@ int main(int argc, char** argv) {
     if (args.parts.count("versus") && have_models) {
       const json versus = run_versus(client, daemon.url(), args.models, args.repeats * 4, args.quick ? 2.0 : 6.0);
       write_text(args.out / "versus.json", versus.dump(1));
+    }
+    if (args.parts.count("floor") && have_models) {
+      const json floor = run_floor_ratios(client, daemon.url(), daemon_args, args.models, args.repeats * 4,
+                                          args.quick ? 2.0 : 6.0);
+      write_text(args.out / "floor.json", floor.dump(1));
     }
     write_text(args.out / "run.json", summary.dump(1));
     return 0;

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "bench_http.h"
+#include "floor_ratios.h"
 #include "gpu/egl_context.h"
 #include "gpu/render_target.h"
 #include "image/png_codec.h"
@@ -51,13 +52,8 @@ json floor_of(const image::Image& content, int samples, int png_level, int repea
 // samples, level of detail) with one constant colour and nothing else (no
 // lights, bands, outline or effects), read back and encoded as usual. A
 // frame's time over this says what the toon look itself costs.
-json geometry_floor_of(httplib::Client& client, json params, int repeats) {
-  params["shading"] = {{"mode", "flat"}, {"base", "white"}};
-  params["outline"] = {{"enabled", false}};
-  params["contour"] = {{"enabled", false}};
-  params["specular"] = {{"enabled", false}};
-  params["rim"] = {{"enabled", false}};
-  params["shadows"] = {{"enabled", false}};
+json geometry_floor_of(httplib::Client& client, const json& request, int repeats) {
+  const json params = geometry_floor_request(request);
   render_timed(client, params);  // warm
   std::vector<double> server, png;
   TimedRender last;

@@ -21,14 +21,14 @@
 namespace toond::render {
 namespace {
 
-RenderParams params_of(const nlohmann::json& request) {
+RenderParams in_flight_params(const nlohmann::json& request) {
   return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
 }
 
 // Requests whose frames differ (camera, size, sampling, output), in the
 // order a queue might bring them: two of the same size in a row share a
 // target and a pixel buffer's size.
-std::vector<nlohmann::json> requests() {
+std::vector<nlohmann::json> in_flight_requests() {
   return {
       {{"width", 96}, {"height", 80}, {"camera", {{"yaw", 10}}}},
       {{"width", 96}, {"height", 80}, {"camera", {{"yaw", 70}}}, {"outline", {{"method", "edges"}}}},
@@ -56,7 +56,9 @@ class FramesInFlight : public test::GlContextTest {
 TEST_F(FramesInFlight, EachFrameComesBackAsTheSynchronousPathReadsIt) {
   Renderer at_once(*programs_);
   std::vector<RenderOutput> expected;
-  for (const nlohmann::json& request : requests()) expected.push_back(at_once.render(objects(), params_of(request)));
+  for (const nlohmann::json& request : in_flight_requests()) {
+    expected.push_back(at_once.render(objects(), in_flight_params(request)));
+  }
 
   // Each frame is started before the one ahead of it is finished, so the
   // next frame's passes overwrite the target while its pixels are on their
@@ -66,8 +68,8 @@ TEST_F(FramesInFlight, EachFrameComesBackAsTheSynchronousPathReadsIt) {
   std::vector<RenderOutput> got;
   std::unique_ptr<PendingFrame> ahead;
   int packed = 0;
-  for (const nlohmann::json& request : requests()) {
-    std::unique_ptr<PendingFrame> next = in_flight.start(objects(), params_of(request));
+  for (const nlohmann::json& request : in_flight_requests()) {
+    std::unique_ptr<PendingFrame> next = in_flight.start(objects(), in_flight_params(request));
     packed += next->readback != nullptr;
     if (ahead) got.push_back(in_flight.finish(std::move(ahead)));
     ahead = std::move(next);
@@ -79,7 +81,7 @@ TEST_F(FramesInFlight, EachFrameComesBackAsTheSynchronousPathReadsIt) {
   EXPECT_EQ(packed, 5);
   ASSERT_EQ(got.size(), expected.size());
   for (std::size_t i = 0; i < got.size(); ++i) {
-    SCOPED_TRACE(requests()[i].dump());
+    SCOPED_TRACE(in_flight_requests()[i].dump());
     EXPECT_EQ(got[i].image.width, expected[i].image.width);
     EXPECT_EQ(got[i].image.height, expected[i].image.height);
     EXPECT_TRUE(got[i].image.rgba == expected[i].image.rgba);
@@ -98,9 +100,9 @@ TEST_F(FramesInFlight, EachFrameComesBackAsTheSynchronousPathReadsIt) {
 TEST_F(FramesInFlight, AFrameDroppedBeforeItsPixelsLandLeavesTheNextOneWhole) {
   Renderer in_flight(*programs_);
   in_flight.set_frames_in_flight(true);
-  const RenderParams p = params_of({{"width", 64}, {"height", 64}});
+  const RenderParams p = in_flight_params({{"width", 64}, {"height", 64}});
   // A request whose caller went away: its pending frame is dropped unread.
-  in_flight.start(objects(), params_of({{"width", 64}, {"height", 64}, {"camera", {{"yaw", 90}}}})).reset();
+  in_flight.start(objects(), in_flight_params({{"width", 64}, {"height", 64}, {"camera", {{"yaw", 90}}}})).reset();
   const RenderOutput kept = in_flight.finish(in_flight.start(objects(), p));
   Renderer at_once(*programs_);
   EXPECT_TRUE(kept.image.rgba == at_once.render(objects(), p).image.rgba);
