@@ -25,7 +25,13 @@ scripts/build.sh build-asan -DTOOND_WERROR=ON -DTOOND_TESTS=ON -DTOOND_SANITIZE=
 stage "tests under ASan + UBSan"
 # Mesa's llvmpipe keeps some allocations for the life of the process; leaks
 # are checked in our code through the suppressions file, not switched off.
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
+# intercept_tls_get_addr=0: with it on, LeakSanitizer's stop-the-world step
+# read a bogus dynamic-TLS range of Mesa's (dlopened) driver at exit and
+# crashed ("Tracer caught signal 11", "DTLS ... at 0x1ec5-0x1800002fc7")
+# after a test had passed: every time under ctest for one GL test of the
+# 2026-11-27 build, never when run by hand. Static and thread stacks and
+# static TLS are still scanned.
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:intercept_tls_get_addr=0"
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir build-asan --output-on-failure -j "$jobs" --timeout 900
