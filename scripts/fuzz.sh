@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-20}
 build_dir=${2:-build-fuzz}
-targets=(bundle_import render_params multipart gltf_import)
+targets=(bundle_import render_params multipart gltf_import png_encode)
 
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi

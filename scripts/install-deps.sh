@@ -16,6 +16,8 @@ packages=(
   libegl-dev libgl-dev libglvnd-dev libegl-mesa0 libgl1-mesa-dri libgbm1
   # scene import, maths, images
   libglm-dev libtinyobjloader-dev libstb-dev libpng-dev zlib1g-dev
+  # the PNG stream's Adler-32 (vectorised) and the PNG benchmark's zlib/libdeflate comparison
+  libdeflate-dev
   # vertex-cache order and levels of detail at import; glTF's meshopt buffers
   libmeshoptimizer-dev
   # glTF 2.0 / GLB import (JSON and container; images go through our decoders);
@@ -30,8 +32,6 @@ packages=(
 test_packages=(
   # tests, shader checks, benchmarks; Pillow decodes our PNGs as a second opinion
   libgtest-dev libgmock-dev glslang-tools libbenchmark-dev python3-pil
-  # the PNG benchmark's comparison of zlib with libdeflate (bench/deflate_compare.cpp)
-  libdeflate-dev
   # libFuzzer targets (scripts/fuzz.sh): clang and its fuzzer runtime
   clang libclang-rt-14-dev
   # the scale-out test's load balancer (tests/integration/scale_out_test.cpp)

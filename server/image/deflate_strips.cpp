@@ -1,5 +1,6 @@
 #include "image/deflate_strips.h"
 
+#include <libdeflate.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -7,17 +8,18 @@
 #include <stdexcept>
 
 #include "image/parallel_tasks.h"
+#include "image/run_deflate.h"
 
 namespace toond::image {
 namespace {
 
 struct DeflatedStrip {
   std::vector<std::uint8_t> bytes;  // raw deflate, byte-aligned at its end
-  uLong adler = 1;                  // Adler-32 of the strip's input alone
+  std::uint32_t adler = 1;          // Adler-32 of the strip's input alone
   std::size_t input_bytes = 0;
 };
 
-// Raw deflate of one strip, fed a few rows at a time: no zlib header or
+// Raw deflate of one strip by zlib, fed a few rows at a time: no zlib header or
 // trailer, those belong to the whole stream. Its output grows with what
 // deflate writes, a small fraction of the input on toon frames, rather than
 // being sized for the worst case: fresh large buffers cost page faults that
@@ -34,8 +36,6 @@ class StripDeflater {
   StripDeflater& operator=(const StripDeflater&) = delete;
 
   void add(std::span<const std::uint8_t> input) {
-    strip_.adler = adler32_z(strip_.adler, input.data(), input.size());
-    strip_.input_bytes += input.size();
     while (!input.empty()) {
       // avail_in is 32 bits wide: a huge input goes in in pieces.
       const std::size_t piece = std::min<std::size_t>(input.size(), UINT_MAX / 2);
@@ -47,10 +47,10 @@ class StripDeflater {
   }
 
   // The last strip finishes the stream; the others end with a sync flush.
-  DeflatedStrip finish(bool last) {
+  std::vector<std::uint8_t> finish(bool last) {
     run(last ? Z_FINISH : Z_SYNC_FLUSH);
-    strip_.bytes.resize(z_.total_out);
-    return std::move(strip_);
+    bytes_.resize(z_.total_out);
+    return std::move(bytes_);
   }
 
  private:
@@ -64,21 +64,21 @@ class StripDeflater {
   }
 
   void make_room() {
-    const std::size_t used = strip_.bytes.size();
-    strip_.bytes.resize(std::max<std::size_t>(used * 2, 16 * 1024));
-    z_.next_out = strip_.bytes.data() + used;
-    z_.avail_out = static_cast<uInt>(strip_.bytes.size() - used);
+    const std::size_t used = bytes_.size();
+    bytes_.resize(std::max<std::size_t>(used * 2, 16 * 1024));
+    z_.next_out = bytes_.data() + used;
+    z_.avail_out = static_cast<uInt>(bytes_.size() - used);
   }
 
   z_stream z_{};
-  DeflatedStrip strip_;
+  std::vector<std::uint8_t> bytes_;
 };
 
 // The two-byte zlib header: 32 KiB window, deflate, a level hint as zlib
 // itself would write it, and the check bits that make it a multiple of 31.
 std::string zlib_header(const DeflateSettings& settings) {
   int level_hint = 3;
-  if (settings.strategy >= Z_HUFFMAN_ONLY || settings.level < 2) {
+  if (settings.method == DeflateMethod::Runs || settings.strategy >= Z_HUFFMAN_ONLY || settings.level < 2) {
     level_hint = 0;
   } else if (settings.level < 6) {
     level_hint = 1;
@@ -98,6 +98,23 @@ void append_big_endian(std::string& out, uLong value) {
 // the scratch rows of a filter to stay in cache and off the page-fault path.
 constexpr std::size_t kChunkBytes = 64 * 1024;
 
+// Rows [first, end) through the deflater, and the Adler-32 of what went in
+// (libdeflate's, which uses the vector unit; zlib's is a byte at a time).
+template <typename Deflater>
+DeflatedStrip deflate_strip(Deflater& deflater, int first, int end, int rows_per_chunk, bool last,
+                            const ScanlineSource& source) {
+  DeflatedStrip strip;
+  std::vector<std::uint8_t> scratch;
+  for (int row = first; row < end; row += rows_per_chunk) {
+    const std::span<const std::uint8_t> rows = source(row, std::min(rows_per_chunk, end - row), scratch);
+    strip.adler = libdeflate_adler32(strip.adler, rows.data(), rows.size());
+    strip.input_bytes += rows.size();
+    deflater.add(rows);
+  }
+  strip.bytes = deflater.finish(last);
+  return strip;
+}
+
 }  // namespace
 
 std::string deflate_scanlines(int row_count, std::size_t scanline_bytes, const ScanlineSource& source,
@@ -108,12 +125,15 @@ std::string deflate_scanlines(int row_count, std::size_t scanline_bytes, const S
   run_tasks(strips, settings.threads, [&](int s) {
     const int first = static_cast<int>(static_cast<long long>(row_count) * s / strips);
     const int end = static_cast<int>(static_cast<long long>(row_count) * (s + 1) / strips);
-    StripDeflater deflater(settings);
-    std::vector<std::uint8_t> scratch;
-    for (int row = first; row < end; row += rows_per_chunk) {
-      deflater.add(source(row, std::min(rows_per_chunk, end - row), scratch));
+    const bool last = s == strips - 1;
+    DeflatedStrip& strip = deflated[static_cast<std::size_t>(s)];
+    if (settings.method == DeflateMethod::Runs) {
+      RunDeflater deflater;
+      strip = deflate_strip(deflater, first, end, rows_per_chunk, last, source);
+    } else {
+      StripDeflater deflater(settings);
+      strip = deflate_strip(deflater, first, end, rows_per_chunk, last, source);
     }
-    deflated[static_cast<std::size_t>(s)] = deflater.finish(s == strips - 1);
   });
 
   std::size_t total = 6;

@@ -18,9 +18,14 @@
 
 namespace toond::image {
 
+// Runs: run_deflate.h, the fastest on toon frames. Zlib: zlib's search at
+// a level, for callers who want the smallest stream or stored blocks.
+enum class DeflateMethod { Runs, Zlib };
+
 struct DeflateSettings {
-  int level = 1;                   // zlib level 0..9 (0: stored blocks)
-  int strategy = 0;                // Z_DEFAULT_STRATEGY, Z_RLE, Z_FILTERED, ...
+  DeflateMethod method = DeflateMethod::Runs;
+  int level = 1;                   // zlib's level 0..9 (0: stored blocks)
+  int strategy = 0;                // zlib's Z_DEFAULT_STRATEGY, Z_RLE, ...
   int strips = 1;                  // how many independent strips, >= 1
   int threads = 1;                 // how many of them run at once, >= 1
 };

@@ -15,6 +15,15 @@ Rgba8 unpack(std::uint32_t packed) {
   return {bytes[0], bytes[1], bytes[2], bytes[3]};
 }
 
+// Whether the kBlockPixels pixels at `in` are all `colour`: one test for a
+// stretch of a flat band, which the compiler turns into a few vector compares.
+constexpr int kBlockPixels = 8;
+bool block_is(const std::uint8_t* in, std::uint32_t colour) {
+  std::uint32_t differ = 0;
+  for (int k = 0; k < kBlockPixels; ++k) differ |= load_rgba(in + 4 * k) ^ colour;
+  return differ == 0;
+}
+
 // Adds the colours of rows [first_row, end_row) to the band's table. Toon
 // frames are long runs of one colour, so a pixel equal to its left neighbour
 // costs one compare. Gives up, setting `too_many`, once the band alone has
@@ -26,13 +35,20 @@ void collect_colours(const Image& image, int first_row, int end_row, ColourTable
   for (int y = first_row; y < end_row; ++y) {
     if (too_many.load(std::memory_order_relaxed)) return;
     const std::uint8_t* in = image.pixel(0, y);
-    for (int x = 0; x < image.width; ++x, in += 4) {
-      const std::uint32_t colour = load_rgba(in);
-      if (colour == previous) continue;
-      previous = colour;
-      if (table.index_of(colour) < 0) {
-        too_many.store(true, std::memory_order_relaxed);
-        return;
+    for (int x = 0; x < image.width;) {
+      if (x + kBlockPixels <= image.width && block_is(in, previous)) {
+        x += kBlockPixels;
+        in += 4 * kBlockPixels;
+        continue;
+      }
+      for (const int end = std::min(image.width, x + kBlockPixels); x < end; ++x, in += 4) {
+        const std::uint32_t colour = load_rgba(in);
+        if (colour == previous) continue;
+        previous = colour;
+        if (table.index_of(colour) < 0) {
+          too_many.store(true, std::memory_order_relaxed);
+          return;
+        }
       }
     }
   }

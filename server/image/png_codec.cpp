@@ -28,18 +28,12 @@ void read_from_view(png_structp png, png_bytep data, png_size_t length) {
   cursor->offset += length;
 }
 
-// Level 0 stores. Levels 1 to 3 take the fastest search that suits the
-// image kind: palette indices of a toon frame are long runs of one byte,
-// which run-length matching finds as well as a full search does; Sub-filtered
-// truecolour rows also repeat short patterns (an antialiased edge drawn
-// along a line) that zlib's fastest hash search finds at the same speed.
-// From level 4 up the caller asked for size over speed and gets zlib's full
-// search at that level.
-int deflate_strategy(int level, bool paletted) {
-  if (level == 0 || level > 3) return Z_DEFAULT_STRATEGY;
-  return paletted ? Z_RLE : Z_DEFAULT_STRATEGY;
-}
-int deflate_level(int level) { return level >= 1 && level <= 3 ? 1 : level; }
+// Level 0 stores. Levels 1 to 3 take the run encoder (run_deflate.h): a
+// toon frame's filtered rows are runs of one byte (palette indices of one
+// band; zeros where Sub-filtered truecolour is flat), which it finds as well
+// as zlib's fastest search does, several times faster. From level 4 up the
+// caller asked for size over speed and gets zlib's full search at that level.
+DeflateMethod deflate_method(int level) { return level >= 1 && level <= 3 ? DeflateMethod::Runs : DeflateMethod::Zlib; }
 
 // Below this many scanline bytes a strip costs more in setup (zlib's state
 // is about 256 KiB to allocate and clear) and in lost matches than it saves.
@@ -56,10 +50,10 @@ int usable_threads(const PngOptions& options) {
   return options.threads <= 0 ? hardware_threads() : std::min(options.threads, hardware_threads());
 }
 
-DeflateSettings deflate_settings(const PngOptions& options, bool paletted, std::size_t scanline_bytes) {
+DeflateSettings deflate_settings(const PngOptions& options, std::size_t scanline_bytes) {
   const int level = std::clamp(options.compression_level, 0, 9);
   const int strips = static_cast<int>(std::clamp<std::size_t>(scanline_bytes / kMinStripBytes, 1, kMaxStrips));
-  return {deflate_level(level), deflate_strategy(level, paletted), strips, std::min(usable_threads(options), strips)};
+  return {deflate_method(level), level, Z_DEFAULT_STRATEGY, strips, std::min(usable_threads(options), strips)};
 }
 
 void set_palette(png_structp png, png_infop info, const Palette& palette) {
@@ -106,7 +100,7 @@ std::string encode_png(const Image& image, const PngOptions& options) {
     };
     const std::size_t scanline_bytes = static_cast<std::size_t>(image.width) + 1;
     const std::string idat = deflate_scanlines(image.height, scanline_bytes, rows,
-                                               deflate_settings(options, true, scanline_bytes * image.height));
+                                               deflate_settings(options, scanline_bytes * image.height));
     return write_png(image, PNG_COLOR_TYPE_PALETTE, &*palette, idat, options.text);
   }
   const TruecolourLayout layout = is_opaque(image) ? TruecolourLayout::Rgb : TruecolourLayout::Rgba;
@@ -115,7 +109,7 @@ std::string encode_png(const Image& image, const PngOptions& options) {
   };
   const std::size_t scanline_bytes = static_cast<std::size_t>(image.width) * bytes_per_pixel(layout) + 1;
   const std::string idat = deflate_scanlines(image.height, scanline_bytes, rows,
-                                             deflate_settings(options, false, scanline_bytes * image.height));
+                                             deflate_settings(options, scanline_bytes * image.height));
   return write_png(image, layout == TruecolourLayout::Rgb ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, nullptr, idat,
                    options.text);
 }

@@ -12,11 +12,9 @@ namespace toond::image {
 using TextChunks = std::vector<std::pair<std::string, std::string>>;
 
 struct PngOptions {
-  // zlib level 0..9: 0 stores (fastest, largest); 1 to 3 the fastest
-  // search for the layout (run-length matches for palette indices, zlib
-  // level 1 for Sub-filtered truecolour), nearly as small as a full search
-  // on toon frames and several times faster; 4 to 9 zlib's full search at
-  // that level (smaller, slower).
+  // 0..9: 0 stores (largest); 1 to 3 the run encoder (run_deflate.h),
+  // the fastest, nearly as small as a full search on toon frames; 4 to 9
+  // zlib's full search at that level (smaller, slower).
   int compression_level = 3;
   // At most this many threads deflate at once; 0 or more than the hardware
   // has: one per hardware thread.

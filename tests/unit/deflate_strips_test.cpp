@@ -2,6 +2,7 @@
 #include <zlib.h>
 
 #include <random>
+#include <tuple>
 
 #include "image/deflate_strips.h"
 
@@ -39,10 +40,13 @@ TEST(DeflateStrips, StripsJoinIntoOneZlibStream) {
   };
   for (const int strips : {1, 2, 3, 7, 97, 500}) {
     for (const int threads : {1, 2, 4}) {
-      for (const auto& [level, strategy] : {std::pair{0, Z_DEFAULT_STRATEGY}, {1, Z_RLE}, {1, Z_DEFAULT_STRATEGY},
-                                            {9, Z_DEFAULT_STRATEGY}}) {
-        SCOPED_TRACE(testing::Message() << strips << " strips, " << threads << " threads, level " << level);
-        const std::string stream = deflate_scanlines(rows, width, source, {level, strategy, strips, threads});
+      for (const auto& [method, level, strategy] :
+           {std::tuple{DeflateMethod::Runs, 1, Z_DEFAULT_STRATEGY}, {DeflateMethod::Zlib, 0, Z_DEFAULT_STRATEGY},
+            {DeflateMethod::Zlib, 1, Z_RLE}, {DeflateMethod::Zlib, 1, Z_DEFAULT_STRATEGY},
+            {DeflateMethod::Zlib, 9, Z_DEFAULT_STRATEGY}}) {
+        SCOPED_TRACE(testing::Message() << strips << " strips, " << threads << " threads, "
+                                        << (method == DeflateMethod::Runs ? "runs" : "zlib level ") << level);
+        const std::string stream = deflate_scanlines(rows, width, source, {method, level, strategy, strips, threads});
         EXPECT_TRUE(inflate_zlib(stream, input.size()) == input);
       }
     }
@@ -58,17 +62,20 @@ TEST(DeflateStrips, LongRowsAreAskedForAFewAtATime) {
     for (int r = 0; r < count; ++r) scratch[width * static_cast<std::size_t>(r)] = static_cast<std::uint8_t>(first + r);
     return std::span<const std::uint8_t>(scratch);
   };
-  const std::string stream = deflate_scanlines(200, width, source, {1, Z_RLE, 4, 2});
-  const std::vector<std::uint8_t> out = inflate_zlib(stream, 200 * width);
-  ASSERT_EQ(out.size(), 200 * width);
-  for (int i = 0; i < 200; ++i) EXPECT_EQ(out[width * static_cast<std::size_t>(i)], i);
+  for (const DeflateMethod method : {DeflateMethod::Runs, DeflateMethod::Zlib}) {
+    const std::string stream = deflate_scanlines(200, width, source, {method, 1, Z_RLE, 4, 2});
+    const std::vector<std::uint8_t> out = inflate_zlib(stream, 200 * width);
+    ASSERT_EQ(out.size(), 200 * width);
+    for (int i = 0; i < 200; ++i) EXPECT_EQ(out[width * static_cast<std::size_t>(i)], i);
+  }
 }
 
 TEST(DeflateStrips, SourceFailureIsReported) {
   const ScanlineSource source = [](int, int, std::vector<std::uint8_t>&) -> std::span<const std::uint8_t> {
     throw std::runtime_error("no rows");
   };
-  EXPECT_THROW(deflate_scanlines(10, 10, source, {1, Z_RLE, 2, 2}), std::runtime_error);
+  EXPECT_THROW(deflate_scanlines(10, 10, source, {DeflateMethod::Runs, 1, Z_RLE, 2, 2}), std::runtime_error);
+  EXPECT_THROW(deflate_scanlines(10, 10, source, {DeflateMethod::Zlib, 1, Z_RLE, 2, 2}), std::runtime_error);
 }
 
 }  // namespace
