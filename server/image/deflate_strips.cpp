@@ -128,7 +128,7 @@ std::string deflate_scanlines(int row_count, std::size_t scanline_bytes, const S
     const bool last = s == strips - 1;
     DeflatedStrip& strip = deflated[static_cast<std::size_t>(s)];
     if (settings.method == DeflateMethod::Runs) {
-      RunDeflater deflater;
+      RunDeflater deflater(scanline_bytes);
       strip = deflate_strip(deflater, first, end, rows_per_chunk, last, source);
     } else {
       StripDeflater deflater(settings);

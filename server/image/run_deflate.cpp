@@ -17,6 +17,15 @@ constexpr int kMaxCodeLengthBits = 7;
 // the distance code complete (two codes of one bit), which every inflater
 // accepts; a lone one-bit code is a special case some reject.
 constexpr int kDistanceCodes = 2;
+// A copy of the row above is worth its length, distance and their extra
+// bits (about 20 bits for a 512-pixel RGB row) from this many bytes on.
+constexpr std::size_t kMinCopy = 4;
+// Deflate's window: a row longer than this cannot be copied from.
+constexpr std::size_t kWindow = 32768;
+// Token values: a literal is its byte, a run of n bytes kRunToken + n, a
+// copy of n bytes from the row above kCopyToken + n.
+constexpr int kRunToken = 256;
+constexpr int kCopyToken = kRunToken + kMaxRun + 1;
 
 // Deflate's length symbols: the first length of each, and its extra bits.
 struct LengthSymbol {
@@ -44,6 +53,41 @@ constexpr std::array<LengthSymbol, kMaxRun + 1> kLengths = make_length_table();
 
 // The extra bits after lit/length symbol s (257..285).
 constexpr int length_extra_bits(int s) { return s < 265 || s == 285 ? 0 : (s - 261) / 4; }
+
+// Deflate's distance code for a distance, its extra bits and their value.
+struct DistanceSymbol {
+  int symbol;
+  int extra_bits;
+  std::uint32_t extra_value;
+};
+
+constexpr DistanceSymbol distance_symbol(std::size_t distance) {
+  if (distance <= 4) return {static_cast<int>(distance) - 1, 0, 0};
+  // From code 4 on, each pair of codes covers twice the distances of the
+  // pair before: 5-6, 7-8, 9-12, 13-16, ...
+  const std::size_t v = distance - 1;
+  const int top = static_cast<int>(std::bit_width(v)) - 1;
+  const int extra = top - 1;
+  const int symbol = 2 * top + static_cast<int>((v >> extra) & 1u);
+  const std::size_t base = (std::size_t{2} + static_cast<std::size_t>(symbol & 1)) << extra;
+  return {symbol, extra, static_cast<std::uint32_t>(v - base)};
+}
+
+// How many of the first n bytes at a and b agree.
+std::size_t common_prefix(const std::uint8_t* a, const std::uint8_t* b, std::size_t n) {
+  std::size_t i = 0;
+  if constexpr (std::endian::native == std::endian::little) {
+    for (; i + 8 <= n; i += 8) {
+      std::uint64_t x;
+      std::uint64_t y;
+      std::memcpy(&x, a + i, 8);
+      std::memcpy(&y, b + i, 8);
+      if (const std::uint64_t differ = x ^ y) return i + static_cast<std::size_t>(std::countr_zero(differ) / 8);
+    }
+  }
+  while (i < n && a[i] == b[i]) ++i;
+  return i;
+}
 
 // How many of the first n bytes at p equal b.
 std::size_t run_of(const std::uint8_t* p, std::size_t n, std::uint8_t b) {
@@ -299,14 +343,15 @@ class BlockHeader {
 };
 
 // What a token puts in the stream, in one go: a literal's code, or a run's
-// length code, its extra bits and the distance code (at most 15 + 5 + 15).
+// or a copy's length code, its extra bits and, for a run, the distance
+// code (at most 15 + 5 + 15 bits). A copy's distance goes out after it.
 struct TokenBits {
   std::uint32_t bits = 0;
   int count = 0;
 };
 
 std::vector<TokenBits> bits_of_tokens(const HuffmanCode& literals, const HuffmanCode& distances) {
-  std::vector<TokenBits> table(256 + kMaxRun + 1);
+  std::vector<TokenBits> table(kCopyToken + kMaxRun + 1);
   for (int byte = 0; byte < 256; ++byte) {
     table[static_cast<std::size_t>(byte)] = {literals.codes[static_cast<std::size_t>(byte)],
                                              literals.lengths[static_cast<std::size_t>(byte)]};
@@ -318,6 +363,7 @@ std::vector<TokenBits> bits_of_tokens(const HuffmanCode& literals, const Huffman
     t.count = literals.lengths[l.symbol];
     t.bits |= static_cast<std::uint32_t>(l.extra_value) << t.count;
     t.count += l.extra_bits;
+    table[static_cast<std::size_t>(kCopyToken + length)] = t;
     t.bits |= static_cast<std::uint32_t>(distances.codes[0]) << t.count;
     t.count += distances.lengths[0];
   }
@@ -332,7 +378,7 @@ constexpr std::size_t kMaxSpareTokens = std::size_t{4} << 20;
 
 }  // namespace
 
-RunDeflater::RunDeflater() {
+RunDeflater::RunDeflater(std::size_t row_bytes) : row_bytes_(row_bytes >= kMinCopy && row_bytes <= kWindow ? row_bytes : 0) {
   tokens_.swap(spare_tokens);
   tokens_.clear();
   // Both codes need two used symbols to be complete; the end of block is one.
@@ -364,6 +410,17 @@ void RunDeflater::add(std::span<const std::uint8_t> input) {
     }
     out = put_run(out, previous, pending);
     pending = 0;
+    if (row_bytes_ > 0 && i >= row_bytes_) {
+      const std::size_t copy = common_prefix(p + i, p + i - row_bytes_, std::min<std::size_t>(n - i, kMaxRun));
+      if (copy >= kMinCopy) {
+        *out++ = static_cast<std::uint16_t>(kCopyToken + copy);
+        ++counts_[kLengths[copy].symbol];
+        ++copies_;
+        i += copy;
+        previous = p[i - 1];
+        continue;
+      }
+    }
     previous = p[i];
     *out++ = p[i];
     ++counts_[p[i]];
@@ -376,18 +433,18 @@ void RunDeflater::add(std::span<const std::uint8_t> input) {
 
 std::uint16_t* RunDeflater::put_run(std::uint16_t* out, int byte, std::size_t run) {
   for (; run >= kMinRun + kMaxRun || run == kMaxRun; run -= kMaxRun) {
-    *out++ = static_cast<std::uint16_t>(256 + kMaxRun);
+    *out++ = static_cast<std::uint16_t>(kRunToken + kMaxRun);
     ++counts_[kLengths[kMaxRun].symbol];
   }
   // What is left is one more length, or two when one would be too long,
   // split so that neither is under three; under three bytes are literals.
   if (run > kMaxRun) {
-    *out++ = static_cast<std::uint16_t>(256 + run - kMinRun);
+    *out++ = static_cast<std::uint16_t>(kRunToken + run - kMinRun);
     ++counts_[kLengths[run - kMinRun].symbol];
     run = kMinRun;
   }
   if (run >= kMinRun) {
-    *out++ = static_cast<std::uint16_t>(256 + run);
+    *out++ = static_cast<std::uint16_t>(kRunToken + run);
     ++counts_[kLengths[run].symbol];
     return out;
   }
@@ -407,8 +464,15 @@ std::vector<std::uint8_t> RunDeflater::finish(bool last) {
   const HuffmanCode literals = huffman_code(counts_, kMaxCodeBits);
   int literal_count = kSymbols;
   while (literal_count > 257 && literals.lengths[static_cast<std::size_t>(literal_count - 1)] == 0) --literal_count;
-  const std::array<std::uint32_t, kDistanceCodes> distance_counts = {1, 1};
+  // Two distances, each a one-bit code: 1 (runs) and the row's length
+  // (copies), or an unused second code when copies are off.
+  const DistanceSymbol row = distance_symbol(row_bytes_ > 0 ? row_bytes_ : 2);
+  std::vector<std::uint32_t> distance_counts(static_cast<std::size_t>(std::max(row.symbol + 1, kDistanceCodes)), 0);
+  distance_counts[0] = distance_counts[static_cast<std::size_t>(row.symbol)] = 1;
   const HuffmanCode distances = huffman_code(distance_counts, kMaxCodeBits);
+  const std::uint32_t copy_distance = distances.codes[static_cast<std::size_t>(row.symbol)] |
+                                      row.extra_value << distances.lengths[static_cast<std::size_t>(row.symbol)];
+  const int copy_distance_bits = distances.lengths[static_cast<std::size_t>(row.symbol)] + row.extra_bits;
   const BlockHeader header(literals, literal_count, distances);
   const std::vector<TokenBits> token_bits = bits_of_tokens(literals, distances);
 
@@ -420,6 +484,7 @@ std::vector<std::uint8_t> RunDeflater::finish(bool last) {
     bits += count * literals.lengths[static_cast<std::size_t>(s)];
     if (s > kEndOfBlock) bits += count * static_cast<std::size_t>(length_extra_bits(s) + distances.lengths[0]);
   }
+  bits += copies_ * static_cast<std::size_t>(copy_distance_bits);
   constexpr std::size_t kStripEndBits = 3 + 7 + 32;
   std::vector<std::uint8_t> out((bits + kStripEndBits) / 8 + 8);
 
@@ -427,7 +492,10 @@ std::vector<std::uint8_t> RunDeflater::finish(bool last) {
   writer.put(last ? 1u : 0u, 1);
   writer.put(2, 2);  // dynamic Huffman codes
   header.write(writer);
-  for (const std::uint16_t token : tokens_) writer.put(token_bits[token].bits, token_bits[token].count);
+  for (const std::uint16_t token : tokens_) {
+    writer.put(token_bits[token].bits, token_bits[token].count);
+    if (token > kCopyToken) writer.put(copy_distance, copy_distance_bits);
+  }
   writer.put(literals, kEndOfBlock);
   if (!last) {
     writer.put(0, 3);  // an empty stored block, not final: aligns the strip's end

@@ -70,6 +70,33 @@ TEST(RunDeflate, FlatBandsCostAlmostNothing) {
   EXPECT_EQ(inflate_raw(stream, zeros.size()), zeros);
 }
 
+TEST(RunDeflate, ARowThatRepeatsTheRowAboveIsACopy) {
+  // Rows of noise, each repeated once: without copies every byte of the
+  // repeat would be a literal.
+  constexpr std::size_t kRow = 300;
+  std::mt19937 random(2);
+  Bytes input;
+  for (int r = 0; r < 20; ++r) {
+    Bytes row(kRow);
+    for (std::uint8_t& b : row) b = static_cast<std::uint8_t>(random());
+    input.insert(input.end(), row.begin(), row.end());
+    input.insert(input.end(), row.begin(), row.end());
+  }
+  RunDeflater with_copies(kRow);
+  with_copies.add(input);
+  const Bytes copied = with_copies.finish(true);
+  EXPECT_EQ(inflate_raw(copied, input.size()), input);
+  EXPECT_LT(copied.size(), input.size() * 6 / 10) << "half the rows cost a few bits each";
+  EXPECT_GT(deflate_whole(input).size(), input.size() * 9 / 10) << "noise without copies stays noise";
+  for (const std::size_t row : {std::size_t{1}, std::size_t{4}, std::size_t{5}, std::size_t{1537}, std::size_t{32768},
+                                std::size_t{40000}}) {
+    SCOPED_TRACE(row);
+    RunDeflater deflater(row);
+    deflater.add(input);
+    EXPECT_EQ(inflate_raw(deflater.finish(true), input.size()), input);
+  }
+}
+
 TEST(RunDeflate, NoiseGrowsByNoMoreThanItsCodes) {
   std::mt19937 random(11);
   Bytes noise(100000);
