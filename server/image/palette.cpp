@@ -108,13 +108,21 @@ std::span<const std::uint8_t> Palette::index_rows(const Image& image, int first_
     const std::uint8_t* in = image.pixel(0, first_row + r);
     std::uint8_t* out = scratch.data() + static_cast<std::size_t>(r) * stride;
     *out++ = 0;
-    for (int x = 0; x < image.width; ++x, in += 4) {
-      const std::uint32_t colour = load_rgba(in);
-      if (colour != previous) {
-        previous = colour;
-        previous_index = static_cast<std::uint8_t>(lookup_.find(colour));
+    for (int x = 0; x < image.width;) {
+      if (x + kBlockPixels <= image.width && block_is(in, previous)) {
+        std::memset(out + x, previous_index, kBlockPixels);
+        x += kBlockPixels;
+        in += 4 * kBlockPixels;
+        continue;
       }
-      out[x] = previous_index;
+      for (const int end = std::min(image.width, x + kBlockPixels); x < end; ++x, in += 4) {
+        const std::uint32_t colour = load_rgba(in);
+        if (colour != previous) {
+          previous = colour;
+          previous_index = static_cast<std::uint8_t>(lookup_.find(colour));
+        }
+        out[x] = previous_index;
+      }
     }
   }
   return scratch;

@@ -177,6 +177,16 @@ std::vector<std::uint8_t> code_lengths(std::span<const std::uint32_t> counts, in
   return lengths;
 }
 
+constexpr std::array<std::uint8_t, 256> kReversedBytes = [] {
+  std::array<std::uint8_t, 256> table{};
+  for (unsigned b = 0; b < 256; ++b) {
+    unsigned r = 0;
+    for (int bit = 0; bit < 8; ++bit) r |= ((b >> bit) & 1u) << (7 - bit);
+    table[b] = static_cast<std::uint8_t>(r);
+  }
+  return table;
+}();
+
 // The canonical code of each length, bit-reversed: deflate sends a Huffman
 // code from its top bit, and the writer fills bytes from their low bit.
 std::vector<std::uint16_t> canonical_codes(std::span<const std::uint8_t> lengths) {
@@ -193,9 +203,8 @@ std::vector<std::uint16_t> canonical_codes(std::span<const std::uint8_t> lengths
     const int length = lengths[s];
     if (length == 0) continue;
     const unsigned code = static_cast<unsigned>(next[length]++);
-    unsigned reversed = 0;
-    for (int b = 0; b < length; ++b) reversed |= ((code >> b) & 1u) << (length - 1 - b);
-    codes[s] = static_cast<std::uint16_t>(reversed);
+    const unsigned reversed = static_cast<unsigned>(kReversedBytes[code & 0xff]) << 8 | kReversedBytes[code >> 8];
+    codes[s] = static_cast<std::uint16_t>(reversed >> (16 - length));
   }
   return codes;
 }
@@ -408,9 +417,11 @@ void RunDeflater::add(std::span<const std::uint8_t> input) {
       i += run;
       continue;
     }
-    out = put_run(out, previous, pending);
-    pending = 0;
-    if (row_bytes_ > 0 && i >= row_bytes_) {
+    if (pending > 0) {
+      out = put_run(out, previous, pending);
+      pending = 0;
+    }
+    if (row_bytes_ > 0 && i >= row_bytes_ && p[i] == p[i - row_bytes_]) {
       const std::size_t copy = common_prefix(p + i, p + i - row_bytes_, std::min<std::size_t>(n - i, kMaxRun));
       if (copy >= kMinCopy) {
         *out++ = static_cast<std::uint16_t>(kCopyToken + copy);
