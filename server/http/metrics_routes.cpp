@@ -14,6 +14,10 @@ void register_metrics_routes(httplib::Server& server, ServiceContext& context) {
   registry.counter_from("toond_gpu_context_resets_total",
                         "Lost GL contexts (GPU resets) replaced by a new one since start.",
                         [&context] { return static_cast<double>(context.renderer.gpu_resets()); });
+  registry.counter_from("toond_frames_overlapped_total",
+                        "Frames recorded while the same render thread's previous frame was still being read back "
+                        "(--frames-in-flight 2).",
+                        [&context] { return static_cast<double>(context.renderer.overlapped_frames()); });
   registry.gauge("toond_gpu_models_loaded", "Models whose GPU copy this replica holds (its GPU LRU).",
                  [&context] { return static_cast<double>(context.renderer.gpu_models_loaded()); });
   registry.gauge("toond_gpu_model_bytes",

@@ -299,6 +299,7 @@ bool RenderService::serve(std::size_t index, std::unique_ptr<gpu::ShaderSources>
     }
     std::optional<Started> next;
     if (task) next = start_task(std::move(*task), worker);
+    if (in_flight && next && next->frame) ++overlapped_frames_;
     if (in_flight) {
       if (answer(*in_flight, worker)) {
         if (next) answer_lost(*next);

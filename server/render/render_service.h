@@ -134,6 +134,9 @@ class RenderService {
   std::size_t gpu_model_bytes() const;
   // Lost GL contexts replaced by a new one since start.
   std::size_t gpu_resets() const { return gpu_resets_.load(); }
+  // Frames started while the same thread's previous frame was still on
+  // its way back (Options::frames_in_flight 2): the overlap the switch is for.
+  std::size_t overlapped_frames() const { return overlapped_frames_.load(); }
 
  private:
   struct Task {
@@ -205,6 +208,7 @@ class RenderService {
   std::vector<CacheUse> cache_use_;
   bool stopping_ = false;
   std::atomic<std::size_t> gpu_resets_{0};
+  std::atomic<std::size_t> overlapped_frames_{0};
   std::size_t worker_count_ = 1;  // render threads, the long lane's included (its is the last)
   std::vector<std::thread> threads_;
 };

@@ -1,10 +1,11 @@
 // --frames-in-flight 2: each render thread records the next queued frame
 // before it reads back the last one. Concurrent clients and a sprite sheet
 // (whose frames queue back to back) get the bytes a daemon reading every
-// frame at once draws.
+// frame at once draws, and /metrics shows that frames did overlap.
 #include <gtest/gtest.h>
 
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -13,6 +14,15 @@
 
 namespace toond::test {
 namespace {
+
+// The value of an unlabelled counter in the daemon's /metrics.
+double metric(httplib::Client& client, const std::string& name) {
+  const auto res = client.Get("/metrics");
+  if (!res || res->status != 200) return -1;
+  const std::size_t at = res->body.find("\n" + name + " ");
+  if (at == std::string::npos) return -1;
+  return std::stod(res->body.substr(at + name.size() + 2));
+}
 
 TEST(FramesInFlight, ConcurrentRendersAndSheetsAreTheBytesOfTheSynchronousDaemon) {
   Daemon reference({}, {"--result-cache-mb", "0"});
@@ -58,6 +68,11 @@ TEST(FramesInFlight, ConcurrentRendersAndSheetsAreTheBytesOfTheSynchronousDaemon
     EXPECT_FALSE(body.empty()) << requests[which].dump();
     EXPECT_TRUE(body == expected[which]) << requests[which].dump();
   }
+  // The frames really overlapped: each sheet's eight frames are queued at
+  // once, so every one after the first is recorded while the one before
+  // it is read back. The synchronous daemon never overlaps.
+  EXPECT_GE(metric(client, "toond_frames_overlapped_total"), 4 * 7);
+  EXPECT_EQ(metric(reference_client, "toond_frames_overlapped_total"), 0);
 }
 
 }  // namespace
