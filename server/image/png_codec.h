@@ -32,11 +32,12 @@ struct PngOptions {
 //  - otherwise, every alpha 255: RGB (colour type 2), else RGBA (6); rows Sub
 //    filtered, which turns flat bands into runs of zeros.
 // The zlib stream is made here rather than by libpng so that it can be cut
-// into horizontal strips (64 KiB of scanlines at least, up to four per
-// thread) deflated on several cores at once, one thread per hardware thread
-// at most, the caller included; libpng still writes every chunk. The
-// palette is counted the same way, in bands. Throws std::runtime_error on
-// failure.
+// into horizontal strips (64 KiB of scanlines at least, at most eight, a
+// count that depends on the image alone so the bytes are the same on every
+// machine) deflated on several cores at once, one thread per hardware
+// thread at most, the caller included, by the run encoder at levels 1 to 3
+// (run_deflate.h); libpng still writes every chunk. The palette is counted
+// the same way, in bands. Throws std::runtime_error on failure.
 std::string encode_png(const Image& image, const PngOptions& options = {});
 
 // Decodes any 8-bit or 16-bit PNG to RGBA8. Throws std::runtime_error with
