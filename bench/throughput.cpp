@@ -47,7 +47,11 @@ std::vector<LoadLevel> run_throughput(const std::string& url, const nlohmann::js
           }
           ++failed;
           if (!res) {
-            ++why["no answer (" + httplib::to_string(res.error()) + ")"];
+            // How long it waited tells a stale kept-alive connection
+            // (at once) from a timeout (seconds) when one turns up.
+            char waited[32];
+            std::snprintf(waited, sizeof waited, "%.0f ms", ms);
+            ++why["no answer (" + httplib::to_string(res.error()) + ") after " + waited];
           } else {
             std::string code;
             try {
