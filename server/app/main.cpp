@@ -17,12 +17,17 @@
 #include "app/options.h"
 #include "gpu/egl_context.h"
 #include "http/access_control.h"
+#include "http/listen_backlog.h"
 #include "http/routes.h"
 #include "scene/model_library.h"
 #include "render/render_service.h"
 #include "scene/model_store.h"
 
 namespace {
+
+// Connections the kernel may hold for the accept thread: every client of a
+// busy replica reconnecting at once, with room to spare.
+constexpr int kListenBacklog = 512;
 
 // SIGINT/SIGTERM are blocked in every thread and taken by one thread with
 // sigwait, so stopping the server runs as ordinary code, not in a signal
@@ -121,6 +126,9 @@ int run(const toond::app::Options& options) {
   if (port < 0) {
     std::cerr << "toond: cannot listen on " << options.host << ":" << options.port << "\n";
     return 1;
+  }
+  if (toond::http::widen_listen_backlog(port, kListenBacklog) == 0) {
+    std::cerr << "toond: could not widen the listen queue; clients reconnecting together may wait\n";
   }
   std::cerr << "toond: GL " << renderer.gl_info().version << " on " << renderer.gl_info().renderer
             << " (" << renderer.gl_info().platform
