@@ -39,17 +39,18 @@ class RunDeflater {
   static constexpr int kSymbols = 286;
 
  private:
-  // A literal is its byte (0..255); a run of n bytes is 256 + n (n 3..258);
-  // a copy of n bytes from the row above 515 + n (n 4..258).
   // Writes a run of `run` more copies of `byte` (lengths, or literals when
   // under three) at `out`, counts its symbols, and returns the end.
   std::uint16_t* put_run(std::uint16_t* out, int byte, std::size_t run);
 
+  // The strip as tokens: a literal is its byte (0..255), a run of n bytes
+  // 256 + n (n 3..258), a copy of n bytes from the row above 515 + n
+  // (n 4..258); and how often each lit/length symbol occurs in them.
   std::vector<std::uint16_t> tokens_;
   std::array<std::uint32_t, kSymbols> counts_{};
-  int previous_ = -1;           // the last literal's byte, -1 before the first
+  std::size_t copies_ = 0;  // copy tokens, whose distance adds to the size
   std::size_t row_bytes_ = 0;
-  std::size_t copies_ = 0;
+  int previous_ = -1;            // the last byte sent, -1 before the first
   std::size_t pending_run_ = 0;  // copies of it since, not yet tokens: a run
                                  // may go on in the next add()
 };

@@ -5,23 +5,22 @@
 #include <gtest/gtest.h>
 
 #include <mutex>
-#include <string>
+#include <optional>
 #include <thread>
 #include <vector>
 
 #include "support/generated_models.h"
+#include "support/prometheus_text.h"
 #include "test_client.h"
 
 namespace toond::test {
 namespace {
 
-// The value of an unlabelled counter in the daemon's /metrics.
-double metric(httplib::Client& client, const std::string& name) {
+// The overlap counter in the daemon's /metrics; nullopt when it is missing.
+std::optional<double> frames_overlapped(httplib::Client& client) {
   const auto res = client.Get("/metrics");
-  if (!res || res->status != 200) return -1;
-  const std::size_t at = res->body.find("\n" + name + " ");
-  if (at == std::string::npos) return -1;
-  return std::stod(res->body.substr(at + name.size() + 2));
+  if (!res || res->status != 200) return std::nullopt;
+  return sample_value(res->body, "toond_frames_overlapped_total");
 }
 
 TEST(FramesInFlight, ConcurrentRendersAndSheetsAreTheBytesOfTheSynchronousDaemon) {
@@ -71,8 +70,11 @@ TEST(FramesInFlight, ConcurrentRendersAndSheetsAreTheBytesOfTheSynchronousDaemon
   // The frames really overlapped: each sheet's eight frames are queued at
   // once, so every one after the first is recorded while the one before
   // it is read back. The synchronous daemon never overlaps.
-  EXPECT_GE(metric(client, "toond_frames_overlapped_total"), 4 * 7);
-  EXPECT_EQ(metric(reference_client, "toond_frames_overlapped_total"), 0);
+  const std::optional<double> overlapped = frames_overlapped(client);
+  const std::optional<double> reference_overlapped = frames_overlapped(reference_client);
+  ASSERT_TRUE(overlapped && reference_overlapped) << "toond_frames_overlapped_total is missing from /metrics";
+  EXPECT_GE(*overlapped, 4 * 7);
+  EXPECT_EQ(*reference_overlapped, 0);
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 // so nothing is accepted, and 40 clients connect: the kernel completes the
 // handshake of every one it has queue room for.
 #include <arpa/inet.h>
-#include <fcntl.h>
 #include <netinet/in.h>
 #include <poll.h>
 #include <signal.h>
@@ -16,15 +15,12 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <string>
 #include <vector>
 
 #include "support/daemon.h"
 
 namespace toond::test {
 namespace {
-
-int port_of(const std::string& url) { return std::stoi(url.substr(url.rfind(':') + 1)); }
 
 // A connect() left to the kernel; the descriptor, or -1.
 int start_connect(int port) {
@@ -48,7 +44,7 @@ bool connected(int fd) {
 
 TEST(ListenBacklog, ConnectionsWaitInTheQueueWhileNothingIsAccepted) {
   Daemon daemon;
-  const int port = port_of(daemon.url());
+  const int port = daemon.port();
   ASSERT_EQ(kill(daemon.pid(), SIGSTOP), 0);
   constexpr int kClients = 40;
   std::vector<int> sockets;

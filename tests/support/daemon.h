@@ -19,6 +19,8 @@ class Daemon {
   Daemon& operator=(const Daemon&) = delete;
 
   const std::string& url() const { return url_; }
+  // The port of url(), which toond picked itself (--listen 127.0.0.1:0).
+  int port() const { return std::stoi(url_.substr(url_.rfind(':') + 1)); }
   const std::filesystem::path& data_dir() const { return data_dir_; }
   httplib::Client client() const;
   // Sends SIGTERM and waits; returns the exit status (or -1).
