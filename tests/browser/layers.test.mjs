@@ -232,11 +232,16 @@ async function checkSheet(page, requests) {
   await shot(page, '14-sprite-sheet.png');
 
   // Dragging a slider with the sheet on: the live loop's quick renders go
-  // on alone, and the sheet follows once, when the drag has ended.
+  // on alone, and the sheet follows once, when the drag has ended. The
+  // drag holds halfway until a quick render is shown, so on a busy machine
+  // the whole drag cannot fit inside the first quick render's round trip.
   const sheets = Number(await page.getAttribute('#sheet-view', 'data-sheets'));
   const rendered = await rendersShown(page);
   requests.length = 0;
-  await dragSlider(page, '/outline/width', 6);
+  await dragSlider(page, '/outline/width', 6, () => page.waitForFunction((n) => {
+    const v = document.getElementById('view');
+    return Number(v.dataset.renders || 0) > n && v.dataset.kind === 'quick';
+  }, rendered, { timeout: STEP_TIMEOUT_MS }));
   await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
   await page.waitForFunction((n) => Number(document.getElementById('sheet-view').dataset.sheets) > n
     && !document.getElementById('sheet').classList.contains('busy'), sheets, { timeout: STEP_TIMEOUT_MS });

@@ -2,7 +2,9 @@
 
 // Drags the thumb of the slider at JSON pointer `pointer` from its value to
 // `to`, in eight mouse moves (the page renders while it is dragged).
-export async function dragSlider(page, pointer, to) {
+// `midway`, when given, is awaited with the button still held halfway
+// along, so a test can wait there for what a drag in progress must do.
+export async function dragSlider(page, pointer, to, midway = null) {
   const slider = page.locator(`[data-path="${pointer}"] input[type=range]`);
   await slider.scrollIntoViewIfNeeded();
   const box = await slider.boundingBox();
@@ -12,7 +14,10 @@ export async function dragSlider(page, pointer, to) {
   const y = box.y + box.height / 2;
   await page.mouse.move(xOf(value), y);
   await page.mouse.down();
-  for (let i = 1; i <= 8; i++) await page.mouse.move(xOf(value + ((to - value) * i) / 8), y);
+  for (let i = 1; i <= 8; i++) {
+    await page.mouse.move(xOf(value + ((to - value) * i) / 8), y);
+    if (i === 4 && midway) await midway();
+  }
   await page.mouse.up();
 }
 
