@@ -104,7 +104,7 @@ std::string encode_png(const Image& image, const PngOptions& options) {
                                                deflate_settings(options, scanline_bytes * image.height));
     return write_png(image, PNG_COLOR_TYPE_PALETTE, &*palette, idat, options.text);
   }
-  const TruecolourLayout layout = is_opaque(image) ? TruecolourLayout::Rgb : TruecolourLayout::Rgba;
+  const TruecolourLayout layout = is_opaque(image, threads) ? TruecolourLayout::Rgb : TruecolourLayout::Rgba;
   const ScanlineSource rows = [&](int first_row, int row_count, std::vector<std::uint8_t>& scratch) {
     return sub_filtered_rows(image, layout, first_row, row_count, scratch);
   };

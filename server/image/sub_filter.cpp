@@ -1,7 +1,10 @@
 #include "image/sub_filter.h"
 
+#include <atomic>
 #include <bit>
 #include <cstring>
+
+#include "image/parallel_tasks.h"
 
 namespace toond::image {
 namespace {
@@ -70,21 +73,40 @@ std::span<const std::uint8_t> sub_filtered_rows(const Image& image, TruecolourLa
   return scratch;
 }
 
-bool is_opaque(const Image& image) {
-  // Two pixels a word, ANDed together without branching, so the compiler can
-  // vectorise it; only the alpha bytes of the result are looked at.
+namespace {
+
+// Whether pixels [first, end) all have alpha 255. Two pixels a word, ANDed
+// together without branching, so the compiler can vectorise it; only the
+// alpha bytes of the result are looked at.
+bool span_opaque(const std::uint8_t* rgba, std::size_t first, std::size_t end) {
   constexpr std::uint64_t kAlphaBytes = 0xff000000ff000000ull;
-  const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
-  const std::uint8_t* bytes = image.rgba.data();
   std::uint64_t all = ~0ull;
-  std::size_t i = 0;
-  for (; i + 2 <= pixels; i += 2) {
+  std::size_t i = first;
+  for (; i + 2 <= end; i += 2) {
     std::uint64_t two;
-    std::memcpy(&two, bytes + i * 4, 8);
+    std::memcpy(&two, rgba + i * 4, 8);
     all &= two;
   }
-  if (i < pixels && bytes[i * 4 + 3] != 0xff) return false;
+  if (i < end && rgba[i * 4 + 3] != 0xff) return false;
   return (all & kAlphaBytes) == kAlphaBytes;
+}
+
+}  // namespace
+
+bool is_opaque(const Image& image, int threads) {
+  // In as many parts as the encode's strips, on the same helpers: between
+  // the palette's scan and the deflate, a pass on the caller alone outlasts
+  // the time a helper watches for its next job, and waking it again cost
+  // the deflate most of its second core (toond_png_bench).
+  constexpr int kParts = 8;
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  std::atomic<bool> opaque{true};
+  run_tasks(kParts, threads, [&](int part) {
+    const std::size_t first = pixels * static_cast<std::size_t>(part) / kParts;
+    const std::size_t end = pixels * static_cast<std::size_t>(part + 1) / kParts;
+    if (opaque.load(std::memory_order_relaxed) && !span_opaque(image.rgba.data(), first, end)) opaque = false;
+  });
+  return opaque;
 }
 
 }  // namespace toond::image

@@ -20,7 +20,8 @@ inline int bytes_per_pixel(TruecolourLayout layout) { return layout == Truecolou
 std::span<const std::uint8_t> sub_filtered_rows(const Image& image, TruecolourLayout layout, int first_row,
                                                 int row_count, std::vector<std::uint8_t>& scratch);
 
-// True when every pixel has alpha 255, so RGB loses nothing.
-bool is_opaque(const Image& image);
+// True when every pixel has alpha 255, so RGB loses nothing; checked in
+// parts on up to `threads` threads (image/parallel_tasks.h).
+bool is_opaque(const Image& image, int threads = 1);
 
 }  // namespace toond::image

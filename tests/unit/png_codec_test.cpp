@@ -5,6 +5,7 @@
 #include <string>
 
 #include "image/png_codec.h"
+#include "image/sub_filter.h"
 
 namespace toond::image {
 namespace {
@@ -160,6 +161,24 @@ TEST(PngCodec, NoiseFallsBackToTruecolour) {
   const std::string rgb = encode_png(opaque);
   EXPECT_EQ(colour_type(rgb), kRgb);
   expect_round_trip(opaque, rgb);
+}
+
+// The opacity check runs in parts on the helpers: one translucent pixel
+// anywhere, at a part's first or last pixel, or the odd last pixel, makes
+// the frame RGBA whatever the thread count.
+TEST(PngCodec, OneTranslucentPixelAnywhereIsFoundOnEveryThreadCount) {
+  const Image opaque = noise(301, 67, true, 6);  // odd: the last pixel has no partner
+  const std::size_t pixels = static_cast<std::size_t>(opaque.width) * opaque.height;
+  for (const int threads : {1, 2, 3, 8}) {
+    EXPECT_TRUE(is_opaque(opaque, threads)) << threads;
+    for (std::size_t at : {std::size_t{0}, pixels / 8 - 1, pixels / 8, pixels / 2 + 1, 7 * pixels / 8, pixels - 2,
+                           pixels - 1}) {
+      Image one = opaque;
+      one.rgba[at * 4 + 3] = 254;
+      EXPECT_FALSE(is_opaque(one, threads)) << "pixel " << at << ", threads " << threads;
+      EXPECT_EQ(colour_type(encode_png(one, {1, threads})), kRgba) << "pixel " << at << ", threads " << threads;
+    }
+  }
 }
 
 TEST(PngCodec, EveryLevelAndThreadCountRoundTripsEveryKind) {
