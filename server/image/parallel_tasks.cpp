@@ -100,8 +100,8 @@ class HelperPool {
     }
   }
 
-  // An encode asks for help twice in quick succession (palette, then
-  // deflate), and waking a sleeping thread costs a large share of a small
+  // An encode asks for help two or three times in quick succession
+  // (palette; for truecolour the opacity check; deflate), and waking a sleeping thread costs a large share of a small
   // frame's encode on two cores (toond_png_bench): a helper that just finished
   // watches for the next job a little while before it sleeps. Kept short,
   // as the watching takes a core from whatever else wants it.
