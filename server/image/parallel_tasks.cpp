@@ -101,10 +101,11 @@ class HelperPool {
   }
 
   // An encode asks for help two or three times in quick succession
-  // (palette; for truecolour the opacity check; deflate), and waking a sleeping thread costs a large share of a small
-  // frame's encode on two cores (toond_png_bench): a helper that just finished
-  // watches for the next job a little while before it sleeps. Kept short,
-  // as the watching takes a core from whatever else wants it.
+  // (palette; for truecolour the opacity check; deflate), and waking a
+  // sleeping thread costs a large share of a small frame's encode on two
+  // cores (toond_png_bench): a helper that just finished watches for the
+  // next job a little while before it sleeps. Kept short, as the watching
+  // takes a core from whatever else wants it.
   void wait_briefly_for_work() const {
     const auto until = std::chrono::steady_clock::now() + kWatchForWork;
     while (queued_.load(std::memory_order_relaxed) == 0 && std::chrono::steady_clock::now() < until) {
