@@ -51,9 +51,15 @@ int usable_threads(const PngOptions& options) {
   return options.threads <= 0 ? hardware_threads() : std::min(options.threads, hardware_threads());
 }
 
+// How many parts `bytes` of work are cut into: the deflate's strips, and
+// the opacity check's parts over the pixels.
+int strip_count(std::size_t bytes) {
+  return static_cast<int>(std::clamp<std::size_t>(bytes / kMinStripBytes, 1, kMaxStrips));
+}
+
 DeflateSettings deflate_settings(const PngOptions& options, std::size_t scanline_bytes) {
   const int level = std::clamp(options.compression_level, 0, 9);
-  const int strips = static_cast<int>(std::clamp<std::size_t>(scanline_bytes / kMinStripBytes, 1, kMaxStrips));
+  const int strips = strip_count(scanline_bytes);
   return {deflate_method(level), level, Z_DEFAULT_STRATEGY, strips, std::min(usable_threads(options), strips)};
 }
 
@@ -104,7 +110,7 @@ std::string encode_png(const Image& image, const PngOptions& options) {
                                                deflate_settings(options, scanline_bytes * image.height));
     return write_png(image, PNG_COLOR_TYPE_PALETTE, &*palette, idat, options.text);
   }
-  const TruecolourLayout layout = is_opaque(image, threads) ? TruecolourLayout::Rgb : TruecolourLayout::Rgba;
+  const TruecolourLayout layout = is_opaque(image, strip_count(image.rgba.size()), threads) ? TruecolourLayout::Rgb : TruecolourLayout::Rgba;
   const ScanlineSource rows = [&](int first_row, int row_count, std::vector<std::uint8_t>& scratch) {
     return sub_filtered_rows(image, layout, first_row, row_count, scratch);
   };

@@ -94,20 +94,17 @@ bool span_opaque(const std::uint8_t* rgba, std::size_t first, std::size_t end) {
 
 }  // namespace
 
-bool is_opaque(const Image& image, int threads) {
+bool is_opaque(const Image& image, int parts, int threads) {
   // In parts on the encode's helpers: between the palette's scan and the
   // deflate, a pass on the caller alone outlasts the time a helper watches
   // for its next job, and waking it again cost the deflate most of its
-  // second core (toond_png_bench). Parts of at least 64 KiB, at most eight,
-  // as the deflate's strips (png_codec.cpp): a small image is one part.
-  constexpr std::size_t kMinPartBytes = 64 * 1024;
-  constexpr std::size_t kMaxParts = 8;
+  // second core (toond_png_bench).
   const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
-  const std::size_t parts = std::clamp<std::size_t>(pixels * 4 / kMinPartBytes, 1, kMaxParts);
+  const auto count = static_cast<std::size_t>(std::max(parts, 1));
   std::atomic<bool> opaque{true};
-  run_tasks(static_cast<int>(parts), threads, [&](int part) {
-    const std::size_t first = pixels * static_cast<std::size_t>(part) / parts;
-    const std::size_t end = pixels * static_cast<std::size_t>(part + 1) / parts;
+  run_tasks(static_cast<int>(count), threads, [&](int part) {
+    const std::size_t first = pixels * static_cast<std::size_t>(part) / count;
+    const std::size_t end = pixels * static_cast<std::size_t>(part + 1) / count;
     if (opaque.load(std::memory_order_relaxed) && !span_opaque(image.rgba.data(), first, end)) opaque = false;
   });
   return opaque;

@@ -21,7 +21,8 @@ std::span<const std::uint8_t> sub_filtered_rows(const Image& image, TruecolourLa
                                                 int row_count, std::vector<std::uint8_t>& scratch);
 
 // True when every pixel has alpha 255, so RGB loses nothing; checked in
-// parts on up to `threads` threads (image/parallel_tasks.h).
-bool is_opaque(const Image& image, int threads = 1);
+// `parts` bands of pixels on up to `threads` threads
+// (image/parallel_tasks.h). The encoder cuts it like its deflate strips.
+bool is_opaque(const Image& image, int parts = 1, int threads = 1);
 
 }  // namespace toond::image

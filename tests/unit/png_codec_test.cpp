@@ -163,21 +163,26 @@ TEST(PngCodec, NoiseFallsBackToTruecolour) {
   expect_round_trip(opaque, rgb);
 }
 
-// The opacity check runs in parts on the helpers (eight for a large image,
-// one for a small one): one translucent pixel anywhere, at a part's first
-// or last pixel, or the odd last pixel, makes the frame RGBA whatever the
-// thread count.
+// The opacity check runs in parts on the helpers (as many as the deflate's
+// strips: eight for a large image, one for a small one): one translucent
+// pixel anywhere, at a part's first or last pixel, or the odd last pixel,
+// is found whatever the parts and threads, and makes the frame RGBA.
 TEST(PngCodec, OneTranslucentPixelAnywhereIsFoundOnEveryThreadCount) {
   // Odd sizes: the last pixel has no partner in the two-pixel words.
   for (const Image& opaque : {noise(601, 301, true, 6), noise(31, 17, true, 7)}) {
     const std::size_t pixels = static_cast<std::size_t>(opaque.width) * opaque.height;
     for (const int threads : {1, 2, 3, 8}) {
-      EXPECT_TRUE(is_opaque(opaque, threads)) << threads;
-      for (std::size_t at : {std::size_t{0}, pixels / 8 - 1, pixels / 8, pixels / 2 + 1, 7 * pixels / 8,
+      for (const int parts : {1, 3, 8}) {
+        EXPECT_TRUE(is_opaque(opaque, parts, threads)) << parts << " parts, " << threads << " threads";
+      }
+      for (std::size_t at : {std::size_t{0}, pixels / 8 - 1, pixels / 8, pixels / 3, pixels / 2 + 1, 7 * pixels / 8,
                              pixels - 2, pixels - 1}) {
         Image one = opaque;
         one.rgba[at * 4 + 3] = 254;
-        EXPECT_FALSE(is_opaque(one, threads)) << "pixel " << at << " of " << pixels << ", threads " << threads;
+        for (const int parts : {1, 3, 8}) {
+          EXPECT_FALSE(is_opaque(one, parts, threads))
+              << "pixel " << at << " of " << pixels << ", " << parts << " parts, " << threads << " threads";
+        }
         EXPECT_EQ(colour_type(encode_png(one, {1, threads})), kRgba) << "pixel " << at << ", threads " << threads;
       }
     }
