@@ -93,4 +93,9 @@ void FrameResources::draw_fullscreen_triangle() const {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+const gpu::Buffer& FrameResources::hull_indices(std::span<const std::uint32_t> indices) {
+  glNamedBufferData(hull_indices_.id(), static_cast<GLsizeiptr>(indices.size_bytes()), indices.data(), GL_STREAM_DRAW);
+  return hull_indices_;
+}
+
 }  // namespace toond::render

@@ -6,6 +6,7 @@
 // Render thread only.
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "gpu/normal_depth_target.h"
@@ -45,6 +46,10 @@ class FrameResources {
   // profile draws need one even when the vertex shader makes its own
   // positions) and draws it.
   void draw_fullscreen_triangle() const;
+  // Where the hull's faces that may show are written each frame
+  // (render/hull_cull.h), given fresh storage every time so a frame still in
+  // flight keeps the last one's.
+  const gpu::Buffer& hull_indices(std::span<const std::uint32_t> indices);
 
  private:
   std::optional<gpu::RenderTarget> target_;
@@ -52,6 +57,7 @@ class FrameResources {
   std::optional<gpu::NormalDepthTarget> normal_depth_;
   std::vector<std::unique_ptr<gpu::ReadbackBuffer>> spare_readback_buffers_;
   gpu::VertexArray fullscreen_vao_ = gpu::VertexArray::create();
+  gpu::Buffer hull_indices_ = gpu::Buffer::create();
   gpu::UniformArena frame_uniforms_;
   std::optional<GpuModel> floor_;
   scene::Bounds floor_bounds_;

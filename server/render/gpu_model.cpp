@@ -113,6 +113,9 @@ GpuModel::GpuModel(const scene::Model& model)
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
                        indices.data(), 0);
   gpu_bytes_ = vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
+  rest_positions_ = mesh.positions;
+  outline_offsets_ = mesh.outline_normals;
+  all_indices_ = std::move(indices);
 
   vao_ = gpu::VertexArray::create();
   glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
@@ -205,6 +208,25 @@ void GpuModel::draw(const scene::Submesh& submesh) const {
 void GpuModel::draw_all(std::size_t lod) const {
   const Level& level = levels_[lod];
   draw_triangles(level.index_count, level.first_index);
+}
+
+void GpuModel::draw_from(const gpu::Buffer& indices, std::size_t index_count, std::size_t first_index) const {
+  glVertexArrayElementBuffer(vao_.id(), indices.id());
+  draw_triangles(index_count, first_index);
+  glVertexArrayElementBuffer(vao_.id(), indices_.id());
+}
+
+const HullCullMesh* GpuModel::hull_cull_mesh(std::size_t lod) const {
+  if (posed_) return nullptr;
+  const Level& level = levels_[lod];
+  if (!level.hull_cull) {
+    std::vector<scene::Submesh> submeshes = level.submeshes;
+    for (scene::Submesh& sub : submeshes) sub.first_index -= static_cast<std::uint32_t>(level.first_index);
+    level.hull_cull = std::make_unique<HullCullMesh>(
+        rest_positions_, outline_offsets_,
+        std::span<const std::uint32_t>(all_indices_).subspan(level.first_index, level.index_count), submeshes);
+  }
+  return level.hull_cull.get();
 }
 
 void GpuModel::draw_caps(std::size_t lod) const {

@@ -11,6 +11,7 @@
 #include "gpu/gl_object.h"
 #include "gpu/uniform_arena.h"
 #include "render/gpu_skin.h"
+#include "render/hull_cull.h"
 #include "render/uniform_blocks.h"
 #include "scene/model.h"
 #include "scene/pose.h"
@@ -56,6 +57,14 @@ class GpuModel {
   // The triangles closing a level's holes (caps()), with the mesh's own
   // vertices; nothing when it has none.
   void draw_caps(std::size_t lod = 0) const;
+  // `index_count` indices from `first_index` of another element buffer (the
+  // hull's faces that may show, render/hull_cull.h), with this model's
+  // vertices; its own indices are bound again after.
+  void draw_from(const gpu::Buffer& indices, std::size_t index_count, std::size_t first_index) const;
+  // A level's triangles as the hull cull reads them, built on the first
+  // call; null while posed (the vertices the GPU draws are not the rest
+  // pose kept here).
+  const HullCullMesh* hull_cull_mesh(std::size_t lod) const;
 
   // The submeshes of a level of detail (0 = full detail).
   const std::vector<scene::Submesh>& submeshes(std::size_t lod = 0) const { return levels_[lod].submeshes; }
@@ -121,8 +130,14 @@ class GpuModel {
     std::vector<glm::vec3> posed_caps{};
     std::size_t first_cap_index = 0;  // the caps' range of the index buffer
     std::size_t cap_index_count = 0;
+    mutable std::unique_ptr<HullCullMesh> hull_cull{};
   };
   std::vector<Level> levels_;
+  // The rest pose's positions and outline offsets and every level's
+  // indices, kept on the CPU for the hull cull.
+  std::vector<glm::vec3> rest_positions_;
+  std::vector<glm::vec3> outline_offsets_;
+  std::vector<std::uint32_t> all_indices_;
   void pose_into_vertex_buffer(const scene::Model& model, const scene::PoseSums& sums);
   std::vector<double> lod_errors_;
   scene::Bounds bounds_;

@@ -25,6 +25,8 @@ struct RenderOutput {
   // Samples per pixel the target really has: `msaa` clamped to the
   // driver's GL_MAX_SAMPLES (llvmpipe: 4).
   int samples = 1;
+  // The hull outline's faces left out as unable to show (render/hull_cull.h).
+  std::size_t hull_faces_culled = 0;
 };
 
 }  // namespace toond::render

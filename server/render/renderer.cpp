@@ -60,7 +60,7 @@ std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& o
                                           frame.supersample, real_gpu());
   out.samples = target ? target->samples() : 1;
   const FrameBlocks blocks(frame, resources_.frame_uniforms());
-  PassContext context{frame, blocks, programs_, resources_, target, {}};
+  PassContext context{frame, blocks, programs_, resources_, target, {}, hull_cull_.value_or(!real_gpu())};
   for (Pass pass : frame.plan.passes) {
     if (pacing && pacing->expired()) break;
     const DrawPass draw = drawing_pass(pass);
@@ -79,6 +79,7 @@ std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& o
                         " chunks of triangles");
   }
   pending->cap_checks = std::move(context.main_cap_checks);
+  out.hull_faces_culled = context.hull_faces_culled;
   pending->unpremultiply = frame.plan.has(Pass::Unpremultiply);
   // Without supersampling the multisample resolve is a blit inside
   // read_back(); its time is part of the readback figure, since the

@@ -23,6 +23,11 @@ class Renderer {
   // On by default. Off draws both sides of every face: for tests that show
   // culling changes no pixel.
   void set_face_culling(bool on) { face_culling_ = on; }
+  // Whether the hull outline leaves out the faces that cannot show
+  // (render/hull_cull.h): by default on a CPU rasterizer only, where
+  // setting a triangle up costs the recording thread more than the test.
+  // Set for tests that show it changes no byte.
+  void set_hull_cull(bool on) { hull_cull_ = on; }
 
   // Every object shares the camera, the lights and the passes; camera fit,
   // shadow fit and floor use the union of their transformed bounds. With
@@ -55,6 +60,7 @@ class Renderer {
 
   gpu::ProgramCache& programs_;
   bool face_culling_ = true;
+  std::optional<bool> hull_cull_;
   bool frames_in_flight_ = false;
   // Asked of the context at the first render: whether it rasterizes on a
   // GPU or on this CPU's threads (gpu::software_rasterizer). That decides

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include "render/passes/outline_colour.h"
 #include "render/passes/passes.h"
@@ -21,6 +22,71 @@ double hull_reach(const FrameContext& frame, double world_per_px) {
   return k * w_max / (1.0 - k);
 }
 
+// Object i's hull faces that may show (render/hull_cull.h), or nullopt
+// where all are drawn: the cull is off, the object is posed (its vertices
+// are not the ones kept on the CPU), or a material is cut out by its alpha
+// (the main pass then leaves samples of its faces unmarked).
+std::optional<HullSubset> faces_that_may_show(const PassContext& context, std::size_t i) {
+  const FrameContext& frame = context.frame;
+  const GpuModel& model = frame.objects[i].model;
+  if (!context.cull_hull || !frame.plan.stencil_mark || model.has_masked_materials()) return std::nullopt;
+  const HullCullMesh* mesh = model.hull_cull_mesh(frame.lod_of(i));
+  if (!mesh) return std::nullopt;
+  const glm::dmat4& placement = frame.scene.matrices[i];
+  HullCullView view;
+  view.model = placement;
+  view.normal_matrix = glm::transpose(glm::inverse(glm::dmat3(placement)));
+  view.clip = frame.clip;
+  view.width_px = frame.outline_px;
+  view.world_per_px_at_w1 = frame.world_per_px_at_w1();
+  view.viewport_width = frame.draw_width;
+  view.viewport_height = frame.draw_height;
+  view.drawn_clockwise = frame.main_faces[i].hidden == HiddenFaces::Front;
+  return hull_faces_that_may_show(*mesh, view);
+}
+
+// Every object's faces that may show, in one element buffer.
+struct HullFaces {
+  std::vector<std::optional<HullSubset>> subsets;
+  std::vector<std::size_t> first;  // where each object's indices start in the buffer
+  const gpu::Buffer* buffer = nullptr;
+};
+
+HullFaces hull_faces(PassContext& context) {
+  HullFaces out;
+  std::vector<std::uint32_t> all;
+  for (std::size_t i = 0; i < context.frame.objects.size(); ++i) {
+    out.subsets.push_back(faces_that_may_show(context, i));
+    if (out.subsets.back()) context.hull_faces_culled += out.subsets.back()->culled_triangles;
+    out.first.push_back(all.size());
+    if (out.subsets.back()) all.insert(all.end(), out.subsets.back()->indices.begin(), out.subsets.back()->indices.end());
+  }
+  if (!all.empty()) out.buffer = &context.resources.hull_indices(all);
+  return out;
+}
+
+// Object i's hull: only the faces that may show where they were worked out.
+void draw_hull_of(const FrameContext& frame, const HullFaces& faces, std::size_t i) {
+  const bool per_material = outline_per_material(frame);
+  const std::optional<HullSubset>& subset = faces.subsets[i];
+  if (!subset) {
+    if (per_material) draw_by_material(frame, i);
+    else draw_whole_object(frame, i);
+    return;
+  }
+  if (subset->indices.empty()) return;
+  const GpuModel& model = frame.objects[i].model;
+  if (!per_material) {
+    model.draw_from(*faces.buffer, subset->indices.size(), faces.first[i]);
+    return;
+  }
+  for (const scene::Submesh& sub : subset->submeshes) {
+    if (sub.index_count == 0) continue;
+    bind_material(model, sub.material);
+    model.draw_from(*faces.buffer, sub.index_count, faces.first[i] + sub.first_index);
+  }
+}
+
 }  // namespace
 
 // The inverted hull, outside the stencil mark the main pass left.
@@ -39,7 +105,8 @@ void draw_hull_outline_pass(PassContext& context) {
   // The hull must not be cut by the near or far plane either: where it is,
   // its back faces show through the cut.
   const double reach = hull_reach(frame, frame.world_per_px_at_w1());
-  draw_outline_objects(context, [&](std::size_t i) {
+  const HullFaces faces = hull_faces(context);
+  const auto skip = [&](std::size_t i) {
     const GpuModel& model = frame.objects[i].model;
     FaceSkip hull;
     if (frame.main_faces[i].hidden == HiddenFaces::None) return hull;
@@ -49,7 +116,8 @@ void draw_hull_outline_pass(PassContext& context) {
     // its vertices), are checked.
     hull.unless_caps_show = hull.hidden != HiddenFaces::None && !model.caps(frame.lod_of(i)).empty();
     return hull;
-  });
+  };
+  draw_objects(frame, context.blocks, {.faces = skip, .draw = [&](std::size_t i) { draw_hull_of(frame, faces, i); }});
 }
 
 }  // namespace toond::render

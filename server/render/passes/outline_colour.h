@@ -11,4 +11,8 @@ namespace toond::render {
 // `faces(i)` says.
 void draw_outline_objects(PassContext& context, const std::function<FaceSkip(std::size_t)>& faces);
 
+// Whether the outline's colour or alpha test comes from each material, so
+// objects are drawn material by material.
+bool outline_per_material(const FrameContext& frame);
+
 }  // namespace toond::render

@@ -25,6 +25,9 @@ struct PassContext {
   // (when their answers are ready anyway) to report which objects drew both
   // sides.
   std::vector<gpu::Query> main_cap_checks;
+  // Whether the hull leaves out the faces that cannot show (render/hull_cull.h).
+  bool cull_hull = false;
+  std::size_t hull_faces_culled = 0;  // reported in RenderOutput
 };
 
 }  // namespace toond::render

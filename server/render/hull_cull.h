@@ -1,0 +1,87 @@
+#pragma once
+// Which of the inverted hull's faces can draw nothing, worked out on the
+// CPU before the hull is drawn.
+//
+// The hull draws only outside the stencil mark the main pass left, that is
+// outside every sample the model's drawn faces cover. A hull face comes
+// from one model face T, moved out by at most the outline's width. Take a
+// box round T and its hull face. When T is one of the faces the main pass
+// draws and no edge where the drawn faces' cover can end (an edge drawn on
+// one side only: the silhouette, a hole's rim, a face turned away or too
+// thin to say which way it turns, an edge three faces share) crosses that
+// box, the box is connected, holds a covered point (T itself) and meets no
+// end of the cover: all of it is covered, every sample the hull face could
+// reach is marked, and leaving the face out changes no byte. Everything is
+// bounded with a margin well above float rounding and the rasterizer's
+// snapping of vertices to its sub-pixel grid.
+//
+// On a CPU rasterizer setting up and binning a triangle costs the recording
+// thread more than this test does; on a GPU it does not pay (renderer.h).
+// Pure arithmetic, no GL.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/model.h"
+
+namespace toond::render {
+
+// One level of detail of a mesh as the cull reads it: built once, on first
+// use (the neighbours cost a sort of the level's edges).
+class HullCullMesh {
+ public:
+  // `indices` and `submeshes` are the level's (submeshes index `indices`);
+  // positions and outline offsets are the mesh's whole vertex streams.
+  HullCullMesh(std::span<const glm::vec3> positions, std::span<const glm::vec3> outline_offsets,
+               std::span<const std::uint32_t> indices, std::span<const scene::Submesh> submeshes);
+
+  std::span<const std::uint32_t> indices() const { return indices_; }
+  std::span<const scene::Submesh> submeshes() const { return submeshes_; }
+  // Across edge k of triangle t (corner k to corner k+1): the triangle
+  // that shares it with the same two positions, walked the other way, or
+  // -1 where there is none, or more than one, or it runs the same way.
+  std::int32_t neighbour(std::size_t t, int k) const { return neighbours_[3 * t + static_cast<std::size_t>(k)]; }
+  std::span<const std::uint32_t> used_vertices() const { return used_; }
+  const glm::vec3& position(std::uint32_t v) const { return positions_[v]; }
+  const glm::vec3& outline_offset(std::uint32_t v) const { return offsets_[v]; }
+
+ private:
+  std::span<const glm::vec3> positions_;
+  std::span<const glm::vec3> offsets_;
+  std::vector<std::uint32_t> indices_;
+  std::vector<scene::Submesh> submeshes_;
+  std::vector<std::int32_t> neighbours_;
+  std::vector<std::uint32_t> used_;  // every vertex a triangle of the level uses, once
+};
+
+// How the hull of one object is drawn in this frame: hull.vert's inputs.
+struct HullCullView {
+  glm::dmat4 model{1.0};          // model → frame coordinates
+  glm::dmat3 normal_matrix{1.0};  // inverse-transpose of the model's 3×3
+  glm::dmat4 clip{1.0};           // frame → clip coordinates
+  double width_px = 0;            // the outline's width, drawn pixels
+  double world_per_px_at_w1 = 0;
+  int viewport_width = 0;
+  int viewport_height = 0;
+  // The winding (in window coordinates, y up) of the faces the main pass
+  // draws: counter-clockwise where it skips back faces or none, clockwise
+  // where it skips the front ones (a mirroring transform).
+  bool drawn_clockwise = false;
+};
+
+// The hull's triangles that may draw something, submesh by submesh.
+struct HullSubset {
+  std::vector<std::uint32_t> indices;
+  std::vector<scene::Submesh> submeshes;  // ranges of `indices`, the level's materials in its order
+  std::size_t culled_triangles = 0;
+};
+
+// nullopt where the test cannot be made (a vertex or its hull corner
+// outside the near or far plane: the cover then ends along the plane's cut,
+// not at an edge): the whole hull is drawn.
+std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, const HullCullView& view);
+
+}  // namespace toond::render

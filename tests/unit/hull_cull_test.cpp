@@ -1,0 +1,215 @@
+// The hull's faces left out before drawing (render/hull_cull.h): which
+// edges pair up, which faces a view leaves out on the CPU, and, with a GL
+// context, that leaving them out changes no byte of any image while it
+// does leave most of them out.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "http/render_params_wire.h"
+#include "model_checks.h"
+#include "param_schema.h"
+#include "render/gpu_model.h"
+#include "render/hull_cull.h"
+#include "render/renderer.h"
+#include "scene/bundle_import.h"
+#include "support/generated_models.h"
+#include "support/gl_context_test.h"
+#include "support/shared_models.h"
+#include "toond_shader_files.h"
+
+namespace toond::render {
+namespace {
+
+scene::Model import_obj(const std::string& obj) {
+  return scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", obj}}));
+}
+
+HullCullMesh mesh_of(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
+  static const std::vector<glm::vec3> kNoOffsets(64, glm::vec3(0.0f));
+  const std::vector<scene::Submesh> one = {{0, static_cast<std::uint32_t>(indices.size()), 0}};
+  return HullCullMesh(positions, std::span(kNoOffsets).first(positions.size()), indices, one);
+}
+
+TEST(HullCull, OnlyAnEdgeWalkedOnceEachWayByTwoFacesHasANeighbour) {
+  // Two triangles of a square, the second's copy of the diagonal's ends
+  // made separate vertices at the same places (a texture seam).
+  const std::vector<glm::vec3> positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 0}, {1, 1, 0}};
+  const HullCullMesh square = mesh_of(positions, {0, 1, 2, 4, 5, 3});
+  EXPECT_EQ(square.neighbour(0, 2), 1);  // 2 → 0 in the first, 0 → 2 in the second
+  EXPECT_EQ(square.neighbour(1, 0), 0);
+  EXPECT_EQ(square.neighbour(0, 0), -1);  // the square's rim
+  // The second walked the same way round as the first: a fold, no pair.
+  const HullCullMesh folded = mesh_of(positions, {0, 1, 2, 5, 4, 3});
+  EXPECT_EQ(folded.neighbour(0, 2), -1);
+  // Three faces on one edge: none of them pairs.
+  const std::vector<glm::vec3> fin = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+  const HullCullMesh three = mesh_of(fin, {0, 1, 2, 1, 0, 3, 1, 0, 4});
+  for (std::size_t t = 0; t < 3; ++t) EXPECT_EQ(three.neighbour(t, 0), -1) << t;
+}
+
+// An orthographic view of the unit sphere down -z filling `size` pixels.
+HullCullView sphere_view(int size, double width_px) {
+  HullCullView view;
+  view.clip = glm::scale(glm::dmat4(1.0), glm::dvec3(0.8, 0.8, 0.4));  // radius 0.8 of the half-size
+  view.width_px = width_px;
+  view.world_per_px_at_w1 = 2.0 / (0.8 * size);
+  view.viewport_width = size;
+  view.viewport_height = size;
+  return view;
+}
+
+TEST(HullCull, ASphereKeepsOnlyTheFacesNearItsSilhouette) {
+  const scene::Model sphere = import_obj(test::sphere_obj(96, 48));
+  const scene::Mesh& mesh = sphere.mesh;
+  const HullCullMesh cull(mesh.positions, mesh.outline_normals, mesh.indices, mesh.submeshes);
+  const int size = 256;
+  const double width = 3.0;
+  const std::optional<HullSubset> subset = hull_faces_that_may_show(cull, sphere_view(size, width));
+  ASSERT_TRUE(subset);
+  // Half the faces turn away (they stay: the GPU skips them) and most of
+  // the rest are well inside the disk.
+  const std::size_t triangles = mesh.indices.size() / 3;
+  EXPECT_GT(subset->culled_triangles, triangles / 5);
+  EXPECT_EQ(subset->indices.size() / 3 + subset->culled_triangles, triangles);
+  // Every face left out lies further inside the silhouette than its hull
+  // face can reach; faces turned away were all kept.
+  const double radius_px = 0.4 * size;
+  std::vector<bool> kept(triangles, false);
+  std::map<std::array<std::uint32_t, 3>, int> kept_faces;
+  for (std::size_t e = 0; e < subset->indices.size(); e += 3) {
+    ++kept_faces[{subset->indices[e], subset->indices[e + 1], subset->indices[e + 2]}];
+  }
+  for (std::size_t t = 0; t < triangles; ++t) {
+    const std::array<std::uint32_t, 3> face = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
+    if (kept_faces.contains(face)) continue;
+    for (std::uint32_t v : face) {
+      const glm::vec3& p = mesh.positions[v];
+      EXPECT_GT(p.z, 0.0f) << "a face turned away was left out";
+      const double from_middle_px = glm::length(glm::dvec2(p.x, p.y)) * radius_px;
+      EXPECT_LT(from_middle_px, radius_px - width) << t;
+    }
+  }
+}
+
+TEST(HullCull, AVertexOutsideTheDepthRangeTurnsTheCullOff) {
+  const scene::Model sphere = import_obj(test::sphere_obj(24, 12));
+  const HullCullMesh cull(sphere.mesh.positions, sphere.mesh.outline_normals, sphere.mesh.indices,
+                          sphere.mesh.submeshes);
+  HullCullView view = sphere_view(128, 2.0);
+  EXPECT_TRUE(hull_faces_that_may_show(cull, view));
+  view.clip = glm::scale(glm::dmat4(1.0), glm::dvec3(0.8, 0.8, 1.5));  // the sphere reaches past both planes
+  EXPECT_FALSE(hull_faces_that_may_show(cull, view));
+}
+
+class HullCullRender : public test::GlContextTest {
+ protected:
+  static RenderParams params(const nlohmann::json& request) {
+    return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
+  }
+  struct Pair {
+    RenderOutput culled;
+    RenderOutput whole;
+  };
+  static Pair render_both_ways(const std::vector<std::pair<const scene::Model*, glm::dmat4>>& scene,
+                               const RenderParams& p) {
+    gpu::ProgramCache programs([](const std::string& name) { return std::string(shader_files::find(name)); });
+    Renderer renderer(programs);
+    std::vector<std::unique_ptr<GpuModel>> uploaded;
+    std::vector<RenderObject> objects;
+    for (const auto& [model, transform] : scene) {
+      uploaded.push_back(std::make_unique<GpuModel>(*model));
+      objects.push_back({*uploaded.back(), transform});
+    }
+    Pair out;
+    renderer.set_hull_cull(true);
+    out.culled = renderer.render(objects, p);
+    renderer.set_hull_cull(false);
+    out.whole = renderer.render(objects, p);
+    return out;
+  }
+  // The same bytes both ways; returns how many faces were left out.
+  static std::size_t expect_same_image(const std::vector<std::pair<const scene::Model*, glm::dmat4>>& scene,
+                                       const nlohmann::json& request, const std::string& what) {
+    const Pair pair = render_both_ways(scene, params(request));
+    EXPECT_EQ(pair.whole.hull_faces_culled, 0u);
+    EXPECT_TRUE(pair.culled.image.rgba == pair.whole.image.rgba) << what << " " << request;
+    return pair.culled.hull_faces_culled;
+  }
+};
+
+const std::vector<nlohmann::json>& requests() {
+  static const std::vector<nlohmann::json> all = {
+      {{"width", 160}, {"height", 160}},
+      {{"width", 160}, {"height", 160}, {"msaa", 1}, {"camera", {{"yaw", 30}, {"pitch", 20}}}},
+      {{"width", 160}, {"height", 160}, {"outline", {{"width", 8}}}, {"camera", {{"yaw", -50}, {"pitch", -15}}}},
+      {{"width", 160}, {"height", 160}, {"outline", {{"width", 0.05}, {"units", "world"}}}},
+      {{"width", 160}, {"height", 160}, {"camera", {{"projection", "orthographic"}, {"pitch", 35}}}},
+      {{"width", 160}, {"height", 160}, {"outline", {{"color_mode", "material"}}}},
+      {{"width", 160}, {"height", 160}, {"floor", {{"enabled", true}}}, {"shadows", {{"enabled", true}}}},
+  };
+  return all;
+}
+
+TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {
+  const scene::Model sphere = import_obj(test::sphere_obj(64, 32));
+  const scene::Model cube = import_obj(test::cube_obj());
+  const scene::Model messy = import_obj(test::exporter_sphere_obj({.segments = 64, .rings = 32, .jitter = 1e-7}));
+  const scene::Model faceted =
+      import_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::PerFace}));
+  const scene::Model bare =
+      import_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::None}));
+  // The cube's twelve faces all reach its silhouette: it keeps them all.
+  expect_same_image({{&cube, glm::dmat4(1.0)}}, requests().front(), "cube");
+  for (const auto& [model, what] : {std::pair{&sphere, "sphere"}, std::pair{&messy, "messy"},
+                                    std::pair{&faceted, "per-face normals"}, std::pair{&bare, "no normals"}}) {
+    for (const nlohmann::json& request : requests()) {
+      EXPECT_GT(expect_same_image({{model, glm::dmat4(1.0)}}, request, what), 0u) << what << " " << request;
+    }
+  }
+}
+
+// A long thin plank laid between two spheres: its hull corners lie over the
+// spheres while its faces cross the background; a mirrored object (drawn
+// with its other winding) and one stretched unevenly.
+TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScenes) {
+  const scene::Model sphere = import_obj(test::sphere_obj(48, 24));
+  const scene::Model cube = import_obj(test::cube_obj());
+  const glm::dmat4 left = glm::translate(glm::dmat4(1.0), glm::dvec3(-2.0, 0.0, 0.0));
+  const glm::dmat4 right = glm::translate(glm::dmat4(1.0), glm::dvec3(2.0, 0.0, 0.0));
+  const glm::dmat4 plank = glm::rotate(glm::scale(glm::dmat4(1.0), glm::dvec3(2.2, 0.03, 0.03)), 0.05,
+                                       glm::dvec3(0.0, 0.0, 1.0));
+  const glm::dmat4 mirrored = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.8, -0.5)), glm::dvec3(-1, 1, 1));
+  const glm::dmat4 stretched = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, -1.8, 0.3)), glm::dvec3(1.6, 0.4, 1));
+  for (const nlohmann::json& request : requests()) {
+    const std::size_t culled = expect_same_image(
+        {{&sphere, left}, {&sphere, right}, {&cube, plank}, {&cube, mirrored}, {&sphere, stretched}}, request, "scene");
+    EXPECT_GT(culled, 0u) << request;
+  }
+}
+
+TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScannedModels) {
+  if (!test::have_shared_models()) GTEST_SKIP() << "../shared/models is absent";
+  const std::filesystem::path models = test::shared_models_dir();
+  const auto file = [&](const std::string& folder, const std::string& name) {
+    return std::pair{name, test::read_file(models / folder / name)};
+  };
+  const scene::Model bunny = scene::import_bundle(
+      scene::test_checks::make_bundle({file("stanford-bunny", "stanford-bunny.obj")}));
+  const scene::Model spot = scene::import_bundle(scene::test_checks::make_bundle(
+      {file("spot", "spot.obj"), file("spot", "spot.mtl"), file("spot", "spot_texture.png")}));
+  for (const auto& [model, what] : {std::pair{&bunny, "bunny"}, std::pair{&spot, "spot"}}) {
+    for (const nlohmann::json& request : requests()) expect_same_image({{model, glm::dmat4(1.0)}}, request, what);
+    // The default request at the benchmark's size leaves out most of them.
+    const std::size_t culled = expect_same_image({{model, glm::dmat4(1.0)}}, {{"width", 512}, {"height", 512}}, what);
+    EXPECT_GT(culled, model->mesh.triangle_count() / 10) << what;
+  }
+}
+
+}  // namespace
+}  // namespace toond::render
