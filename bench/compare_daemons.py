@@ -26,7 +26,7 @@ import uuid
 FLOOR = {"shading": {"mode": "flat", "base": "white"}, "outline": {"enabled": False},
          "contour": {"enabled": False}, "specular": {"enabled": False}, "rim": {"enabled": False},
          "shadows": {"enabled": False}}
-PHASES = ("png", "total")
+PHASES = ("png", "total")  # more with --phases
 
 
 def connect(url):
@@ -67,7 +67,7 @@ def render(conn, body):
     return timing
 
 
-def alternate(conns, bodies, rounds):
+def alternate(conns, bodies, rounds, phases):
     """Medians per daemon of `rounds` renders each, the two taking turns;
     two warm-up rounds are left out."""
     results = [[] for _ in conns]
@@ -77,7 +77,7 @@ def alternate(conns, bodies, rounds):
             timing = render(conns[k], dict(bodies[k], camera={"yaw": 30 + i * 1e-3}))
             if i >= 2:
                 results[k].append(timing)
-    return [{key: statistics.median(t.get(key, 0.0) for t in runs) for key in PHASES + ("bytes",)}
+    return [{key: statistics.median(t.get(key, 0.0) for t in runs) for key in phases + ("bytes",)}
             for runs in results]
 
 
@@ -88,7 +88,10 @@ def main():
     parser.add_argument("--folders", nargs="+", default=["stanford-bunny", "spot"])
     parser.add_argument("--sizes", nargs="+", type=int, default=[512, 1024])
     parser.add_argument("--rounds", type=int, default=30)
+    parser.add_argument("--phases", nargs="+", default=list(PHASES),
+                        help="Server-Timing phases to print (main, hull, readback, png, total, ...)")
     args = parser.parse_args()
+    phases = tuple(args.phases)
     conns = [connect(url) for url in args.urls]
     for folder in args.folders:
         ids = [upload(url, os.path.join(args.models, folder)) for url in args.urls]
@@ -97,10 +100,10 @@ def main():
             for name, extra in requests:
                 bodies = [dict(model=model, width=size, height=size, **extra) for model in ids]
                 # Each daemon has its own model id; the rest of the request is the same.
-                medians = alternate(conns, bodies, args.rounds)
+                medians = alternate(conns, bodies, args.rounds, phases)
                 line = f"{folder:16s} {size:5d} {name:8s}"
                 for url, m in zip(args.urls, medians):
-                    line += f" | {url}: " + " ".join(f"{key} {m[key]:.2f}" for key in PHASES) + f" bytes {m['bytes']:.0f}"
+                    line += f" | {url}: " + " ".join(f"{key} {m[key]:.2f}" for key in phases) + f" bytes {m['bytes']:.0f}"
                 print(line, flush=True)
 
 

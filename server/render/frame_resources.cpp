@@ -93,8 +93,15 @@ void FrameResources::draw_fullscreen_triangle() const {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-const gpu::Buffer& FrameResources::hull_indices(std::span<const std::uint32_t> indices) {
-  glNamedBufferData(hull_indices_.id(), static_cast<GLsizeiptr>(indices.size_bytes()), indices.data(), GL_STREAM_DRAW);
+const gpu::Buffer& FrameResources::hull_indices(const std::vector<std::span<const std::uint32_t>>& parts) {
+  std::size_t bytes = 0;
+  for (const auto& part : parts) bytes += part.size_bytes();
+  glNamedBufferData(hull_indices_.id(), static_cast<GLsizeiptr>(bytes), nullptr, GL_STREAM_DRAW);
+  std::size_t at = 0;
+  for (const auto& part : parts) {
+    glNamedBufferSubData(hull_indices_.id(), static_cast<GLintptr>(at), static_cast<GLsizeiptr>(part.size_bytes()), part.data());
+    at += part.size_bytes();
+  }
   return hull_indices_;
 }
 

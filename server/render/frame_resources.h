@@ -49,7 +49,8 @@ class FrameResources {
   // Where the hull's faces that may show are written each frame
   // (render/hull_cull.h), given fresh storage every time so a frame still in
   // flight keeps the last one's.
-  const gpu::Buffer& hull_indices(std::span<const std::uint32_t> indices);
+  // The parts are written one after the other.
+  const gpu::Buffer& hull_indices(const std::vector<std::span<const std::uint32_t>>& parts);
 
  private:
   std::optional<gpu::RenderTarget> target_;

@@ -16,8 +16,8 @@ namespace {
 constexpr double kVertexSlackPx = 1.0 / 64.0;
 // Added round every box and every edge: far above that slack.
 constexpr double kMarginPx = 0.5;
-// The side of the cells an edge marks.
-constexpr double kCellPx = 4.0;
+// The side of the cells that mark where the cover ends and where it is.
+constexpr double kCellPx = 2.0;
 
 using PositionBits = std::array<std::uint32_t, 3>;
 
@@ -89,98 +89,132 @@ struct Box {
   }
 };
 
-// A vertex where the main pass draws it and the box its hull corner may
-// reach from there.
+// A vertex where the main pass draws it (window pixels, y up) and the box
+// its hull corner may reach from there (in float: its rounding is far
+// below the margin).
 struct ProjectedVertex {
   glm::dvec2 window{0.0};
-  Box reach;
+  glm::vec2 reach_min{0.0f};
+  glm::vec2 reach_max{0.0f};
 };
 
-// Cells over the viewport marking where the cover of the drawn faces may
-// end, summed so a box's count costs four reads.
-class EndGrid {
+// Counts per cell of a grid over the viewport, summed so a box's count
+// costs four reads.
+class CellCounts {
  public:
-  EndGrid(int width, int height)
-      : width_(width), height_(height),
-        columns_(static_cast<int>(std::ceil(width / kCellPx))), rows_(static_cast<int>(std::ceil(height / kCellPx))),
-        marks_(static_cast<std::size_t>(columns_ * rows_), 0) {}
+  // Every cell uncounted, over a viewport of this size.
+  void reset(int width, int height) {
+    width_ = width;
+    height_ = height;
+    columns_ = static_cast<int>(std::ceil(width / kCellPx));
+    rows_ = static_cast<int>(std::ceil(height / kCellPx));
+    counts_.assign(static_cast<std::size_t>(columns_ * rows_), 0);
+  }
 
-  void mark(const glm::dvec2& a, const glm::dvec2& b) {
+  // Counts every cell the box (grown by the margin) overlaps.
+  void add_box(const glm::dvec2& a, const glm::dvec2& b) {
     const glm::dvec2 lo = glm::min(a, b) - kMarginPx;
     const glm::dvec2 hi = glm::max(a, b) + kMarginPx;
     if (hi.x < 0 || hi.y < 0 || lo.x > width_ || lo.y > height_) return;
     const int x0 = column(lo.x), x1 = column(hi.x), y0 = row(lo.y), y1 = row(hi.y);
     for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) marks_[static_cast<std::size_t>(y * columns_ + x)] = 1;
+      for (int x = x0; x <= x1; ++x) counts_[static_cast<std::size_t>(y * columns_ + x)] = 1;
+  }
+  // Counts the cell holding the point.
+  void add_point(const glm::dvec2& p) {
+    if (p.x < 0 || p.y < 0 || p.x >= width_ || p.y >= height_) return;
+    counts_[static_cast<std::size_t>(row(p.y) * columns_ + column(p.x))] = 1;
   }
 
   void sum() {
     sums_.assign(static_cast<std::size_t>((columns_ + 1) * (rows_ + 1)), 0);
     for (int y = 0; y < rows_; ++y)
       for (int x = 0; x < columns_; ++x) {
-        sums_[at(x + 1, y + 1)] = marks_[static_cast<std::size_t>(y * columns_ + x)] + sums_[at(x, y + 1)] +
+        sums_[at(x + 1, y + 1)] = counts_[static_cast<std::size_t>(y * columns_ + x)] + sums_[at(x, y + 1)] +
                                   sums_[at(x + 1, y)] - sums_[at(x, y)];
       }
   }
 
-  // Whether the box lies inside the viewport and meets no marked cell.
-  bool clear(const Box& box) const {
-    const glm::dvec2 lo = box.min - kMarginPx;
-    const glm::dvec2 hi = box.max + kMarginPx;
-    if (!(lo.x >= 0 && lo.y >= 0 && hi.x <= width_ && hi.y <= height_)) return false;
-    const int x0 = column(lo.x), x1 = column(hi.x) + 1, y0 = row(lo.y), y1 = row(hi.y) + 1;
-    return sums_[at(x1, y1)] - sums_[at(x0, y1)] - sums_[at(x1, y0)] + sums_[at(x0, y0)] == 0;
+  // Whether a cell the box overlaps was counted.
+  bool any_overlapping(const Box& box) const {
+    return count(column(box.min.x), column(box.max.x) + 1, row(box.min.y), row(box.max.y) + 1) > 0;
+  }
+  // Whether a cell wholly inside the box was counted.
+  bool any_inside(const Box& box) const {
+    const int x0 = static_cast<int>(std::ceil(box.min.x / kCellPx)), x1 = static_cast<int>(std::floor(box.max.x / kCellPx));
+    const int y0 = static_cast<int>(std::ceil(box.min.y / kCellPx)), y1 = static_cast<int>(std::floor(box.max.y / kCellPx));
+    if (x1 <= x0 || y1 <= y0) return false;
+    return count(std::max(x0, 0), std::min(x1, columns_), std::max(y0, 0), std::min(y1, rows_)) > 0;
+  }
+  bool holds(const Box& box) const {
+    return box.min.x >= 0 && box.min.y >= 0 && box.max.x <= width_ && box.max.y <= height_;
   }
 
  private:
   int column(double x) const { return std::clamp(static_cast<int>(std::floor(x / kCellPx)), 0, columns_ - 1); }
   int row(double y) const { return std::clamp(static_cast<int>(std::floor(y / kCellPx)), 0, rows_ - 1); }
   std::size_t at(int x, int y) const { return static_cast<std::size_t>(y * (columns_ + 1) + x); }
+  // Counted cells in columns [x0, x1) and rows [y0, y1).
+  std::int32_t count(int x0, int x1, int y0, int y1) const {
+    if (x1 <= x0 || y1 <= y0) return 0;
+    return sums_[at(x1, y1)] - sums_[at(x0, y1)] - sums_[at(x1, y0)] + sums_[at(x0, y0)];
+  }
 
-  double width_, height_;
-  int columns_, rows_;
-  std::vector<std::uint8_t> marks_;
+  double width_ = 0, height_ = 0;
+  int columns_ = 0, rows_ = 0;
+  std::vector<std::uint8_t> counts_;
   std::vector<std::int32_t> sums_;
 };
 
-// Clip → window pixels (y up, as GL rasterizes); nullopt outside the depth
-// range or behind the eye, where the cut would end the cover.
-std::optional<glm::dvec2> to_window(const glm::dvec4& clip, const HullCullView& view) {
-  if (!(clip.w > 0.0) || !(std::abs(clip.z) <= clip.w) || !std::isfinite(clip.x) || !std::isfinite(clip.y)) {
-    return std::nullopt;
-  }
-  return glm::dvec2((clip.x / clip.w + 1.0) * 0.5 * view.viewport_width,
-                    (clip.y / clip.w + 1.0) * 0.5 * view.viewport_height);
+// What one call leaves for the next: its buffers, so a frame allocates
+// nothing (the render thread is the only caller).
+struct Scratch {
+  std::vector<ProjectedVertex> vertices;
+  std::vector<std::uint8_t> drawn;
+  std::vector<Box> boxes;
+  CellCounts ends;
+  CellCounts covered;
+};
+
+bool in_depth_range(const glm::dvec4& clip) {
+  return clip.w > 0.0 && std::abs(clip.z) <= clip.w && std::isfinite(clip.x) && std::isfinite(clip.y);
 }
 
-// hull.vert in double: the corner moves along its offset by at most the
-// full width (its obliquity factor only shortens the move, and the moved
-// point stays on the segment, whose image is a segment).
-std::optional<ProjectedVertex> project(const HullCullMesh& mesh, std::uint32_t v, const HullCullView& view) {
-  const glm::dvec3 position = glm::dvec3(view.model * glm::dvec4(glm::dvec3(mesh.position(v)), 1.0));
-  const glm::dvec4 clip = view.clip * glm::dvec4(position, 1.0);
-  const std::optional<glm::dvec2> window = to_window(clip, view);
-  if (!window) return std::nullopt;
-  const glm::dvec3 raw(mesh.outline_offset(v));
-  const glm::dvec3 turned = view.normal_matrix * raw;
-  const double turned_len = glm::length(turned);
-  const glm::dvec3 offset = turned_len > 0.0 ? turned * (glm::length(raw) / turned_len) : glm::dvec3(0.0);
-  const double distance = view.width_px * view.world_per_px_at_w1 * std::abs(clip.w);
-  const std::optional<glm::dvec2> moved = to_window(view.clip * glm::dvec4(position + offset * distance, 1.0), view);
-  if (!moved) return std::nullopt;
-  ProjectedVertex out{*window, {}};
-  out.reach.add(*window);
-  out.reach.add(*moved);
-  return out;
+// hull.vert in double for every vertex the level uses: the corner moves
+// along its offset by at most the full width (its obliquity factor only
+// shortens the move, and the moved point stays on the segment, whose image
+// is a segment). False where a vertex or its corner lies outside the depth
+// range or behind the eye, where the cut would end the cover.
+bool project_vertices(const HullCullMesh& mesh, const HullCullView& view, std::vector<ProjectedVertex>& out) {
+  const glm::dmat4 to_clip = view.clip * view.model;
+  const double px_per_world_at_w1 = view.width_px * view.world_per_px_at_w1;
+  const glm::dvec2 half_viewport(0.5 * view.viewport_width, 0.5 * view.viewport_height);
+  const auto window = [&](const glm::dvec4& clip) { return (glm::dvec2(clip) / clip.w + 1.0) * half_viewport; };
+  for (std::uint32_t v : mesh.used_vertices()) {
+    const glm::dvec4 clip = to_clip * glm::dvec4(glm::dvec3(mesh.position(v)), 1.0);
+    const glm::dvec3 turned = view.normal_matrix * glm::dvec3(mesh.outline_offset(v));
+    const double turned_len = glm::length(turned);
+    const double distance = px_per_world_at_w1 * std::abs(clip.w);
+    const double scale = turned_len > 0.0 ? mesh.outline_offset_length(v) / turned_len * distance : 0.0;
+    const glm::dvec4 moved = clip + view.clip * glm::dvec4(turned * scale, 0.0);
+    if (!in_depth_range(clip) || !in_depth_range(moved)) return false;
+    ProjectedVertex& p = out[v];
+    p.window = window(clip);
+    const glm::dvec2 corner = window(moved);
+    p.reach_min = glm::vec2(glm::min(p.window, corner));
+    p.reach_max = glm::vec2(glm::max(p.window, corner));
+  }
+  return true;
 }
 
 // Twice the signed area, counter-clockwise positive, when its sign holds
-// for any move of the corners within the slack; 0 where it may not.
+// for any move of the corners within the slack; 0 where it may not. (The
+// sides' lengths are bounded by |dx| + |dy|.)
 double trusted_area2(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
-  const glm::dvec2 ab = b - a, ac = c - a;
+  const glm::dvec2 ab = b - a, ac = c - a, bc = c - b;
   const double area2 = ab.x * ac.y - ab.y * ac.x;
-  const double perimeter = glm::length(ab) + glm::length(ac) + glm::length(c - b);
-  const double doubt = 2.0 * kVertexSlackPx * perimeter + 4.0 * kVertexSlackPx * kVertexSlackPx;
+  const glm::dvec2 sides = glm::abs(ab) + glm::abs(ac) + glm::abs(bc);
+  const double doubt = 2.0 * kVertexSlackPx * (sides.x + sides.y) + 4.0 * kVertexSlackPx * kVertexSlackPx;
   return std::abs(area2) > doubt ? area2 : 0.0;
 }
 
@@ -192,52 +226,69 @@ HullCullMesh::HullCullMesh(std::span<const glm::vec3> positions, std::span<const
       submeshes_(submeshes.begin(), submeshes.end()) {
   used_ = indices_;
   std::sort(used_.begin(), used_.end());
+  offset_lengths_.resize(offsets_.size());
+  for (std::size_t v = 0; v < offsets_.size(); ++v) offset_lengths_[v] = glm::length(glm::dvec3(offsets_[v]));
   used_.erase(std::unique(used_.begin(), used_.end()), used_.end());
   neighbours_ = edge_neighbours(indices_, weld_by_position(positions_, used_));
 }
 
 std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, const HullCullView& view) {
   if (view.viewport_width <= 0 || view.viewport_height <= 0) return std::nullopt;
-  std::vector<ProjectedVertex> vertices(mesh.used_vertices().empty() ? 0 : mesh.used_vertices().back() + 1);
-  for (std::uint32_t v : mesh.used_vertices()) {
-    const std::optional<ProjectedVertex> projected = project(mesh, v, view);
-    if (!projected) return std::nullopt;
-    vertices[v] = *projected;
-  }
+  static thread_local Scratch scratch;
+  std::vector<ProjectedVertex>& vertices = scratch.vertices;
+  vertices.resize(mesh.used_vertices().empty() ? 0 : mesh.used_vertices().back() + 1);
+  if (!project_vertices(mesh, view, vertices)) return std::nullopt;
   const std::span<const std::uint32_t> indices = mesh.indices();
   const std::size_t triangles = indices.size() / 3;
-  // The faces the main pass draws, with a winding no rounding can flip.
+  // The faces the main pass draws, with a winding no rounding can flip, and
+  // the box round each face and its hull face.
   const double drawn_sign = view.drawn_clockwise ? -1.0 : 1.0;
-  std::vector<std::uint8_t> drawn(triangles);
+  std::vector<std::uint8_t>& drawn = scratch.drawn;
+  std::vector<Box>& boxes = scratch.boxes;
+  drawn.resize(triangles);
+  boxes.resize(triangles);
   for (std::size_t t = 0; t < triangles; ++t) {
-    const double area2 = trusted_area2(vertices[indices[3 * t]].window, vertices[indices[3 * t + 1]].window,
-                                       vertices[indices[3 * t + 2]].window);
-    drawn[t] = area2 * drawn_sign > 0.0;
+    const ProjectedVertex& a = vertices[indices[3 * t]];
+    const ProjectedVertex& b = vertices[indices[3 * t + 1]];
+    const ProjectedVertex& c = vertices[indices[3 * t + 2]];
+    drawn[t] = trusted_area2(a.window, b.window, c.window) * drawn_sign > 0.0;
+    boxes[t].min = glm::dvec2(glm::min(glm::min(a.reach_min, b.reach_min), c.reach_min)) - kMarginPx;
+    boxes[t].max = glm::dvec2(glm::max(glm::max(a.reach_max, b.reach_max), c.reach_max)) + kMarginPx;
   }
-  EndGrid ends(view.viewport_width, view.viewport_height);
+  // Where the drawn faces' cover may end (their edges not shared with
+  // another drawn face), and where a point it holds lies (their middles).
+  CellCounts& ends = scratch.ends;
+  CellCounts& covered = scratch.covered;
+  ends.reset(view.viewport_width, view.viewport_height);
+  covered.reset(view.viewport_width, view.viewport_height);
   for (std::size_t t = 0; t < triangles; ++t) {
     if (!drawn[t]) continue;
+    const glm::dvec2* corner[3];
+    for (std::size_t c = 0; c < 3; ++c) corner[c] = &vertices[indices[3 * t + c]].window;
+    covered.add_point((*corner[0] + *corner[1] + *corner[2]) / 3.0);
     for (int k = 0; k < 3; ++k) {
       const std::int32_t other = mesh.neighbour(t, k);
       if (other >= 0 && drawn[static_cast<std::size_t>(other)]) continue;
-      ends.mark(vertices[indices[3 * t + static_cast<std::size_t>(k)]].window,
-                vertices[indices[3 * t + static_cast<std::size_t>((k + 1) % 3)]].window);
+      ends.add_box(*corner[k], *corner[(k + 1) % 3]);
     }
   }
   ends.sum();
+  covered.sum();
+  // A face whose box holds a covered point (its own face, if drawn, or a
+  // drawn face's middle) and meets no end of the cover lies wholly inside
+  // it, whichever way it or its hull face turns.
+  const auto cannot_show = [&](std::size_t t) {
+    const Box& box = boxes[t];
+    return ends.holds(box) && !ends.any_overlapping(box) && (drawn[t] || covered.any_inside(box));
+  };
   HullSubset out;
   out.indices.reserve(indices.size());
   for (const scene::Submesh& sub : mesh.submeshes()) {
     scene::Submesh kept{static_cast<std::uint32_t>(out.indices.size()), 0, sub.material};
     for (std::size_t e = sub.first_index; e < sub.first_index + sub.index_count; e += 3) {
-      const std::size_t t = e / 3;
-      if (drawn[t]) {
-        Box box;
-        for (std::size_t c = 0; c < 3; ++c) box.add(vertices[indices[e + c]].reach);
-        if (ends.clear(box)) {
-          ++out.culled_triangles;
-          continue;
-        }
+      if (cannot_show(e / 3)) {
+        ++out.culled_triangles;
+        continue;
       }
       out.indices.insert(out.indices.end(), &indices[e], &indices[e] + 3);
     }

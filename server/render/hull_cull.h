@@ -5,15 +5,16 @@
 // The hull draws only outside the stencil mark the main pass left, that is
 // outside every sample the model's drawn faces cover. A hull face comes
 // from one model face T, moved out by at most the outline's width. Take a
-// box round T and its hull face. When T is one of the faces the main pass
-// draws and no edge where the drawn faces' cover can end (an edge drawn on
-// one side only: the silhouette, a hole's rim, a face turned away or too
-// thin to say which way it turns, an edge three faces share) crosses that
-// box, the box is connected, holds a covered point (T itself) and meets no
-// end of the cover: all of it is covered, every sample the hull face could
-// reach is marked, and leaving the face out changes no byte. Everything is
-// bounded with a margin well above float rounding and the rasterizer's
-// snapping of vertices to its sub-pixel grid.
+// box round T and its hull face. Where no edge at which the drawn faces'
+// cover can end (an edge drawn on one side only: the silhouette, a hole's
+// rim, a fold, a face too thin to say which way it turns, an edge three
+// faces share) crosses that box, and the box holds a covered point (T
+// itself when the main pass draws it, else the middle of a face it draws),
+// the box is connected, holds a covered point and meets no end of the
+// cover: all of it is covered, every sample the hull face could reach is
+// marked, and leaving the face out changes no byte, whichever way T and
+// its hull face turn. Everything is bounded with a margin well above float
+// rounding and the rasterizer's snapping of vertices to its sub-pixel grid.
 //
 // On a CPU rasterizer setting up and binning a triangle costs the recording
 // thread more than this test does; on a GPU it does not pay (renderer.h).
@@ -47,6 +48,7 @@ class HullCullMesh {
   std::span<const std::uint32_t> used_vertices() const { return used_; }
   const glm::vec3& position(std::uint32_t v) const { return positions_[v]; }
   const glm::vec3& outline_offset(std::uint32_t v) const { return offsets_[v]; }
+  double outline_offset_length(std::uint32_t v) const { return offset_lengths_[v]; }
 
  private:
   std::span<const glm::vec3> positions_;
@@ -55,6 +57,7 @@ class HullCullMesh {
   std::vector<scene::Submesh> submeshes_;
   std::vector<std::int32_t> neighbours_;
   std::vector<std::uint32_t> used_;  // every vertex a triangle of the level uses, once
+  std::vector<double> offset_lengths_;
 };
 
 // How the hull of one object is drawn in this frame: hull.vert's inputs.
@@ -79,9 +82,16 @@ struct HullSubset {
   std::size_t culled_triangles = 0;
 };
 
+// One object's cull: its level's mesh and the frame's view of it.
+struct HullCullInput {
+  const HullCullMesh* mesh = nullptr;
+  HullCullView view;
+};
+
 // nullopt where the test cannot be made (a vertex or its hull corner
 // outside the near or far plane: the cover then ends along the plane's cut,
 // not at an edge): the whole hull is drawn.
+// Any thread; one call at a time per thread.
 std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, const HullCullView& view);
 
 }  // namespace toond::render

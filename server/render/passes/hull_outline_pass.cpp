@@ -1,6 +1,8 @@
 #include <algorithm>
+#include <future>
 #include <limits>
 #include <optional>
+#include <span>
 
 #include "render/passes/outline_colour.h"
 #include "render/passes/passes.h"
@@ -22,11 +24,12 @@ double hull_reach(const FrameContext& frame, double world_per_px) {
   return k * w_max / (1.0 - k);
 }
 
-// Object i's hull faces that may show (render/hull_cull.h), or nullopt
-// where all are drawn: the cull is off, the object is posed (its vertices
-// are not the ones kept on the CPU), or a material is cut out by its alpha
-// (the main pass then leaves samples of its faces unmarked).
-std::optional<HullSubset> faces_that_may_show(const PassContext& context, std::size_t i) {
+// What object i's cull reads, or nullopt where its whole hull is drawn:
+// the cull is off, the object is posed (its vertices are not the ones kept
+// on the CPU), or a material is cut out by its alpha (the main pass then
+// leaves samples of its faces unmarked). Builds the level's cull mesh on
+// first use, so render thread only.
+std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t i) {
   const FrameContext& frame = context.frame;
   const GpuModel& model = frame.objects[i].model;
   if (!context.cull_hull || !frame.plan.stencil_mark || model.has_masked_materials()) return std::nullopt;
@@ -42,7 +45,7 @@ std::optional<HullSubset> faces_that_may_show(const PassContext& context, std::s
   view.viewport_width = frame.draw_width;
   view.viewport_height = frame.draw_height;
   view.drawn_clockwise = frame.main_faces[i].hidden == HiddenFaces::Front;
-  return hull_faces_that_may_show(*mesh, view);
+  return HullCullInput{mesh, view};
 }
 
 // Every object's faces that may show, in one element buffer.
@@ -54,14 +57,18 @@ struct HullFaces {
 
 HullFaces hull_faces(PassContext& context) {
   HullFaces out;
-  std::vector<std::uint32_t> all;
-  for (std::size_t i = 0; i < context.frame.objects.size(); ++i) {
-    out.subsets.push_back(faces_that_may_show(context, i));
-    if (out.subsets.back()) context.hull_faces_culled += out.subsets.back()->culled_triangles;
-    out.first.push_back(all.size());
-    if (out.subsets.back()) all.insert(all.end(), out.subsets.back()->indices.begin(), out.subsets.back()->indices.end());
+  out.subsets = context.hull_cull.valid() ? context.hull_cull.get()
+                                          : std::vector<std::optional<HullSubset>>(context.frame.objects.size());
+  std::vector<std::span<const std::uint32_t>> parts;
+  std::size_t count = 0;
+  for (const std::optional<HullSubset>& subset : out.subsets) {
+    out.first.push_back(count);
+    if (!subset) continue;
+    context.hull_faces_culled += subset->culled_triangles;
+    parts.push_back(subset->indices);
+    count += parts.back().size();
   }
-  if (!all.empty()) out.buffer = &context.resources.hull_indices(all);
+  if (count > 0) out.buffer = &context.resources.hull_indices(parts);
   return out;
 }
 
@@ -118,6 +125,25 @@ void draw_hull_outline_pass(PassContext& context) {
     return hull;
   };
   draw_objects(frame, context.blocks, {.faces = skip, .draw = [&](std::size_t i) { draw_hull_of(frame, faces, i); }});
+}
+
+void start_hull_cull(PassContext& context) {
+  std::vector<std::optional<HullCullInput>> inputs;
+  bool any = false;
+  for (std::size_t i = 0; i < context.frame.objects.size(); ++i) {
+    inputs.push_back(cull_input(context, i));
+    any = any || inputs.back().has_value();
+  }
+  if (!any) return;
+  // Off the render thread: it records the main pass meanwhile, which on a
+  // CPU rasterizer takes longer than this.
+  context.hull_cull = std::async(std::launch::async, [inputs = std::move(inputs)] {
+    std::vector<std::optional<HullSubset>> subsets;
+    for (const std::optional<HullCullInput>& input : inputs) {
+      subsets.push_back(input ? hull_faces_that_may_show(*input->mesh, input->view) : std::nullopt);
+    }
+    return subsets;
+  });
 }
 
 }  // namespace toond::render

@@ -2,6 +2,8 @@
 // What a pass draws with: the frame worked out before the first pass, its
 // uniform blocks, the programs, the kept GL objects and the frame's target.
 // Render thread only.
+#include <future>
+#include <optional>
 #include <vector>
 
 #include "gpu/gl_object.h"
@@ -10,6 +12,7 @@
 #include "render/frame_blocks.h"
 #include "render/frame_context.h"
 #include "render/frame_resources.h"
+#include "render/hull_cull.h"
 
 namespace toond::render {
 
@@ -27,6 +30,8 @@ struct PassContext {
   std::vector<gpu::Query> main_cap_checks;
   // Whether the hull leaves out the faces that cannot show (render/hull_cull.h).
   bool cull_hull = false;
+  // Started before the first pass (start_hull_cull), taken by the hull pass.
+  std::future<std::vector<std::optional<HullSubset>>> hull_cull{};
   std::size_t hull_faces_culled = 0;  // reported in RenderOutput
 };
 

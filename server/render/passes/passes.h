@@ -18,6 +18,11 @@ void draw_edge_pass(PassContext& context);
 void draw_layer_pass(PassContext& context);      // depth, normal or id in place of the colour
 void draw_downsample_pass(PassContext& context);  // supersampling's box filter into the output size
 
+// Starts working out, off the render thread, which of the hull's faces
+// may show (render/hull_cull.h), for draw_hull_outline_pass to take; called
+// before the first pass of a frame whose plan has the hull.
+void start_hull_cull(PassContext& context);
+
 using DrawPass = void (*)(PassContext&);
 
 // The function that draws `pass`; nullptr for the steps the renderer runs
