@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gpu/program_cache.h"
+#include "render/background_thread.h"
 #include "render/draw_pacing.h"
 #include "render/frame_context.h"
 #include "render/frame_resources.h"
@@ -67,6 +68,7 @@ class Renderer {
   // whether GPU time is counted and how pixels come back.
   std::optional<bool> real_gpu_;
   FrameResources resources_;
+  BackgroundThread background_;
 };
 
 }  // namespace toond::render

@@ -134,10 +134,10 @@ void start_hull_cull(PassContext& context) {
     inputs.push_back(cull_input(context, i));
     any = any || inputs.back().has_value();
   }
-  if (!any) return;
+  if (!any || !context.background) return;
   // Off the render thread: it records the main pass meanwhile, which on a
   // CPU rasterizer takes longer than this.
-  context.hull_cull = std::async(std::launch::async, [inputs = std::move(inputs)] {
+  context.hull_cull = context.background->run<std::vector<std::optional<HullSubset>>>([inputs = std::move(inputs)] {
     std::vector<std::optional<HullSubset>> subsets;
     for (const std::optional<HullCullInput>& input : inputs) {
       subsets.push_back(input ? hull_faces_that_may_show(*input->mesh, input->view) : std::nullopt);

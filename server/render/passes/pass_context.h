@@ -9,6 +9,7 @@
 #include "gpu/gl_object.h"
 #include "gpu/program_cache.h"
 #include "gpu/render_target.h"
+#include "render/background_thread.h"
 #include "render/frame_blocks.h"
 #include "render/frame_context.h"
 #include "render/frame_resources.h"
@@ -30,6 +31,8 @@ struct PassContext {
   std::vector<gpu::Query> main_cap_checks;
   // Whether the hull leaves out the faces that cannot show (render/hull_cull.h).
   bool cull_hull = false;
+  // Where work is handed off while the passes record (the hull cull).
+  BackgroundThread* background = nullptr;
   // Started before the first pass (start_hull_cull), taken by the hull pass.
   std::future<std::vector<std::optional<HullSubset>>> hull_cull{};
   std::size_t hull_faces_culled = 0;  // reported in RenderOutput
