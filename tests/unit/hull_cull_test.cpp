@@ -164,6 +164,17 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {
       import_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::None}));
   // The cube's twelve faces all reach its silhouette: it keeps them all.
   expect_same_image({{&cube, glm::dmat4(1.0)}}, requests().front(), "cube");
+  // A one-sided disk seen from behind: the main pass draws its faces turned
+  // away (it has no inside to hide), none of them counted as covering, so
+  // no face has a covered point in its box and none may be left out.
+  const scene::Model disk = import_obj(test::disk_obj(96));
+  for (const int yaw : {0, 180}) {
+    const std::size_t culled =
+        expect_same_image({{&disk, glm::dmat4(1.0)}}, {{"width", 160}, {"height", 160}, {"camera", {{"yaw", yaw}}}}, "disk");
+    if (yaw == 180) {
+      EXPECT_EQ(culled, 0u);
+    }
+  }
   for (const auto& [model, what] : {std::pair{&sphere, "sphere"}, std::pair{&messy, "messy"},
                                     std::pair{&faceted, "per-face normals"}, std::pair{&bare, "no normals"}}) {
     for (const nlohmann::json& request : requests()) {
