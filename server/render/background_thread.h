@@ -3,11 +3,14 @@
 // records its passes (the hull cull, render/hull_cull.h). A thread started
 // per frame would cost its start and, worse, fresh pages for its buffers
 // every time; this one keeps both. Jobs run one at a time, in order. No GL.
+#include <atomic>
 #include <condition_variable>
+#include <exception>
 #include <deque>
 #include <functional>
 #include <future>
 #include <mutex>
+#include <memory>
 #include <thread>
 
 namespace toond::render {
@@ -19,17 +22,10 @@ class BackgroundThread {
   BackgroundThread(const BackgroundThread&) = delete;
   BackgroundThread& operator=(const BackgroundThread&) = delete;
 
-  // Runs `job` on the thread; the future holds its result or its exception.
-  template <class Result>
-  std::future<Result> run(std::function<Result()> job) {
-    auto task = std::make_shared<std::packaged_task<Result()>>(std::move(job));
-    std::future<Result> result = task->get_future();
-    post([task] { (*task)(); });
-    return result;
-  }
+  // Queues `job` to run on the thread.
+  void post(std::function<void()> job);
 
  private:
-  void post(std::function<void()> job);
   void loop();
 
   std::mutex mutex_;
@@ -37,6 +33,57 @@ class BackgroundThread {
   std::deque<std::function<void()>> jobs_;
   bool stopping_ = false;
   std::thread thread_;
+};
+
+// A job handed to the background thread for a result the caller needs
+// later. Where the thread has not finished it by then, the caller runs it
+// itself: a thread just woken, or preempted, waits behind busy ones (a CPU
+// rasterizer's) for up to a scheduler tick (4 ms measured), several times
+// what such a job takes. So the job may run twice at once: it must only
+// read what it captured, and own or share all of that (it may still run
+// after the caller has gone on). Dropped untaken, a job not yet begun is
+// skipped. Render thread only, but for the job itself.
+template <class Result>
+class Handoff {
+ public:
+  Handoff() = default;
+  Handoff(BackgroundThread& thread, std::function<Result()> job) : state_(std::make_shared<State>(std::move(job))) {
+    thread.post([state = state_] { state->run_there(); });
+  }
+  Handoff(Handoff&&) = default;
+  Handoff& operator=(Handoff&&) = default;
+  ~Handoff() {
+    if (state_) state_->begun.store(true);
+  }
+
+  bool valid() const { return state_ != nullptr; }
+  // The thread's result if it has one, else the job's run here.
+  Result take() {
+    const std::shared_ptr<State> state = std::move(state_);
+    state->begun.store(true);
+    if (state->ended.load(std::memory_order_acquire)) return state->result.get();
+    return state->job();
+  }
+
+ private:
+  struct State {
+    explicit State(std::function<Result()> j) : job(std::move(j)), result(done.get_future()) {}
+    void run_there() {
+      if (begun.exchange(true)) return;
+      try {
+        done.set_value(job());
+      } catch (...) {
+        done.set_exception(std::current_exception());
+      }
+      ended.store(true, std::memory_order_release);
+    }
+    const std::function<Result()> job;
+    std::atomic<bool> begun{false};
+    std::atomic<bool> ended{false};
+    std::promise<Result> done;
+    std::future<Result> result;
+  };
+  std::shared_ptr<State> state_;
 };
 
 }  // namespace toond::render

@@ -113,8 +113,8 @@ GpuModel::GpuModel(const scene::Model& model)
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
                        indices.data(), 0);
   gpu_bytes_ = vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
-  rest_positions_ = mesh.positions;
-  outline_offsets_ = mesh.outline_normals;
+  rest_positions_ = std::make_shared<const std::vector<glm::vec3>>(mesh.positions);
+  outline_offsets_ = std::make_shared<const std::vector<glm::vec3>>(mesh.outline_normals);
   all_indices_ = std::move(indices);
 
   vao_ = gpu::VertexArray::create();
@@ -216,17 +216,17 @@ void GpuModel::draw_from(const gpu::Buffer& indices, std::size_t index_count, st
   glVertexArrayElementBuffer(vao_.id(), indices_.id());
 }
 
-const HullCullMesh* GpuModel::hull_cull_mesh(std::size_t lod) const {
+std::shared_ptr<const HullCullMesh> GpuModel::hull_cull_mesh(std::size_t lod) const {
   if (posed_) return nullptr;
   const Level& level = levels_[lod];
   if (!level.hull_cull) {
     std::vector<scene::Submesh> submeshes = level.submeshes;
     for (scene::Submesh& sub : submeshes) sub.first_index -= static_cast<std::uint32_t>(level.first_index);
-    level.hull_cull = std::make_unique<HullCullMesh>(
+    level.hull_cull = std::make_shared<const HullCullMesh>(
         rest_positions_, outline_offsets_,
         std::span<const std::uint32_t>(all_indices_).subspan(level.first_index, level.index_count), submeshes);
   }
-  return level.hull_cull.get();
+  return level.hull_cull;
 }
 
 void GpuModel::draw_caps(std::size_t lod) const {

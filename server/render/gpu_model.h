@@ -64,7 +64,7 @@ class GpuModel {
   // A level's triangles as the hull cull reads them, built on the first
   // call; null while posed (the vertices the GPU draws are not the rest
   // pose kept here).
-  const HullCullMesh* hull_cull_mesh(std::size_t lod) const;
+  std::shared_ptr<const HullCullMesh> hull_cull_mesh(std::size_t lod) const;
 
   // The submeshes of a level of detail (0 = full detail).
   const std::vector<scene::Submesh>& submeshes(std::size_t lod = 0) const { return levels_[lod].submeshes; }
@@ -130,13 +130,13 @@ class GpuModel {
     std::vector<glm::vec3> posed_caps{};
     std::size_t first_cap_index = 0;  // the caps' range of the index buffer
     std::size_t cap_index_count = 0;
-    mutable std::unique_ptr<HullCullMesh> hull_cull{};
+    mutable std::shared_ptr<const HullCullMesh> hull_cull{};
   };
   std::vector<Level> levels_;
   // The rest pose's positions and outline offsets and every level's
   // indices, kept on the CPU for the hull cull.
-  std::vector<glm::vec3> rest_positions_;
-  std::vector<glm::vec3> outline_offsets_;
+  HullCullMesh::Stream rest_positions_;
+  HullCullMesh::Stream outline_offsets_;
   std::vector<std::uint32_t> all_indices_;
   void pose_into_vertex_buffer(const scene::Model& model, const scene::PoseSums& sums);
   std::vector<double> lod_errors_;

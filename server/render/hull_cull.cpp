@@ -140,19 +140,27 @@ class CellCounts {
     return count(column(box.min.x), column(box.max.x) + 1, row(box.min.y), row(box.max.y) + 1) > 0;
   }
   // Whether a cell wholly inside the box was counted.
+  // Only for a box the viewport holds (its corners are not negative, so
+  // truncating floors).
   bool any_inside(const Box& box) const {
-    const int x0 = static_cast<int>(std::ceil(box.min.x / kCellPx)), x1 = static_cast<int>(std::floor(box.max.x / kCellPx));
-    const int y0 = static_cast<int>(std::ceil(box.min.y / kCellPx)), y1 = static_cast<int>(std::floor(box.max.y / kCellPx));
-    if (x1 <= x0 || y1 <= y0) return false;
-    return count(std::max(x0, 0), std::min(x1, columns_), std::max(y0, 0), std::min(y1, rows_)) > 0;
+    const auto up = [](double v) {
+      const int i = static_cast<int>(v);
+      return i + (i < v ? 1 : 0);
+    };
+    const int x0 = up(box.min.x * (1.0 / kCellPx)), x1 = static_cast<int>(box.max.x * (1.0 / kCellPx));
+    const int y0 = up(box.min.y * (1.0 / kCellPx)), y1 = static_cast<int>(box.max.y * (1.0 / kCellPx));
+    return count(x0, std::min(x1, columns_), y0, std::min(y1, rows_)) > 0;
   }
   bool holds(const Box& box) const {
     return box.min.x >= 0 && box.min.y >= 0 && box.max.x <= width_ && box.max.y <= height_;
   }
 
  private:
-  int column(double x) const { return std::clamp(static_cast<int>(std::floor(x / kCellPx)), 0, columns_ - 1); }
-  int row(double y) const { return std::clamp(static_cast<int>(std::floor(y / kCellPx)), 0, rows_ - 1); }
+  // Clamped first, so truncating is flooring (and no call to floor).
+  int column(double x) const {
+    return std::min(static_cast<int>(std::clamp(x, 0.0, width_) * (1.0 / kCellPx)), columns_ - 1);
+  }
+  int row(double y) const { return std::min(static_cast<int>(std::clamp(y, 0.0, height_) * (1.0 / kCellPx)), rows_ - 1); }
   std::size_t at(int x, int y) const { return static_cast<std::size_t>(y * (columns_ + 1) + x); }
   // Counted cells in columns [x0, x1) and rows [y0, y1).
   std::int32_t count(int x0, int x1, int y0, int y1) const {
@@ -213,23 +221,24 @@ bool project_vertices(const HullCullMesh& mesh, const HullCullView& view, std::v
 double trusted_area2(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
   const glm::dvec2 ab = b - a, ac = c - a, bc = c - b;
   const double area2 = ab.x * ac.y - ab.y * ac.x;
-  const glm::dvec2 sides = glm::abs(ab) + glm::abs(ac) + glm::abs(bc);
-  const double doubt = 2.0 * kVertexSlackPx * (sides.x + sides.y) + 4.0 * kVertexSlackPx * kVertexSlackPx;
+  // std::abs, not glm::abs: glm's compares and branches.
+  const double sides = std::abs(ab.x) + std::abs(ab.y) + std::abs(ac.x) + std::abs(ac.y) + std::abs(bc.x) + std::abs(bc.y);
+  const double doubt = 2.0 * kVertexSlackPx * sides + 4.0 * kVertexSlackPx * kVertexSlackPx;
   return std::abs(area2) > doubt ? area2 : 0.0;
 }
 
 }  // namespace
 
-HullCullMesh::HullCullMesh(std::span<const glm::vec3> positions, std::span<const glm::vec3> outline_offsets,
-                           std::span<const std::uint32_t> indices, std::span<const scene::Submesh> submeshes)
-    : positions_(positions), offsets_(outline_offsets), indices_(indices.begin(), indices.end()),
+HullCullMesh::HullCullMesh(Stream positions, Stream outline_offsets, std::span<const std::uint32_t> indices,
+                           std::span<const scene::Submesh> submeshes)
+    : positions_(std::move(positions)), offsets_(std::move(outline_offsets)), indices_(indices.begin(), indices.end()),
       submeshes_(submeshes.begin(), submeshes.end()) {
   used_ = indices_;
   std::sort(used_.begin(), used_.end());
-  offset_lengths_.resize(offsets_.size());
-  for (std::size_t v = 0; v < offsets_.size(); ++v) offset_lengths_[v] = glm::length(glm::dvec3(offsets_[v]));
   used_.erase(std::unique(used_.begin(), used_.end()), used_.end());
-  neighbours_ = edge_neighbours(indices_, weld_by_position(positions_, used_));
+  offset_lengths_.resize(offsets_->size());
+  for (std::size_t v = 0; v < offsets_->size(); ++v) offset_lengths_[v] = glm::length(glm::dvec3((*offsets_)[v]));
+  neighbours_ = edge_neighbours(indices_, weld_by_position(*positions_, used_));
 }
 
 std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, const HullCullView& view) {

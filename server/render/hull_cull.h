@@ -20,6 +20,7 @@
 // thread more than this test does; on a GPU it does not pay (renderer.h).
 // Pure arithmetic, no GL.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -35,9 +36,11 @@ namespace toond::render {
 class HullCullMesh {
  public:
   // `indices` and `submeshes` are the level's (submeshes index `indices`);
-  // positions and outline offsets are the mesh's whole vertex streams.
-  HullCullMesh(std::span<const glm::vec3> positions, std::span<const glm::vec3> outline_offsets,
-               std::span<const std::uint32_t> indices, std::span<const scene::Submesh> submeshes);
+  // positions and outline offsets are the mesh's whole vertex streams,
+  // shared so a cull still running on another thread keeps them.
+  using Stream = std::shared_ptr<const std::vector<glm::vec3>>;
+  HullCullMesh(Stream positions, Stream outline_offsets, std::span<const std::uint32_t> indices,
+               std::span<const scene::Submesh> submeshes);
 
   std::span<const std::uint32_t> indices() const { return indices_; }
   std::span<const scene::Submesh> submeshes() const { return submeshes_; }
@@ -46,13 +49,13 @@ class HullCullMesh {
   // -1 where there is none, or more than one, or it runs the same way.
   std::int32_t neighbour(std::size_t t, int k) const { return neighbours_[3 * t + static_cast<std::size_t>(k)]; }
   std::span<const std::uint32_t> used_vertices() const { return used_; }
-  const glm::vec3& position(std::uint32_t v) const { return positions_[v]; }
-  const glm::vec3& outline_offset(std::uint32_t v) const { return offsets_[v]; }
+  const glm::vec3& position(std::uint32_t v) const { return (*positions_)[v]; }
+  const glm::vec3& outline_offset(std::uint32_t v) const { return (*offsets_)[v]; }
   double outline_offset_length(std::uint32_t v) const { return offset_lengths_[v]; }
 
  private:
-  std::span<const glm::vec3> positions_;
-  std::span<const glm::vec3> offsets_;
+  Stream positions_;
+  Stream offsets_;
   std::vector<std::uint32_t> indices_;
   std::vector<scene::Submesh> submeshes_;
   std::vector<std::int32_t> neighbours_;
@@ -84,7 +87,7 @@ struct HullSubset {
 
 // One object's cull: its level's mesh and the frame's view of it.
 struct HullCullInput {
-  const HullCullMesh* mesh = nullptr;
+  std::shared_ptr<const HullCullMesh> mesh;
   HullCullView view;
 };
 

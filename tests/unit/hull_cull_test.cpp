@@ -30,10 +30,13 @@ scene::Model import_obj(const std::string& obj) {
   return scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", obj}}));
 }
 
+HullCullMesh::Stream stream(const std::vector<glm::vec3>& values) {
+  return std::make_shared<const std::vector<glm::vec3>>(values);
+}
+
 HullCullMesh mesh_of(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
-  static const std::vector<glm::vec3> kNoOffsets(64, glm::vec3(0.0f));
   const std::vector<scene::Submesh> one = {{0, static_cast<std::uint32_t>(indices.size()), 0}};
-  return HullCullMesh(positions, std::span(kNoOffsets).first(positions.size()), indices, one);
+  return HullCullMesh(stream(positions), stream(std::vector<glm::vec3>(positions.size(), glm::vec3(0.0f))), indices, one);
 }
 
 TEST(HullCull, OnlyAnEdgeWalkedOnceEachWayByTwoFacesHasANeighbour) {
@@ -67,7 +70,7 @@ HullCullView sphere_view(int size, double width_px) {
 TEST(HullCull, ASphereKeepsOnlyTheFacesNearItsSilhouette) {
   const scene::Model sphere = import_obj(test::sphere_obj(96, 48));
   const scene::Mesh& mesh = sphere.mesh;
-  const HullCullMesh cull(mesh.positions, mesh.outline_normals, mesh.indices, mesh.submeshes);
+  const HullCullMesh cull(stream(mesh.positions), stream(mesh.outline_normals), mesh.indices, mesh.submeshes);
   const int size = 256;
   const double width = 3.0;
   const std::optional<HullSubset> subset = hull_faces_that_may_show(cull, sphere_view(size, width));
@@ -97,7 +100,7 @@ TEST(HullCull, ASphereKeepsOnlyTheFacesNearItsSilhouette) {
 
 TEST(HullCull, AVertexOutsideTheDepthRangeTurnsTheCullOff) {
   const scene::Model sphere = import_obj(test::sphere_obj(24, 12));
-  const HullCullMesh cull(sphere.mesh.positions, sphere.mesh.outline_normals, sphere.mesh.indices,
+  const HullCullMesh cull(stream(sphere.mesh.positions), stream(sphere.mesh.outline_normals), sphere.mesh.indices,
                           sphere.mesh.submeshes);
   HullCullView view = sphere_view(128, 2.0);
   EXPECT_TRUE(hull_faces_that_may_show(cull, view));

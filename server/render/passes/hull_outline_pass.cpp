@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <future>
 #include <limits>
 #include <optional>
 #include <span>
@@ -33,7 +32,7 @@ std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t 
   const FrameContext& frame = context.frame;
   const GpuModel& model = frame.objects[i].model;
   if (!context.cull_hull || !frame.plan.stencil_mark || model.has_masked_materials()) return std::nullopt;
-  const HullCullMesh* mesh = model.hull_cull_mesh(frame.lod_of(i));
+  std::shared_ptr<const HullCullMesh> mesh = model.hull_cull_mesh(frame.lod_of(i));
   if (!mesh) return std::nullopt;
   const glm::dmat4& placement = frame.scene.matrices[i];
   HullCullView view;
@@ -45,7 +44,7 @@ std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t 
   view.viewport_width = frame.draw_width;
   view.viewport_height = frame.draw_height;
   view.drawn_clockwise = frame.main_faces[i].hidden == HiddenFaces::Front;
-  return HullCullInput{mesh, view};
+  return HullCullInput{std::move(mesh), view};
 }
 
 // Every object's faces that may show, in one element buffer.
@@ -57,7 +56,7 @@ struct HullFaces {
 
 HullFaces hull_faces(PassContext& context) {
   HullFaces out;
-  out.subsets = context.hull_cull.valid() ? context.hull_cull.get()
+  out.subsets = context.hull_cull.valid() ? context.hull_cull.take()
                                           : std::vector<std::optional<HullSubset>>(context.frame.objects.size());
   std::vector<std::span<const std::uint32_t>> parts;
   std::size_t count = 0;
@@ -135,9 +134,10 @@ void start_hull_cull(PassContext& context) {
     any = any || inputs.back().has_value();
   }
   if (!any || !context.background) return;
-  // Off the render thread: it records the main pass meanwhile, which on a
-  // CPU rasterizer takes longer than this.
-  context.hull_cull = context.background->run<std::vector<std::optional<HullSubset>>>([inputs = std::move(inputs)] {
+  // Off the render thread, which records the main pass meanwhile (on a CPU
+  // rasterizer that mostly takes longer than this), or on it if the main
+  // pass was recorded first.
+  context.hull_cull = Handoff<std::vector<std::optional<HullSubset>>>(*context.background, [inputs = std::move(inputs)] {
     std::vector<std::optional<HullSubset>> subsets;
     for (const std::optional<HullCullInput>& input : inputs) {
       subsets.push_back(input ? hull_faces_that_may_show(*input->mesh, input->view) : std::nullopt);

@@ -2,7 +2,6 @@
 // What a pass draws with: the frame worked out before the first pass, its
 // uniform blocks, the programs, the kept GL objects and the frame's target.
 // Render thread only.
-#include <future>
 #include <optional>
 #include <vector>
 
@@ -34,7 +33,7 @@ struct PassContext {
   // Where work is handed off while the passes record (the hull cull).
   BackgroundThread* background = nullptr;
   // Started before the first pass (start_hull_cull), taken by the hull pass.
-  std::future<std::vector<std::optional<HullSubset>>> hull_cull{};
+  Handoff<std::vector<std::optional<HullSubset>>> hull_cull{};
   std::size_t hull_faces_culled = 0;  // reported in RenderOutput
 };
 

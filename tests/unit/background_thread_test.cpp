@@ -1,0 +1,120 @@
+// The kept background thread and the jobs handed to it, which the caller
+// runs itself where the thread has not finished them.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <future>
+#include <stdexcept>
+#include <thread>
+
+#include "render/background_thread.h"
+
+namespace toond::render {
+namespace {
+
+using namespace std::chrono_literals;
+
+// Keeps the thread busy until released, so what is queued behind it waits.
+struct Blocker {
+  std::promise<void> release;
+  std::atomic<bool> running{false};
+  void block(BackgroundThread& thread) {
+    thread.post([this, released = release.get_future().share()] {
+      running = true;
+      released.wait();
+    });
+    while (!running) std::this_thread::sleep_for(1ms);
+  }
+};
+
+TEST(BackgroundThread, RunsJobsInOrder) {
+  BackgroundThread thread;
+  std::vector<int> order;
+  std::promise<void> done;
+  for (int i = 0; i < 5; ++i) thread.post([&order, i] { order.push_back(i); });
+  thread.post([&done] { done.set_value(); });
+  done.get_future().wait();
+  EXPECT_EQ(order, (std::vector<int>{0, 1, 2, 3, 4}));
+}
+
+TEST(Handoff, TheCallerRunsAJobTheThreadHasNotBegun) {
+  BackgroundThread thread;
+  Blocker blocker;
+  blocker.block(thread);
+  std::atomic<int> runs{0};
+  const std::thread::id caller = std::this_thread::get_id();
+  Handoff<std::thread::id> job(thread, [&runs] {
+    ++runs;
+    return std::this_thread::get_id();
+  });
+  EXPECT_EQ(job.take(), caller);
+  blocker.release.set_value();
+  // The thread, once free, finds the job taken and skips it.
+  std::promise<void> drained;
+  thread.post([&drained] { drained.set_value(); });
+  drained.get_future().wait();
+  EXPECT_EQ(runs, 1);
+}
+
+TEST(Handoff, TheThreadsResultIsTakenOnceItHasEnded) {
+  BackgroundThread thread;
+  std::atomic<int> runs{0};
+  std::promise<void> ended;
+  Handoff<std::thread::id> job(thread, [&runs] {
+    ++runs;
+    return std::this_thread::get_id();
+  });
+  thread.post([&ended] { ended.set_value(); });
+  ended.get_future().wait();
+  EXPECT_NE(job.take(), std::this_thread::get_id());
+  EXPECT_EQ(runs, 1);
+}
+
+TEST(Handoff, AJobTheThreadIsStillRunningIsRunAgainHere) {
+  BackgroundThread thread;
+  std::promise<void> release;
+  std::shared_future<void> released = release.get_future().share();
+  std::atomic<bool> started{false};
+  std::atomic<int> runs{0};
+  Handoff<int> job(thread, [&, released] {
+    const bool first = runs++ == 0;
+    if (first) {
+      started = true;
+      released.wait();  // the thread's run stalls, as behind a busy rasterizer
+    }
+    return first ? 1 : 2;
+  });
+  while (!started) std::this_thread::sleep_for(1ms);
+  EXPECT_EQ(job.take(), 2);
+  release.set_value();
+  std::promise<void> drained;
+  thread.post([&drained] { drained.set_value(); });
+  drained.get_future().wait();
+  EXPECT_EQ(runs, 2);
+}
+
+TEST(Handoff, AnExceptionReachesTheCaller) {
+  BackgroundThread thread;
+  std::promise<void> ended;
+  Handoff<int> job(thread, []() -> int { throw std::runtime_error("no"); });
+  thread.post([&ended] { ended.set_value(); });
+  ended.get_future().wait();
+  EXPECT_THROW(job.take(), std::runtime_error);
+}
+
+TEST(Handoff, AJobDroppedBeforeItBeganIsSkipped) {
+  BackgroundThread thread;
+  Blocker blocker;
+  blocker.block(thread);
+  std::atomic<int> runs{0};
+  { Handoff<int> job(thread, [&runs] { return ++runs; }); }
+  blocker.release.set_value();
+  std::promise<void> drained;
+  thread.post([&drained] { drained.set_value(); });
+  drained.get_future().wait();
+  EXPECT_EQ(runs, 0);
+}
+
+}  // namespace
+}  // namespace toond::render
