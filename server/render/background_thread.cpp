@@ -21,6 +21,13 @@ void BackgroundThread::post(std::function<void()> job) {
   wake_.notify_one();
 }
 
+void BackgroundThread::drain() {
+  std::promise<void> reached;
+  std::future<void> done = reached.get_future();
+  post([&reached] { reached.set_value(); });
+  done.wait();
+}
+
 // Runs jobs until stopped; the jobs queued by then still run, so no future
 // is left without its result.
 void BackgroundThread::loop() {

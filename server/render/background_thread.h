@@ -22,8 +22,10 @@ class BackgroundThread {
   BackgroundThread(const BackgroundThread&) = delete;
   BackgroundThread& operator=(const BackgroundThread&) = delete;
 
-  // Queues `job` to run on the thread.
+  // Queues `job` to run on the thread. It must not throw.
   void post(std::function<void()> job);
+  // Returns once every job queued before it has run.
+  void drain();
 
  private:
   void loop();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <new>
 #include <span>
 
 #include "render/draw_pacing.h"
@@ -115,7 +116,7 @@ GpuModel::GpuModel(const scene::Model& model)
   gpu_bytes_ = vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
   rest_positions_ = std::make_shared<const std::vector<glm::vec3>>(mesh.positions);
   outline_offsets_ = std::make_shared<const std::vector<glm::vec3>>(mesh.outline_normals);
-  all_indices_ = std::move(indices);
+  all_indices_ = std::make_shared<const std::vector<std::uint32_t>>(std::move(indices));
 
   vao_ = gpu::VertexArray::create();
   glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
@@ -216,17 +217,29 @@ void GpuModel::draw_from(const gpu::Buffer& indices, std::size_t index_count, st
   glVertexArrayElementBuffer(vao_.id(), indices_.id());
 }
 
-std::shared_ptr<const HullCullMesh> GpuModel::hull_cull_mesh(std::size_t lod) const {
+std::shared_ptr<const HullCullMesh> GpuModel::hull_cull_mesh(std::size_t lod, BackgroundThread& builder) const {
   if (posed_) return nullptr;
   const Level& level = levels_[lod];
-  if (!level.hull_cull) {
-    std::vector<scene::Submesh> submeshes = level.submeshes;
-    for (scene::Submesh& sub : submeshes) sub.first_index -= static_cast<std::uint32_t>(level.first_index);
-    level.hull_cull = std::make_shared<const HullCullMesh>(
-        rest_positions_, outline_offsets_,
-        std::span<const std::uint32_t>(all_indices_).subspan(level.first_index, level.index_count), submeshes);
+  {
+    std::lock_guard lock(level.hull_cull->mutex);
+    if (level.hull_cull->mesh || level.hull_cull->building) return level.hull_cull->mesh;
+    level.hull_cull->building = true;
   }
-  return level.hull_cull;
+  std::vector<scene::Submesh> submeshes = level.submeshes;
+  for (scene::Submesh& sub : submeshes) sub.first_index -= static_cast<std::uint32_t>(level.first_index);
+  builder.post([slot = level.hull_cull, positions = rest_positions_, offsets = outline_offsets_, indices = all_indices_,
+                first = level.first_index, count = level.index_count, submeshes = std::move(submeshes)] {
+    std::shared_ptr<const HullCullMesh> mesh;
+    try {
+      mesh = std::make_shared<const HullCullMesh>(
+          positions, offsets, std::span<const std::uint32_t>(*indices).subspan(first, count), submeshes);
+    } catch (const std::bad_alloc&) {
+      return;  // left building: this level's hull is drawn whole
+    }
+    std::lock_guard lock(slot->mutex);
+    slot->mesh = std::move(mesh);
+  });
+  return nullptr;
 }
 
 void GpuModel::draw_caps(std::size_t lod) const {

@@ -6,11 +6,13 @@
 // (render/gpu_skin.h).
 // Created and destroyed on the render thread only.
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "gpu/gl_object.h"
 #include "gpu/uniform_arena.h"
 #include "render/gpu_skin.h"
+#include "render/background_thread.h"
 #include "render/hull_cull.h"
 #include "render/uniform_blocks.h"
 #include "scene/model.h"
@@ -26,6 +28,14 @@ struct GpuMaterial {
   int normal_texture = -1;  // tangent-space normal map, linear
   float alpha_cutoff = -1.0f;  // scene::Material::alpha_cutoff; negative: opaque
   bool unlit = false;
+};
+
+// Where a level's cull mesh lands once built off the render thread; shared
+// with the build, which may outlive the model.
+struct HullCullSlot {
+  std::mutex mutex;
+  std::shared_ptr<const HullCullMesh> mesh;  // guarded by mutex
+  bool building = false;                     // guarded by mutex
 };
 
 class GpuModel {
@@ -61,10 +71,11 @@ class GpuModel {
   // hull's faces that may show, render/hull_cull.h), with this model's
   // vertices; its own indices are bound again after.
   void draw_from(const gpu::Buffer& indices, std::size_t index_count, std::size_t first_index) const;
-  // A level's triangles as the hull cull reads them, built on the first
-  // call; null while posed (the vertices the GPU draws are not the rest
-  // pose kept here).
-  std::shared_ptr<const HullCullMesh> hull_cull_mesh(std::size_t lod) const;
+  // A level's triangles as the hull cull reads them; null while posed (the
+  // vertices the GPU draws are not the rest pose kept here). The first call
+  // has them built on `builder`'s thread (pairing up the edges of a million
+  // faces took 0.65 s, too long to hold a render for): null until then.
+  std::shared_ptr<const HullCullMesh> hull_cull_mesh(std::size_t lod, BackgroundThread& builder) const;
 
   // The submeshes of a level of detail (0 = full detail).
   const std::vector<scene::Submesh>& submeshes(std::size_t lod = 0) const { return levels_[lod].submeshes; }
@@ -130,14 +141,14 @@ class GpuModel {
     std::vector<glm::vec3> posed_caps{};
     std::size_t first_cap_index = 0;  // the caps' range of the index buffer
     std::size_t cap_index_count = 0;
-    mutable std::shared_ptr<const HullCullMesh> hull_cull{};
+    std::shared_ptr<HullCullSlot> hull_cull = std::make_shared<HullCullSlot>();
   };
   std::vector<Level> levels_;
   // The rest pose's positions and outline offsets and every level's
   // indices, kept on the CPU for the hull cull.
   HullCullMesh::Stream rest_positions_;
   HullCullMesh::Stream outline_offsets_;
-  std::vector<std::uint32_t> all_indices_;
+  std::shared_ptr<const std::vector<std::uint32_t>> all_indices_;
   void pose_into_vertex_buffer(const scene::Model& model, const scene::PoseSums& sums);
   std::vector<double> lod_errors_;
   scene::Bounds bounds_;

@@ -29,6 +29,9 @@ class Renderer {
   // setting a triangle up costs the recording thread more than the test.
   // Set for tests that show it changes no byte.
   void set_hull_cull(bool on) { hull_cull_ = on; }
+  // Returns once the work frames handed off so far is done (a model's cull
+  // mesh, built after its first frame): for tests that need it in place.
+  void settle() { background_.drain(); }
 
   // Every object shares the camera, the lights and the passes; camera fit,
   // shadow fit and floor use the union of their transformed bounds. With

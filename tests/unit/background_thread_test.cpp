@@ -38,6 +38,19 @@ TEST(BackgroundThread, RunsJobsInOrder) {
   EXPECT_EQ(order, (std::vector<int>{0, 1, 2, 3, 4}));
 }
 
+TEST(BackgroundThread, DrainReturnsOnceEveryQueuedJobHasRun) {
+  BackgroundThread thread;
+  std::atomic<int> ran{0};
+  for (int i = 0; i < 3; ++i) {
+    thread.post([&ran] {
+      std::this_thread::sleep_for(5ms);
+      ++ran;
+    });
+  }
+  thread.drain();
+  EXPECT_EQ(ran, 3);
+}
+
 TEST(Handoff, TheCallerRunsAJobTheThreadHasNotBegun) {
   BackgroundThread thread;
   Blocker blocker;

@@ -129,6 +129,10 @@ class HullCullRender : public test::GlContextTest {
     }
     Pair out;
     renderer.set_hull_cull(true);
+    // The first frame has the cull meshes built, and draws the whole hull.
+    const RenderOutput first = renderer.render(objects, p);
+    EXPECT_EQ(first.hull_faces_culled, 0u);
+    renderer.settle();
     out.culled = renderer.render(objects, p);
     renderer.set_hull_cull(false);
     out.whole = renderer.render(objects, p);

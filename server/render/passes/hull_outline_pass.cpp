@@ -26,13 +26,15 @@ double hull_reach(const FrameContext& frame, double world_per_px) {
 // What object i's cull reads, or nullopt where its whole hull is drawn:
 // the cull is off, the object is posed (its vertices are not the ones kept
 // on the CPU), or a material is cut out by its alpha (the main pass then
-// leaves samples of its faces unmarked). Builds the level's cull mesh on
-// first use, so render thread only.
+// leaves samples of its faces unmarked), or the level's cull mesh is
+// still being built (the first frame asks for it).
 std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t i) {
   const FrameContext& frame = context.frame;
   const GpuModel& model = frame.objects[i].model;
-  if (!context.cull_hull || !frame.plan.stencil_mark || model.has_masked_materials()) return std::nullopt;
-  std::shared_ptr<const HullCullMesh> mesh = model.hull_cull_mesh(frame.lod_of(i));
+  if (!context.cull_hull || !context.background || !frame.plan.stencil_mark || model.has_masked_materials()) {
+    return std::nullopt;
+  }
+  std::shared_ptr<const HullCullMesh> mesh = model.hull_cull_mesh(frame.lod_of(i), *context.background);
   if (!mesh) return std::nullopt;
   const glm::dmat4& placement = frame.scene.matrices[i];
   HullCullView view;
@@ -133,7 +135,7 @@ void start_hull_cull(PassContext& context) {
     inputs.push_back(cull_input(context, i));
     any = any || inputs.back().has_value();
   }
-  if (!any || !context.background) return;
+  if (!any) return;
   // Off the render thread, which records the main pass meanwhile (on a CPU
   // rasterizer that mostly takes longer than this), or on it if the main
   // pass was recorded first.
