@@ -14,6 +14,7 @@
 #include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
+#include "render/background_thread.h"
 #include "render/gpu_model.h"
 #include "render/hull_cull.h"
 #include "render/renderer.h"
@@ -159,6 +160,28 @@ const std::vector<nlohmann::json>& requests() {
       {{"width", 160}, {"height", 160}, {"floor", {{"enabled", true}}}, {"shadows", {{"enabled", true}}}},
   };
   return all;
+}
+
+// The first frame asks for a level's cull mesh and draws the whole hull;
+// the mesh is built on the background thread, which may still be at it
+// when the model is dropped (evicted from the cache): the build owns what
+// it reads, so nothing it touches is freed under it (ASan checks).
+TEST_F(HullCullRender, AModelDroppedWhileItsCullMeshIsBuiltLeavesTheBuildSafe) {
+  const scene::Model sphere = import_obj(test::sphere_obj(256, 128));
+  BackgroundThread builder;
+  {
+    auto model = std::make_unique<GpuModel>(sphere);
+    EXPECT_EQ(model->hull_cull_mesh(0, builder), nullptr);
+    EXPECT_EQ(model->hull_cull_mesh(0, builder), nullptr) << "built once, not queued again";
+  }
+  builder.drain();
+  // Kept, it is there once built.
+  GpuModel kept(sphere);
+  EXPECT_EQ(kept.hull_cull_mesh(0, builder), nullptr);
+  builder.drain();
+  const std::shared_ptr<const HullCullMesh> mesh = kept.hull_cull_mesh(0, builder);
+  ASSERT_NE(mesh, nullptr);
+  EXPECT_EQ(mesh->indices().size(), sphere.mesh.indices.size());
 }
 
 TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {
