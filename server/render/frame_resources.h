@@ -47,9 +47,8 @@ class FrameResources {
   // positions) and draws it.
   void draw_fullscreen_triangle() const;
   // Where the hull's faces that may show are written each frame
-  // (render/hull_cull.h), given fresh storage every time so a frame still in
-  // flight keeps the last one's.
-  // The parts are written one after the other.
+  // (render/hull_cull.h), the parts one after the other, given fresh
+  // storage every time so a frame still in flight keeps the last one's.
   const gpu::Buffer& hull_indices(const std::vector<std::span<const std::uint32_t>>& parts);
 
  private:

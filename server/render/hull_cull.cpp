@@ -4,7 +4,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <limits>
 #include <tuple>
 
 namespace toond::render {
@@ -87,16 +86,8 @@ std::vector<std::int32_t> edge_neighbours(std::span<const std::uint32_t> indices
 
 // An axis-aligned box in window pixels.
 struct Box {
-  glm::dvec2 min{std::numeric_limits<double>::infinity()};
-  glm::dvec2 max{-std::numeric_limits<double>::infinity()};
-  void add(const glm::dvec2& p) {
-    min = glm::min(min, p);
-    max = glm::max(max, p);
-  }
-  void add(const Box& b) {
-    min = glm::min(min, b.min);
-    max = glm::max(max, b.max);
-  }
+  glm::dvec2 min{0.0};
+  glm::dvec2 max{0.0};
 };
 
 // A vertex where the main pass draws it (window pixels, y up) and the box

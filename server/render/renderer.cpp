@@ -60,8 +60,7 @@ std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& o
                                           frame.supersample, real_gpu());
   out.samples = target ? target->samples() : 1;
   const FrameBlocks blocks(frame, resources_.frame_uniforms());
-  PassContext context{frame, blocks, programs_, resources_, target, {}, hull_cull_.value_or(!real_gpu())};
-  context.background = &background_;
+  PassContext context{frame, blocks, programs_, resources_, target, {}, hull_cull_.value_or(!real_gpu()), background_};
   if (frame.plan.has(Pass::HullOutline)) start_hull_cull(context);
   for (Pass pass : frame.plan.passes) {
     if (pacing && pacing->expired()) break;

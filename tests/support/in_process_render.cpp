@@ -19,16 +19,16 @@ render::RenderParams complete_params(const nlohmann::json& request) {
   return http::render_params_from_wire(completed);
 }
 
-image::Image render_in_process(const PlacedModels& models, const nlohmann::json& request) {
-  gpu::ProgramCache programs([](const std::string& name) { return std::string(shader_files::find(name)); });
-  render::Renderer renderer(programs);
-  std::vector<std::unique_ptr<render::GpuModel>> uploaded;
-  std::vector<render::RenderObject> objects;
+InProcessScene::InProcessScene(const PlacedModels& models)
+    : programs_([](const std::string& name) { return std::string(shader_files::find(name)); }), renderer_(programs_) {
   for (const auto& [model, transform] : models) {
-    uploaded.push_back(std::make_unique<render::GpuModel>(*model));
-    objects.push_back({*uploaded.back(), transform});
+    uploaded_.push_back(std::make_unique<render::GpuModel>(*model));
+    objects_.push_back({*uploaded_.back(), transform});
   }
-  return renderer.render(objects, complete_params(request)).image;
+}
+
+image::Image render_in_process(const PlacedModels& models, const nlohmann::json& request) {
+  return InProcessScene(models).render(complete_params(request)).image;
 }
 
 image::Image render_in_process(const scene::Model& model, const nlohmann::json& request) {

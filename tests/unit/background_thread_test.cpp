@@ -31,10 +31,8 @@ struct Blocker {
 TEST(BackgroundThread, RunsJobsInOrder) {
   BackgroundThread thread;
   std::vector<int> order;
-  std::promise<void> done;
   for (int i = 0; i < 5; ++i) thread.post([&order, i] { order.push_back(i); });
-  thread.post([&done] { done.set_value(); });
-  done.get_future().wait();
+  thread.drain();
   EXPECT_EQ(order, (std::vector<int>{0, 1, 2, 3, 4}));
 }
 
@@ -64,22 +62,18 @@ TEST(Handoff, TheCallerRunsAJobTheThreadHasNotBegun) {
   EXPECT_EQ(job.take(), caller);
   blocker.release.set_value();
   // The thread, once free, finds the job taken and skips it.
-  std::promise<void> drained;
-  thread.post([&drained] { drained.set_value(); });
-  drained.get_future().wait();
+  thread.drain();
   EXPECT_EQ(runs, 1);
 }
 
 TEST(Handoff, TheThreadsResultIsTakenOnceItHasEnded) {
   BackgroundThread thread;
   std::atomic<int> runs{0};
-  std::promise<void> ended;
   Handoff<std::thread::id> job(thread, [&runs] {
     ++runs;
     return std::this_thread::get_id();
   });
-  thread.post([&ended] { ended.set_value(); });
-  ended.get_future().wait();
+  thread.drain();
   EXPECT_NE(job.take(), std::this_thread::get_id());
   EXPECT_EQ(runs, 1);
 }
@@ -101,18 +95,14 @@ TEST(Handoff, AJobTheThreadIsStillRunningIsRunAgainHere) {
   while (!started) std::this_thread::sleep_for(1ms);
   EXPECT_EQ(job.take(), 2);
   release.set_value();
-  std::promise<void> drained;
-  thread.post([&drained] { drained.set_value(); });
-  drained.get_future().wait();
+  thread.drain();
   EXPECT_EQ(runs, 2);
 }
 
 TEST(Handoff, AnExceptionReachesTheCaller) {
   BackgroundThread thread;
-  std::promise<void> ended;
   Handoff<int> job(thread, []() -> int { throw std::runtime_error("no"); });
-  thread.post([&ended] { ended.set_value(); });
-  ended.get_future().wait();
+  thread.drain();
   EXPECT_THROW(job.take(), std::runtime_error);
 }
 
@@ -123,9 +113,7 @@ TEST(Handoff, AJobDroppedBeforeItBeganIsSkipped) {
   std::atomic<int> runs{0};
   { Handoff<int> job(thread, [&runs] { return ++runs; }); }
   blocker.release.set_value();
-  std::promise<void> drained;
-  thread.post([&drained] { drained.set_value(); });
-  drained.get_future().wait();
+  thread.drain();
   EXPECT_EQ(runs, 0);
 }
 

@@ -18,10 +18,10 @@
 #include "render/renderer.h"
 #include "scene/bundle_import.h"
 #include "support/gl_context_test.h"
+#include "support/in_process_render.h"
 #include "support/generated_models.h"
 #include "support/shared_models.h"
 #include "scene/enclosure.h"
-#include "toond_shader_files.h"
 
 namespace toond::render {
 namespace {
@@ -100,20 +100,13 @@ class FaceCullingRender : public test::GlContextTest {
   // Each model drawn under its transform, side by side in one scene.
   static Pair render_both_ways(const std::vector<std::pair<const scene::Model*, glm::dmat4>>& scene,
                                const RenderParams& p) {
-    gpu::ProgramCache programs([](const std::string& name) { return std::string(shader_files::find(name)); });
-    Renderer renderer(programs);
-    std::vector<std::unique_ptr<GpuModel>> uploaded;
-    std::vector<RenderObject> objects;
-    for (const auto& [model, transform] : scene) {
-      uploaded.push_back(std::make_unique<GpuModel>(*model));
-      objects.push_back({*uploaded.back(), transform});
-    }
+    test::InProcessScene drawn(scene);
     Pair out;
-    RenderOutput culled = renderer.render(objects, p);
+    RenderOutput culled = drawn.render(p);
     out.culled = std::move(culled.image);
     out.culled_side = culled.lods.at(0).culled;
-    renderer.set_face_culling(false);
-    out.both = renderer.render(objects, p).image;
+    drawn.renderer().set_face_culling(false);
+    out.both = drawn.render(p).image;
     for (std::size_t k = 0; k < out.culled.rgba.size(); k += 4) {
       int worst = 0;
       for (std::size_t c = 0; c < 4; ++c) worst = std::max(worst, std::abs(out.culled.rgba[k + c] - out.both.rgba[k + c]));

@@ -11,6 +11,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "gpu/egl_context.h"
+#include "gpu/gl.h"
 #include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
@@ -21,8 +23,8 @@
 #include "scene/bundle_import.h"
 #include "support/generated_models.h"
 #include "support/gl_context_test.h"
+#include "support/in_process_render.h"
 #include "support/shared_models.h"
-#include "toond_shader_files.h"
 
 namespace toond::render {
 namespace {
@@ -120,23 +122,16 @@ class HullCullRender : public test::GlContextTest {
   };
   static Pair render_both_ways(const std::vector<std::pair<const scene::Model*, glm::dmat4>>& scene,
                                const RenderParams& p) {
-    gpu::ProgramCache programs([](const std::string& name) { return std::string(shader_files::find(name)); });
-    Renderer renderer(programs);
-    std::vector<std::unique_ptr<GpuModel>> uploaded;
-    std::vector<RenderObject> objects;
-    for (const auto& [model, transform] : scene) {
-      uploaded.push_back(std::make_unique<GpuModel>(*model));
-      objects.push_back({*uploaded.back(), transform});
-    }
+    test::InProcessScene drawn(scene);
     Pair out;
-    renderer.set_hull_cull(true);
+    drawn.renderer().set_hull_cull(true);
     // The first frame has the cull meshes built, and draws the whole hull.
-    const RenderOutput first = renderer.render(objects, p);
+    const RenderOutput first = drawn.render(p);
     EXPECT_EQ(first.hull_faces_culled, 0u);
-    renderer.settle();
-    out.culled = renderer.render(objects, p);
-    renderer.set_hull_cull(false);
-    out.whole = renderer.render(objects, p);
+    drawn.renderer().settle();
+    out.culled = drawn.render(p);
+    drawn.renderer().set_hull_cull(false);
+    out.whole = drawn.render(p);
     return out;
   }
   // The same bytes both ways; returns how many faces were left out.
@@ -182,6 +177,19 @@ TEST_F(HullCullRender, AModelDroppedWhileItsCullMeshIsBuiltLeavesTheBuildSafe) {
   const std::shared_ptr<const HullCullMesh> mesh = kept.hull_cull_mesh(0, builder);
   ASSERT_NE(mesh, nullptr);
   EXPECT_EQ(mesh->indices().size(), sphere.mesh.indices.size());
+}
+
+// Left to its default, as the daemon leaves it, a renderer culls the hull
+// on a CPU rasterizer (the test context is llvmpipe) and not on a GPU.
+TEST_F(HullCullRender, TheDefaultCullsOnACpuRasterizerOnly) {
+  const scene::Model sphere = import_obj(test::sphere_obj(64, 32));
+  test::InProcessScene drawn({{&sphere, glm::dmat4(1.0)}});
+  const RenderParams p = params({{"width", 160}, {"height", 160}});
+  EXPECT_EQ(drawn.render(p).hull_faces_culled, 0u);
+  drawn.renderer().settle();
+  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool cpu = gpu::software_rasterizer(name ? name : "");
+  EXPECT_EQ(drawn.render(p).hull_faces_culled > 0, cpu) << name;
 }
 
 TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {

@@ -31,10 +31,8 @@ double hull_reach(const FrameContext& frame, double world_per_px) {
 std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t i) {
   const FrameContext& frame = context.frame;
   const GpuModel& model = frame.objects[i].model;
-  if (!context.cull_hull || !context.background || !frame.plan.stencil_mark || model.has_masked_materials()) {
-    return std::nullopt;
-  }
-  std::shared_ptr<const HullCullMesh> mesh = model.hull_cull_mesh(frame.lod_of(i), *context.background);
+  if (!context.cull_hull || !frame.plan.stencil_mark || model.has_masked_materials()) return std::nullopt;
+  std::shared_ptr<const HullCullMesh> mesh = model.hull_cull_mesh(frame.lod_of(i), context.background);
   if (!mesh) return std::nullopt;
   const glm::dmat4& placement = frame.scene.matrices[i];
   HullCullView view;
@@ -139,7 +137,7 @@ void start_hull_cull(PassContext& context) {
   // Off the render thread, which records the main pass meanwhile (on a CPU
   // rasterizer that mostly takes longer than this), or on it if the main
   // pass was recorded first.
-  context.hull_cull = Handoff<std::vector<std::optional<HullSubset>>>(*context.background, [inputs = std::move(inputs)] {
+  context.hull_cull = Handoff<std::vector<std::optional<HullSubset>>>(context.background, [inputs = std::move(inputs)] {
     std::vector<std::optional<HullSubset>> subsets;
     for (const std::optional<HullCullInput>& input : inputs) {
       subsets.push_back(input ? hull_faces_that_may_show(*input->mesh, input->view) : std::nullopt);

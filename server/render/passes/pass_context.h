@@ -31,7 +31,7 @@ struct PassContext {
   // Whether the hull leaves out the faces that cannot show (render/hull_cull.h).
   bool cull_hull = false;
   // Where work is handed off while the passes record (the hull cull).
-  BackgroundThread* background = nullptr;
+  BackgroundThread& background;
   // Started before the first pass (start_hull_cull), taken by the hull pass.
   Handoff<std::vector<std::optional<HullSubset>>> hull_cull{};
   std::size_t hull_faces_culled = 0;  // reported in RenderOutput
