@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 namespace toond::render {
@@ -90,11 +91,14 @@ struct Box {
   glm::dvec2 max{0.0};
 };
 
-// A vertex where the main pass draws it (window pixels, y up) and the box
-// its hull corner may reach from there (in float: its rounding is far
-// below the margin).
+// A vertex where the main pass draws it (window pixels, y up), the ends
+// of the stretch its hull corner lies on (half and the whole of its move)
+// and the box that corner may reach from the vertex (in float: its
+// rounding is far below the margin and the slack).
 struct ProjectedVertex {
   glm::dvec2 window{0.0};
+  glm::vec2 half_move{0.0f};
+  glm::vec2 whole_move{0.0f};
   glm::vec2 reach_min{0.0f};
   glm::vec2 reach_max{0.0f};
 };
@@ -183,6 +187,7 @@ struct Scratch {
   std::vector<ProjectedVertex> vertices;
   std::vector<std::uint8_t> drawn;
   std::vector<Box> boxes;
+  std::vector<std::uint32_t> turned_away;
   CellCounts ends;
   CellCounts covered;
 };
@@ -212,6 +217,8 @@ bool project_vertices(const HullCullMesh& mesh, const HullCullView& view, std::v
     ProjectedVertex& p = out[v];
     p.window = window(clip);
     const glm::dvec2 corner = window(moved);
+    p.half_move = glm::vec2(window(0.5 * (clip + moved)));
+    p.whole_move = glm::vec2(corner);
     p.reach_min = glm::vec2(glm::min(p.window, corner));
     p.reach_max = glm::vec2(glm::max(p.window, corner));
   }
@@ -228,6 +235,46 @@ double trusted_area2(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2&
   const double sides = std::abs(ab.x) + std::abs(ab.y) + std::abs(ac.x) + std::abs(ac.y) + std::abs(bc.x) + std::abs(bc.y);
   const double doubt = 2.0 * kVertexSlackPx * sides + 4.0 * kVertexSlackPx * kVertexSlackPx;
   return std::abs(area2) > doubt ? area2 : 0.0;
+}
+
+// Whether the hull face of a, b, c turns to the side whose signed area has
+// the sign `side` wherever each corner lies between half and the whole of
+// its move, by more than the slack. Twice the area is affine in each
+// corner's place along its stretch, so the eight choices of the
+// stretches' ends bound it; it is the sum of the cross products of
+// consecutive corners, so those eight take twelve products. Each side is
+// longer than between the whole moves by at most its ends' stretches. In
+// float, about the first corner's whole move, where its rounding is far
+// below the slack.
+bool hull_face_surely_turns(const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c,
+                            float side) {
+  const glm::vec2 origin = a.whole_move;
+  const std::array<glm::vec2, 2> pa = {a.half_move - origin, glm::vec2(0.0f)};
+  const std::array<glm::vec2, 2> pb = {b.half_move - origin, b.whole_move - origin};
+  const std::array<glm::vec2, 2> pc = {c.half_move - origin, c.whole_move - origin};
+  const auto cross = [](const glm::vec2& u, const glm::vec2& v) { return u.x * v.y - u.y * v.x; };
+  float least = std::numeric_limits<float>::infinity();
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      for (int k = 0; k < 2; ++k) {
+        least = std::min(least, (cross(pa[i], pb[j]) + cross(pb[j], pc[k]) + cross(pc[k], pa[i])) * side);
+      }
+  const auto l1 = [](const glm::vec2& v) { return std::abs(v.x) + std::abs(v.y); };
+  const float stretches = l1(pa[0]) + l1(pb[1] - pb[0]) + l1(pc[1] - pc[0]);
+  const float sides = l1(pb[1]) + l1(pc[1]) + l1(pc[1] - pb[1]) + 2.0f * stretches;
+  constexpr auto slack = static_cast<float>(kVertexSlackPx);
+  return least > 2.0f * slack * sides + 4.0f * slack * slack;
+}
+
+// The sign of the signed area of the faces a draw culling `hidden` skips; 0
+// where it skips none.
+float skipped_side(HiddenFaces hidden) {
+  switch (hidden) {
+    case HiddenFaces::Back: return -1.0f;
+    case HiddenFaces::Front: return 1.0f;
+    case HiddenFaces::None: break;
+  }
+  return 0.0f;
 }
 
 }  // namespace
@@ -294,20 +341,42 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
     const Box& box = boxes[t];
     return ends.holds(box) && !ends.any_overlapping(box) && (drawn[t] || covered.any_inside(box));
   };
+  // A face the main pass draws turns toward the camera, and so, all but
+  // always, does its hull face: only the others are worth the test.
+  const float skipped = skipped_side(view.hull_hidden);
+  const auto turned_away = [&](std::size_t t) {
+    return skipped != 0.0f && !drawn[t] &&
+           hull_face_surely_turns(vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]],
+                                  skipped);
+  };
   HullSubset out;
   out.indices.reserve(indices.size());
+  std::vector<std::uint32_t>& away = scratch.turned_away;
+  away.clear();
+  std::vector<std::uint32_t> away_counts;
   for (const scene::Submesh& sub : mesh.submeshes()) {
     scene::Submesh kept{static_cast<std::uint32_t>(out.indices.size()), 0, sub.material};
+    const std::size_t away_before = away.size();
     for (std::size_t e = sub.first_index; e < sub.first_index + sub.index_count; e += 3) {
       if (cannot_show(e / 3)) {
         ++out.culled_triangles;
         continue;
       }
-      out.indices.insert(out.indices.end(), &indices[e], &indices[e] + 3);
+      std::vector<std::uint32_t>& to = turned_away(e / 3) ? away : out.indices;
+      to.insert(to.end(), &indices[e], &indices[e] + 3);
     }
     kept.index_count = static_cast<std::uint32_t>(out.indices.size()) - kept.first_index;
     out.submeshes.push_back(kept);
+    away_counts.push_back(static_cast<std::uint32_t>(away.size() - away_before));
   }
+  if (away.empty()) return out;
+  out.turned_away_triangles = away.size() / 3;
+  std::uint32_t first = static_cast<std::uint32_t>(out.indices.size());
+  for (std::size_t k = 0; k < away_counts.size(); ++k) {
+    out.turned_away.push_back({first, away_counts[k], out.submeshes[k].material});
+    first += away_counts[k];
+  }
+  out.indices.insert(out.indices.end(), away.begin(), away.end());
   return out;
 }
 

@@ -16,6 +16,16 @@
 // its hull face turn. Everything is bounded with a margin well above float
 // rounding and the rasterizer's snapping of vertices to its sub-pixel grid.
 //
+// Where the hull pass skips one side of the hull (a closed model's), the
+// faces that may show but surely turn to that side are set apart too: the
+// draw that culls that side leaves them out instead of shading their
+// vertices for nothing, and the draw of the other side (where a hole's cap
+// shows) takes them. A hull corner lies between half and the whole of its
+// move (hull.vert's obliquity factor), so its face turns that side when it
+// does for every choice of the three corners on their moves, by more than
+// rounding can undo; the signed area is affine in each corner's place
+// along its move, so the eight choices at the ends bound it.
+//
 // On a CPU rasterizer setting up and binning a triangle costs the recording
 // thread more than this test does; on a GPU it does not pay (renderer.h).
 // Pure arithmetic, no GL.
@@ -27,6 +37,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/face_culling.h"
 #include "scene/model.h"
 
 namespace toond::render {
@@ -76,13 +87,25 @@ struct HullCullView {
   // draws: counter-clockwise where it skips back faces or none, clockwise
   // where it skips the front ones (a mirroring transform).
   bool drawn_clockwise = false;
+  // The side of the hull the hull pass culls (where it draws that side
+  // after all because a cap shows, it draws the faces set apart too).
+  HiddenFaces hull_hidden = HiddenFaces::None;
 };
 
-// The hull's triangles that may draw something, submesh by submesh.
+// The hull's triangles that may draw something, submesh by submesh: first
+// those that may turn to the side the hull pass draws, then those that
+// surely turn to the side it culls.
 struct HullSubset {
   std::vector<std::uint32_t> indices;
-  std::vector<scene::Submesh> submeshes;  // ranges of `indices`, the level's materials in its order
-  std::size_t culled_triangles = 0;
+  std::vector<scene::Submesh> submeshes;   // ranges of `indices`, the level's materials in its order
+  std::vector<scene::Submesh> turned_away;  // the same materials' faces set apart, after all of those
+  std::size_t culled_triangles = 0;         // left out: they draw nothing either way
+  std::size_t turned_away_triangles = 0;
+
+  // How many indices lead, before the faces set apart.
+  std::size_t facing_index_count() const {
+    return turned_away.empty() ? indices.size() : turned_away.front().first_index;
+  }
 };
 
 // One object's cull: its level's mesh and the frame's view of it.

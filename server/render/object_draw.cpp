@@ -64,7 +64,7 @@ void draw_objects(const FrameContext& frame, const FrameBlocks& blocks, const Ob
     if (skip.unless_caps_show) {
       gpu::Query local;
       gpu::Query& check = how.cap_checks ? (*how.cap_checks)[i] : local;
-      redraw_where_caps_show(model, frame.lod_of(i), skip.hidden, check, [&] { how.draw(i); });
+      redraw_where_caps_show(model, frame.lod_of(i), skip.hidden, check, [&] { (how.redraw ? how.redraw : how.draw)(i); });
     }
   }
   glDisable(GL_CULL_FACE);

@@ -27,11 +27,14 @@ void cull(HiddenFaces faces);
 
 // Draws every object of the frame: binds the object's buffers and its
 // placement (`blocks`), culls what `faces(i)` says and calls `draw(i)`.
-// Where caps may show, their check's query lands in `cap_checks[i]` when
-// given, so the caller can read the answer later.
+// Where caps may show, the skipped side is drawn by `redraw(i)` when given
+// (a draw that left out faces only that side can show), else by `draw(i)`,
+// and their check's query lands in `cap_checks[i]` when given, so the
+// caller can read the answer later.
 struct ObjectDraw {
   std::function<FaceSkip(std::size_t)> faces{};
   std::function<void(std::size_t)> draw{};
+  std::function<void(std::size_t)> redraw{};
   std::vector<gpu::Query>* cap_checks = nullptr;
 };
 void draw_objects(const FrameContext& frame, const FrameBlocks& blocks, const ObjectDraw& how);

@@ -27,6 +27,9 @@ struct RenderOutput {
   int samples = 1;
   // The hull outline's faces left out as unable to show (render/hull_cull.h).
   std::size_t hull_faces_culled = 0;
+  // Of those kept, the faces set apart as sure to turn to the side the hull
+  // pass culls: drawn only where that side is (render/hull_cull.h).
+  std::size_t hull_faces_turned_away = 0;
 };
 
 }  // namespace toond::render

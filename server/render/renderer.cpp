@@ -81,6 +81,7 @@ std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& o
   }
   pending->cap_checks = std::move(context.main_cap_checks);
   out.hull_faces_culled = context.hull_faces_culled;
+  out.hull_faces_turned_away = context.hull_faces_turned_away;
   pending->unpremultiply = frame.plan.has(Pass::Unpremultiply);
   // Without supersampling the multisample resolve is a blit inside
   // read_back(); its time is part of the readback figure, since the

@@ -5,9 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <numbers>
+#include <span>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -101,6 +105,53 @@ TEST(HullCull, ASphereKeepsOnlyTheFacesNearItsSilhouette) {
   }
 }
 
+// Twice the signed area of a face's outline in the xy plane: the sphere's
+// offsets are its normals, so its hull face turns the same way.
+double xy_area2(const scene::Mesh& mesh, std::span<const std::uint32_t> face) {
+  const glm::dvec2 a(mesh.positions[face[0]]), b(mesh.positions[face[1]]), c(mesh.positions[face[2]]);
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+TEST(HullCull, FacesSureToTurnToTheCulledSideAreSetApartAfterTheRest) {
+  const scene::Model sphere = import_obj(test::sphere_obj(96, 48));
+  const scene::Mesh& mesh = sphere.mesh;
+  const HullCullMesh cull(stream(mesh.positions), stream(mesh.outline_normals), mesh.indices, mesh.submeshes);
+  HullCullView view = sphere_view(256, 3.0);
+  // Where the hull pass draws both sides, nothing is set apart.
+  const std::optional<HullSubset> both = hull_faces_that_may_show(cull, view);
+  ASSERT_TRUE(both);
+  EXPECT_EQ(both->turned_away_triangles, 0u);
+  EXPECT_EQ(both->facing_index_count(), both->indices.size());
+  view.hull_hidden = HiddenFaces::Back;
+  const std::optional<HullSubset> subset = hull_faces_that_may_show(cull, view);
+  ASSERT_TRUE(subset);
+  // The same faces are kept; those turned away from the camera (the view
+  // looks down -z) near the silhouette go after the rest.
+  EXPECT_EQ(subset->culled_triangles, both->culled_triangles);
+  EXPECT_EQ(subset->indices.size(), both->indices.size());
+  EXPECT_GT(subset->turned_away_triangles, 0u);
+  ASSERT_EQ(subset->turned_away.size(), subset->submeshes.size());
+  const std::size_t facing = subset->facing_index_count();
+  EXPECT_EQ(facing + 3 * subset->turned_away_triangles, subset->indices.size());
+  for (std::size_t e = facing; e < subset->indices.size(); e += 3) {
+    EXPECT_LT(xy_area2(mesh, std::span(subset->indices).subspan(e, 3)), 0.0) << e;
+  }
+  // Faces edge-on to the camera, whose hull faces may turn either way, stay
+  // with the rest: some of the kept faces turning away are not set apart.
+  std::size_t away_among_facing = 0;
+  for (std::size_t e = 0; e < facing; e += 3) {
+    away_among_facing += xy_area2(mesh, std::span(subset->indices).subspan(e, 3)) < 0.0 ? 1 : 0;
+  }
+  EXPECT_GT(away_among_facing, 0u);
+  // A mirrored object's hull pass culls the other side.
+  view.hull_hidden = HiddenFaces::Front;
+  const std::optional<HullSubset> mirrored = hull_faces_that_may_show(cull, view);
+  ASSERT_TRUE(mirrored);
+  for (std::size_t e = mirrored->facing_index_count(); e < mirrored->indices.size(); e += 3) {
+    EXPECT_GT(xy_area2(mesh, std::span(mirrored->indices).subspan(e, 3)), 0.0) << e;
+  }
+}
+
 TEST(HullCull, AVertexOutsideTheDepthRangeTurnsTheCullOff) {
   const scene::Model sphere = import_obj(test::sphere_obj(24, 12));
   const HullCullMesh cull(stream(sphere.mesh.positions), stream(sphere.mesh.outline_normals), sphere.mesh.indices,
@@ -134,13 +185,19 @@ class HullCullRender : public test::GlContextTest {
     out.whole = drawn.render(p);
     return out;
   }
+  // The same bytes both ways; returns the culled render's output.
+  static RenderOutput same_image(const std::vector<std::pair<const scene::Model*, glm::dmat4>>& scene,
+                                 const nlohmann::json& request, const std::string& what) {
+    Pair pair = render_both_ways(scene, params(request));
+    EXPECT_EQ(pair.whole.hull_faces_culled, 0u);
+    EXPECT_EQ(pair.whole.hull_faces_turned_away, 0u);
+    EXPECT_TRUE(pair.culled.image.rgba == pair.whole.image.rgba) << what << " " << request;
+    return std::move(pair.culled);
+  }
   // The same bytes both ways; returns how many faces were left out.
   static std::size_t expect_same_image(const std::vector<std::pair<const scene::Model*, glm::dmat4>>& scene,
                                        const nlohmann::json& request, const std::string& what) {
-    const Pair pair = render_both_ways(scene, params(request));
-    EXPECT_EQ(pair.whole.hull_faces_culled, 0u);
-    EXPECT_TRUE(pair.culled.image.rgba == pair.whole.image.rgba) << what << " " << request;
-    return pair.culled.hull_faces_culled;
+    return same_image(scene, request, what).hull_faces_culled;
   }
 };
 
@@ -252,11 +309,50 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScannedModels) {
       {file("spot", "spot.obj"), file("spot", "spot.mtl"), file("spot", "spot_texture.png")}));
   for (const auto& [model, what] : {std::pair{&bunny, "bunny"}, std::pair{&spot, "spot"}}) {
     for (const nlohmann::json& request : requests()) expect_same_image({{model, glm::dmat4(1.0)}}, request, what);
-    // The default request at the benchmark's size leaves out most of them.
-    const std::size_t culled = expect_same_image({{model, glm::dmat4(1.0)}}, {{"width", 512}, {"height", 512}}, what);
-    EXPECT_GT(culled, model->mesh.triangle_count() / 10) << what;
+    // The default request at the benchmark's size leaves out most of them,
+    // and sets apart some of the rest.
+    const RenderOutput out = same_image({{model, glm::dmat4(1.0)}}, {{"width", 512}, {"height", 512}}, what);
+    EXPECT_GT(out.hull_faces_culled, model->mesh.triangle_count() / 10) << what;
+    EXPECT_GT(out.hull_faces_turned_away, 0u) << what;
   }
 }
 
+// The lower half of a sphere, open at the top: a bowl.
+std::string bowl_obj(int segments, int rings) {
+  std::string obj;
+  for (int r = 0; r <= rings; ++r) {
+    const double polar = 0.5 * std::numbers::pi + 0.5 * std::numbers::pi * r / rings;  // the rim (equator) to the bottom pole
+    for (int k = 0; k < segments; ++k) {
+      const double around = 2.0 * std::numbers::pi * k / segments;
+      const glm::dvec3 p(std::sin(polar) * std::cos(around), std::cos(polar), std::sin(polar) * std::sin(around));
+      obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+      obj += "vn " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+    }
+  }
+  const auto at = [&](int r, int k) { return std::to_string(r * segments + (k % segments) + 1); };
+  for (int r = 0; r < rings; ++r) {
+    for (int k = 0; k < segments; ++k) {
+      const std::string a = at(r, k), b = at(r, k + 1), c = at(r + 1, k + 1), d = at(r + 1, k);
+      obj += "f " + a + "//" + a + " " + b + "//" + b + " " + c + "//" + c + "\n";
+      obj += "f " + a + "//" + a + " " + c + "//" + c + " " + d + "//" + d + "\n";
+    }
+  }
+  return obj;
+}
+
+// Seen from above, a bowl's inside shows through its opening (its cap
+// turns toward the camera): the hull pass draws its culled side after all,
+// and that draw needs the faces set apart as turned to it, which draw the
+// ring along the far rim.
+TEST_F(HullCullRender, TheSideDrawnWhereACapShowsTakesTheFacesSetApart) {
+  const scene::Model bowl = import_obj(bowl_obj(48, 12));
+  for (const int pitch : {-30, 30, 50, 70}) {
+    const nlohmann::json request = {{"width", 256}, {"height", 256}, {"camera", {{"pitch", pitch}}}};
+    const RenderOutput out = same_image({{&bowl, glm::dmat4(1.0)}}, request, "bowl");
+    if (pitch >= 50) {
+      EXPECT_GT(out.hull_faces_turned_away, 0u) << pitch;
+    }
+  }
+}
 }  // namespace
 }  // namespace toond::render

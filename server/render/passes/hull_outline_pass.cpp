@@ -23,6 +23,25 @@ double hull_reach(const FrameContext& frame, double world_per_px) {
   return k * w_max / (1.0 - k);
 }
 
+// Which side of object i's hull its draw skips. The stencil keeps the hull
+// off the model, so its faces toward the camera may draw the ring: where a
+// closed model's back faces may be skipped, the hull's may too. Its front
+// faces lie nearer than its back ones, so they pass every depth test (a
+// floor's) the back ones would. The hull must not be cut by the near or far
+// plane either: where it is, its back faces show through the cut.
+FaceSkip hull_face_skip(const FrameContext& frame, std::size_t i) {
+  const GpuModel& model = frame.objects[i].model;
+  FaceSkip hull;
+  if (frame.main_faces[i].hidden == HiddenFaces::None) return hull;
+  const double reach = hull_reach(frame, frame.world_per_px_at_w1());
+  hull.hidden = hidden_faces(model.enclosure(frame.lod_of(i)), frame.scene.matrices[i], frame.clip, model.bounds(), reach);
+  // The hull's holes move with its offset and may turn toward the camera
+  // where the model's do not: its own caps, offset like it (they share
+  // its vertices), are checked.
+  hull.unless_caps_show = hull.hidden != HiddenFaces::None && !model.caps(frame.lod_of(i)).empty();
+  return hull;
+}
+
 // What object i's cull reads, or nullopt where its whole hull is drawn:
 // the cull is off, the object is posed (its vertices are not the ones kept
 // on the CPU), or a material is cut out by its alpha (the main pass then
@@ -44,6 +63,7 @@ std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t 
   view.viewport_width = frame.draw_width;
   view.viewport_height = frame.draw_height;
   view.drawn_clockwise = frame.main_faces[i].hidden == HiddenFaces::Front;
+  view.hull_hidden = hull_face_skip(frame, i).hidden;
   return HullCullInput{std::move(mesh), view};
 }
 
@@ -64,6 +84,7 @@ HullFaces hull_faces(PassContext& context) {
     out.first.push_back(count);
     if (!subset) continue;
     context.hull_faces_culled += subset->culled_triangles;
+    context.hull_faces_turned_away += subset->turned_away_triangles;
     parts.push_back(subset->indices);
     count += parts.back().size();
   }
@@ -71,8 +92,14 @@ HullFaces hull_faces(PassContext& context) {
   return out;
 }
 
-// Object i's hull: only the faces that may show where they were worked out.
-void draw_hull_of(const FrameContext& frame, const HullFaces& faces, std::size_t i) {
+// Which of the hull's sides a draw shows: the one its culling keeps, or
+// both (its skipped side drawn after all, where a cap shows).
+enum class HullSide { Shown, Both };
+
+// Object i's hull: only the faces that may show where they were worked out,
+// and of those, the ones set apart as turned to the culled side only where
+// that side is drawn.
+void draw_hull_of(const FrameContext& frame, const HullFaces& faces, std::size_t i, HullSide side) {
   const bool per_material = outline_per_material(frame);
   const std::optional<HullSubset>& subset = faces.subsets[i];
   if (!subset) {
@@ -80,16 +107,21 @@ void draw_hull_of(const FrameContext& frame, const HullFaces& faces, std::size_t
     else draw_whole_object(frame, i);
     return;
   }
-  if (subset->indices.empty()) return;
   const GpuModel& model = frame.objects[i].model;
+  const bool both = side == HullSide::Both;
   if (!per_material) {
-    model.draw_from(*faces.buffer, subset->indices.size(), faces.first[i]);
+    const std::size_t count = both ? subset->indices.size() : subset->facing_index_count();
+    if (count > 0) model.draw_from(*faces.buffer, count, faces.first[i]);
     return;
   }
-  for (const scene::Submesh& sub : subset->submeshes) {
-    if (sub.index_count == 0) continue;
+  const auto draw_range = [&](const scene::Submesh& sub) {
+    if (sub.index_count == 0) return;
     bind_material(model, sub.material);
     model.draw_from(*faces.buffer, sub.index_count, faces.first[i] + sub.first_index);
+  };
+  for (std::size_t k = 0; k < subset->submeshes.size(); ++k) {
+    draw_range(subset->submeshes[k]);
+    if (both && k < subset->turned_away.size()) draw_range(subset->turned_away[k]);
   }
 }
 
@@ -104,26 +136,11 @@ void draw_hull_outline_pass(PassContext& context) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   gpu::Program& program = context.programs.get("hull.vert", "hull.frag", frame.plan.outline.defines());
   program.use();
-  // The stencil keeps the hull off the model, so its faces toward the
-  // camera may draw the ring: where a closed model's back faces may be
-  // skipped, the hull's may too. Its front faces lie nearer than its back
-  // ones, so they pass every depth test (a floor's) the back ones would.
-  // The hull must not be cut by the near or far plane either: where it is,
-  // its back faces show through the cut.
-  const double reach = hull_reach(frame, frame.world_per_px_at_w1());
   const HullFaces faces = hull_faces(context);
-  const auto skip = [&](std::size_t i) {
-    const GpuModel& model = frame.objects[i].model;
-    FaceSkip hull;
-    if (frame.main_faces[i].hidden == HiddenFaces::None) return hull;
-    hull.hidden = hidden_faces(model.enclosure(frame.lod_of(i)), frame.scene.matrices[i], frame.clip, model.bounds(), reach);
-    // The hull's holes move with its offset and may turn toward the camera
-    // where the model's do not: its own caps, offset like it (they share
-    // its vertices), are checked.
-    hull.unless_caps_show = hull.hidden != HiddenFaces::None && !model.caps(frame.lod_of(i)).empty();
-    return hull;
-  };
-  draw_objects(frame, context.blocks, {.faces = skip, .draw = [&](std::size_t i) { draw_hull_of(frame, faces, i); }});
+  draw_objects(frame, context.blocks,
+               {.faces = [&](std::size_t i) { return hull_face_skip(frame, i); },
+                .draw = [&](std::size_t i) { draw_hull_of(frame, faces, i, HullSide::Shown); },
+                .redraw = [&](std::size_t i) { draw_hull_of(frame, faces, i, HullSide::Both); }});
 }
 
 void start_hull_cull(PassContext& context) {

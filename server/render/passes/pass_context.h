@@ -35,6 +35,7 @@ struct PassContext {
   // Started before the first pass (start_hull_cull), taken by the hull pass.
   Handoff<std::vector<std::optional<HullSubset>>> hull_cull{};
   std::size_t hull_faces_culled = 0;  // reported in RenderOutput
+  std::size_t hull_faces_turned_away = 0;
 };
 
 }  // namespace toond::render
