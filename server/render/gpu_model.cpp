@@ -114,6 +114,7 @@ GpuModel::GpuModel(const scene::Model& model)
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
                        indices.data(), 0);
   gpu_bytes_ = vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
+  for (Level& level : levels_) level.facing_runs = FacingRuns(mesh.positions, indices, level.submeshes);
   rest_positions_ = std::make_shared<const std::vector<glm::vec3>>(mesh.positions);
   outline_offsets_ = std::make_shared<const std::vector<glm::vec3>>(mesh.outline_normals);
   all_indices_ = std::make_shared<const std::vector<std::uint32_t>>(std::move(indices));
@@ -204,6 +205,23 @@ void GpuModel::bind_material(int index) const {
 
 void GpuModel::draw(const scene::Submesh& submesh) const {
   draw_triangles(submesh.index_count, submesh.first_index);
+}
+
+std::size_t GpuModel::draw_facing(std::size_t lod, std::size_t k, const MeshViewer& viewer) const {
+  const Level& level = levels_[lod];
+  const scene::Submesh& sub = level.submeshes[k];
+  if (posed_) {
+    draw(sub);
+    return 0;
+  }
+  static thread_local std::vector<IndexRange> ranges;
+  level.facing_runs.ranges_facing(k, viewer, ranges);
+  std::size_t drawn = 0;
+  for (const IndexRange& range : ranges) {
+    draw_triangles(range.index_count, range.first_index);
+    drawn += range.index_count;
+  }
+  return (sub.index_count - drawn) / 3;
 }
 
 void GpuModel::draw_all(std::size_t lod) const {

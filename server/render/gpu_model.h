@@ -13,6 +13,7 @@
 #include "gpu/uniform_arena.h"
 #include "render/gpu_skin.h"
 #include "render/background_thread.h"
+#include "render/facing_runs.h"
 #include "render/hull_cull.h"
 #include "render/uniform_blocks.h"
 #include "scene/model.h"
@@ -62,6 +63,10 @@ class GpuModel {
   // Draws one submesh (the VAO must be bound); the ranges of every level
   // index the one index buffer.
   void draw(const scene::Submesh& submesh) const;
+  // Submesh `k` of a level without its runs of faces that surely turn away
+  // from `viewer` (render/facing_runs.h); all of it while posed, since the
+  // runs hold the rest pose. Returns how many triangles it left out.
+  std::size_t draw_facing(std::size_t lod, std::size_t k, const MeshViewer& viewer) const;
   // Every triangle of a level of detail (0 = full detail).
   void draw_all(std::size_t lod = 0) const;
   // The triangles closing a level's holes (caps()), with the mesh's own
@@ -142,6 +147,7 @@ class GpuModel {
     std::size_t first_cap_index = 0;  // the caps' range of the index buffer
     std::size_t cap_index_count = 0;
     std::shared_ptr<HullCullSlot> hull_cull = std::make_shared<HullCullSlot>();
+    FacingRuns facing_runs{};
   };
   std::vector<Level> levels_;
   // The rest pose's positions and outline offsets and every level's

@@ -132,13 +132,21 @@ class CellCounts {
     counts_[static_cast<std::size_t>(row(p.y) * columns_ + column(p.x))] = 1;
   }
 
+  // Each entry: the counted cells above and left of it (a running sum
+  // along its row added to the entry above, so rows do not wait on each
+  // other's last sums).
   void sum() {
     sums_.assign(static_cast<std::size_t>((columns_ + 1) * (rows_ + 1)), 0);
-    for (int y = 0; y < rows_; ++y)
+    for (int y = 0; y < rows_; ++y) {
+      const std::uint8_t* counts = &counts_[static_cast<std::size_t>(y * columns_)];
+      const std::int32_t* above = &sums_[at(1, y)];
+      std::int32_t* row = &sums_[at(1, y + 1)];
+      std::int32_t along = 0;
       for (int x = 0; x < columns_; ++x) {
-        sums_[at(x + 1, y + 1)] = counts_[static_cast<std::size_t>(y * columns_ + x)] + sums_[at(x, y + 1)] +
-                                  sums_[at(x + 1, y)] - sums_[at(x, y)];
+        along += counts[x];
+        row[x] = above[x] + along;
       }
+    }
   }
 
   // Whether a cell the box overlaps was counted.
@@ -203,16 +211,18 @@ bool in_depth_range(const glm::dvec4& clip) {
 // range or behind the eye, where the cut would end the cover.
 bool project_vertices(const HullCullMesh& mesh, const HullCullView& view, std::vector<ProjectedVertex>& out) {
   const glm::dmat4 to_clip = view.clip * view.model;
+  // The offset turned and taken to clip space in one product.
+  const glm::dmat3x4 offset_to_clip = glm::dmat3x4(view.clip) * view.normal_matrix;
   const double px_per_world_at_w1 = view.width_px * view.world_per_px_at_w1;
   const glm::dvec2 half_viewport(0.5 * view.viewport_width, 0.5 * view.viewport_height);
-  const auto window = [&](const glm::dvec4& clip) { return (glm::dvec2(clip) / clip.w + 1.0) * half_viewport; };
+  const auto window = [&](const glm::dvec4& clip) { return (glm::dvec2(clip) * (1.0 / clip.w) + 1.0) * half_viewport; };
   for (std::uint32_t v : mesh.used_vertices()) {
     const glm::dvec4 clip = to_clip * glm::dvec4(glm::dvec3(mesh.position(v)), 1.0);
-    const glm::dvec3 turned = view.normal_matrix * glm::dvec3(mesh.outline_offset(v));
-    const double turned_len = glm::length(turned);
+    const glm::dvec3 offset(mesh.outline_offset(v));
+    const double turned_len = glm::length(view.normal_matrix * offset);
     const double distance = px_per_world_at_w1 * std::abs(clip.w);
     const double scale = turned_len > 0.0 ? mesh.outline_offset_length(v) / turned_len * distance : 0.0;
-    const glm::dvec4 moved = clip + view.clip * glm::dvec4(turned * scale, 0.0);
+    const glm::dvec4 moved = clip + offset_to_clip * (offset * scale);
     if (!in_depth_range(clip) || !in_depth_range(moved)) return false;
     ProjectedVertex& p = out[v];
     p.window = window(clip);
@@ -242,26 +252,33 @@ double trusted_area2(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2&
 // its move, by more than the slack. Twice the area is affine in each
 // corner's place along its stretch, so the eight choices of the
 // stretches' ends bound it; it is the sum of the cross products of
-// consecutive corners, so those eight take twelve products. Each side is
+// consecutive corners, so those eight take eight products. Each side is
 // longer than between the whole moves by at most its ends' stretches. In
 // float, about the first corner's whole move, where its rounding is far
 // below the slack.
 bool hull_face_surely_turns(const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c,
                             float side) {
-  const glm::vec2 origin = a.whole_move;
-  const std::array<glm::vec2, 2> pa = {a.half_move - origin, glm::vec2(0.0f)};
-  const std::array<glm::vec2, 2> pb = {b.half_move - origin, b.whole_move - origin};
-  const std::array<glm::vec2, 2> pc = {c.half_move - origin, c.whole_move - origin};
   const auto cross = [](const glm::vec2& u, const glm::vec2& v) { return u.x * v.y - u.y * v.x; };
-  float least = std::numeric_limits<float>::infinity();
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j)
-      for (int k = 0; k < 2; ++k) {
-        least = std::min(least, (cross(pa[i], pb[j]) + cross(pb[j], pc[k]) + cross(pc[k], pa[i])) * side);
-      }
+  // About a's whole move, a's half move is `a0` and its whole move 0.
+  const glm::vec2 origin = a.whole_move;
+  const glm::vec2 a0 = a.half_move - origin;
+  const glm::vec2 b0 = b.half_move - origin, b1 = b.whole_move - origin;
+  const glm::vec2 c0 = c.half_move - origin, c1 = c.whole_move - origin;
+  // With a at 0 the area is cross(b, c); with a at a0 it adds
+  // cross(a0, b) + cross(c, a0).
+  const float bc00 = cross(b0, c0), bc01 = cross(b0, c1), bc10 = cross(b1, c0), bc11 = cross(b1, c1);
+  const float ab0 = cross(a0, b0), ab1 = cross(a0, b1);
+  const float ca0 = cross(c0, a0), ca1 = cross(c1, a0);
+  const float f[8] = {bc00, bc01, bc10, bc11, bc00 + ab0 + ca0, bc01 + ab0 + ca1, bc10 + ab1 + ca0, bc11 + ab1 + ca1};
+  float lowest = f[0], highest = f[0];
+  for (const float v : f) {
+    lowest = std::min(lowest, v);
+    highest = std::max(highest, v);
+  }
+  const float least = side > 0.0f ? lowest : -highest;  // of the area times `side`
   const auto l1 = [](const glm::vec2& v) { return std::abs(v.x) + std::abs(v.y); };
-  const float stretches = l1(pa[0]) + l1(pb[1] - pb[0]) + l1(pc[1] - pc[0]);
-  const float sides = l1(pb[1]) + l1(pc[1]) + l1(pc[1] - pb[1]) + 2.0f * stretches;
+  const float stretches = l1(a0) + l1(b1 - b0) + l1(c1 - c0);
+  const float sides = l1(b1) + l1(c1) + l1(c1 - b1) + 2.0f * stretches;
   constexpr auto slack = static_cast<float>(kVertexSlackPx);
   return least > 2.0f * slack * sides + 4.0f * slack * slack;
 }

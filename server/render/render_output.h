@@ -30,6 +30,9 @@ struct RenderOutput {
   // Of those kept, the faces set apart as sure to turn to the side the hull
   // pass culls: drawn only where that side is (render/hull_cull.h).
   std::size_t hull_faces_turned_away = 0;
+  // The main pass's triangles left out in runs that surely turn away from
+  // the camera (render/facing_runs.h).
+  std::size_t main_triangles_skipped = 0;
 };
 
 }  // namespace toond::render

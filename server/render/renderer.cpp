@@ -60,7 +60,8 @@ std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& o
                                           frame.supersample, real_gpu());
   out.samples = target ? target->samples() : 1;
   const FrameBlocks blocks(frame, resources_.frame_uniforms());
-  PassContext context{frame, blocks, programs_, resources_, target, {}, hull_cull_.value_or(!real_gpu()), background_};
+  PassContext context{frame,    blocks, programs_, resources_, target, {}, hull_cull_.value_or(!real_gpu()),
+                      skip_runs_, background_};
   if (frame.plan.has(Pass::HullOutline)) start_hull_cull(context);
   for (Pass pass : frame.plan.passes) {
     if (pacing && pacing->expired()) break;
@@ -82,6 +83,7 @@ std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& o
   pending->cap_checks = std::move(context.main_cap_checks);
   out.hull_faces_culled = context.hull_faces_culled;
   out.hull_faces_turned_away = context.hull_faces_turned_away;
+  out.main_triangles_skipped = context.main_triangles_skipped;
   pending->unpremultiply = frame.plan.has(Pass::Unpremultiply);
   // Without supersampling the multisample resolve is a blit inside
   // read_back(); its time is part of the readback figure, since the

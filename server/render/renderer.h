@@ -29,6 +29,10 @@ class Renderer {
   // setting a triangle up costs the recording thread more than the test.
   // Set for tests that show it changes no byte.
   void set_hull_cull(bool on) { hull_cull_ = on; }
+  // Whether the main pass leaves out runs of faces that surely turn to the
+  // side it culls (render/facing_runs.h). On by default; off for tests that
+  // show it changes no byte.
+  void set_skip_turned_away_runs(bool on) { skip_runs_ = on; }
   // Returns once the work frames handed off so far is done (a model's cull
   // mesh, built after its first frame): for tests that need it in place.
   void settle() { background_.drain(); }
@@ -65,6 +69,7 @@ class Renderer {
   gpu::ProgramCache& programs_;
   bool face_culling_ = true;
   std::optional<bool> hull_cull_;
+  bool skip_runs_ = true;
   bool frames_in_flight_ = false;
   // Asked of the context at the first render: whether it rasterizes on a
   // GPU or on this CPU's threads (gpu::software_rasterizer). That decides

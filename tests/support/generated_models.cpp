@@ -77,6 +77,30 @@ std::string disk_obj(int segments, double radius) {
   return obj;
 }
 
+std::string bowl_obj(int segments, int rings) {
+  const double pi = std::acos(-1.0);
+  std::string obj = "# bowl: the lower half of a unit sphere\n";
+  for (int r = 0; r <= rings; ++r) {
+    const double polar = 0.5 * pi * (1.0 + static_cast<double>(r) / rings);  // the rim to the bottom pole
+    for (int s = 0; s < segments; ++s) {
+      const double around = 2.0 * pi * s / segments;
+      const glm::dvec3 p(std::sin(polar) * std::cos(around), std::cos(polar), std::sin(polar) * std::sin(around));
+      obj += vec_line("v", p);
+      obj += vec_line("vn", p);
+    }
+  }
+  const auto at = [&](int r, int s) { return std::to_string(r * segments + s % segments + 1); };
+  const auto corner = [](const std::string& i) { return i + "//" + i; };
+  for (int r = 0; r < rings; ++r) {
+    for (int s = 0; s < segments; ++s) {
+      const std::string a = at(r, s), b = at(r, s + 1), c = at(r + 1, s + 1), d = at(r + 1, s);
+      obj += "f " + corner(a) + " " + corner(b) + " " + corner(c) + "\n";
+      obj += "f " + corner(a) + " " + corner(c) + " " + corner(d) + "\n";
+    }
+  }
+  return obj;
+}
+
 std::string exporter_sphere_obj(const ExporterSphere& sphere) {
   const double pi = std::acos(-1.0);
   const int segments = sphere.segments;

@@ -11,6 +11,9 @@ std::string sphere_obj(int segments, int rings, double radius = 1.0, glm::dvec3 
 std::string cube_obj(double half_size = 1.0, glm::dvec3 centre = glm::dvec3(0.0));
 // A flat disk in the XY plane facing +Z, a fan of `segments` triangles.
 std::string disk_obj(int segments, double radius = 1.0);
+// The lower half of a unit sphere, open at the top (y = 0): a bowl, whose
+// inside shows from above.
+std::string bowl_obj(int segments, int rings);
 
 // A unit UV sphere as exporters write one: every vertex computed from sin
 // and cos, so the seam's two vertex rows and a pole's vertices lie a

@@ -5,13 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
-#include <numbers>
 #include <span>
-#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -317,35 +314,12 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScannedModels) {
   }
 }
 
-// The lower half of a sphere, open at the top: a bowl.
-std::string bowl_obj(int segments, int rings) {
-  std::string obj;
-  for (int r = 0; r <= rings; ++r) {
-    const double polar = 0.5 * std::numbers::pi + 0.5 * std::numbers::pi * r / rings;  // the rim (equator) to the bottom pole
-    for (int k = 0; k < segments; ++k) {
-      const double around = 2.0 * std::numbers::pi * k / segments;
-      const glm::dvec3 p(std::sin(polar) * std::cos(around), std::cos(polar), std::sin(polar) * std::sin(around));
-      obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
-      obj += "vn " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
-    }
-  }
-  const auto at = [&](int r, int k) { return std::to_string(r * segments + (k % segments) + 1); };
-  for (int r = 0; r < rings; ++r) {
-    for (int k = 0; k < segments; ++k) {
-      const std::string a = at(r, k), b = at(r, k + 1), c = at(r + 1, k + 1), d = at(r + 1, k);
-      obj += "f " + a + "//" + a + " " + b + "//" + b + " " + c + "//" + c + "\n";
-      obj += "f " + a + "//" + a + " " + c + "//" + c + " " + d + "//" + d + "\n";
-    }
-  }
-  return obj;
-}
-
 // Seen from above, a bowl's inside shows through its opening (its cap
 // turns toward the camera): the hull pass draws its culled side after all,
 // and that draw needs the faces set apart as turned to it, which draw the
 // ring along the far rim.
 TEST_F(HullCullRender, TheSideDrawnWhereACapShowsTakesTheFacesSetApart) {
-  const scene::Model bowl = import_obj(bowl_obj(48, 12));
+  const scene::Model bowl = import_obj(test::bowl_obj(48, 12));
   for (const int pitch : {-30, 30, 50, 70}) {
     const nlohmann::json request = {{"width", 256}, {"height", 256}, {"camera", {{"pitch", pitch}}}};
     const RenderOutput out = same_image({{&bowl, glm::dmat4(1.0)}}, request, "bowl");

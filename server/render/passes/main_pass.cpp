@@ -21,13 +21,30 @@ ToonVariant material_variant(const FrameContext& frame, const GpuMaterial& mater
   return variant;
 }
 
+// Where object i's runs of faces that surely turn away from the camera may
+// be left out (render/facing_runs.h), the camera seen from its mesh: the
+// main pass culls the faces turned away (not an inside-out mesh's, which
+// turn toward it), and the object is placed by a similarity.
+std::optional<MeshViewer> turned_away_runs_viewer(const PassContext& context, std::size_t i) {
+  const FrameContext& frame = context.frame;
+  const glm::dmat4& placement = frame.scene.matrices[i];
+  const bool mirrored = glm::determinant(glm::dmat3(placement)) < 0.0;
+  const HiddenFaces turned_away = mirrored ? HiddenFaces::Front : HiddenFaces::Back;
+  if (!context.skip_turned_away_runs || frame.main_faces[i].hidden != turned_away) return std::nullopt;
+  return viewer_in_mesh(placement, frame.viewer.eye, frame.viewer.forward, frame.orthographic(),
+                        frame.world_per_px_at_w1());
+}
+
 // Object i, submesh by submesh, each with its material's program and
-// block; a program is switched only where the variant changes.
-void shade_object(PassContext& context, std::size_t i) {
+// block; a program is switched only where the variant changes. With
+// `viewer`, runs of faces that surely turn away from it are left out.
+void shade_object(PassContext& context, std::size_t i, const std::optional<MeshViewer>& viewer) {
   const FrameContext& frame = context.frame;
   const GpuModel& model = frame.objects[i].model;
   const gpu::Program* in_use = nullptr;
-  for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
+  const std::vector<scene::Submesh>& submeshes = model.submeshes(frame.lod_of(i));
+  for (std::size_t k = 0; k < submeshes.size(); ++k) {
+    const scene::Submesh& sub = submeshes[k];
     const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
     const ToonVariant variant = material_variant(frame, material);
     gpu::Program& program = context.programs.get("toon.vert", "toon.frag", variant.defines());
@@ -39,7 +56,8 @@ void shade_object(PassContext& context, std::size_t i) {
     }
     // A request's colour for one material's darkest band, by its name.
     if (variant.has(ToonFeature::ShadeColor)) program.set("u_shade_color", frame.params.shade_colors.at(material.name));
-    model.draw(sub);
+    if (viewer) context.main_triangles_skipped += model.draw_facing(frame.lod_of(i), k, *viewer);
+    else model.draw(sub);
   }
 }
 
@@ -71,9 +89,12 @@ void draw_main_pass(PassContext& context) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   context.main_cap_checks.resize(frame.objects.size());
   if (frame.shadow) glBindTextureUnit(texture_unit::kShadowMap, context.resources.shadow_map().texture());
-  draw_objects(frame, context.blocks, {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
-                       .draw = [&](std::size_t i) { shade_object(context, i); },
-                       .cap_checks = &context.main_cap_checks});
+  // Where a cap shows, the side culled is drawn after all: whole.
+  draw_objects(frame, context.blocks,
+               {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
+                .draw = [&](std::size_t i) { shade_object(context, i, turned_away_runs_viewer(context, i)); },
+                .redraw = [&](std::size_t i) { shade_object(context, i, std::nullopt); },
+                .cap_checks = &context.main_cap_checks});
 }
 
 }  // namespace toond::render

@@ -30,12 +30,16 @@ struct PassContext {
   std::vector<gpu::Query> main_cap_checks;
   // Whether the hull leaves out the faces that cannot show (render/hull_cull.h).
   bool cull_hull = false;
+  // Whether the main pass leaves out runs of faces that surely turn to the
+  // side it culls (render/facing_runs.h).
+  bool skip_turned_away_runs = true;
   // Where work is handed off while the passes record (the hull cull).
   BackgroundThread& background;
   // Started before the first pass (start_hull_cull), taken by the hull pass.
   Handoff<std::vector<std::optional<HullSubset>>> hull_cull{};
   std::size_t hull_faces_culled = 0;  // reported in RenderOutput
   std::size_t hull_faces_turned_away = 0;
+  std::size_t main_triangles_skipped = 0;
 };
 
 }  // namespace toond::render
