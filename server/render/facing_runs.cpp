@@ -1,6 +1,7 @@
 #include "render/facing_runs.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -41,21 +42,29 @@ FacingRuns::FacingRuns(std::span<const glm::vec3> positions, std::span<const std
         high = glm::max(high, at(e));
       }
       run.middle = 0.5 * (low + high);
-      glm::dvec3 normals{0.0};
+      double radius2 = 0.0;
+      for (std::uint32_t e = first; e < first + count; ++e) {
+        const glm::dvec3 d = at(e) - run.middle;
+        radius2 = std::max(radius2, glm::dot(d, d));
+      }
+      run.radius = std::sqrt(radius2);
+      std::array<glm::dvec3, kRunTriangles> normals;
+      glm::dvec3 sum{0.0};
       run.thinnest = std::numeric_limits<double>::infinity();
-      for (std::uint32_t e = first; e < first + count; e += 3) {
+      for (std::uint32_t t = 0; t < count / 3; ++t) {
+        const std::uint32_t e = first + 3 * t;
         const FaceShape face = shape_of(at(e), at(e + 1), at(e + 2));
-        normals += face.normal;
+        normals[t] = face.normal;
+        sum += face.normal;
         run.thinnest = std::min(run.thinnest, face.height);
-        for (std::uint32_t k = 0; k < 3; ++k) run.radius = std::max(run.radius, glm::length(at(e + k) - run.middle));
       }
       // The cone: round the normals' mean, as wide as the widest apart.
-      const double mean_length = glm::length(normals);
+      const double mean_length = glm::length(sum);
       if (run.thinnest > 0.0 && mean_length > 0.0) {
-        run.axis = normals / mean_length;
+        run.axis = sum / mean_length;
         run.cos_half_angle = 1.0;
-        for (std::uint32_t e = first; e < first + count; e += 3) {
-          run.cos_half_angle = std::min(run.cos_half_angle, glm::dot(shape_of(at(e), at(e + 1), at(e + 2)).normal, run.axis));
+        for (std::uint32_t t = 0; t < count / 3; ++t) {
+          run.cos_half_angle = std::min(run.cos_half_angle, glm::dot(normals[t], run.axis));
         }
         run.sin_half_angle = std::sqrt(std::max(0.0, 1.0 - run.cos_half_angle * run.cos_half_angle));
       }
