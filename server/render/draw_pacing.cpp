@@ -21,12 +21,17 @@ DrawPacing::DrawPacing(std::size_t chunk_triangles, Clock::time_point deadline, 
       between_chunks_(std::move(between_chunks)) {}
 
 void DrawPacing::draw_triangles(std::size_t index_count, std::size_t first_index) {
-  for (std::size_t done = 0; done < index_count && !expired_; done += chunk_indices_) {
+  for (std::size_t done = 0; done < index_count && !expired_;) {
     if (Clock::now() > deadline_) {
       expired_ = true;
       return;
     }
-    draw_elements(std::min(chunk_indices_, index_count - done), first_index + done);
+    const std::size_t count = std::min(chunk_indices_ - issued_, index_count - done);
+    draw_elements(count, first_index + done);
+    done += count;
+    issued_ += count;
+    if (issued_ < chunk_indices_) continue;
+    issued_ = 0;
     ++chunks_;
     wait_for_chunk();
     if (between_chunks_ && !expired_) between_chunks_();

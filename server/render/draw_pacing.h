@@ -36,7 +36,9 @@ class DrawPacing {
   DrawPacing(std::size_t chunk_triangles, Clock::time_point deadline, std::function<void()> between_chunks = {});
 
   // glDrawElements of `index_count` indices (triangles) from index
-  // `first_index` of the bound element buffer, chunk by chunk.
+  // `first_index` of the bound element buffer, chunk by chunk. A chunk is
+  // counted across calls: a pass drawn as many short ranges (runs left out
+  // between them) waits once per chunk's triangles, not once per range.
   void draw_triangles(std::size_t index_count, std::size_t first_index);
   bool expired() const { return expired_; }
   std::size_t chunks_drawn() const { return chunks_; }
@@ -47,6 +49,7 @@ class DrawPacing {
   void wait_for_chunk();
 
   std::size_t chunk_indices_;
+  std::size_t issued_ = 0;  // indices drawn since the last wait
   Clock::time_point deadline_;
   std::function<void()> between_chunks_;
   std::size_t chunks_ = 0;
