@@ -87,7 +87,7 @@ bool FacingRuns::surely_turns_away(const Run& run, const MeshViewer& viewer) con
   double cos_beta = 0;
   double distance = 0;
   if (viewer.orthographic) {
-    cos_beta = -glm::dot(run.axis, viewer.toward_viewer);
+    cos_beta = glm::dot(run.axis, viewer.forward);
   } else {
     const glm::dvec3 away = run.middle - viewer.eye;
     distance = glm::length(away);
@@ -126,8 +126,7 @@ void FacingRuns::ranges_facing(std::size_t k, const MeshViewer& viewer, std::vec
   }
 }
 
-std::optional<MeshViewer> viewer_in_mesh(const glm::dmat4& model, const glm::dvec3& eye, const glm::dvec3& forward,
-                                         bool orthographic, double world_per_px_at_w1) {
+std::optional<MeshViewer> viewer_in_mesh(const glm::dmat4& model, const Viewer& frame_viewer, double world_per_px_at_w1) {
   const glm::dmat3 linear(model);
   const double scale = glm::length(linear[0]);
   if (!(scale > 0.0) || !std::isfinite(scale)) return std::nullopt;
@@ -141,13 +140,13 @@ std::optional<MeshViewer> viewer_in_mesh(const glm::dmat4& model, const glm::dve
   }
   const glm::dmat4 to_mesh = glm::inverse(model);
   MeshViewer viewer;
-  viewer.orthographic = orthographic;
-  viewer.eye = glm::dvec3(to_mesh * glm::dvec4(eye, 1.0));
-  viewer.toward_viewer = glm::normalize(glm::dmat3(to_mesh) * -forward);
+  viewer.orthographic = frame_viewer.orthographic;
+  viewer.eye = glm::dvec3(to_mesh * glm::dvec4(frame_viewer.eye, 1.0));
+  viewer.forward = glm::normalize(glm::dmat3(to_mesh) * frame_viewer.forward);
   // Perspective: a pixel at frame distance s·d is world_per_px_at_w1 · w ≤
   // world_per_px_at_w1 · s·d frame units, that is world_per_px_at_w1 · d
   // mesh units. Orthographic: world_per_px_at_w1 frame units everywhere.
-  viewer.pixel = orthographic ? world_per_px_at_w1 / scale : world_per_px_at_w1;
+  viewer.pixel = viewer.orthographic ? world_per_px_at_w1 / scale : world_per_px_at_w1;
   return viewer;
 }
 

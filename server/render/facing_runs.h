@@ -27,17 +27,15 @@
 
 #include <glm/glm.hpp>
 
+#include "render/face_culling.h"
 #include "scene/model.h"
 
 namespace toond::render {
 
-// Where the viewer is, in the mesh's own coordinates: a face turns away in
-// them where it does in the frame's, under a similarity (rotation, uniform
-// scale, translation), mirrored or not.
-struct MeshViewer {
-  glm::dvec3 eye{0.0};                      // perspective views
-  glm::dvec3 toward_viewer{0.0, 0.0, 1.0};  // orthographic views: unit, opposite every ray
-  bool orthographic = false;
+// The viewer in the mesh's own coordinates (`forward` a unit vector): a
+// face turns away in them where it does in the frame's, under a similarity
+// (rotation, uniform scale, translation), mirrored or not.
+struct MeshViewer : Viewer {
   // A drawn pixel's size in mesh units: at distance 1 from the eye
   // (perspective; it grows with the distance), or anywhere (orthographic).
   double pixel = 0;
@@ -90,11 +88,9 @@ class FacingRuns {
   std::vector<std::size_t> first_run_;  // per submesh, then one past the last
 };
 
-// The frame's viewer (`eye`, `forward`, in frame coordinates, and a pixel's
-// size there at w = 1) seen from a mesh placed by `model` (mesh → frame
-// coordinates); nullopt unless `model` is a similarity, under which alone
-// the test carries over.
-std::optional<MeshViewer> viewer_in_mesh(const glm::dmat4& model, const glm::dvec3& eye, const glm::dvec3& forward,
-                                         bool orthographic, double world_per_px_at_w1);
+// The frame's viewer (and a pixel's size in frame units at w = 1) seen
+// from a mesh placed by `model` (mesh → frame coordinates); nullopt unless
+// `model` is a similarity, under which alone the test carries over.
+std::optional<MeshViewer> viewer_in_mesh(const glm::dmat4& model, const Viewer& frame_viewer, double world_per_px_at_w1);
 
 }  // namespace toond::render

@@ -368,12 +368,13 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
   };
   HullSubset out;
   out.indices.reserve(indices.size());
+  // The faces set apart gather here, each submesh's range of them first
+  // counted from its start, then moved behind the rest.
   std::vector<std::uint32_t>& away = scratch.turned_away;
   away.clear();
-  std::vector<std::uint32_t> away_counts;
   for (const scene::Submesh& sub : mesh.submeshes()) {
     scene::Submesh kept{static_cast<std::uint32_t>(out.indices.size()), 0, sub.material};
-    const std::size_t away_before = away.size();
+    scene::Submesh set_apart{static_cast<std::uint32_t>(away.size()), 0, sub.material};
     for (std::size_t e = sub.first_index; e < sub.first_index + sub.index_count; e += 3) {
       if (cannot_show(e / 3)) {
         ++out.culled_triangles;
@@ -384,15 +385,14 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
     }
     kept.index_count = static_cast<std::uint32_t>(out.indices.size()) - kept.first_index;
     out.submeshes.push_back(kept);
-    away_counts.push_back(static_cast<std::uint32_t>(away.size() - away_before));
+    set_apart.index_count = static_cast<std::uint32_t>(away.size()) - set_apart.first_index;
+    out.turned_away.push_back(set_apart);
   }
-  if (away.empty()) return out;
-  out.turned_away_triangles = away.size() / 3;
-  std::uint32_t first = static_cast<std::uint32_t>(out.indices.size());
-  for (std::size_t k = 0; k < away_counts.size(); ++k) {
-    out.turned_away.push_back({first, away_counts[k], out.submeshes[k].material});
-    first += away_counts[k];
+  if (away.empty()) {
+    out.turned_away.clear();
+    return out;
   }
+  for (scene::Submesh& range : out.turned_away) range.first_index += static_cast<std::uint32_t>(out.indices.size());
   out.indices.insert(out.indices.end(), away.begin(), away.end());
   return out;
 }

@@ -100,12 +100,12 @@ struct HullSubset {
   std::vector<scene::Submesh> submeshes;   // ranges of `indices`, the level's materials in its order
   std::vector<scene::Submesh> turned_away;  // the same materials' faces set apart, after all of those
   std::size_t culled_triangles = 0;         // left out: they draw nothing either way
-  std::size_t turned_away_triangles = 0;
 
   // How many indices lead, before the faces set apart.
   std::size_t facing_index_count() const {
     return turned_away.empty() ? indices.size() : turned_away.front().first_index;
   }
+  std::size_t turned_away_triangles() const { return (indices.size() - facing_index_count()) / 3; }
 };
 
 // One object's cull: its level's mesh and the frame's view of it.

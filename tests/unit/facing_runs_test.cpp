@@ -80,7 +80,7 @@ TEST(FacingRuns, OrthographicViewsLeaveOutTheFarSide) {
   const FacingRuns runs(mesh.positions, mesh.indices, mesh.submeshes);
   MeshViewer viewer;
   viewer.orthographic = true;
-  viewer.toward_viewer = glm::dvec3(0.0, 0.0, 1.0);
+  viewer.forward = glm::dvec3(0.0, 0.0, -1.0);
   viewer.pixel = 2.0 / 500.0;
   const std::vector<IndexRange> ranges = kept(runs, mesh, viewer);
   std::size_t left_out = 0;
@@ -131,19 +131,22 @@ TEST(FacingRuns, ARunWithADegenerateFaceIsAlwaysDrawn) {
 }
 
 TEST(FacingRuns, OnlyASimilarityCarriesTheTestOver) {
-  const glm::dvec3 eye(1.0, 2.0, 10.0);
-  const glm::dvec3 forward(0.0, 0.0, -1.0);
+  Viewer frame_viewer;
+  frame_viewer.eye = glm::dvec3(1.0, 2.0, 10.0);
   const glm::dmat4 moved = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -2.0));
-  const std::optional<MeshViewer> plain = viewer_in_mesh(moved * glm::scale(glm::dmat4(1.0), glm::dvec3(2.0)), eye,
-                                                         forward, false, 0.01);
+  const std::optional<MeshViewer> plain =
+      viewer_in_mesh(moved * glm::scale(glm::dmat4(1.0), glm::dvec3(2.0)), frame_viewer, 0.01);
   ASSERT_TRUE(plain);
   EXPECT_NEAR(plain->eye.z, 6.0, 1e-12);  // (10 + 2) / 2
   EXPECT_NEAR(plain->pixel, 0.01, 1e-15);
+  frame_viewer.orthographic = true;
+  frame_viewer.forward = glm::dvec3(1.0, 0.0, 0.0);
   const std::optional<MeshViewer> mirrored =
-      viewer_in_mesh(glm::scale(glm::dmat4(1.0), glm::dvec3(-1.0, 1.0, 1.0)), eye, forward, true, 0.01);
+      viewer_in_mesh(glm::scale(glm::dmat4(1.0), glm::dvec3(-2.0, 2.0, 2.0)), frame_viewer, 0.01);
   ASSERT_TRUE(mirrored);
-  EXPECT_NEAR(mirrored->toward_viewer.z, 1.0, 1e-12);
-  EXPECT_FALSE(viewer_in_mesh(glm::scale(glm::dmat4(1.0), glm::dvec3(1.0, 2.0, 1.0)), eye, forward, false, 0.01));
+  EXPECT_NEAR(mirrored->forward.x, -1.0, 1e-12);  // unit, and mirrored
+  EXPECT_NEAR(mirrored->pixel, 0.005, 1e-15);     // orthographic: a pixel in mesh units
+  EXPECT_FALSE(viewer_in_mesh(glm::scale(glm::dmat4(1.0), glm::dvec3(1.0, 2.0, 1.0)), frame_viewer, 0.01));
 }
 
 class FacingRunsRender : public test::GlContextTest {
@@ -219,15 +222,10 @@ TEST_F(FacingRunsRender, LeavingRunsOutChangesNoByteOfScenes) {
 }
 
 TEST_F(FacingRunsRender, LeavingRunsOutChangesNoByteOfScannedModels) {
-  if (!test::have_shared_models()) GTEST_SKIP() << "../shared/models is absent";
+  TOOND_REQUIRE_SHARED_MODELS();
   const std::filesystem::path models = test::shared_models_dir();
-  const auto file = [&](const std::string& folder, const std::string& name) {
-    return std::pair{name, test::read_file(models / folder / name)};
-  };
-  const scene::Model bunny = scene::import_bundle(
-      scene::test_checks::make_bundle({file("stanford-bunny", "stanford-bunny.obj")}));
-  const scene::Model spot = scene::import_bundle(scene::test_checks::make_bundle(
-      {file("spot", "spot.obj"), file("spot", "spot.mtl"), file("spot", "spot_texture.png")}));
+  const scene::Model bunny = scene::import_bundle(scene::test_checks::bundle_from_folder(models / "stanford-bunny"));
+  const scene::Model spot = scene::import_bundle(scene::test_checks::bundle_from_folder(models / "spot"));
   for (const auto& [model, what] : {std::pair{&bunny, "bunny"}, std::pair{&spot, "spot"}}) {
     for (const nlohmann::json& request : run_requests()) expect_same_image({{model, glm::dmat4(1.0)}}, request, what);
     const std::size_t skipped = expect_same_image({{model, glm::dmat4(1.0)}}, {{"width", 512}, {"height", 512}}, what);

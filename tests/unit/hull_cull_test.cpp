@@ -117,7 +117,8 @@ TEST(HullCull, FacesSureToTurnToTheCulledSideAreSetApartAfterTheRest) {
   // Where the hull pass draws both sides, nothing is set apart.
   const std::optional<HullSubset> both = hull_faces_that_may_show(cull, view);
   ASSERT_TRUE(both);
-  EXPECT_EQ(both->turned_away_triangles, 0u);
+  EXPECT_EQ(both->turned_away_triangles(), 0u);
+  EXPECT_TRUE(both->turned_away.empty());
   EXPECT_EQ(both->facing_index_count(), both->indices.size());
   view.hull_hidden = HiddenFaces::Back;
   const std::optional<HullSubset> subset = hull_faces_that_may_show(cull, view);
@@ -126,10 +127,18 @@ TEST(HullCull, FacesSureToTurnToTheCulledSideAreSetApartAfterTheRest) {
   // looks down -z) near the silhouette go after the rest.
   EXPECT_EQ(subset->culled_triangles, both->culled_triangles);
   EXPECT_EQ(subset->indices.size(), both->indices.size());
-  EXPECT_GT(subset->turned_away_triangles, 0u);
+  EXPECT_GT(subset->turned_away_triangles(), 0u);
   ASSERT_EQ(subset->turned_away.size(), subset->submeshes.size());
   const std::size_t facing = subset->facing_index_count();
-  EXPECT_EQ(facing + 3 * subset->turned_away_triangles, subset->indices.size());
+  // The ranges set apart follow the rest one after another, a submesh's
+  // material each, to the end.
+  std::size_t next = facing;
+  for (std::size_t k = 0; k < subset->turned_away.size(); ++k) {
+    EXPECT_EQ(subset->turned_away[k].first_index, next) << k;
+    EXPECT_EQ(subset->turned_away[k].material, subset->submeshes[k].material) << k;
+    next += subset->turned_away[k].index_count;
+  }
+  EXPECT_EQ(next, subset->indices.size());
   for (std::size_t e = facing; e < subset->indices.size(); e += 3) {
     EXPECT_LT(xy_area2(mesh, std::span(subset->indices).subspan(e, 3)), 0.0) << e;
   }
@@ -295,15 +304,10 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScenes) {
 }
 
 TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScannedModels) {
-  if (!test::have_shared_models()) GTEST_SKIP() << "../shared/models is absent";
+  TOOND_REQUIRE_SHARED_MODELS();
   const std::filesystem::path models = test::shared_models_dir();
-  const auto file = [&](const std::string& folder, const std::string& name) {
-    return std::pair{name, test::read_file(models / folder / name)};
-  };
-  const scene::Model bunny = scene::import_bundle(
-      scene::test_checks::make_bundle({file("stanford-bunny", "stanford-bunny.obj")}));
-  const scene::Model spot = scene::import_bundle(scene::test_checks::make_bundle(
-      {file("spot", "spot.obj"), file("spot", "spot.mtl"), file("spot", "spot_texture.png")}));
+  const scene::Model bunny = scene::import_bundle(scene::test_checks::bundle_from_folder(models / "stanford-bunny"));
+  const scene::Model spot = scene::import_bundle(scene::test_checks::bundle_from_folder(models / "spot"));
   for (const auto& [model, what] : {std::pair{&bunny, "bunny"}, std::pair{&spot, "spot"}}) {
     for (const nlohmann::json& request : requests()) expect_same_image({{model, glm::dmat4(1.0)}}, request, what);
     // The default request at the benchmark's size leaves out most of them,
@@ -320,11 +324,15 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScannedModels) {
 // ring along the far rim.
 TEST_F(HullCullRender, TheSideDrawnWhereACapShowsTakesTheFacesSetApart) {
   const scene::Model bowl = import_obj(test::bowl_obj(48, 12));
-  for (const int pitch : {-30, 30, 50, 70}) {
-    const nlohmann::json request = {{"width", 256}, {"height", 256}, {"camera", {{"pitch", pitch}}}};
-    const RenderOutput out = same_image({{&bowl, glm::dmat4(1.0)}}, request, "bowl");
-    if (pitch >= 50) {
-      EXPECT_GT(out.hull_faces_turned_away, 0u) << pitch;
+  // In one colour the hull is one draw; in the material's, one per material.
+  for (const char* colour : {"fixed", "material"}) {
+    for (const int pitch : {-30, 30, 50, 70}) {
+      const nlohmann::json request = {
+          {"width", 256}, {"height", 256}, {"camera", {{"pitch", pitch}}}, {"outline", {{"color_mode", colour}}}};
+      const RenderOutput out = same_image({{&bowl, glm::dmat4(1.0)}}, request, "bowl");
+      if (pitch >= 50) {
+        EXPECT_GT(out.hull_faces_turned_away, 0u) << pitch;
+      }
     }
   }
 }

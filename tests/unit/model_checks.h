@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +14,7 @@
 #include "scene/bundle.h"
 #include "scene/import_error.h"
 #include "scene/model.h"
+#include "support/shared_models.h"
 
 namespace toond::scene::test_checks {
 
@@ -20,6 +23,22 @@ using Files = std::vector<std::pair<std::string, std::string>>;
 inline Bundle make_bundle(const Files& files) {
   Bundle bundle;
   for (const auto& [path, content] : files) bundle.add(path, content);
+  return bundle;
+}
+
+// A model folder as an upload of it: every file but its notes (.txt, .md,
+// LICENSE); of its OBJ files only `only_obj` when given.
+inline Bundle bundle_from_folder(const std::filesystem::path& dir, const std::string& only_obj = {}) {
+  Bundle bundle;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    const std::string rel = std::filesystem::relative(entry.path(), dir).generic_string();
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".txt" || ext == ".md" || rel == "LICENSE") continue;
+    if (ext == ".obj" && !only_obj.empty() && rel != only_obj) continue;
+    bundle.add(rel, toond::test::read_file(entry.path()));
+  }
   return bundle;
 }
 

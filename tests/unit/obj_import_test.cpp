@@ -20,6 +20,7 @@ namespace toond::scene {
 namespace {
 
 using test_checks::expect_import_error;
+using test_checks::bundle_from_folder;
 using test_checks::expect_well_formed;
 using test_checks::has_warning;
 using test_checks::make_bundle;
@@ -550,20 +551,6 @@ TEST(TextureDecode, RefusesGarbageAndOversizedImages) {
 }
 
 // ---- real models from ../shared/models (never copied into the repo) ----
-
-Bundle bundle_from_folder(const std::filesystem::path& dir, const std::string& only_obj = {}) {
-  Bundle bundle;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
-    if (!entry.is_regular_file()) continue;
-    const std::string rel = std::filesystem::relative(entry.path(), dir).generic_string();
-    std::string ext = entry.path().extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".txt" || ext == ".md" || rel == "LICENSE") continue;
-    if (ext == ".obj" && !only_obj.empty() && rel != only_obj) continue;
-    bundle.add(rel, test::read_file(entry.path()));
-  }
-  return bundle;
-}
 
 TEST(ObjImportShared, Spot) {
   TOOND_REQUIRE_SHARED_MODELS();

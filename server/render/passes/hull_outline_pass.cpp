@@ -63,7 +63,7 @@ std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t 
   view.viewport_width = frame.draw_width;
   view.viewport_height = frame.draw_height;
   view.drawn_clockwise = frame.main_faces[i].hidden == HiddenFaces::Front;
-  view.hull_hidden = hull_face_skip(frame, i).hidden;
+  view.hull_hidden = context.hull_skips[i].hidden;
   return HullCullInput{std::move(mesh), view};
 }
 
@@ -84,7 +84,7 @@ HullFaces hull_faces(PassContext& context) {
     out.first.push_back(count);
     if (!subset) continue;
     context.hull_faces_culled += subset->culled_triangles;
-    context.hull_faces_turned_away += subset->turned_away_triangles;
+    context.hull_faces_turned_away += subset->turned_away_triangles();
     parts.push_back(subset->indices);
     count += parts.back().size();
   }
@@ -138,12 +138,13 @@ void draw_hull_outline_pass(PassContext& context) {
   program.use();
   const HullFaces faces = hull_faces(context);
   draw_objects(frame, context.blocks,
-               {.faces = [&](std::size_t i) { return hull_face_skip(frame, i); },
+               {.faces = [&](std::size_t i) { return context.hull_skips[i]; },
                 .draw = [&](std::size_t i) { draw_hull_of(frame, faces, i, HullSide::Shown); },
                 .redraw = [&](std::size_t i) { draw_hull_of(frame, faces, i, HullSide::Both); }});
 }
 
 void start_hull_cull(PassContext& context) {
+  for (std::size_t i = 0; i < context.frame.objects.size(); ++i) context.hull_skips.push_back(hull_face_skip(context.frame, i));
   std::vector<std::optional<HullCullInput>> inputs;
   bool any = false;
   for (std::size_t i = 0; i < context.frame.objects.size(); ++i) {

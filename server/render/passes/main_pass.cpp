@@ -31,8 +31,7 @@ std::optional<MeshViewer> turned_away_runs_viewer(const PassContext& context, st
   const bool mirrored = glm::determinant(glm::dmat3(placement)) < 0.0;
   const HiddenFaces turned_away = mirrored ? HiddenFaces::Front : HiddenFaces::Back;
   if (!context.skip_turned_away_runs || frame.main_faces[i].hidden != turned_away) return std::nullopt;
-  return viewer_in_mesh(placement, frame.viewer.eye, frame.viewer.forward, frame.orthographic(),
-                        frame.world_per_px_at_w1());
+  return viewer_in_mesh(placement, frame.viewer, frame.world_per_px_at_w1());
 }
 
 // Object i, submesh by submesh, each with its material's program and

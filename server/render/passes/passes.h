@@ -18,9 +18,10 @@ void draw_edge_pass(PassContext& context);
 void draw_layer_pass(PassContext& context);      // depth, normal or id in place of the colour
 void draw_downsample_pass(PassContext& context);  // supersampling's box filter into the output size
 
-// Starts working out, off the render thread, which of the hull's faces
-// may show (render/hull_cull.h), for draw_hull_outline_pass to take; called
-// before the first pass of a frame whose plan has the hull.
+// Works out which side of each object's hull its draw skips and starts
+// working out, off the render thread, which of the hull's faces may show
+// (render/hull_cull.h), for draw_hull_outline_pass to take; called before
+// the first pass of a frame whose plan has the hull.
 void start_hull_cull(PassContext& context);
 
 using DrawPass = void (*)(PassContext&);
