@@ -38,13 +38,16 @@ class BackgroundThread {
 };
 
 // A job handed to the background thread for a result the caller needs
-// later. Where the thread has not finished it by then, the caller runs it
-// itself: a thread just woken, or preempted, waits behind busy ones (a CPU
-// rasterizer's) for up to a scheduler tick (4 ms measured), several times
-// what such a job takes. So the job may run twice at once: it must only
-// read what it captured, and own or share all of that (it may still run
-// after the caller has gone on). Dropped untaken, a job not yet begun is
-// skipped. Render thread only, but for the job itself.
+// later. Where the thread has not begun it by then, the caller runs it
+// itself: a thread just woken waits behind busy ones (a CPU rasterizer's)
+// for up to a scheduler tick (4 ms measured), several times what such a
+// job takes. Where the thread is at it, the caller waits for it: running
+// it a second time beside the first took both from the rasterizer's
+// threads, and the frame got slower (the armadillo's at MSAA 1, 6.9 → 8.5
+// ms). The job must only read what it captured, and own or share all of
+// that (it may still run after the caller has gone on). Dropped untaken,
+// a job not yet begun is skipped. Render thread only, but for the job
+// itself.
 template <class Result>
 class Handoff {
  public:
@@ -62,8 +65,7 @@ class Handoff {
   // The thread's result if it has one, else the job's run here.
   Result take() {
     const std::shared_ptr<State> state = std::move(state_);
-    state->begun.store(true);
-    if (state->ended.load(std::memory_order_acquire)) return state->result.get();
+    if (state->begun.exchange(true)) return state->result.get();  // done, or under way there
     return state->job();
   }
 
@@ -77,11 +79,9 @@ class Handoff {
       } catch (...) {
         done.set_exception(std::current_exception());
       }
-      ended.store(true, std::memory_order_release);
     }
     const std::function<Result()> job;
     std::atomic<bool> begun{false};
-    std::atomic<bool> ended{false};
     std::promise<Result> done;
     std::future<Result> result;
   };
