@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <utility>
+
+#include "render/cover_layers.h"
 
 namespace toond::render {
 namespace {
@@ -85,10 +88,17 @@ std::vector<std::int32_t> edge_neighbours(std::span<const std::uint32_t> indices
   return neighbours;
 }
 
+// Which way a face turns where the main pass draws it.
+enum FaceTurn : std::uint8_t {
+  kTurnedAway = 0,  // surely: culled, or its winding the skipped one
+  kDrawn = 1,       // surely drawn, its winding the drawn one
+  kUnsure = 2,      // too thin for its winding to survive rounding
+};
+
 // An axis-aligned box in window pixels.
 struct Box {
-  glm::dvec2 min{0.0};
-  glm::dvec2 max{0.0};
+  glm::vec2 min{0.0f};
+  glm::vec2 max{0.0f};
 };
 
 // A vertex where the main pass draws it (window pixels, y up), the ends
@@ -189,16 +199,29 @@ class CellCounts {
   std::vector<std::int32_t> sums_;
 };
 
+// An edge of the layers' outline: its ends' welded ids and places.
+struct OutlineEdge {
+  std::uint32_t from, to;
+  const glm::dvec2* a;
+  const glm::dvec2* b;
+};
+
 // What one call leaves for the next: its buffers, so a frame allocates
 // nothing (the render thread is the only caller).
 struct Scratch {
   std::vector<ProjectedVertex> vertices;
-  std::vector<std::uint8_t> drawn;
+  std::vector<std::uint8_t> turns;  // FaceTurn per face
   std::vector<Box> boxes;
   std::vector<std::uint32_t> turned_away;
   CellCounts ends;
   CellCounts covered;
+  CoverLayers layers;
+  std::vector<OutlineEdge> outline;
+  std::vector<std::int32_t> first_from;  // per welded position: an outline edge starting there
+  std::vector<std::int32_t> next_from;   // per outline edge: another starting where it does
+  std::vector<std::uint8_t> given;
 };
+
 
 bool in_depth_range(const glm::dvec4& clip) {
   return clip.w > 0.0 && std::abs(clip.z) <= clip.w && std::isfinite(clip.x) && std::isfinite(clip.y);
@@ -235,16 +258,56 @@ bool project_vertices(const HullCullMesh& mesh, const HullCullView& view, std::v
   return true;
 }
 
-// Twice the signed area, counter-clockwise positive, when its sign holds
-// for any move of the corners within the slack; 0 where it may not. (The
-// sides' lengths are bounded by |dx| + |dy|.)
-double trusted_area2(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+// The box round every vertex the level uses, where the main pass draws it.
+std::pair<glm::dvec2, glm::dvec2> window_bounds(const HullCullMesh& mesh, std::span<const ProjectedVertex> vertices) {
+  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (std::uint32_t v : mesh.used_vertices()) {
+    lo = glm::min(lo, vertices[v].window);
+    hi = glm::max(hi, vertices[v].window);
+  }
+  return {lo, hi};
+}
+
+// Which way the face a, b, c turns where the winding `drawn_sign` (+1:
+// counter-clockwise) is drawn: surely, where the sign of twice its area
+// holds for any move of the corners within the slack (the sides' lengths
+// are bounded by |dx| + |dy|), else unsure. Without branches: the faces of
+// a level turn either way in no order a predictor could follow.
+FaceTurn face_turn(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, double drawn_sign) {
   const glm::dvec2 ab = b - a, ac = c - a, bc = c - b;
-  const double area2 = ab.x * ac.y - ab.y * ac.x;
+  const double area2 = (ab.x * ac.y - ab.y * ac.x) * drawn_sign;
   // std::abs, not glm::abs: glm's compares and branches.
   const double sides = std::abs(ab.x) + std::abs(ab.y) + std::abs(ac.x) + std::abs(ac.y) + std::abs(bc.x) + std::abs(bc.y);
   const double doubt = 2.0 * kVertexSlackPx * sides + 4.0 * kVertexSlackPx * kVertexSlackPx;
-  return std::abs(area2) > doubt ? area2 : 0.0;
+  const int drawn = area2 > doubt;
+  const int away = area2 < -doubt;
+  return static_cast<FaceTurn>(drawn * kDrawn + (1 - drawn - away) * kUnsure);
+}
+
+// The outline's edges to the layers along its loops, each edge after the
+// one that ends where it starts wherever there is one, so the layers count
+// such pairs once.
+void give_along_loops(std::span<const OutlineEdge> outline, std::size_t positions, Scratch& scratch) {
+  std::vector<std::int32_t>& first_from = scratch.first_from;
+  std::vector<std::int32_t>& next_from = scratch.next_from;
+  std::vector<std::uint8_t>& given = scratch.given;
+  first_from.assign(positions, -1);
+  next_from.resize(outline.size());
+  given.assign(outline.size(), 0);
+  for (std::size_t e = 0; e < outline.size(); ++e) {
+    next_from[e] = first_from[outline[e].from];
+    first_from[outline[e].from] = static_cast<std::int32_t>(e);
+  }
+  for (std::size_t start = 0; start < outline.size(); ++start) {
+    for (std::int32_t e = static_cast<std::int32_t>(start); e >= 0 && !given[static_cast<std::size_t>(e)];) {
+      const OutlineEdge& edge = outline[static_cast<std::size_t>(e)];
+      given[static_cast<std::size_t>(e)] = 1;
+      scratch.layers.add_outline_edge(*edge.a, *edge.b);
+      std::int32_t next = first_from[edge.to];
+      while (next >= 0 && given[static_cast<std::size_t>(next)]) next = next_from[static_cast<std::size_t>(next)];
+      e = next;
+    }
+  }
 }
 
 // Whether the hull face of a, b, c turns to the side whose signed area has
@@ -305,7 +368,8 @@ HullCullMesh::HullCullMesh(Stream positions, Stream outline_offsets, std::span<c
   used_.erase(std::unique(used_.begin(), used_.end()), used_.end());
   offset_lengths_.resize(offsets_->size());
   for (std::size_t v = 0; v < offsets_->size(); ++v) offset_lengths_[v] = glm::length(glm::dvec3((*offsets_)[v]));
-  neighbours_ = edge_neighbours(indices_, weld_by_position(*positions_, used_));
+  welded_ = weld_by_position(*positions_, used_);
+  neighbours_ = edge_neighbours(indices_, welded_);
 }
 
 std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, const HullCullView& view) {
@@ -319,50 +383,68 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
   // The faces the main pass draws, with a winding no rounding can flip, and
   // the box round each face and its hull face.
   const double drawn_sign = view.drawn_clockwise ? -1.0 : 1.0;
-  std::vector<std::uint8_t>& drawn = scratch.drawn;
+  std::vector<std::uint8_t>& turns = scratch.turns;
   std::vector<Box>& boxes = scratch.boxes;
-  drawn.resize(triangles);
+  turns.resize(triangles);
   boxes.resize(triangles);
   for (std::size_t t = 0; t < triangles; ++t) {
     const ProjectedVertex& a = vertices[indices[3 * t]];
     const ProjectedVertex& b = vertices[indices[3 * t + 1]];
     const ProjectedVertex& c = vertices[indices[3 * t + 2]];
-    drawn[t] = trusted_area2(a.window, b.window, c.window) * drawn_sign > 0.0;
-    boxes[t].min = glm::dvec2(glm::min(glm::min(a.reach_min, b.reach_min), c.reach_min)) - kMarginPx;
-    boxes[t].max = glm::dvec2(glm::max(glm::max(a.reach_max, b.reach_max), c.reach_max)) + kMarginPx;
+    turns[t] = face_turn(a.window, b.window, c.window, drawn_sign);
+    boxes[t].min = glm::min(glm::min(a.reach_min, b.reach_min), c.reach_min) - static_cast<float>(kMarginPx);
+    boxes[t].max = glm::max(glm::max(a.reach_max, b.reach_max), c.reach_max) + static_cast<float>(kMarginPx);
   }
+  const auto drawn = [&](std::size_t t) { return turns[t] == kDrawn; };
+  const std::pair<glm::dvec2, glm::dvec2> bounds = window_bounds(mesh, vertices);
   // Where the drawn faces' cover may end (their edges not shared with
-  // another drawn face), and where a point it holds lies (their middles).
+  // another drawn face), where a point it holds lies (their middles), and
+  // how many layers of the drawn and unsure faces lie over each cell (their
+  // edges not shared within them).
   CellCounts& ends = scratch.ends;
   CellCounts& covered = scratch.covered;
+  CoverLayers& layers = scratch.layers;
   const double cell = cell_px(view, triangles);
   ends.reset(view.viewport_width, view.viewport_height, cell);
   covered.reset(view.viewport_width, view.viewport_height, cell);
+  layers.reset({view.viewport_width, view.viewport_height, cell, bounds.first, bounds.second},
+               !view.drawn_clockwise, kVertexSlackPx);
+  std::vector<OutlineEdge>& outline = scratch.outline;
+  outline.clear();
   for (std::size_t t = 0; t < triangles; ++t) {
-    if (!drawn[t]) continue;
+    if (turns[t] == kTurnedAway) continue;
     const glm::dvec2* corner[3];
     for (std::size_t c = 0; c < 3; ++c) corner[c] = &vertices[indices[3 * t + c]].window;
-    covered.add_point((*corner[0] + *corner[1] + *corner[2]) / 3.0);
+    if (drawn(t)) covered.add_point((*corner[0] + *corner[1] + *corner[2]) / 3.0);
     for (int k = 0; k < 3; ++k) {
       const std::int32_t other = mesh.neighbour(t, k);
-      if (other >= 0 && drawn[static_cast<std::size_t>(other)]) continue;
-      ends.add_box(*corner[k], *corner[(k + 1) % 3]);
+      const FaceTurn across = other >= 0 ? static_cast<FaceTurn>(turns[static_cast<std::size_t>(other)]) : kTurnedAway;
+      const int k1 = (k + 1) % 3;
+      if (drawn(t) && across != kDrawn) ends.add_box(*corner[k], *corner[k1]);
+      if (across == kTurnedAway) {
+        outline.push_back({mesh.welded(indices[3 * t + k]), mesh.welded(indices[3 * t + k1]), corner[k], corner[k1]});
+      }
     }
   }
+  give_along_loops(outline, vertices.size(), scratch);
   ends.sum();
   covered.sum();
+  layers.finish();
   // A face whose box holds a covered point (its own face, if drawn, or a
   // drawn face's middle) and meets no end of the cover lies wholly inside
-  // it, whichever way it or its hull face turns.
+  // it, whichever way it or its hull face turns; so does one whose box
+  // the layers cover.
   const auto cannot_show = [&](std::size_t t) {
     const Box& box = boxes[t];
-    return ends.holds(box) && !ends.any_overlapping(box) && (drawn[t] || covered.any_inside(box));
+    if (!ends.holds(box)) return false;
+    if (!ends.any_overlapping(box) && (drawn(t) || covered.any_inside(box))) return true;
+    return layers.covers(glm::dvec2(box.min), glm::dvec2(box.max));
   };
   // A face the main pass draws turns toward the camera, and so, all but
   // always, does its hull face: only the others are worth the test.
   const float skipped = skipped_side(view.hull_hidden);
   const auto turned_away = [&](std::size_t t) {
-    return skipped != 0.0f && !drawn[t] &&
+    return skipped != 0.0f && !drawn(t) &&
            hull_face_surely_turns(vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]],
                                   skipped);
   };
@@ -381,7 +463,9 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
         continue;
       }
       std::vector<std::uint32_t>& to = turned_away(e / 3) ? away : out.indices;
-      to.insert(to.end(), &indices[e], &indices[e] + 3);
+      to.push_back(indices[e]);
+      to.push_back(indices[e + 1]);
+      to.push_back(indices[e + 2]);
     }
     kept.index_count = static_cast<std::uint32_t>(out.indices.size()) - kept.first_index;
     out.submeshes.push_back(kept);

@@ -60,6 +60,8 @@ class HullCullMesh {
   // -1 where there is none, or more than one, or it runs the same way.
   std::int32_t neighbour(std::size_t t, int k) const { return neighbours_[3 * t + static_cast<std::size_t>(k)]; }
   std::span<const std::uint32_t> used_vertices() const { return used_; }
+  // One id per distinct position: vertices split at a seam share it.
+  std::uint32_t welded(std::uint32_t v) const { return welded_[v]; }
   const glm::vec3& position(std::uint32_t v) const { return (*positions_)[v]; }
   const glm::vec3& outline_offset(std::uint32_t v) const { return (*offsets_)[v]; }
   double outline_offset_length(std::uint32_t v) const { return offset_lengths_[v]; }
@@ -70,6 +72,7 @@ class HullCullMesh {
   std::vector<std::uint32_t> indices_;
   std::vector<scene::Submesh> submeshes_;
   std::vector<std::int32_t> neighbours_;
+  std::vector<std::uint32_t> welded_;
   std::vector<std::uint32_t> used_;  // every vertex a triangle of the level uses, once
   std::vector<double> offset_lengths_;
 };

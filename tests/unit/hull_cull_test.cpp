@@ -9,6 +9,8 @@
 #include <map>
 #include <memory>
 #include <span>
+#include <sstream>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -158,6 +160,57 @@ TEST(HullCull, FacesSureToTurnToTheCulledSideAreSetApartAfterTheRest) {
   }
 }
 
+// Two OBJ files' meshes as one: the second's face indices moved past the
+// first's vertices (both written as sphere_obj writes, one normal a vertex).
+std::string merged_obj(const std::string& first, const std::string& second) {
+  std::size_t vertices = 0;
+  for (std::size_t at = first.find("\nv "); at != std::string::npos; at = first.find("\nv ", at + 1)) ++vertices;
+  std::string out = first;
+  std::istringstream lines(second);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("f ", 0) != 0) {
+      out += line + "\n";
+      continue;
+    }
+    std::string moved = "f";
+    std::istringstream corners(line.substr(2));
+    for (std::string corner; corners >> corner;) {
+      const std::size_t slash = corner.find("//");
+      const std::size_t v = std::stoul(corner.substr(0, slash)) + vertices;
+      moved += " " + std::to_string(v) + "//" + std::to_string(v);
+    }
+    out += moved + "\n";
+  }
+  return out;
+}
+
+// A small sphere in front of a large one, as one mesh: inside the large
+// one's disk the small one's rim ends its own cover, but the large one lies
+// under both sides of it, so the hull's faces along that rim, which the
+// edge test alone keeps, are left out.
+std::string sphere_before_sphere_obj() {
+  return merged_obj(test::sphere_obj(96, 48), test::sphere_obj(24, 12, 0.35, glm::dvec3(0.2, 0.1, 1.3)));
+}
+
+TEST(HullCull, ARimWithTheModelUnderBothSidesLeavesItsFacesOut) {
+  const scene::Model alone = import_obj(test::sphere_obj(24, 12, 0.35, glm::dvec3(0.2, 0.1, 1.3)));
+  const scene::Model both = import_obj(sphere_before_sphere_obj());
+  const HullCullView view = sphere_view(256, 2.0);
+  // How many of the small sphere's faces (its vertices come last) are kept.
+  const auto small_kept = [&](const scene::Mesh& mesh, std::uint32_t first_small_vertex) {
+    const HullCullMesh cull(stream(mesh.positions), stream(mesh.outline_normals), mesh.indices, mesh.submeshes);
+    const std::optional<HullSubset> subset = hull_faces_that_may_show(cull, view);
+    EXPECT_TRUE(subset);
+    std::size_t kept = 0;
+    for (std::size_t e = 0; subset && e < subset->indices.size(); e += 3) kept += subset->indices[e] >= first_small_vertex;
+    return kept;
+  };
+  const std::size_t alone_kept = small_kept(alone.mesh, 0);
+  const std::size_t both_kept = small_kept(both.mesh, static_cast<std::uint32_t>(both.mesh.positions.size() - alone.mesh.positions.size()));
+  EXPECT_GT(alone_kept, 400u) << "its own silhouette's faces";
+  EXPECT_LT(both_kept * 2, alone_kept);
+}
+
 TEST(HullCull, AVertexOutsideTheDepthRangeTurnsTheCullOff) {
   const scene::Model sphere = import_obj(test::sphere_obj(24, 12));
   const HullCullMesh cull(stream(sphere.mesh.positions), stream(sphere.mesh.outline_normals), sphere.mesh.indices,
@@ -276,8 +329,10 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {
       EXPECT_EQ(culled, 0u);
     }
   }
+  const scene::Model nested = import_obj(sphere_before_sphere_obj());
   for (const auto& [model, what] : {std::pair{&sphere, "sphere"}, std::pair{&messy, "messy"},
-                                    std::pair{&faceted, "per-face normals"}, std::pair{&bare, "no normals"}}) {
+                                    std::pair{&faceted, "per-face normals"}, std::pair{&bare, "no normals"},
+                                    std::pair{&nested, "sphere before sphere"}}) {
     for (const nlohmann::json& request : requests()) {
       EXPECT_GT(expect_same_image({{model, glm::dmat4(1.0)}}, request, what), 0u) << what << " " << request;
     }
