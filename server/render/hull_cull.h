@@ -16,6 +16,13 @@
 // its hull face turn. Everything is bounded with a margin well above float
 // rounding and the rasterizer's snapping of vertices to its sub-pixel grid.
 //
+// Inside the model the cover ends at folds too (the rim of a nearer part
+// over a farther one), where more drawn faces lie behind that edge. There
+// a face is left out where every cell its box meets surely lies under at
+// least one layer of drawn faces (render/cover_layers.h: the winding
+// number of the drawn faces' outline, less what the outline's edges
+// through the cell could take away).
+//
 // Where the hull pass skips one side of the hull (a closed model's), the
 // faces that may show but surely turn to that side are set apart too: the
 // draw that culls that side leaves them out instead of shading their
