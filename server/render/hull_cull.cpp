@@ -396,7 +396,6 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
     boxes[t].max = glm::max(glm::max(a.reach_max, b.reach_max), c.reach_max) + static_cast<float>(kMarginPx);
   }
   const auto drawn = [&](std::size_t t) { return turns[t] == kDrawn; };
-  const std::pair<glm::dvec2, glm::dvec2> bounds = window_bounds(mesh, vertices);
   // Where the drawn faces' cover may end (their edges not shared with
   // another drawn face), where a point it holds lies (their middles), and
   // how many layers of the drawn and unsure faces lie over each cell (their
@@ -407,8 +406,11 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
   const double cell = cell_px(view, triangles);
   ends.reset(view.viewport_width, view.viewport_height, cell);
   covered.reset(view.viewport_width, view.viewport_height, cell);
-  layers.reset({view.viewport_width, view.viewport_height, cell, bounds.first, bounds.second},
-               !view.drawn_clockwise, kVertexSlackPx);
+  if (view.count_layers) {
+    const std::pair<glm::dvec2, glm::dvec2> bounds = window_bounds(mesh, vertices);
+    layers.reset({view.viewport_width, view.viewport_height, cell, bounds.first, bounds.second},
+                 !view.drawn_clockwise, kVertexSlackPx);
+  }
   std::vector<OutlineEdge>& outline = scratch.outline;
   outline.clear();
   for (std::size_t t = 0; t < triangles; ++t) {
@@ -421,15 +423,17 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
       const FaceTurn across = other >= 0 ? static_cast<FaceTurn>(turns[static_cast<std::size_t>(other)]) : kTurnedAway;
       const int k1 = (k + 1) % 3;
       if (drawn(t) && across != kDrawn) ends.add_box(*corner[k], *corner[k1]);
-      if (across == kTurnedAway) {
+      if (view.count_layers && across == kTurnedAway) {
         outline.push_back({mesh.welded(indices[3 * t + k]), mesh.welded(indices[3 * t + k1]), corner[k], corner[k1]});
       }
     }
   }
-  give_along_loops(outline, vertices.size(), scratch);
   ends.sum();
   covered.sum();
-  layers.finish();
+  if (view.count_layers) {
+    give_along_loops(outline, vertices.size(), scratch);
+    layers.finish();
+  }
   // A face whose box holds a covered point (its own face, if drawn, or a
   // drawn face's middle) and meets no end of the cover lies wholly inside
   // it, whichever way it or its hull face turns; so does one whose box
@@ -438,7 +442,7 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
     const Box& box = boxes[t];
     if (!ends.holds(box)) return false;
     if (!ends.any_overlapping(box) && (drawn(t) || covered.any_inside(box))) return true;
-    return layers.covers(glm::dvec2(box.min), glm::dvec2(box.max));
+    return view.count_layers && layers.covers(glm::dvec2(box.min), glm::dvec2(box.max));
   };
   // A face the main pass draws turns toward the camera, and so, all but
   // always, does its hull face: only the others are worth the test.

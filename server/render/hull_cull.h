@@ -100,6 +100,11 @@ struct HullCullView {
   // The side of the hull the hull pass culls (where it draws that side
   // after all because a cap shows, it draws the faces set apart too).
   HiddenFaces hull_hidden = HiddenFaces::None;
+  // Whether to count the layers at folds too (cover_layers.h). They cost
+  // the cull about a third more; with one sample a pixel the faces they
+  // leave out cost the rasterizer less than that (measured: the armadillo
+  // at MSAA 1, 6.6 → 7.3 ms with them; at MSAA 4, 17.6 → 16.5).
+  bool count_layers = true;
 };
 
 // The hull's triangles that may draw something, submesh by submesh: first

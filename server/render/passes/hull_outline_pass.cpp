@@ -64,6 +64,7 @@ std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t 
   view.viewport_height = frame.draw_height;
   view.drawn_clockwise = frame.main_faces[i].hidden == HiddenFaces::Front;
   view.hull_hidden = context.hull_skips[i].hidden;
+  view.count_layers = frame.plan.samples > 1;
   return HullCullInput{std::move(mesh), view};
 }
 
