@@ -30,6 +30,8 @@ void CoverLayers::reset(const Grid& grid, bool drawn_counter_clockwise, double s
   const int x1 = std::clamp(cell_index(std::min(grid.hi.x, static_cast<double>(grid.width)), per_px_), x0, last_column);
   const int y1 = std::clamp(cell_index(std::min(grid.hi.y, static_cast<double>(grid.height)), per_px_), y0, last_row);
   origin_ = glm::dvec2(x0, y0) * cell_;
+  first_column_ = x0;
+  first_row_ = y0;
   columns_ = x1 - x0 + 1;
   rows_ = y1 - y0 + 1;
   face_side_ = drawn_counter_clockwise ? 1.0 : -1.0;
@@ -130,8 +132,15 @@ void CoverLayers::finish() {
 }
 
 bool CoverLayers::covers(const glm::dvec2& lo, const glm::dvec2& hi) const {
-  const int x0 = column(lo.x - origin_.x), x1 = column(hi.x - origin_.x) + 1;
-  const int y0 = row(lo.y - origin_.y), y1 = row(hi.y - origin_.y) + 1;
+  return covers(column(lo.x - origin_.x) + first_column_, column(hi.x - origin_.x) + 1 + first_column_,
+                row(lo.y - origin_.y) + first_row_, row(hi.y - origin_.y) + 1 + first_row_);
+}
+
+bool CoverLayers::covers(int x0, int x1, int y0, int y1) const {
+  x0 -= first_column_;
+  x1 -= first_column_;
+  y0 -= first_row_;
+  y1 -= first_row_;
   if (x0 < 0 || y0 < 0 || x1 > columns_ || y1 > rows_) return false;  // off the grid: open
   return open_sums_[sum_at(x1, y1)] - open_sums_[sum_at(x0, y1)] - open_sums_[sum_at(x1, y0)] +
              open_sums_[sum_at(x0, y0)] ==

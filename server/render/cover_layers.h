@@ -56,6 +56,9 @@ class CoverLayers {
   // Whether every cell the box [lo, hi] overlaps is surely covered at every
   // point.
   bool covers(const glm::dvec2& lo, const glm::dvec2& hi) const;
+  // The same for the viewport's cells (of the size given to reset, counted
+  // from 0 at 0) in columns [x0, x1) and rows [y0, y1).
+  bool covers(int x0, int x1, int y0, int y1) const;
 
  private:
   void add_row_crossings(const glm::dvec2& a, const glm::dvec2& b);
@@ -73,6 +76,7 @@ class CoverLayers {
 
   double cell_ = 1.0, per_px_ = 1.0;
   glm::dvec2 origin_{0.0};  // the first cell's corner, in pixels
+  int first_column_ = 0, first_row_ = 0;  // the first cell's, among the viewport's
   int columns_ = 0, rows_ = 0;
   double face_side_ = 1.0;  // +1 where drawn faces lie left of their edges
   double slack_ = 0.0;

@@ -113,6 +113,11 @@ struct ProjectedVertex {
   glm::vec2 reach_max{0.0f};
 };
 
+// Cells of a grid: columns [x0, x1), rows [y0, y1).
+struct CellRect {
+  int x0, x1, y0, y1;
+};
+
 // Counts per cell of a grid over the viewport, summed so a box's count
 // costs four reads.
 class CellCounts {
@@ -122,6 +127,7 @@ class CellCounts {
     width_ = width;
     height_ = height;
     per_px_ = 1.0 / cell;
+    per_px_f_ = static_cast<float>(per_px_);
     columns_ = static_cast<int>(std::ceil(width * per_px_));
     rows_ = static_cast<int>(std::ceil(height * per_px_));
     counts_.assign(static_cast<std::size_t>(columns_ * rows_), 0);
@@ -159,10 +165,14 @@ class CellCounts {
     }
   }
 
-  // Whether a cell the box overlaps was counted.
-  bool any_overlapping(const Box& box) const {
-    return count(column(box.min.x), column(box.max.x) + 1, row(box.min.y), row(box.max.y) + 1) > 0;
+  // The cells a box the viewport holds overlaps (its corners are not
+  // negative, so truncating floors).
+  CellRect overlapped_by(const Box& box) const {
+    return {static_cast<int>(box.min.x * per_px_f_), std::min(static_cast<int>(box.max.x * per_px_f_), columns_ - 1) + 1,
+            static_cast<int>(box.min.y * per_px_f_), std::min(static_cast<int>(box.max.y * per_px_f_), rows_ - 1) + 1};
   }
+  // Whether one of these cells was counted.
+  bool any(const CellRect& cells) const { return count(cells.x0, cells.x1, cells.y0, cells.y1) > 0; }
   // Whether a cell wholly inside the box was counted.
   // Only for a box the viewport holds (its corners are not negative, so
   // truncating floors).
@@ -194,6 +204,7 @@ class CellCounts {
 
   double width_ = 0, height_ = 0;
   double per_px_ = 1.0;  // cells per pixel
+  float per_px_f_ = 1.0f;
   int columns_ = 0, rows_ = 0;
   std::vector<std::uint8_t> counts_;
   std::vector<std::int32_t> sums_;
@@ -227,6 +238,20 @@ bool in_depth_range(const glm::dvec4& clip) {
   return clip.w > 0.0 && std::abs(clip.z) <= clip.w && std::isfinite(clip.x) && std::isfinite(clip.y);
 }
 
+// How much a matrix stretches every vector, where it stretches them all
+// alike (its columns orthogonal and of one length, to rounding).
+std::optional<double> stretch_of_similarity(const glm::dmat3& m) {
+  const glm::dmat3 squared = glm::transpose(m) * m;
+  const double s2 = squared[0][0];
+  constexpr double kRounding = 1e-12;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (std::abs(squared[i][j] - (i == j ? s2 : 0.0)) > kRounding * s2) return std::nullopt;
+    }
+  }
+  return std::sqrt(s2);
+}
+
 // hull.vert in double for every vertex the level uses: the corner moves
 // along its offset by at most the full width (its obliquity factor only
 // shortens the move, and the moved point stays on the segment, whose image
@@ -239,12 +264,16 @@ bool project_vertices(const HullCullMesh& mesh, const HullCullView& view, std::v
   const double px_per_world_at_w1 = view.width_px * view.world_per_px_at_w1;
   const glm::dvec2 half_viewport(0.5 * view.viewport_width, 0.5 * view.viewport_height);
   const auto window = [&](const glm::dvec4& clip) { return (glm::dvec2(clip) * (1.0 / clip.w) + 1.0) * half_viewport; };
+  // Under a similarity every offset turns and keeps its length times the
+  // same factor: no product and no square root per vertex.
+  const std::optional<double> uniform_stretch = stretch_of_similarity(view.normal_matrix);
   for (std::uint32_t v : mesh.used_vertices()) {
     const glm::dvec4 clip = to_clip * glm::dvec4(glm::dvec3(mesh.position(v)), 1.0);
     const glm::dvec3 offset(mesh.outline_offset(v));
-    const double turned_len = glm::length(view.normal_matrix * offset);
+    const double length = mesh.outline_offset_length(v);
+    const double turned_len = uniform_stretch ? *uniform_stretch * length : glm::length(view.normal_matrix * offset);
     const double distance = px_per_world_at_w1 * std::abs(clip.w);
-    const double scale = turned_len > 0.0 ? mesh.outline_offset_length(v) / turned_len * distance : 0.0;
+    const double scale = turned_len > 0.0 ? length / turned_len * distance : 0.0;
     const glm::dvec4 moved = clip + offset_to_clip * (offset * scale);
     if (!in_depth_range(clip) || !in_depth_range(moved)) return false;
     ProjectedVertex& p = out[v];
@@ -441,8 +470,9 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
   const auto cannot_show = [&](std::size_t t) {
     const Box& box = boxes[t];
     if (!ends.holds(box)) return false;
-    if (!ends.any_overlapping(box) && (drawn(t) || covered.any_inside(box))) return true;
-    return view.count_layers && layers.covers(glm::dvec2(box.min), glm::dvec2(box.max));
+    const CellRect cells = ends.overlapped_by(box);
+    if (!ends.any(cells) && (drawn(t) || covered.any_inside(box))) return true;
+    return view.count_layers && layers.covers(cells.x0, cells.x1, cells.y0, cells.y1);
   };
   // A face the main pass draws turns toward the camera, and so, all but
   // always, does its hull face: only the others are worth the test.

@@ -344,7 +344,7 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {
 
 // A long thin plank laid between two spheres: its hull corners lie over the
 // spheres while its faces cross the background; a mirrored object (drawn
-// with its other winding) and one stretched unevenly.
+// with its other winding), one stretched unevenly and one grown evenly.
 TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScenes) {
   const scene::Model sphere = import_obj(test::sphere_obj(48, 24));
   const scene::Model cube = import_obj(test::cube_obj());
@@ -354,9 +354,13 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScenes) {
                                        glm::dvec3(0.0, 0.0, 1.0));
   const glm::dmat4 mirrored = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.8, -0.5)), glm::dvec3(-1, 1, 1));
   const glm::dmat4 stretched = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, -1.8, 0.3)), glm::dvec3(1.6, 0.4, 1));
+  // Grown alike on every axis: the cull turns its offsets by one factor.
+  const glm::dmat4 grown = glm::rotate(glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -5.0)), glm::dvec3(2.5)),
+                                       0.4, glm::dvec3(1.0, 1.0, 0.0));
   for (const nlohmann::json& request : requests()) {
     const std::size_t culled = expect_same_image(
-        {{&sphere, left}, {&sphere, right}, {&cube, plank}, {&cube, mirrored}, {&sphere, stretched}}, request, "scene");
+        {{&sphere, left}, {&sphere, right}, {&cube, plank}, {&cube, mirrored}, {&sphere, stretched}, {&sphere, grown}},
+        request, "scene");
     EXPECT_GT(culled, 0u) << request;
   }
 }
