@@ -6,8 +6,9 @@
 namespace toond::render {
 namespace {
 
-// Past this many edges a cell is open anyway.
-constexpr int kMostLowered = 255;
+// A cell lowered this often is open, however many more edges meet it (the
+// count saturates here rather than wrap).
+constexpr int kSaturated = 255;
 
 double l1(const glm::dvec2& v) { return std::abs(v.x) + std::abs(v.y); }
 
@@ -29,7 +30,6 @@ void CoverLayers::reset(const Grid& grid, bool drawn_counter_clockwise, double s
   const int y0 = std::clamp(cell_index(std::max(grid.lo.y, 0.0), per_px_), 0, last_row);
   const int x1 = std::clamp(cell_index(std::min(grid.hi.x, static_cast<double>(grid.width)), per_px_), x0, last_column);
   const int y1 = std::clamp(cell_index(std::min(grid.hi.y, static_cast<double>(grid.height)), per_px_), y0, last_row);
-  origin_ = glm::dvec2(x0, y0) * cell_;
   first_column_ = x0;
   first_row_ = y0;
   columns_ = x1 - x0 + 1;
@@ -45,8 +45,9 @@ void CoverLayers::reset(const Grid& grid, bool drawn_counter_clockwise, double s
 void CoverLayers::add_outline_edge(const glm::dvec2& a, const glm::dvec2& b) {
   if (a == b) return;  // no length: nothing crosses it, snapped or not
   const bool follows = any_edge_ && a == last_end_;
-  add_row_crossings(a - origin_, b - origin_);
-  lower_cells_met(a - origin_, b - origin_, follows);
+  const glm::dvec2 origin = first_corner();
+  add_row_crossings(a - origin, b - origin);
+  lower_cells_met(a - origin, b - origin, follows);
   any_edge_ = true;
   last_end_ = b;
 }
@@ -106,7 +107,7 @@ void CoverLayers::lower_cells_met(const glm::dvec2& a, const glm::dvec2& b, bool
       if (follows && std::find(last_lowered_.begin(), last_lowered_.end(), cell) != last_lowered_.end()) {
         continue;  // counted once, with the edge before
       }
-      lowered_[cell] = static_cast<std::uint8_t>(std::min<int>(lowered_[cell] + 1, kMostLowered));
+      lowered_[cell] = static_cast<std::uint8_t>(std::min<int>(lowered_[cell] + 1, kSaturated));
       lowering_.push_back(cell);
     }
   }
@@ -125,15 +126,16 @@ void CoverLayers::finish() {
     int count = 0, open_along = 0;
     for (int i = 0; i < columns_; ++i) {
       count += crossings[i];
-      open_along += side * count - lowered[i] < 1;
+      open_along += lowered[i] == kSaturated || side * count - lowered[i] < 1;
       sums[i] = above[i] + open_along;
     }
   }
 }
 
 bool CoverLayers::covers(const glm::dvec2& lo, const glm::dvec2& hi) const {
-  return covers(column(lo.x - origin_.x) + first_column_, column(hi.x - origin_.x) + 1 + first_column_,
-                row(lo.y - origin_.y) + first_row_, row(hi.y - origin_.y) + 1 + first_row_);
+  const glm::dvec2 origin = first_corner();
+  return covers(column(lo.x - origin.x) + first_column_, column(hi.x - origin.x) + 1 + first_column_,
+                row(lo.y - origin.y) + first_row_, row(hi.y - origin.y) + 1 + first_row_);
 }
 
 bool CoverLayers::covers(int x0, int x1, int y0, int y1) const {

@@ -67,6 +67,8 @@ class CoverLayers {
   // ends (-1 or columns_/rows_).
   int column(double x) const;
   int row(double y) const;
+  // The first cell's corner, in pixels.
+  glm::dvec2 first_corner() const { return glm::dvec2(first_column_, first_row_) * cell_; }
   std::size_t at(int column, int row) const {
     return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(column);
   }
@@ -75,7 +77,6 @@ class CoverLayers {
   }
 
   double cell_ = 1.0, per_px_ = 1.0;
-  glm::dvec2 origin_{0.0};  // the first cell's corner, in pixels
   int first_column_ = 0, first_row_ = 0;  // the first cell's, among the viewport's
   int columns_ = 0, rows_ = 0;
   double face_side_ = 1.0;  // +1 where drawn faces lie left of their edges

@@ -217,8 +217,9 @@ struct OutlineEdge {
   const glm::dvec2* b;
 };
 
-// What one call leaves for the next: its buffers, so a frame allocates
-// nothing (the render thread is the only caller).
+// What one call leaves for the next on the same thread: its buffers, so a
+// frame allocates nothing (one per thread that runs the cull: the kept
+// background thread, or the render thread where it runs the cull itself).
 struct Scratch {
   std::vector<ProjectedVertex> vertices;
   std::vector<std::uint8_t> turns;  // FaceTurn per face
@@ -232,7 +233,6 @@ struct Scratch {
   std::vector<std::int32_t> next_from;   // per outline edge: another starting where it does
   std::vector<std::uint8_t> given;
 };
-
 
 bool in_depth_range(const glm::dvec4& clip) {
   return clip.w > 0.0 && std::abs(clip.z) <= clip.w && std::isfinite(clip.x) && std::isfinite(clip.y);

@@ -126,6 +126,48 @@ TEST(CoverLayers, AFaceWalkedTheOtherWayTakesALayerAway) {
   EXPECT_TRUE(covers(layers, 8.0, 40.0, 20.0, 55.0));
 }
 
+// The grid covers only the cells over the faces' box: a box's answer is
+// the same as over the whole viewport's grid, and a box reaching past the
+// grid is open.
+TEST(CoverLayers, AGridOverTheFacesBoxAnswersAsTheWholeViewportsDoes) {
+  std::vector<Triangle> faces = square(9.3, 57.8);
+  for (const Triangle& t : square(20.4, 35.6)) faces.push_back(t);
+  for (const double cell : {1.0, 2.0, 4.0}) {
+    const CoverLayers whole = layers_of(faces, 96, cell);
+    CoverLayers bounded;
+    bounded.reset({96, 96, cell, glm::dvec2(9.3), glm::dvec2(57.8)}, true, kSlack);
+    for (const auto& [a, b] : outline_of(faces)) bounded.add_outline_edge(a, b);
+    bounded.finish();
+    int covered = 0;
+    for (double x = 2.0; x < 64.0; x += 1.7) {
+      for (double y = 3.0; y < 64.0; y += 2.3) {
+        const glm::dvec2 lo(x, y), hi(x + 3.1, y + 2.2);
+        EXPECT_EQ(bounded.covers(lo, hi), whole.covers(lo, hi)) << cell << " at " << x << "," << y;
+        covered += whole.covers(lo, hi);
+      }
+    }
+    EXPECT_GT(covered, 100) << cell;
+    EXPECT_FALSE(bounded.covers(glm::dvec2(50.0, 30.0), glm::dvec2(70.0, 32.0))) << "past the grid";
+  }
+}
+
+// A cell more edges meet than the count of lowerings can hold is open,
+// however many layers its centre reads: 300 thin squares over one point,
+// each edge crossing the cell there.
+TEST(CoverLayers, ACellMetByMoreEdgesThanItCountsIsOpen) {
+  std::vector<Triangle> faces;
+  for (int k = 0; k < 300; ++k) {
+    const double shift = 1e-3 * k;  // apart by more than the slack's rounding, less than a cell
+    for (const Triangle& t : square(10.2 + shift, 20.7 + shift)) faces.push_back(t);
+  }
+  CoverLayers layers;
+  layers.reset({32, 32, 1.0, glm::dvec2(0.0), glm::dvec2(32.0)}, true, kSlack);
+  for (const auto& [a, b] : outline_of(faces)) layers.add_outline_edge(a, b);
+  layers.finish();
+  EXPECT_TRUE(covers(layers, 14.0, 14.0, 16.0, 16.0)) << "well inside all of them";
+  EXPECT_FALSE(covers(layers, 10.0, 14.0, 11.0, 15.0)) << "where all their left sides pass";
+}
+
 // Scattered small triangles, some drawn the other way, over a grid of
 // cells of several sizes: every box called covered holds, at every point
 // tried, a face drawn counter-clockwise, with every corner moved by up to

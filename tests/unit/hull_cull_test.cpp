@@ -380,6 +380,23 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScannedModels) {
   }
 }
 
+// Files a real exporter wrote (tests/exported/blender): a CAD-like part
+// as STL without normals and as PLY, the character's rest pose the same
+// two ways, and a textured cube as glTF (whose twelve faces all reach its
+// silhouette: nothing to leave out).
+TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfExportedFiles) {
+  const std::filesystem::path blender = TOOND_EXPORTED_DIR "/blender";
+  for (const char* name : {"part.stl", "part.ply", "walker_rest.stl", "walker_rest.ply", "textured.glb"}) {
+    const scene::Model model =
+        scene::import_bundle(scene::test_checks::make_bundle({{name, test::read_file(blender / name)}}));
+    for (const nlohmann::json& request : requests()) expect_same_image({{&model, glm::dmat4(1.0)}}, request, name);
+    const RenderOutput out = same_image({{&model, glm::dmat4(1.0)}}, {{"width", 512}, {"height", 512}}, name);
+    if (std::string(name) != "textured.glb") {
+      EXPECT_GT(out.hull_faces_culled, 0u) << name;
+    }
+  }
+}
+
 // Seen from above, a bowl's inside shows through its opening (its cap
 // turns toward the camera): the hull pass draws its culled side after all,
 // and that draw needs the faces set apart as turned to it, which draw the
