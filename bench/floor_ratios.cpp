@@ -14,23 +14,35 @@ namespace {
 using nlohmann::json;
 
 // Server time (every Server-Timing entry but the queue) of the default
-// request and of its floor, rendered in turn so the machine's drift falls
-// on both alike.
+// request, of the same without the outline and without outline and
+// specular (what no way of drawing those two could go below), and of its
+// floor, rendered in turn so the machine's drift falls on all alike.
 json default_over_floor(httplib::Client& client, const std::string& model, int repeats) {
   const json request = {{"model", model}, {"width", 512}, {"height", 512}};
-  const json floor = geometry_floor_request(request);
-  render_timed(client, request);  // warm: the model's upload, the programs
-  render_timed(client, floor);
-  std::vector<double> frame, floor_ms;
+  json without_outline = request;
+  without_outline["outline"] = {{"enabled", false}};
+  json without_outline_or_specular = without_outline;
+  without_outline_or_specular["specular"] = {{"enabled", false}};
+  const std::vector<json> requests = {request, without_outline, without_outline_or_specular,
+                                      geometry_floor_request(request)};
+  for (const json& r : requests) render_timed(client, r);  // warm: the model's upload, the programs
+  std::vector<std::vector<double>> ms(requests.size());
   TimedRender last;
   for (int i = 0; i < repeats; ++i) {
-    last = render_timed(client, request);
-    frame.push_back(last.server_ms);
-    floor_ms.push_back(render_timed(client, floor).server_ms);
+    for (std::size_t k = 0; k < requests.size(); ++k) {
+      const TimedRender timed = render_timed(client, requests[k]);
+      ms[k].push_back(timed.server_ms);
+      if (k == 0) last = timed;
+    }
   }
-  return {{"default_ms", median(frame)},
-          {"floor_ms", median(floor_ms)},
-          {"ratio", median(frame) / median(floor_ms)},
+  const double floor = median(ms[3]);
+  return {{"default_ms", median(ms[0])},
+          {"floor_ms", floor},
+          {"ratio", median(ms[0]) / floor},
+          {"without_outline_ms", median(ms[1])},
+          {"without_outline_ratio", median(ms[1]) / floor},
+          {"without_outline_or_specular_ms", median(ms[2])},
+          {"without_outline_or_specular_ratio", median(ms[2]) / floor},
           {"lod_drawn", last.lod}};
 }
 
@@ -89,9 +101,12 @@ json run_floor_ratios(httplib::Client& client, const std::string& url, const std
     const std::string model = upload_folder(client, models / name);
     if (std::string(name) == "stanford-bunny") bunny = model;
     const json r = default_over_floor(client, model, repeats);
-    std::fprintf(stderr, "  %-15s default %7.2f ms, floor %7.2f ms, ratio %.2f  [%s]\n", name,
-                 r["default_ms"].get<double>(), r["floor_ms"].get<double>(), r["ratio"].get<double>(),
-                 r["lod_drawn"].get<std::string>().c_str());
+    std::fprintf(stderr,
+                 "  %-15s default %7.2f ms, floor %7.2f ms, ratio %.2f  [%s]\n"
+                 "  %-15s without the outline %.2f, without outline and specular %.2f (what those two leave)\n",
+                 name, r["default_ms"].get<double>(), r["floor_ms"].get<double>(), r["ratio"].get<double>(),
+                 r["lod_drawn"].get<std::string>().c_str(), "", r["without_outline_ratio"].get<double>(),
+                 r["without_outline_or_specular_ratio"].get<double>());
     out["default_over_floor"][name] = r;
   }
   out["png"] = png_times(client, bunny, repeats);

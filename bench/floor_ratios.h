@@ -2,7 +2,9 @@
 // How far the default frame is from its geometry floor, in one run: the
 // default request (no lod, no msaa) for the bunny and spot at 512² against
 // the same request drawn in one flat colour with every effect and line off,
-// the two interleaved; the PNG encode's Server-Timing at 512² and 1024²;
+// and beside them the default without its outline and without outline and
+// specular (the least any way of drawing those could cost), all
+// interleaved; the PNG encode's Server-Timing at 512² and 1024²;
 // and throughput with frames in flight (a second daemon started with
 // --frames-in-flight 2) against the first, 1 and 16 clients, interleaved.
 #include <filesystem>
