@@ -16,9 +16,12 @@ Against a running toond started with --max-render-cost 0 --result-cache-mb 0
   contention (--contention): one client renders the issue's constructs at
   512² (fresh bytes every time) while another renders the demo model at 128²
   over and over; prints the small renders' p50/p99/max and each costly
-  render's outcome and time.
+  render's outcome and time. With --edges the costly renders are the
+  shared windmill's default request at 2048² instead (hard-edged: its crease
+  lines take the screen-space edge pass, which at that size costs more
+  than its meshes).
 
-    bench/render_cost.py http://127.0.0.1:8080 [--shared ../shared/models] [--contention SECONDS]
+    bench/render_cost.py http://127.0.0.1:8080 [--shared ../shared/models] [--contention SECONDS [--edges]]
 """
 import argparse
 import http.client
@@ -114,13 +117,13 @@ def cost_fields(headers):
     return fields
 
 
-TERMS = ("samples", "triangles", "tiles", "framebuffer", "frames")
-# render/render_cost.h: kTriangleSamples, kTileSamples, kFramebufferSamples, kFrameSamples.
-DAEMON_WEIGHTS = (1, 40, 320, 1, 1.3e6)
+TERMS = ("samples", "triangles", "tiles", "framebuffer", "frames", "edge_texels")
+# render/render_cost.h: kTriangleSamples, kTileSamples, kFramebufferSamples, kFrameSamples, kEdgeTexelSamples.
+DAEMON_WEIGHTS = (1, 40, 320, 1, 1.3e6, 4.5)
 
 
 def solve(matrix, vector):
-    """Gaussian elimination with partial pivoting (a 5x5 system)."""
+    """Gaussian elimination with partial pivoting (one row per term)."""
     n = len(vector)
     m = [row[:] + [v] for row, v in zip(matrix, vector)]
     for col in range(n):
@@ -175,22 +178,34 @@ def prediction(url, shared):
     for n in (20000, 80000):
         models[f"slivers_{n}"] = client.upload([("m.obj", slivers(n))])["id"]
     client.render({"width": 64, "height": 64})  # programs built
-    rows = []
+    requests = []
     for name, model in models.items():
         for size, msaa in ((256, 1), (512, 4), (1024, 4)):
-            params = {"model": model, "width": size, "height": size, "msaa": msaa}
-            client.render(params)  # model on the GPU
-            runs = []
-            for _ in range(3):
-                status, _, headers, body = client.render(params)
-                if status != 200:
-                    print(f"{name} {size}² msaa {msaa}: {status} {body[:200]!r}")
-                    break
-                runs.append(timing(headers, "total") - (timing(headers, "png") or 0))
-            if runs:
-                fields = cost_fields(headers)
-                rows.append((name, size, msaa, fields, statistics.median(runs)))
-    data = [([f[t] for t in TERMS], ms) for *_, f, ms in rows]
+            requests.append((name, {"model": model, "width": size, "height": size, "msaa": msaa}))
+    # The screen-space edge pass, whose cost grows with the line's width:
+    # silhouettes and creases (the edges method), crease lines beside the
+    # hull (the windmill is hard-edged), at two widths and up to 2048².
+    for name in ("stanford-bunny", "windmill"):
+        for size, msaa in ((512, 4), (2048, 1)):
+            for width in (2, 8):
+                outline = {"width": width, "method": "edges" if name == "stanford-bunny" else "hull"}
+                requests.append((f"{name} edges w{width}", {"model": models[name], "width": size, "height": size,
+                                                            "msaa": msaa, "outline": outline}))
+    rows = []
+    for name, params in requests:
+        size, msaa = params["width"], params["msaa"]
+        client.render(params)  # model on the GPU
+        runs = []
+        for _ in range(3):
+            status, _, headers, body = client.render(params)
+            if status != 200:
+                print(f"{name} {size}² msaa {msaa}: {status} {body[:200]!r}")
+                break
+            runs.append(timing(headers, "total") - (timing(headers, "png") or 0))
+        if runs:
+            fields = cost_fields(headers)
+            rows.append((name, size, msaa, fields, statistics.median(runs)))
+    data = [([f.get(t, 0.0) for t in TERMS], ms) for *_, f, ms in rows]
     # The daemon's figure, scaled by its best single factor (ms per Msample).
     slope = sum(f["cost"] * ms / ms ** 2 for *_, f, ms in rows) / sum(f["cost"] ** 2 / ms ** 2 for *_, f, ms in rows)
     weights = fit_weights(data)
@@ -206,9 +221,10 @@ def prediction(url, shared):
           f" (a surface sample {weights[0] * 1e6:.3f} ms per million)")
 
 
-def contention(url, seconds):
+def contention(url, seconds, shared, edges):
     setup = Client(url)
     setup.render({"width": 128, "height": 128})
+    windmill = setup.upload(shared_bundles(shared)["windmill"])["id"] if edges else None
     stop = time.monotonic() + seconds
     heavy_results = []
 
@@ -219,6 +235,13 @@ def contention(url, seconds):
                  ("slivers", lambda salt: slivers(200000) + f"# {salt}\n")]
         i = 0
         while time.monotonic() < stop:
+            if windmill:
+                status, elapsed, _, body = client.render({"model": windmill, "width": 2048, "height": 2048,
+                                                          "camera": {"yaw": i}})
+                code = json.loads(body)["error"]["code"] if status != 200 else "image"
+                heavy_results.append(("windmill 2048²", 0.0, status, code, elapsed))
+                i += 1
+                continue
             name, make = kinds[i % len(kinds)]
             salt = random.random() * 1e-9
             started = time.perf_counter()
@@ -253,9 +276,10 @@ def main():
     parser.add_argument("url")
     parser.add_argument("--shared", default=os.path.join(os.path.dirname(__file__), "..", "..", "shared", "models"))
     parser.add_argument("--contention", type=float, help="seconds of the contention run (instead of the fit)")
+    parser.add_argument("--edges", action="store_true", help="contention beside the windmill at 2048² instead")
     args = parser.parse_args()
     if args.contention:
-        contention(args.url, args.contention)
+        contention(args.url, args.contention, args.shared, args.edges)
     else:
         prediction(args.url, args.shared)
 

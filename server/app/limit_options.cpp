@@ -45,8 +45,9 @@ const Flag kLimitFlags[] = {
      }},
     {{"", "--max-render-cost", "M",
       "predicted cost of a render in Msamples: surface layers x\n"
-      "pixels x samples x passes, plus its triangles and the\n"
-      "screen tiles they cross, for all of a sheet's frames;\n"
+      "pixels x samples x passes, plus its triangles, the\n"
+      "screen tiles they cross and the texels the edge pass\n"
+      "reads, for all of a sheet's frames;\n"
       "refused before anything is drawn, with what would fit\n"
       "(default 5000, about 9 s of llvmpipe on 2 cores;\n"
       "0: no limit). The upload answer shows a model's layers"},

@@ -113,6 +113,7 @@ RenderCost RenderPrice::per_frame() const {
   one.tiles /= n;
   one.framebuffer /= n;
   one.frames /= n;
+  one.edge_texels /= n;
   return one;
 }
 
@@ -138,8 +139,15 @@ void check_render_cost(const render::RenderJob& job, const RenderPrice& p, const
 
 std::size_t paced_chunk_triangles(const RenderCost& frame) {
   if (frame.units() < kPacedFrameCost || frame.triangles <= 0) return 0;
-  const double per_triangle = frame.units() / frame.triangles;
+  RenderCost drawing = frame;
+  drawing.edge_texels = 0;
+  const double per_triangle = drawing.units() / frame.triangles;
   return static_cast<std::size_t>(std::max(16.0, std::floor(kPacedChunkCost / per_triangle)));
+}
+
+std::size_t paced_band_texels(const RenderCost& frame) {
+  if (frame.units() < kPacedFrameCost || frame.triangles <= 0) return 0;
+  return static_cast<std::size_t>(kPacedChunkCost * 1e6 / render::kEdgeTexelSamples);
 }
 
 }  // namespace toond::http

@@ -152,10 +152,12 @@ RenderPrice admit_by_price(ServiceContext& context, render::RenderJob& job, cons
   job.client = req.remote_addr;
   job.cost = price.total.units();
   job.paced_chunk_triangles = paced_chunk_triangles(price.per_frame());
+  job.paced_band_texels = paced_band_texels(price.per_frame());
   return price;
 }
 
-// "cost=12.3; frames=1; samples=…; triangles=…; tiles=…; framebuffer=…":
+// "cost=12.3; frames=1; samples=…; triangles=…; tiles=…; framebuffer=…;
+// edge_texels=…":
 // the predicted Msamples and what they are made of, for clients that size
 // their requests and for the cost benchmark, which fits the weights.
 std::string cost_header(const RenderPrice& price) {
@@ -163,7 +165,7 @@ std::string cost_header(const RenderPrice& price) {
   s.precision(4);
   const render::RenderCost& c = price.total;
   s << "cost=" << c.units() << "; frames=" << price.frames << "; samples=" << c.samples << "; triangles=" << c.triangles
-    << "; tiles=" << c.tiles << "; framebuffer=" << c.framebuffer;
+    << "; tiles=" << c.tiles << "; framebuffer=" << c.framebuffer << "; edge_texels=" << c.edge_texels;
   return s.str();
 }
 

@@ -139,6 +139,7 @@ render::RenderOutput render_sheet(ServiceContext& context, const render::RenderJ
     one.client = job.client;
     one.cost = job.cost;
     one.paced_chunk_triangles = job.paced_chunk_triangles;
+    one.paced_band_texels = job.paced_band_texels;
     frames.push_back(std::move(one));
   }
   std::vector<std::future<render::RenderOutput>> futures = context.renderer.submit_all(std::move(frames));

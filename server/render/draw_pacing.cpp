@@ -15,8 +15,10 @@ void draw_elements(std::size_t index_count, std::size_t first_index) {
 
 }  // namespace
 
-DrawPacing::DrawPacing(std::size_t chunk_triangles, Clock::time_point deadline, std::function<void()> between_chunks)
+DrawPacing::DrawPacing(std::size_t chunk_triangles, std::size_t band_texels, Clock::time_point deadline,
+                       std::function<void()> between_chunks)
     : chunk_indices_(std::max<std::size_t>(chunk_triangles, 1) * 3),
+      band_texels_(band_texels),
       deadline_(deadline),
       between_chunks_(std::move(between_chunks)) {}
 
@@ -32,10 +34,43 @@ void DrawPacing::draw_triangles(std::size_t index_count, std::size_t first_index
     issued_ += count;
     if (issued_ < chunk_indices_) continue;
     issued_ = 0;
-    ++chunks_;
-    wait_for_chunk();
-    if (between_chunks_ && !expired_) between_chunks_();
+    end_chunk();
   }
+}
+
+void DrawPacing::draw_in_bands(int width, int height, double texels_per_pixel, const std::function<void()>& draw) {
+  const double band_pixels = static_cast<double>(band_texels_) / std::max(texels_per_pixel, 1.0);
+  const int rows = band_texels_ == 0 ? height : std::clamp(static_cast<int>(band_pixels / std::max(width, 1)), 1, height);
+  if (rows >= height) {
+    if (Clock::now() > deadline_) {
+      expired_ = true;
+      return;
+    }
+    draw();
+    return;
+  }
+  // Each band is its own viewport: the full-screen triangle then covers
+  // exactly its rows (a scissor box on a multisampled target let llvmpipe
+  // draw the row below a band's once more, blending the line twice), and
+  // gl_FragCoord stays the target's.
+  GLint viewport[4] = {0, 0, width, height};
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  for (int y = 0; y < height && !expired_; y += rows) {
+    if (Clock::now() > deadline_) {
+      expired_ = true;
+      break;
+    }
+    glViewport(viewport[0], viewport[1] + y, width, std::min(rows, height - y));
+    draw();
+    end_chunk();
+  }
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+}
+
+void DrawPacing::end_chunk() {
+  ++chunks_;
+  wait_for_chunk();
+  if (between_chunks_ && !expired_) between_chunks_();
 }
 
 void DrawPacing::wait_for_chunk() {
@@ -62,6 +97,14 @@ void draw_triangles(std::size_t index_count, std::size_t first_index) {
     current_pacing->draw_triangles(index_count, first_index);
   } else {
     draw_elements(index_count, first_index);
+  }
+}
+
+void draw_full_screen(int width, int height, double texels_per_pixel, const std::function<void()>& draw) {
+  if (current_pacing != nullptr) {
+    current_pacing->draw_in_bands(width, height, texels_per_pixel, draw);
+  } else {
+    draw();
   }
 }
 

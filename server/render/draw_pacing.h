@@ -1,6 +1,7 @@
 #pragma once
 // A render priced as long (render_cost.h) is drawn in chunks of triangles,
-// with the deadline checked between them: one draw call of sixty thousand
+// and its full-screen edge pass in bands of rows, with the deadline checked
+// between them: one draw call of sixty thousand
 // frame-sized triangles cannot be stopped once issued, a chunk of them ends
 // soon. One chunk is in flight at a time: the next is issued once the last
 // has been drawn, so a render past its deadline hands the render thread
@@ -32,14 +33,21 @@ class DrawPacing {
   using Clock = std::chrono::steady_clock;
   // `between_chunks`, when set, runs after each chunk has been drawn, before
   // the next is issued (the render service waits there while short renders
-  // draw).
-  DrawPacing(std::size_t chunk_triangles, Clock::time_point deadline, std::function<void()> between_chunks = {});
+  // draw). A band of a full-screen pass reads about `band_texels` texels
+  // (0: such passes are drawn whole).
+  DrawPacing(std::size_t chunk_triangles, std::size_t band_texels, Clock::time_point deadline,
+             std::function<void()> between_chunks = {});
 
   // glDrawElements of `index_count` indices (triangles) from index
   // `first_index` of the bound element buffer, chunk by chunk. A chunk is
   // counted across calls: a pass drawn as many short ranges (runs left out
   // between them) waits once per chunk's triangles, not once per range.
   void draw_triangles(std::size_t index_count, std::size_t first_index);
+  // `draw` (a full-screen pass over a target `width` × `height`, reading
+  // `texels_per_pixel` texels a pixel) once per band of rows, each band its
+  // own viewport, waited for like a chunk. The pass's pixels do not depend
+  // on one another's output, so the bands give the same bytes as one draw.
+  void draw_in_bands(int width, int height, double texels_per_pixel, const std::function<void()>& draw);
   bool expired() const { return expired_; }
   std::size_t chunks_drawn() const { return chunks_; }
 
@@ -48,7 +56,11 @@ class DrawPacing {
   // when the deadline passes first.
   void wait_for_chunk();
 
+  // After a chunk or band was issued: waits for it, then steps aside.
+  void end_chunk();
+
   std::size_t chunk_indices_;
+  std::size_t band_texels_;
   std::size_t issued_ = 0;  // indices drawn since the last wait
   Clock::time_point deadline_;
   std::function<void()> between_chunks_;
@@ -74,5 +86,8 @@ class PacingScope {
 // What the meshes draw with: glDrawElements at once without a pacing
 // scope, through the scope's pacing within one.
 void draw_triangles(std::size_t index_count, std::size_t first_index);
+// What full-screen passes that may take long draw with: `draw` once without
+// a pacing scope, in bands within one (DrawPacing::draw_in_bands).
+void draw_full_screen(int width, int height, double texels_per_pixel, const std::function<void()>& draw);
 
 }  // namespace toond::render

@@ -1,7 +1,9 @@
 #include "render/render_cost.h"
 
 #include "render/camera.h"
+#include "render/outline_width.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -55,11 +57,31 @@ RenderCost pass_cost(std::span<const scene::Mesh* const> meshes, const std::opti
   return cost;
 }
 
+// The outline's width in drawn pixels as the frame will draw it: a width in
+// world units converted at the camera that frames the meshes' bounds.
+double drawn_line_px(const RenderParams& params, std::span<const scene::Mesh* const> meshes, double supersample) {
+  if (meshes.empty()) return 0.0;
+  scene::Bounds bounds = meshes.front()->bounds;
+  for (const scene::Mesh* mesh : meshes) {
+    bounds.min = glm::min(bounds.min, mesh->bounds.min);
+    bounds.max = glm::max(bounds.max, mesh->bounds.max);
+  }
+  const double aspect = static_cast<double>(params.width) / std::max(params.height, 1);
+  const CameraSetup camera = fit_camera(params.camera, bounds, aspect);
+  const bool orthographic = params.camera.projection == Projection::Orthographic;
+  return outline_width_px(params.outline, camera, orthographic, params.height) * supersample;
+}
+
 }  // namespace
+
+double edge_texels_per_pixel(double line_px, bool creases_only) {
+  const double reach = std::ceil((0.5 * line_px + 0.5) * 1.4143);
+  return 4.0 * reach + (creases_only ? kCreasePixelTexels : kSilhouettePixelTexels);
+}
 
 double RenderCost::units() const {
   return (samples + triangles * kTriangleSamples + tiles * kTileSamples + framebuffer * kFramebufferSamples +
-          frames * kFrameSamples) /
+          frames * kFrameSamples + edge_texels * kEdgeTexelSamples) /
          1e6;
 }
 
@@ -67,7 +89,9 @@ std::string RenderCost::describe() const {
   std::ostringstream s;
   s.precision(3);
   s << units() << " Msamples (surface samples " << samples / 1e6 << " M, triangles " << triangles / 1e6
-    << " M, tile samples crossed " << tiles / 1e6 << " M, frame samples " << framebuffer / 1e6 << " M)";
+    << " M, tile samples crossed " << tiles / 1e6 << " M, frame samples " << framebuffer / 1e6 << " M";
+  if (edge_texels > 0) s << ", edge pass texels " << edge_texels / 1e6 << " M";
+  s << ")";
   return s.str();
 }
 
@@ -77,6 +101,7 @@ RenderCost& RenderCost::operator+=(const RenderCost& other) {
   tiles += other.tiles;
   framebuffer += other.framebuffer;
   frames += other.frames;
+  edge_texels += other.edge_texels;
   return *this;
 }
 
@@ -97,6 +122,10 @@ RenderCost predict_frame_cost(const RenderParams& params, const PassPlan& plan,
     cost.framebuffer += side * side;  // its clear
   }
   cost.framebuffer += width * height * plan.samples * frame_wide_passes(plan);
+  if (plan.has(Pass::Edges)) {
+    cost.edge_texels =
+        width * height * edge_texels_per_pixel(drawn_line_px(params, meshes, plan.supersample), plan.creases_only);
+  }
   cost.frames = 1;
   return cost;
 }

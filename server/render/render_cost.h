@@ -27,11 +27,16 @@ struct RenderCost {
   // clear, the resolve, full-screen passes, the readback), whatever is drawn.
   double framebuffer = 0;
   double frames = 0;  // frames drawn: each has a fixed cost of its own
+  // Texels the screen-space edge pass reads: drawn pixels × what one
+  // pixel's walks toward the nearest edge read (edges.frag), which grows
+  // with the line's width. At 2048² that pass alone costs llvmpipe more
+  // than drawing the meshes.
+  double edge_texels = 0;
 
   // One figure, in millions of sample-equivalents ("Msamples"): a triangle
   // set up counts as kTriangleSamples samples, a tile sample crossed as
   // kTileSamples, a frame sample as kFramebufferSamples, a frame as
-  // kFrameSamples. The weights were fitted to llvmpipe's render times
+  // kFrameSamples, a texel the edge pass reads as kEdgeTexelSamples. The weights were fitted to llvmpipe's render times
   // (bench/render_cost.py: about 1.8 ms per Msample on a 2-core machine);
   // on a GPU the figure is still proportional to the work.
   double units() const;
@@ -44,8 +49,21 @@ inline constexpr double kTriangleSamples = 40;
 inline constexpr double kTileSamples = 320;
 inline constexpr double kFramebufferSamples = 1;
 inline constexpr double kFrameSamples = 1.3e6;
+inline constexpr double kEdgeTexelSamples = 4.5;
 // The screen tile a rasteriser bins triangles into (llvmpipe's is 64 pixels).
 inline constexpr double kTilePixels = 64;
+
+// What one pixel of the edge pass costs, in texels it reads (edges.frag),
+// for a line this many drawn pixels wide: four walks along the axes, each
+// as far as an edge that could still touch the pixel, and a fixed part
+// counted as so many texels more. The fixed parts were measured
+// (bench/render_cost.py: the pass's time at line widths 2 and 8): crease
+// lines alone cost about 9 texels' worth besides the walks; silhouettes
+// about 33 (the multisampled prepass resolved first, the texel behind each
+// walk, the covered shares, and the walks across near an edge).
+inline constexpr double kCreasePixelTexels = 9;
+inline constexpr double kSilhouettePixelTexels = 33;
+double edge_texels_per_pixel(double line_px, bool creases_only);
 
 // How the meshes of a frame are seen: from the camera's own direction (a
 // lone model drawn as it is), or from any (the objects of a scene, each

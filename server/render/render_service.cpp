@@ -357,7 +357,8 @@ std::optional<RenderService::Started> RenderService::start_task(Task task, Worke
     if (task.job.paced_chunk_triangles > 0 && task.job.deadline) {
       std::function<void()> between_chunks;
       if (serves_long_lane(worker.index)) between_chunks = [this] { yield_to_short_renders(); };
-      pacing.emplace(task.job.paced_chunk_triangles, *task.job.deadline, std::move(between_chunks));
+      pacing.emplace(task.job.paced_chunk_triangles, task.job.paced_band_texels, *task.job.deadline,
+                     std::move(between_chunks));
     }
     started.frame = worker.renderer.start(objects, task.job.params, pacing ? &*pacing : nullptr);
   } catch (...) {

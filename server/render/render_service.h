@@ -55,6 +55,9 @@ struct RenderJob {
   // Nonzero: the meshes are drawn in chunks of this many triangles and the
   // render is stopped at its deadline (RenderAborted; draw_pacing.h).
   std::size_t paced_chunk_triangles = 0;
+  // With it, the edge pass is drawn in bands of rows reading about this
+  // many texels each, a chunk's worth.
+  std::size_t paced_band_texels = 0;
 };
 
 // Set on a job's future when its deadline passed before it was started.

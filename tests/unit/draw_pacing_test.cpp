@@ -9,6 +9,7 @@
 
 #include "gpu/program_cache.h"
 #include "render/draw_pacing.h"
+#include "render/render_cost.h"
 #include "render/renderer.h"
 #include "scene/bundle_import.h"
 #include "scene/obj_import.h"
@@ -48,7 +49,7 @@ class DrawPacingTest : public test::GlContextTest {
 TEST_F(DrawPacingTest, ChunksDrawTheSameImageAsOneDrawCall) {
   const image::Image whole = render(nullptr).image;
   int calls = 0;
-  DrawPacing pacing(7, Clock::now() + std::chrono::minutes(5), [&] { ++calls; });
+  DrawPacing pacing(7, 0, Clock::now() + std::chrono::minutes(5), [&] { ++calls; });
   const image::Image chunked = render(&pacing).image;
   // 300 triangles in chunks of 7, in every pass that draws the mesh (the
   // main pass and the hull), a chunk running on from one draw to the next.
@@ -71,7 +72,7 @@ TEST_F(DrawPacingTest, ManyShortDrawsWaitOncePerChunkOfTriangles) {
   const RenderOutput whole = renderer_->render({RenderObject{gpu_sphere}}, params);
   ASSERT_GT(whole.main_triangles_skipped, 0u);
   constexpr std::size_t kChunk = 2000;
-  DrawPacing pacing(kChunk, Clock::now() + std::chrono::minutes(5));
+  DrawPacing pacing(kChunk, 0, Clock::now() + std::chrono::minutes(5));
   const RenderOutput paced = renderer_->render({RenderObject{gpu_sphere}}, params, &pacing);
   // At most the main pass's and the hull's triangles, in full chunks.
   EXPECT_LE(pacing.chunks_drawn(), 2 * sphere.mesh.triangle_count() / kChunk);
@@ -79,9 +80,37 @@ TEST_F(DrawPacingTest, ManyShortDrawsWaitOncePerChunkOfTriangles) {
   EXPECT_EQ(paced.image.rgba, whole.image.rgba);
 }
 
+// The screen-space edge pass reads every pixel's neighbours; a long render
+// draws it in bands of rows, each waited for: the same bytes, silhouettes
+// and crease lines alike.
+TEST_F(DrawPacingTest, TheEdgePassInBandsDrawsTheSameImage) {
+  const scene::Model cube = scene::import_obj_bundle([] {
+    scene::Bundle b;
+    b.add("cube.obj", test::cube_obj());
+    return b;
+  }());
+  const GpuModel gpu_cube(cube);
+  for (const nlohmann::json& outline : {nlohmann::json{{"method", "edges"}, {"width", 3}},
+                                        nlohmann::json{{"creases", "always"}}}) {
+    const RenderParams params = test::complete_params({{"width", 96}, {"height", 96}, {"outline", outline}});
+    const RenderOutput whole = renderer_->render({RenderObject{gpu_cube}}, params);
+    // Ten rows a band (and a half, for rounding), and no triangle chunk
+    // ever full. The hull's crease lines are drawn alone; the edges method
+    // draws the silhouette too.
+    const double per_pixel = edge_texels_per_pixel(params.outline.width, !params.outline.edges);
+    const auto band_texels = static_cast<std::size_t>(10.5 * 96 * per_pixel);
+    int steps_aside = 0;
+    DrawPacing pacing(1000000, band_texels, Clock::now() + std::chrono::minutes(5), [&] { ++steps_aside; });
+    const RenderOutput banded = renderer_->render({RenderObject{gpu_cube}}, params, &pacing);
+    EXPECT_EQ(pacing.chunks_drawn(), 10u) << outline;
+    EXPECT_EQ(static_cast<std::size_t>(steps_aside), pacing.chunks_drawn());
+    EXPECT_TRUE(banded.image.rgba == whole.image.rgba) << outline;
+  }
+}
+
 TEST_F(DrawPacingTest, PastTheDeadlineTheRenderStopsAndTheNextDrawsAsBefore) {
   const image::Image before = render(nullptr).image;
-  DrawPacing late(7, Clock::now() - std::chrono::milliseconds(1));
+  DrawPacing late(7, 0, Clock::now() - std::chrono::milliseconds(1));
   EXPECT_THROW(render(&late), RenderAborted);
   EXPECT_TRUE(late.expired());
   EXPECT_EQ(late.chunks_drawn(), 0u);
@@ -100,7 +129,7 @@ TEST_F(DrawPacingTest, ADeadlineThatPassesMidwayStopsWithinAChunk) {
   const auto deadline = Clock::now() + std::clamp<Clock::duration>(10 * warm, std::chrono::milliseconds(300),
                                                                    std::chrono::seconds(3));
   int pauses = 0;
-  DrawPacing stopping(7, deadline, [&] {
+  DrawPacing stopping(7, 0, deadline, [&] {
     if (++pauses == 3) std::this_thread::sleep_until(deadline + std::chrono::milliseconds(5));
   });
   EXPECT_THROW(render(&stopping), RenderAborted);

@@ -178,6 +178,12 @@ render::RenderParams params_at(int width, int height, int msaa) {
   return p;
 }
 
+render::RenderParams params_with_size(render::RenderParams p, int size) {
+  p.width = size;
+  p.height = size;
+  return p;
+}
+
 render::RenderCost cost_of(const scene::Model& m, const render::RenderParams& p) {
   const scene::Mesh* meshes[] = {&m.mesh};
   return render::predict_frame_cost(p, render::plan_passes(p, {}), meshes);
@@ -213,6 +219,42 @@ TEST(RenderCost, TheShadowPassCountsAtTheMapsSize) {
   p.shadows.enabled = true;
   p.shadows.map_size = 1024;
   EXPECT_NEAR(cost_of(m, p).samples - without, 2.0 * 1024 * 1024, 1e-3);
+}
+
+// The edge pass reads every pixel's neighbours as far as a line of the
+// width could reach: its price grows with the pixels and with the width,
+// and silhouettes cost more than crease lines alone.
+TEST(RenderCost, TheEdgePassCountsTheTexelsItsWalksRead) {
+  const scene::Model m = scene::import_obj_bundle(make_bundle({{"a.obj", kCube}}));
+  render::RenderParams p = params_at(256, 256, 1);
+  EXPECT_EQ(cost_of(m, p).edge_texels, 0.0);  // the hull alone
+  p.outline.edges = true;
+  p.outline.width = 2;
+  const render::RenderCost narrow = cost_of(m, p);
+  EXPECT_NEAR(narrow.edge_texels, 256.0 * 256 * render::edge_texels_per_pixel(2, false), 1e-6);
+  // A 2 px line reaches 3 pixels along an axis: four walks of 3.
+  EXPECT_EQ(render::edge_texels_per_pixel(2, false), 4 * 3 + render::kSilhouettePixelTexels);
+  EXPECT_EQ(render::edge_texels_per_pixel(2, true), 4 * 3 + render::kCreasePixelTexels);
+  EXPECT_NEAR(cost_of(m, params_with_size(p, 512)).edge_texels / narrow.edge_texels, 4.0, 1e-9);
+  // An 8 px line reaches 7: four more texels on each of the four walks.
+  p.outline.width = 8;
+  EXPECT_NEAR(cost_of(m, p).edge_texels - narrow.edge_texels, 256.0 * 256 * 4 * 4, 1e-6);
+  EXPECT_NEAR(cost_of(m, p).units() - narrow.units(),
+              (cost_of(m, p).edge_texels - narrow.edge_texels) * render::kEdgeTexelSamples / 1e6, 1e-9);
+  EXPECT_NE(cost_of(m, p).describe().find("edge pass texels"), std::string::npos);
+}
+
+// A width in world units is priced at the pixels the framing gives it: a
+// line a tenth of the model's size is tens of pixels wide at 512².
+TEST(RenderCost, AWorldWidthIsPricedAtItsPixels) {
+  const scene::Model m = scene::import_obj_bundle(make_bundle({{"a.obj", kCube}}));
+  render::RenderParams p = params_at(512, 512, 1);
+  p.outline.edges = true;
+  p.outline.units = render::OutlineUnits::World;
+  p.outline.width = 0.001f;
+  const double thin = cost_of(m, p).edge_texels;
+  p.outline.width = 0.2f;
+  EXPECT_GT(cost_of(m, p).edge_texels, thin * 3);
 }
 
 TEST(RenderCost, OneFigureWeighsTheThree) {

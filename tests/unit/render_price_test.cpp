@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -118,6 +119,23 @@ TEST(RenderPrice, OnlyLongFramesArePacedInChunksOfAboutTheChunkCost) {
   const double chunks = dear.triangles / static_cast<double>(chunk);
   // Whole triangles a chunk: 59 of them where 59.99 would be exact.
   EXPECT_NEAR(chunks / (dear.units() / kPacedChunkCost), 1.0, 0.05);
+}
+
+// The edge pass is drawn in bands of its own: a frame dear only for its
+// edge pass chunks its triangles at the geometry's own cost, and its bands
+// read a chunk's worth of texels.
+TEST(RenderPrice, TheEdgePassIsPacedInBandsNotInSmallerChunks) {
+  render::RenderCost drawing;
+  drawing.samples = 100e6;
+  drawing.triangles = 1e5;
+  EXPECT_EQ(paced_band_texels(drawing), 0u);
+  render::RenderCost with_edges = drawing;
+  with_edges.edge_texels = 1000e6;
+  ASSERT_GE(with_edges.units(), kPacedFrameCost);
+  const std::size_t chunk = paced_chunk_triangles(with_edges);
+  EXPECT_NEAR(static_cast<double>(chunk), std::floor(kPacedChunkCost / (drawing.units() / drawing.triangles)), 1.0);
+  EXPECT_NEAR(static_cast<double>(paced_band_texels(with_edges)) * render::kEdgeTexelSamples / 1e6, kPacedChunkCost,
+              1e-3);
 }
 
 // The shared models, as users upload them: never refused at the schema's

@@ -1,6 +1,8 @@
 #include <cmath>
 
+#include "render/draw_pacing.h"
 #include "render/passes/passes.h"
+#include "render/render_cost.h"
 #include "render/texture_unit.h"
 
 namespace toond::render {
@@ -26,7 +28,10 @@ void draw_edge_pass(PassContext& context) {
   edges.set("u_whole_pixels", static_cast<int>(outline.whole_pixel_lines));
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  context.resources.draw_fullscreen_triangle();
+  // At 2048² this pass alone can take llvmpipe longer than the meshes: a
+  // render priced as long draws it in bands, stepping aside between them.
+  const double texels = edge_texels_per_pixel(frame.outline_px, frame.plan.creases_only);
+  draw_full_screen(frame.draw_width, frame.draw_height, texels, [&] { context.resources.draw_fullscreen_triangle(); });
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }
