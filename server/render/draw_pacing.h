@@ -1,9 +1,10 @@
 #pragma once
 // A render priced as long (render_cost.h) is drawn in chunks of triangles,
 // and its full-screen edge pass in bands of rows, with the deadline checked
-// between them: one draw call of sixty thousand
-// frame-sized triangles cannot be stopped once issued, a chunk of them ends
-// soon. One chunk is in flight at a time: the next is issued once the last
+// between them: one draw call of sixty thousand frame-sized triangles (or
+// one edge pass over 2048², half a second on llvmpipe) cannot be stopped
+// once issued, a chunk of them ends soon. One chunk (or band) is in flight
+// at a time: the next is issued once the last
 // has been drawn, so a render past its deadline hands the render thread
 // back within about one chunk's time, and between chunks the render can
 // step aside for others (`between_chunks`): a CPU rasteriser such as
