@@ -136,5 +136,33 @@ TEST_F(DrawPacingTest, ADeadlineThatPassesMidwayStopsWithinAChunk) {
   EXPECT_EQ(stopping.chunks_drawn(), 3u);
 }
 
+// A deadline that passes between two bands of the edge pass stops it
+// there; the bands' viewport is given back, so the next render draws as
+// before.
+TEST_F(DrawPacingTest, ADeadlineThatPassesBetweenBandsStopsTheEdgePass) {
+  const scene::Model cube = scene::import_obj_bundle([] {
+    scene::Bundle b;
+    b.add("cube.obj", test::cube_obj());
+    return b;
+  }());
+  const GpuModel gpu_cube(cube);
+  const RenderParams params =
+      test::complete_params({{"width", 96}, {"height", 96}, {"outline", {{"method", "edges"}}}});
+  const auto started = Clock::now();
+  const image::Image before = renderer_->render({RenderObject{gpu_cube}}, params).image;
+  const auto warm = Clock::now() - started;
+  const auto deadline = Clock::now() + std::clamp<Clock::duration>(10 * warm, std::chrono::milliseconds(300),
+                                                                   std::chrono::seconds(3));
+  const auto band_texels = static_cast<std::size_t>(10.5 * 96 * edge_texels_per_pixel(params.outline.width, false));
+  int pauses = 0;
+  DrawPacing stopping(1000000, band_texels, deadline, [&] {
+    if (++pauses == 3) std::this_thread::sleep_until(deadline + std::chrono::milliseconds(5));
+  });
+  EXPECT_THROW(renderer_->render({RenderObject{gpu_cube}}, params, &stopping), RenderAborted);
+  EXPECT_EQ(stopping.chunks_drawn(), 3u);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_TRUE(renderer_->render({RenderObject{gpu_cube}}, params).image.rgba == before.rgba);
+}
+
 }  // namespace
 }  // namespace toond::render
