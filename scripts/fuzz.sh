@@ -28,9 +28,12 @@ for t in "${targets[@]}"; do
   findings="$build_dir/findings/$t"
   mkdir -p "$work" "$findings"
   echo "== fuzz $t for ${seconds}s"
-  seeds="tests/fuzz/corpus/$t"
-  if [ "$t" = gltf_import ]; then seeds="$build_dir/corpus/gltf_import.seeds"; fi
-  if ! "$build_dir/tests/fuzz/fuzz_$t" "$work" "$seeds" \
+  seeds=("tests/fuzz/corpus/$t")
+  if [ "$t" = gltf_import ]; then seeds=("$build_dir/corpus/gltf_import.seeds"); fi
+  # Past findings are read too: clang's UBSan here checks what the plain
+  # build's replay does not (a float cast past its integer's range).
+  if [ -d "tests/fuzz/regressions/$t" ]; then seeds+=("tests/fuzz/regressions/$t"); fi
+  if ! "$build_dir/tests/fuzz/fuzz_$t" "$work" "${seeds[@]}" \
       -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
       -artifact_prefix="$findings/" -print_final_stats=1 2>"$build_dir/fuzz_$t.log"; then
     tail -40 "$build_dir/fuzz_$t.log"

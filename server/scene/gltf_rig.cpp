@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -39,6 +40,18 @@ std::size_t morph_targets_of(const tinygltf::Mesh& mesh) {
   std::size_t targets = mesh.weights.size();
   for (const auto& primitive : mesh.primitives) targets = std::max(targets, primitive.targets.size());
   return targets;
+}
+
+// A joint index as the file gives it, for a message: a whole number as
+// such, anything else (a fraction, NaN, a float past any integer) as %g
+// writes it, never cast to an integer it does not fit.
+std::string joint_text(double joint) {
+  if (std::isfinite(joint) && std::abs(joint) < 1e15 && joint == std::floor(joint)) {
+    return std::to_string(static_cast<long long>(joint));
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", joint);
+  return text;
 }
 
 }  // namespace
@@ -191,7 +204,7 @@ std::vector<double> GltfRigReader::read_weights_of(int node, const tinygltf::Pri
     }
     for (const double joint : js) {
       if (!(joint >= 0.0) || joint >= static_cast<double>(joint_count)) {
-        fail(joints_role + " names joint " + std::to_string(static_cast<long long>(joint)) + ", past the skin's " +
+        fail(joints_role + " names joint " + joint_text(joint) + ", past the skin's " +
              std::to_string(joint_count) + " joints");
       }
     }

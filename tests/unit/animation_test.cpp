@@ -467,6 +467,23 @@ TEST(GltfRigErrors, AJointIndexPastTheSkinsJointsNamesTheAccessor) {
   EXPECT_NE(error.find("JOINTS_1 names joint 5, past the skin's 2 joints"), std::string::npos) << error;
 }
 
+// Joint indices stored as floats may hold anything: a number past every
+// integer or NaN is named as the file gives it (casting it to an integer
+// for the message was undefined; the fuzzer found it).
+TEST(GltfRigErrors, AJointIndexNoIntegerHoldsIsNamedAsGiven) {
+  for (const auto& [joint, text] : {std::pair{1e30f, "names joint 1e+30, past"},
+                                    std::pair{std::numeric_limits<float>::quiet_NaN(), "names joint nan, past"},
+                                    std::pair{2.5f, "names joint 2.5, past"}}) {
+    RiggedBar bar = rigged_bar();
+    std::vector<float> joints(12 * 4, 0.0f);
+    joints[8] = joint;
+    bar.parts.json["meshes"][0]["primitives"][0]["attributes"]["JOINTS_1"] =
+        test::append_float_accessor(bar.parts, joints, "VEC4");
+    const std::string error = import_error(test::pack_gltf(bar.parts, test::GltfForm::Glb));
+    EXPECT_NE(error.find(text), std::string::npos) << error;
+  }
+}
+
 TEST(GltfRigErrors, AJointOutsideTheDrawnSceneIsRefused) {
   const std::string error = bar_error([](nlohmann::json& j) { j["scenes"][0]["nodes"] = {0}; });
   EXPECT_NE(error.find("is not in the scene that is drawn"), std::string::npos) << error;
