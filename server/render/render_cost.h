@@ -36,9 +36,10 @@ struct RenderCost {
   // One figure, in millions of sample-equivalents ("Msamples"): a triangle
   // set up counts as kTriangleSamples samples, a tile sample crossed as
   // kTileSamples, a frame sample as kFramebufferSamples, a frame as
-  // kFrameSamples, a texel the edge pass reads as kEdgeTexelSamples. The weights were fitted to llvmpipe's render times
-  // (bench/render_cost.py: about 1.8 ms per Msample on a 2-core machine);
-  // on a GPU the figure is still proportional to the work.
+  // kFrameSamples, a texel the edge pass reads as kEdgeTexelSamples. The
+  // weights were fitted to llvmpipe's render times (bench/render_cost.py:
+  // 1.0–1.8 ms per Msample on a 2-core machine, from day to day); on a GPU
+  // the figure is still proportional to the work.
   double units() const;
   // "12.3 Msamples (layers × pixels: …, triangles: …, tiles: …)" for messages.
   std::string describe() const;

@@ -39,6 +39,18 @@ class DrawPacingTest : public test::GlContextTest {
 
   RenderOutput render(DrawPacing* pacing) { return renderer_->render({RenderObject{*gpu_model_}}, params_, pacing); }
 
+  static scene::Model cube_model() {
+    scene::Bundle bundle;
+    bundle.add("cube.obj", test::cube_obj());
+    return scene::import_obj_bundle(bundle);
+  }
+  // The texels of ten rows of a 96-pixel-wide edge pass (and half a row,
+  // for rounding): the hull's crease lines are drawn alone, the edges
+  // method draws the silhouette too.
+  static std::size_t ten_rows_a_band(const RenderParams& params) {
+    return static_cast<std::size_t>(10.5 * 96 * edge_texels_per_pixel(params.outline.width, !params.outline.edges));
+  }
+
   std::unique_ptr<scene::Model> model_;
   std::unique_ptr<gpu::ProgramCache> programs_;
   std::unique_ptr<Renderer> renderer_;
@@ -84,23 +96,15 @@ TEST_F(DrawPacingTest, ManyShortDrawsWaitOncePerChunkOfTriangles) {
 // draws it in bands of rows, each waited for: the same bytes, silhouettes
 // and crease lines alike.
 TEST_F(DrawPacingTest, TheEdgePassInBandsDrawsTheSameImage) {
-  const scene::Model cube = scene::import_obj_bundle([] {
-    scene::Bundle b;
-    b.add("cube.obj", test::cube_obj());
-    return b;
-  }());
+  const scene::Model cube = cube_model();
   const GpuModel gpu_cube(cube);
   for (const nlohmann::json& outline : {nlohmann::json{{"method", "edges"}, {"width", 3}},
                                         nlohmann::json{{"creases", "always"}}}) {
     const RenderParams params = test::complete_params({{"width", 96}, {"height", 96}, {"outline", outline}});
     const RenderOutput whole = renderer_->render({RenderObject{gpu_cube}}, params);
-    // Ten rows a band (and a half, for rounding), and no triangle chunk
-    // ever full. The hull's crease lines are drawn alone; the edges method
-    // draws the silhouette too.
-    const double per_pixel = edge_texels_per_pixel(params.outline.width, !params.outline.edges);
-    const auto band_texels = static_cast<std::size_t>(10.5 * 96 * per_pixel);
+    // No triangle chunk ever full.
     int steps_aside = 0;
-    DrawPacing pacing(1000000, band_texels, Clock::now() + std::chrono::minutes(5), [&] { ++steps_aside; });
+    DrawPacing pacing(1000000, ten_rows_a_band(params), Clock::now() + std::chrono::minutes(5), [&] { ++steps_aside; });
     const RenderOutput banded = renderer_->render({RenderObject{gpu_cube}}, params, &pacing);
     EXPECT_EQ(pacing.chunks_drawn(), 10u) << outline;
     EXPECT_EQ(static_cast<std::size_t>(steps_aside), pacing.chunks_drawn());
@@ -140,11 +144,7 @@ TEST_F(DrawPacingTest, ADeadlineThatPassesMidwayStopsWithinAChunk) {
 // there; the bands' viewport is given back, so the next render draws as
 // before.
 TEST_F(DrawPacingTest, ADeadlineThatPassesBetweenBandsStopsTheEdgePass) {
-  const scene::Model cube = scene::import_obj_bundle([] {
-    scene::Bundle b;
-    b.add("cube.obj", test::cube_obj());
-    return b;
-  }());
+  const scene::Model cube = cube_model();
   const GpuModel gpu_cube(cube);
   const RenderParams params =
       test::complete_params({{"width", 96}, {"height", 96}, {"outline", {{"method", "edges"}}}});
@@ -153,9 +153,8 @@ TEST_F(DrawPacingTest, ADeadlineThatPassesBetweenBandsStopsTheEdgePass) {
   const auto warm = Clock::now() - started;
   const auto deadline = Clock::now() + std::clamp<Clock::duration>(10 * warm, std::chrono::milliseconds(300),
                                                                    std::chrono::seconds(3));
-  const auto band_texels = static_cast<std::size_t>(10.5 * 96 * edge_texels_per_pixel(params.outline.width, false));
   int pauses = 0;
-  DrawPacing stopping(1000000, band_texels, deadline, [&] {
+  DrawPacing stopping(1000000, ten_rows_a_band(params), deadline, [&] {
     if (++pauses == 3) std::this_thread::sleep_until(deadline + std::chrono::milliseconds(5));
   });
   EXPECT_THROW(renderer_->render({RenderObject{gpu_cube}}, params, &stopping), RenderAborted);

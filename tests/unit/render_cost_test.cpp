@@ -244,17 +244,21 @@ TEST(RenderCost, TheEdgePassCountsTheTexelsItsWalksRead) {
   EXPECT_NE(cost_of(m, p).describe().find("edge pass texels"), std::string::npos);
 }
 
-// A width in world units is priced at the pixels the framing gives it: a
-// line a tenth of the model's size is tens of pixels wide at 512².
+// A width in world units is priced at the pixels the framing gives it: the
+// unit cube fills about 0.88 of a 512² frame across its 1.2–1.7 units seen
+// obliquely, some 260–380 px a unit, so a 0.05 line is 13–19 px wide and
+// its walks reach 11–15 px (were the width taken as pixels, 1).
 TEST(RenderCost, AWorldWidthIsPricedAtItsPixels) {
   const scene::Model m = scene::import_obj_bundle(make_bundle({{"a.obj", kCube}}));
   render::RenderParams p = params_at(512, 512, 1);
   p.outline.edges = true;
   p.outline.units = render::OutlineUnits::World;
-  p.outline.width = 0.001f;
-  const double thin = cost_of(m, p).edge_texels;
-  p.outline.width = 0.2f;
-  EXPECT_GT(cost_of(m, p).edge_texels, thin * 3);
+  p.outline.width = 0.05f;
+  const double per_pixel = cost_of(m, p).edge_texels / (512.0 * 512);
+  const double reach = (per_pixel - render::kSilhouettePixelTexels) / 4;
+  EXPECT_GE(reach, 11.0);
+  EXPECT_LE(reach, 15.0);
+  EXPECT_EQ(reach, std::floor(reach));
 }
 
 TEST(RenderCost, OneFigureWeighsTheThree) {
