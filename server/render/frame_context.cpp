@@ -30,7 +30,7 @@ SceneFrame scene_of(const std::vector<RenderObject>& objects) {
 
 // Per object, the coarsest level whose error, at the object's nearest
 // distance from the camera, stays within the pixel budget. Scale in the
-// object's transform scales its error along.
+// object's transform scales its error along, and so does a pose's stretch.
 std::vector<LodUse> choose_levels(const FrameContext& frame) {
   const RenderParams& params = frame.params;
   std::vector<LodUse> uses;
@@ -40,8 +40,9 @@ std::vector<LodUse> choose_levels(const FrameContext& frame) {
     const double scale =
         std::max({glm::length(glm::dvec3(m[0])), glm::length(glm::dvec3(m[1])), glm::length(glm::dvec3(m[2]))});
     const glm::dvec3 centre = glm::dvec3(m * glm::dvec4(glm::dvec3(model.bounds().centre()), 1.0));
-    const double px_per_unit = scale * pixels_per_unit(frame.camera, frame.orthographic(), centre,
-                                                       model.bounds().radius() * scale, params.height);
+    const double px_per_unit = model.pose_stretch() * scale *
+                               pixels_per_unit(frame.camera, frame.orthographic(), centre,
+                                               model.bounds().radius() * scale, params.height);
     LodUse use;
     use.levels = model.lod_count();
     if (params.lod_auto) use.level = choose_lod(model.lod_errors(), px_per_unit, params.lod_error_px);

@@ -170,6 +170,7 @@ void GpuModel::apply_pose(std::shared_ptr<const scene::SkinPose> pose, const sce
   if (cpu_posed) pose_into_vertex_buffer(model, *pose->cpu_sums);
   posed_bounds_ = pose->bounds;
   posed_extremes_ = pose->extremes;
+  pose_stretch_ = pose->stretch;
   for (std::size_t i = 0; i < levels_.size(); ++i) levels_[i].posed_caps = pose->caps[i];
   applied_ = std::move(pose);
 }

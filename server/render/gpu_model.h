@@ -115,6 +115,8 @@ class GpuModel {
   }
   // The pose's when one is applied (which may be a whole clip's).
   const scene::Bounds& bounds() const { return posed_ ? posed_bounds_ : bounds_; }
+  // How much the applied pose may lengthen a level's error (SkinPose::stretch).
+  double pose_stretch() const { return posed_ ? pose_stretch_ : 1.0; }
   // Vertices extreme along many directions, for framing (relative to origin).
   const std::vector<glm::vec3>& extremes() const { return posed_ ? posed_extremes_ : extremes_; }
   const scene::CreaseProfile& creases() const { return creases_; }
@@ -132,6 +134,7 @@ class GpuModel {
   gpu::Buffer posed_vertices_;  // made by the first pose posed on the CPU
   scene::Bounds posed_bounds_;
   std::vector<glm::vec3> posed_extremes_;
+  double pose_stretch_ = 1.0;
   gpu::Buffer indices_;
   std::vector<gpu::Texture> textures_;
   std::vector<GpuMaterial> materials_;

@@ -12,6 +12,7 @@
 #include "scene/import_error.h"
 #include "scene/m_import.h"
 #include "scene/mesh_lod.h"
+#include "scene/motion_classes.h"
 #include "scene/obj_import.h"
 #include "scene/ply_import.h"
 #include "scene/stl_import.h"
@@ -123,6 +124,7 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
   check_import_time(limits, "reading the model");
   LodOptions lod;
   lod.between_levels = [&limits] { check_import_time(limits, "simplifying"); };
+  if (model.rig) lod.motion_class = motion_classes(model.mesh, *model.rig);
   prepare_levels_of_detail(model.mesh, lod);
   check_import_time(limits, "ordering triangles");
   classify_enclosures(model.mesh);

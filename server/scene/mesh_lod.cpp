@@ -87,9 +87,31 @@ class CompactIds {
   std::vector<std::uint32_t> to_model_;
 };
 
-// One submesh's triangles sorted for simplification: those at a hub pass
-// through unchanged, the rest go to the simplifier on their own compact
-// vertex list, so its cost follows the submesh, not the whole model.
+// The position groups refined by how vertices move: two vertices are one
+// point for the levels only where they also move alike, so a triangle whose
+// corners a pose pulls apart is never taken for a sliver.
+std::vector<std::uint32_t> groups_moving_alike(const std::vector<glm::vec3>& positions,
+                                               const std::vector<std::uint32_t>& motion_class) {
+  std::vector<std::uint32_t> groups = group_by_position(positions);
+  if (motion_class.empty()) return groups;
+  std::unordered_map<std::uint64_t, std::uint32_t> refined;
+  for (std::size_t v = 0; v < groups.size(); ++v) {
+    const std::uint64_t key = (std::uint64_t{groups[v]} << 32) | motion_class[v];
+    groups[v] = refined.emplace(key, static_cast<std::uint32_t>(refined.size())).first->second;
+  }
+  return groups;
+}
+
+bool corners_move_alike(const std::vector<std::uint32_t>& motion_class, const std::uint32_t* triangle) {
+  if (motion_class.empty()) return true;
+  return motion_class[triangle[0]] == motion_class[triangle[1]] && motion_class[triangle[1]] == motion_class[triangle[2]];
+}
+
+// One submesh's triangles sorted for simplification: those at a hub, and
+// those whose corners move apart in a pose, pass through unchanged (their
+// corners then lie on the border of what is simplified, which stays); the
+// rest go to the simplifier on their own compact vertex list, so its cost
+// follows the submesh, not the whole model.
 struct SubmeshSplit {
   std::vector<std::uint32_t> pinned;  // model vertex ids, kept as they are
   std::vector<std::uint32_t> free;    // local ids of `ids`
@@ -99,14 +121,15 @@ struct SubmeshSplit {
 
 SubmeshSplit split_submesh(const Mesh& mesh, const std::vector<std::uint32_t>& position_group,
                            const std::vector<std::uint32_t>& source, const Submesh& sub,
-                           const std::vector<bool>& dropped, const std::vector<std::uint32_t>& valence) {
+                           const std::vector<bool>& dropped, const std::vector<std::uint32_t>& valence,
+                           const std::vector<std::uint32_t>& motion_class) {
   SubmeshSplit split;
   for (std::size_t i = sub.first_index; i + 2 < std::size_t{sub.first_index} + sub.index_count; i += 3) {
     if (dropped[i / 3]) continue;
     const std::uint32_t* tri = &source[i];
     const auto g = corner_groups(position_group, tri);
     const bool at_hub = std::any_of(g.begin(), g.end(), [&](std::uint32_t p) { return valence[p] > kMaxSimplifiedValence; });
-    if (at_hub) {
+    if (at_hub || !corners_move_alike(motion_class, tri)) {
       split.pinned.insert(split.pinned.end(), tri, tri + 3);
       continue;
     }
@@ -124,7 +147,7 @@ double simplify_submesh(const Mesh& mesh, const std::vector<std::uint32_t>& posi
                         const std::vector<std::uint32_t>& valence, const LodOptions& options,
                         std::vector<std::uint32_t>& out) {
   constexpr std::size_t stride = sizeof(glm::vec3);
-  const SubmeshSplit split = split_submesh(mesh, position_group, source, sub, dropped, valence);
+  const SubmeshSplit split = split_submesh(mesh, position_group, source, sub, dropped, valence, options.motion_class);
   out.insert(out.end(), split.pinned.begin(), split.pinned.end());
   if (split.free.empty()) return 0.0;
   const std::size_t target_indices =
@@ -216,7 +239,7 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options
   // A level may not open the surface more than the full mesh is open:
   // meshopt occasionally tears one open, and a torn level would show
   // through the outline as a gap in the hull.
-  const std::vector<std::uint32_t> position_group = group_by_position(mesh.positions);
+  const std::vector<std::uint32_t> position_group = groups_moving_alike(mesh.positions, options.motion_class);
   const std::size_t full_open_edges = open_edge_count(position_group, mesh.indices);
 
   std::vector<std::uint32_t> source = mesh.indices;

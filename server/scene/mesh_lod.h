@@ -6,7 +6,8 @@
 // projected to pixels, stays under a threshold (see render/lod_choice.h).
 //
 // The levels share the full mesh's vertices, so each keeps the full mesh's
-// shading normals, texcoords and outline normals. The outline normals are
+// shading normals, texcoords, outline normals and, for a rigged model, how
+// each vertex moves; triangles that a pose would bend are kept whole. The outline normals are
 // per position (every vertex at one position moves by the same offset), and
 // the simplifier keeps a closed surface closed, so the inverted hull of a
 // level is as closed as its triangles.
@@ -36,6 +37,12 @@ struct LodOptions {
   // Called before each level is made (the import's time limit, which may
   // throw to abandon the import).
   std::function<void()> between_levels;
+  // Per vertex, which vertices move alike in every pose
+  // (scene/motion_classes.h); empty for a model that does not move. Only
+  // triangles whose corners all share a class are simplified, and a class
+  // is never merged into another, so every level poses as the full mesh
+  // does, within its error times the pose's stretch.
+  std::vector<std::uint32_t> motion_class;
 };
 
 // Reorders the triangles of each submesh (and of each level already built)

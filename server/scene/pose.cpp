@@ -14,6 +14,7 @@
 #include "scene/clip_sampling.h"
 #include "scene/extreme_points.h"
 #include "scene/mesh_processing.h"
+#include "scene/motion_classes.h"
 
 namespace toond::scene {
 namespace {
@@ -258,6 +259,7 @@ SkinPose skin_pose(const Mesh& rest, const Rig& rig, const NodePose& pose, Skinn
   SkinPose out;
   if (where == Skinning::Cpu) out.cpu_sums = std::make_shared<const PoseSums>(pose_sums(rig, pose));
   out.joints = joint_matrices(rig, pose);
+  out.stretch = largest_joint_stretch(out.joints);
   const std::vector<std::vector<double>> weights = morph_weights(rig, pose);
   for (const std::vector<double>& w : weights) out.morph_weights.emplace_back(w.begin(), w.end());
   out.caps.push_back(pose_some(rest, rig, out.joints, weights, rest.cap_indices));

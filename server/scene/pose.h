@@ -88,6 +88,10 @@ struct SkinPose {
   std::vector<std::vector<glm::vec3>> caps;
   Bounds bounds;
   std::vector<glm::vec3> extremes;
+  // How much this pose may lengthen any distance on the rest mesh
+  // (largest_joint_stretch): a level of detail's error in the pose is at
+  // most its error at rest times this.
+  double stretch = 1.0;
   // Whether every joint matrix and weight is a finite float: a joint scaled
   // past float range cannot be drawn.
   bool finite() const;

@@ -120,15 +120,11 @@ class FaceCullingRender : public test::GlContextTest {
   }
 };
 
-scene::Model import_obj(const std::string& obj) {
-  return scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", obj}}));
-}
-
 // The generated sphere less the triangles whose middle `cut` picks: an
 // open mesh with one hole, its enclosure and caps found again.
 template <typename Cut>
 scene::Model holed_sphere(Cut cut) {
-  scene::Model sphere = import_obj(test::sphere_obj(48, 24));
+  scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(48, 24));
   scene::Mesh& mesh = sphere.mesh;
   std::vector<std::uint32_t> kept;
   for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
@@ -186,8 +182,8 @@ TEST(FaceCulling, HolesTurnedAwayFromTheViewerAllowSkipping) {
 }
 
 TEST_F(FaceCullingRender, SkippingHiddenFacesChangesNoPixel) {
-  const scene::Model sphere = import_obj(test::sphere_obj(48, 24));
-  const scene::Model cube = import_obj(test::cube_obj());
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(48, 24));
+  const scene::Model cube = scene::test_checks::model_of_obj(test::cube_obj());
   for (const nlohmann::json& request :
        {nlohmann::json{{"width", 128}, {"height", 128}},
         nlohmann::json{{"width", 128}, {"height", 128}, {"msaa", 1}, {"camera", {{"yaw", 30}, {"pitch", 20}}}},
@@ -216,8 +212,8 @@ TEST_F(FaceCullingRender, SkippingHiddenFacesChangesNoPixel) {
 // faces of two objects share a plane: where they do, which one wins the
 // depth tie is down to draw order, culled or not.)
 TEST_F(FaceCullingRender, ScenesOfSeveralObjectsKeepEveryPixel) {
-  const scene::Model sphere = import_obj(test::sphere_obj(48, 24));
-  const scene::Model cube = import_obj(test::cube_obj());
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(48, 24));
+  const scene::Model cube = scene::test_checks::model_of_obj(test::cube_obj());
   const glm::dmat4 in_front = glm::translate(glm::dmat4(1.0), glm::dvec3(1.0, 0.3, 1.2));
   const glm::dmat4 mirrored = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(-1.5, 0.2, -0.4)), glm::dvec3(-1, 1, 1));
   for (const nlohmann::json& request : {nlohmann::json{{"width", 128}, {"height", 128}},
@@ -344,7 +340,7 @@ TEST_F(FaceCullingRender, OpenObjectsInOneSceneKeepEveryPixel) {
 }
 
 TEST_F(FaceCullingRender, ACameraInsideTheModelStillSeesItsInside) {
-  const scene::Model sphere = import_obj(test::sphere_obj(48, 24));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(48, 24));
   const Pair pair = render_both_ways(
       sphere, params({{"width", 64}, {"height", 64}, {"background", {1, 0, 1}}, {"camera", {{"distance", 0.3}}}}));
   EXPECT_EQ(pair.culled_side, HiddenFaces::None);

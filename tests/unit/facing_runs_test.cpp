@@ -23,10 +23,6 @@
 namespace toond::render {
 namespace {
 
-scene::Model model_of_obj(const std::string& obj) {
-  return scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", obj}}));
-}
-
 MeshViewer perspective_from(const glm::dvec3& eye) {
   MeshViewer viewer;
   viewer.eye = eye;
@@ -52,7 +48,7 @@ bool kept_holds(const std::vector<IndexRange>& ranges, std::uint32_t index) {
 }
 
 TEST(FacingRuns, ASphereSeenFromOutsideLeavesOutOnlyFacesTurnedAway) {
-  const scene::Model sphere = model_of_obj(test::sphere_obj(96, 48));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(96, 48));
   const scene::Mesh& mesh = sphere.mesh;
   const FacingRuns runs(mesh.positions, mesh.indices, mesh.submeshes);
   const glm::dvec3 eye(0.3, 0.4, 4.0);
@@ -75,7 +71,7 @@ TEST(FacingRuns, ASphereSeenFromOutsideLeavesOutOnlyFacesTurnedAway) {
 }
 
 TEST(FacingRuns, OrthographicViewsLeaveOutTheFarSide) {
-  const scene::Model sphere = model_of_obj(test::sphere_obj(64, 32));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(64, 32));
   const scene::Mesh& mesh = sphere.mesh;
   const FacingRuns runs(mesh.positions, mesh.indices, mesh.submeshes);
   MeshViewer viewer;
@@ -94,7 +90,7 @@ TEST(FacingRuns, OrthographicViewsLeaveOutTheFarSide) {
 
 // Pixels so large that snapping a corner could turn a face: all drawn.
 TEST(FacingRuns, NothingIsLeftOutWherePixelsAreCoarse) {
-  const scene::Model sphere = model_of_obj(test::sphere_obj(64, 32));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(64, 32));
   const scene::Mesh& mesh = sphere.mesh;
   const FacingRuns runs(mesh.positions, mesh.indices, mesh.submeshes);
   MeshViewer coarse = perspective_from(glm::dvec3(0.0, 0.0, 4.0));
@@ -182,12 +178,12 @@ const std::vector<nlohmann::json>& run_requests() {
 }
 
 TEST_F(FacingRunsRender, LeavingRunsOutChangesNoByteOfGeneratedModels) {
-  const scene::Model sphere = model_of_obj(test::sphere_obj(64, 32));
-  const scene::Model messy = model_of_obj(test::exporter_sphere_obj({.segments = 64, .rings = 32, .jitter = 1e-7}));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(64, 32));
+  const scene::Model messy = scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 64, .rings = 32, .jitter = 1e-7}));
   const scene::Model faceted =
-      model_of_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::PerFace}));
+      scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::PerFace}));
   const scene::Model bare =
-      model_of_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::None}));
+      scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::None}));
   for (const auto& [model, what] : {std::pair{&sphere, "sphere"}, std::pair{&messy, "messy"},
                                     std::pair{&faceted, "per-face normals"}, std::pair{&bare, "no normals"}}) {
     for (const nlohmann::json& request : run_requests()) {
@@ -199,7 +195,7 @@ TEST_F(FacingRunsRender, LeavingRunsOutChangesNoByteOfGeneratedModels) {
   }
   // Seen from above, the bowl's inside shows through its opening: the side
   // culled is drawn after all, whole.
-  const scene::Model bowl = model_of_obj(test::bowl_obj(48, 12));
+  const scene::Model bowl = scene::test_checks::model_of_obj(test::bowl_obj(48, 12));
   for (const int pitch : {-30, 50}) {
     expect_same_image({{&bowl, glm::dmat4(1.0)}}, {{"width", 160}, {"height", 160}, {"camera", {{"pitch", pitch}}}},
                       "bowl");
@@ -209,7 +205,7 @@ TEST_F(FacingRunsRender, LeavingRunsOutChangesNoByteOfGeneratedModels) {
 // A mirrored object (its culled side the other one) leaves runs out; one
 // stretched unevenly, where the test does not carry over, leaves none.
 TEST_F(FacingRunsRender, LeavingRunsOutChangesNoByteOfScenes) {
-  const scene::Model sphere = model_of_obj(test::sphere_obj(48, 24));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(48, 24));
   const glm::dmat4 left = glm::translate(glm::dmat4(1.0), glm::dvec3(-2.0, 0.0, 0.0));
   const glm::dmat4 mirrored = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(2.0, 0.0, 0.0)), glm::dvec3(-1, 1, 1));
   const glm::dmat4 stretched = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, -1.8, 0.3)), glm::dvec3(1.6, 0.4, 1));

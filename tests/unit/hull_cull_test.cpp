@@ -32,10 +32,6 @@
 namespace toond::render {
 namespace {
 
-scene::Model import_obj(const std::string& obj) {
-  return scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", obj}}));
-}
-
 HullCullMesh::Stream stream(const std::vector<glm::vec3>& values) {
   return std::make_shared<const std::vector<glm::vec3>>(values);
 }
@@ -74,7 +70,7 @@ HullCullView sphere_view(int size, double width_px) {
 }
 
 TEST(HullCull, ASphereKeepsOnlyTheFacesNearItsSilhouette) {
-  const scene::Model sphere = import_obj(test::sphere_obj(96, 48));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(96, 48));
   const scene::Mesh& mesh = sphere.mesh;
   const HullCullMesh cull(stream(mesh.positions), stream(mesh.outline_normals), mesh.indices, mesh.submeshes);
   const int size = 256;
@@ -112,7 +108,7 @@ double xy_area2(const scene::Mesh& mesh, std::span<const std::uint32_t> face) {
 }
 
 TEST(HullCull, FacesSureToTurnToTheCulledSideAreSetApartAfterTheRest) {
-  const scene::Model sphere = import_obj(test::sphere_obj(96, 48));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(96, 48));
   const scene::Mesh& mesh = sphere.mesh;
   const HullCullMesh cull(stream(mesh.positions), stream(mesh.outline_normals), mesh.indices, mesh.submeshes);
   HullCullView view = sphere_view(256, 3.0);
@@ -193,8 +189,8 @@ std::string sphere_before_sphere_obj() {
 }
 
 TEST(HullCull, ARimWithTheModelUnderBothSidesLeavesItsFacesOut) {
-  const scene::Model alone = import_obj(test::sphere_obj(24, 12, 0.35, glm::dvec3(0.2, 0.1, 1.3)));
-  const scene::Model both = import_obj(sphere_before_sphere_obj());
+  const scene::Model alone = scene::test_checks::model_of_obj(test::sphere_obj(24, 12, 0.35, glm::dvec3(0.2, 0.1, 1.3)));
+  const scene::Model both = scene::test_checks::model_of_obj(sphere_before_sphere_obj());
   HullCullView view = sphere_view(256, 2.0);
   // How many of the small sphere's faces (its vertices come last) are kept.
   const auto small_kept = [&view](const scene::Mesh& mesh, std::uint32_t first_small_vertex) {
@@ -215,7 +211,7 @@ TEST(HullCull, ARimWithTheModelUnderBothSidesLeavesItsFacesOut) {
 }
 
 TEST(HullCull, AVertexOutsideTheDepthRangeTurnsTheCullOff) {
-  const scene::Model sphere = import_obj(test::sphere_obj(24, 12));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(24, 12));
   const HullCullMesh cull(stream(sphere.mesh.positions), stream(sphere.mesh.outline_normals), sphere.mesh.indices,
                           sphere.mesh.submeshes);
   HullCullView view = sphere_view(128, 2.0);
@@ -281,7 +277,7 @@ const std::vector<nlohmann::json>& requests() {
 // when the model is dropped (evicted from the cache): the build owns what
 // it reads, so nothing it touches is freed under it (ASan checks).
 TEST_F(HullCullRender, AModelDroppedWhileItsCullMeshIsBuiltLeavesTheBuildSafe) {
-  const scene::Model sphere = import_obj(test::sphere_obj(256, 128));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(256, 128));
   BackgroundThread builder;
   {
     auto model = std::make_unique<GpuModel>(sphere);
@@ -301,7 +297,7 @@ TEST_F(HullCullRender, AModelDroppedWhileItsCullMeshIsBuiltLeavesTheBuildSafe) {
 // Left to its default, as the daemon leaves it, a renderer culls the hull
 // on a CPU rasterizer (the test context is llvmpipe) and not on a GPU.
 TEST_F(HullCullRender, TheDefaultCullsOnACpuRasterizerOnly) {
-  const scene::Model sphere = import_obj(test::sphere_obj(64, 32));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(64, 32));
   test::InProcessScene drawn({{&sphere, glm::dmat4(1.0)}});
   const RenderParams p = params({{"width", 160}, {"height", 160}});
   EXPECT_EQ(drawn.render(p).hull_faces_culled, 0u);
@@ -312,19 +308,19 @@ TEST_F(HullCullRender, TheDefaultCullsOnACpuRasterizerOnly) {
 }
 
 TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {
-  const scene::Model sphere = import_obj(test::sphere_obj(64, 32));
-  const scene::Model cube = import_obj(test::cube_obj());
-  const scene::Model messy = import_obj(test::exporter_sphere_obj({.segments = 64, .rings = 32, .jitter = 1e-7}));
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(64, 32));
+  const scene::Model cube = scene::test_checks::model_of_obj(test::cube_obj());
+  const scene::Model messy = scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 64, .rings = 32, .jitter = 1e-7}));
   const scene::Model faceted =
-      import_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::PerFace}));
+      scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::PerFace}));
   const scene::Model bare =
-      import_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::None}));
+      scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::None}));
   // The cube's twelve faces all reach its silhouette: it keeps them all.
   expect_same_image({{&cube, glm::dmat4(1.0)}}, requests().front(), "cube");
   // A one-sided disk seen from behind: the main pass draws its faces turned
   // away (it has no inside to hide), none of them counted as covering, so
   // no face has a covered point in its box and none may be left out.
-  const scene::Model disk = import_obj(test::disk_obj(96));
+  const scene::Model disk = scene::test_checks::model_of_obj(test::disk_obj(96));
   for (const int yaw : {0, 180}) {
     const std::size_t culled =
         expect_same_image({{&disk, glm::dmat4(1.0)}}, {{"width", 160}, {"height", 160}, {"camera", {{"yaw", yaw}}}}, "disk");
@@ -332,7 +328,7 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {
       EXPECT_EQ(culled, 0u);
     }
   }
-  const scene::Model nested = import_obj(sphere_before_sphere_obj());
+  const scene::Model nested = scene::test_checks::model_of_obj(sphere_before_sphere_obj());
   for (const auto& [model, what] : {std::pair{&sphere, "sphere"}, std::pair{&messy, "messy"},
                                     std::pair{&faceted, "per-face normals"}, std::pair{&bare, "no normals"},
                                     std::pair{&nested, "sphere before sphere"}}) {
@@ -346,8 +342,8 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {
 // spheres while its faces cross the background; a mirrored object (drawn
 // with its other winding), one stretched unevenly and one grown evenly.
 TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScenes) {
-  const scene::Model sphere = import_obj(test::sphere_obj(48, 24));
-  const scene::Model cube = import_obj(test::cube_obj());
+  const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(48, 24));
+  const scene::Model cube = scene::test_checks::model_of_obj(test::cube_obj());
   const glm::dmat4 left = glm::translate(glm::dmat4(1.0), glm::dvec3(-2.0, 0.0, 0.0));
   const glm::dmat4 right = glm::translate(glm::dmat4(1.0), glm::dvec3(2.0, 0.0, 0.0));
   const glm::dmat4 plank = glm::rotate(glm::scale(glm::dmat4(1.0), glm::dvec3(2.2, 0.03, 0.03)), 0.05,
@@ -402,7 +398,7 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfExportedFiles) {
 // and that draw needs the faces set apart as turned to it, which draw the
 // ring along the far rim.
 TEST_F(HullCullRender, TheSideDrawnWhereACapShowsTakesTheFacesSetApart) {
-  const scene::Model bowl = import_obj(test::bowl_obj(48, 12));
+  const scene::Model bowl = scene::test_checks::model_of_obj(test::bowl_obj(48, 12));
   // In one colour the hull is one draw; in the material's, one per material.
   for (const char* colour : {"fixed", "material"}) {
     for (const int pitch : {-30, 30, 50, 70}) {

@@ -12,6 +12,7 @@
 
 #include "image/png_codec.h"
 #include "scene/bundle.h"
+#include "scene/bundle_import.h"
 #include "scene/import_error.h"
 #include "scene/model.h"
 #include "support/shared_models.h"
@@ -25,6 +26,9 @@ inline Bundle make_bundle(const Files& files) {
   for (const auto& [path, content] : files) bundle.add(path, content);
   return bundle;
 }
+
+// An OBJ's text imported as a one-file upload of it.
+inline Model model_of_obj(const std::string& obj) { return import_bundle(make_bundle({{"m.obj", obj}})); }
 
 // A model folder as an upload of it: every file but its notes (.txt, .md,
 // LICENSE); of its OBJ files only `only_obj` when given.
