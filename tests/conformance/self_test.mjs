@@ -23,7 +23,7 @@ export async function selfTest(options) {
   const both = await poseBoth(options, theCase);
   const honest = compareFull(theCase, both);
   const size = honest.size;
-  // The peak of the bend, frame 7 (7/24 s): where a wrong pose shows most.
+  // The peak of the bend, frame 7 (7/24 s, a key): where a wrong pose shows most.
   const peak = both.times.findIndex((t) => Math.abs(t - 7 / 24) < 1e-6);
   if (peak < 0) throw new Error('self-test: frame 7 is not among the times sampled');
   const frame = 1 / 24;

@@ -27,18 +27,19 @@ export function loadCase(name) {
 }
 
 // The times compared: every key of the clip (three.js's, as float32 like
-// the file's), two between each neighbouring pair (0.3 and 0.7 of the
-// way), time 0 and a time before the first key where the clip starts
-// later, and two past its duration and one before 0, where both loop.
+// the file's), times evenly inside each gap between neighbouring keys (at
+// least two, more where the keys are few: some 48 over the clip), time 0
+// and a time before the first key where the clip starts later, and two
+// past its duration and one before 0, where both loop.
 export function sampleTimes(clip) {
   const keys = new Set();
   for (const track of clip.tracks) for (const t of track.times) keys.add(t);
   const sorted = [...keys].filter((t) => t >= 0 && t <= clip.duration).sort((a, b) => a - b);
   const times = new Set([0, ...sorted]);
+  const between = Math.max(2, Math.ceil(48 / Math.max(1, sorted.length - 1)));
   for (let k = 0; k + 1 < sorted.length; k++) {
     const gap = sorted[k + 1] - sorted[k];
-    times.add(sorted[k] + 0.3 * gap);
-    times.add(sorted[k] + 0.7 * gap);
+    for (let j = 0; j < between; j++) times.add(sorted[k] + gap * (j + 0.5) / between);
   }
   if (sorted.length > 0 && sorted[0] > 0) times.add(0.5 * sorted[0]);
   const d = clip.duration;

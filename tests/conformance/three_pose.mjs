@@ -7,7 +7,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 
 import { DOMParser } from '@xmldom/xmldom';
-import { AnimationMixer, LoadingManager, Vector3 } from 'three';
+import { AnimationMixer, LoadingManager, Matrix4, Mesh, SkinnedMesh, Vector3 } from 'three';
 import { ColladaLoader } from 'three/addons/loaders/ColladaLoader.js';
 import { FBXLoader } from 'three/addons/loaders/FBXLoader.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
@@ -67,6 +67,65 @@ function filesBeside(folder) {
     return `data:application/octet-stream;base64,${bytes.toString('base64')}`;
   });
   return manager;
+}
+
+// three.js skins with four influences per vertex (skinIndex, skinWeight);
+// GLTFLoader keeps a file's further sets (JOINTS_1, WEIGHTS_1) as the
+// attributes joints_1 and weights_1 and scales the first set alone to a
+// sum of 1. To pose a file's eight influences, three's own sum
+// (SkinnedMesh.applyBoneTransform: each joint's bone.matrixWorld times its
+// bone inverse, weighted) is taken over every set, with the file's first
+// weights, kept here before GLTFLoader rescales them.
+const fileWeights = new WeakMap();  // skinWeight attribute → the file's values
+const normalizeSkinWeights = SkinnedMesh.prototype.normalizeSkinWeights;
+SkinnedMesh.prototype.normalizeSkinWeights = function keepFileWeights() {
+  const weights = this.geometry.attributes.skinWeight;
+  if (!fileWeights.has(weights)) fileWeights.set(weights, weightValues(weights));
+  normalizeSkinWeights.call(this);
+};
+
+// An attribute's values as numbers (a normalised integer attribute read
+// as 0..1).
+function weightValues(attribute) {
+  const values = new Float64Array(4 * attribute.count);
+  for (let i = 0; i < attribute.count; i++) {
+    for (let c = 0; c < 4; c++) values[4 * i + c] = attribute.getComponent(i, c);
+  }
+  return values;
+}
+
+function influenceSets(mesh) {
+  const geometry = mesh.geometry;
+  if (!mesh.isSkinnedMesh || !geometry.attributes.joints_1) return null;
+  const sets = [{ joints: geometry.attributes.skinIndex, weights: fileWeights.get(geometry.attributes.skinWeight) }];
+  for (let k = 1; geometry.attributes[`joints_${k}`]; k++) {
+    sets.push({ joints: geometry.attributes[`joints_${k}`], weights: weightValues(geometry.attributes[`weights_${k}`]) });
+  }
+  return sets;
+}
+
+const jointMatrix = new Matrix4();
+const bindPosition = new Vector3();
+const moved = new Vector3();
+
+// Vertex i of a skinned mesh with more than four influences, as three's
+// applyBoneTransform poses four, the weights taken over by their total.
+function positionOverAllSets(mesh, sets, i, target) {
+  Mesh.prototype.getVertexPosition.call(mesh, i, target);  // base and morph targets
+  bindPosition.copy(target).applyMatrix4(mesh.bindMatrix);
+  target.set(0, 0, 0);
+  let total = 0;
+  for (const { joints, weights } of sets) {
+    for (let c = 0; c < 4; c++) {
+      const weight = weights[4 * i + c];
+      if (weight === 0) continue;
+      const bone = joints.getComponent(i, c);
+      jointMatrix.multiplyMatrices(mesh.skeleton.bones[bone].matrixWorld, mesh.skeleton.boneInverses[bone]);
+      target.addScaledVector(moved.copy(bindPosition).applyMatrix4(jointMatrix), weight);
+      total += weight;
+    }
+  }
+  return target.multiplyScalar(1 / total).applyMatrix4(mesh.bindMatrixInverse);
 }
 
 // The scene and its clips, as a page using the loader would get them.
@@ -138,7 +197,9 @@ export class ThreeModel {
     }
     this.mixer.setTime(time);
     this.root.updateMatrixWorld(true);
-    return this.#placedVertices((mesh, i, v) => mesh.getVertexPosition(i, v));
+    const sets = new Map(this.meshes.map((mesh) => [mesh, influenceSets(mesh)]));
+    return this.#placedVertices((mesh, i, v) =>
+      sets.get(mesh) ? positionOverAllSets(mesh, sets.get(mesh), i, v) : mesh.getVertexPosition(i, v));
   }
 
   // vertex(mesh, i, v) fills v in the mesh's own space; the result is every
