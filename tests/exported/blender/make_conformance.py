@@ -54,7 +54,8 @@
 # 9 (toond and three.js agree with each other on every one of these
 # files): the COLLADA files of an armature object with a transform of its
 # own (turned, stretched, parented) bind the skin where their joints do not
-# put it at rest, so even frame 1 is 0.2-1.4 m off Blender's mesh; and
+# put it at rest, so even at frame 1 the skin is 0.4-1.8 m from where it
+# was bound, and 1-4 m off Blender's mesh at frame 9; and
 # conf_constant.dae holds only the one bone whose keys change (B2), a clip
 # of a single channel that toond's helper (assimp 5.2) cannot convert.
 #
