@@ -1,20 +1,8 @@
 #!/usr/bin/env bash
 # Installs the browser test's npm dependency (playwright-core, pinned by
-# package-lock.json) into tests/browser/node_modules. Idempotent: does
-# nothing when that exact lock file is installed already, so scripts/test.sh
-# and the CTest fixture can both call it; a lock keeps parallel runs (two
-# build dirs testing at once) from deleting each other's node_modules.
-# The browser itself is Debian's chromium (scripts/install-deps.sh).
+# package-lock.json) into tests/browser/node_modules, once per lock file
+# (scripts/npm-ci-locked.sh). The browser itself is Debian's chromium
+# (scripts/install-deps.sh).
 set -euo pipefail
-cd "$(dirname "$0")"
-stamp=node_modules/.toond-lock-sha256
-want=$(sha256sum package-lock.json | cut -d' ' -f1)
-exec 9>.npm-install.lock
-flock 9
-if [ -d node_modules/playwright-core ] && [ "$(cat "$stamp" 2>/dev/null)" = "$want" ]; then
-  echo "browser test deps: playwright-core already installed"
-  exit 0
-fi
-npm ci --no-audit --no-fund --loglevel=error
-echo "$want" > "$stamp"
-echo "browser test deps: installed playwright-core $(node -p "require('./node_modules/playwright-core/package.json').version")"
+here="$(cd "$(dirname "$0")" && pwd)"
+exec "$here/../../scripts/npm-ci-locked.sh" "$here" playwright-core "browser test deps"

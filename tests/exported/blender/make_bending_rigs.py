@@ -32,57 +32,29 @@
 # exporter starts the take at 0 (frame F at (F - 1) / 24 s).
 import math
 import os
+import sys
 
-import bmesh
 import bpy
 
-FPS = 24
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from rig_parts import empty_scene, skin, smooth_tube, write_deformed_obj  # noqa: E402
+
 KEY_FRAMES = (1, 7, 13, 19, 25)
 BEND = (0.0, 1.0, 0.0, -1.0, 0.0)  # the shape of the bend over the key frames
 OBJ_FRAMES = (7, 10, 19)
-
-
-def empty_scene():
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    for obj in list(bpy.data.objects):  # whatever the start-up file holds
-        bpy.data.objects.remove(obj, do_unlink=True)
-    scene = bpy.context.scene
-    scene.render.fps = FPS
-    scene.render.fps_base = 1.0
-    scene.frame_start = KEY_FRAMES[0]
-    scene.frame_end = KEY_FRAMES[-1]
-    return scene
 
 
 def cylinder(name, radius, length, rings, sides, place):
     """A smooth tube of `rings` rings of `sides` vertices along its Z from 0
     to `length`, with n-gon caps; place(x, y, z) gives a point's world
     position."""
-    bm = bmesh.new()
-    loops = []
+    rings_of_points = []
     for r in range(rings):
         z = length * r / (rings - 1)
-        loop = []
-        for i in range(sides):
-            a = 2 * math.pi * i / sides
-            loop.append(bm.verts.new(place(radius * math.cos(a), radius * math.sin(a), z)))
-        loops.append(loop)
-    for r in range(rings - 1):
-        for i in range(sides):
-            j = (i + 1) % sides
-            bm.faces.new((loops[r][i], loops[r][j], loops[r + 1][j], loops[r + 1][i]))
-    bm.faces.new(list(reversed(loops[0])))
-    bm.faces.new(loops[-1])
-    for f in bm.faces:
-        f.smooth = True
-    bm.normal_update()
-    mesh = bpy.data.meshes.new(name)
-    bm.to_mesh(mesh)
-    bm.free()
-    obj = bpy.data.objects.new(name, mesh)
-    bpy.context.scene.collection.objects.link(obj)
-    return obj
+        rings_of_points.append([place(radius * math.cos(2 * math.pi * i / sides),
+                                      radius * math.sin(2 * math.pi * i / sides), z) for i in range(sides)])
+    return smooth_tube(name, rings_of_points)
 
 
 def chain(rotation, scale):
@@ -109,16 +81,6 @@ def chain(rotation, scale):
     return rig
 
 
-def skin_automatically(body, rig):
-    bpy.ops.object.select_all(action='DESELECT')
-    body.select_set(True)
-    rig.select_set(True)
-    bpy.context.view_layer.objects.active = rig
-    bpy.ops.object.parent_set(type='ARMATURE_AUTO')
-    unweighted = [v.index for v in body.data.vertices if not any(g.weight > 1e-4 for g in v.groups)]
-    assert not unweighted, unweighted
-
-
 def key_bend(rig, middle_deg, tip_deg):
     rig.animation_data_create()
     action = bpy.data.actions.new("Bend")
@@ -139,36 +101,29 @@ def export(stem, body):
     path = os.path.join(HERE, stem)
     bpy.ops.export_scene.gltf(filepath=path + ".glb")
     bpy.ops.export_scene.fbx(filepath=path + ".fbx")
-    bpy.ops.object.select_all(action='DESELECT')
-    body.select_set(True)
-    bpy.context.view_layer.objects.active = body
     for frame in OBJ_FRAMES:
-        scene.frame_set(frame)
-        bpy.context.view_layer.update()
-        bpy.ops.export_scene.obj(filepath="%s_f%02d.obj" % (path, frame), use_selection=True,
-                                 use_mesh_modifiers=True, use_triangles=True, use_normals=False,
-                                 use_uvs=False, use_materials=False, use_animation=False)
+        write_deformed_obj(body, "%s_f%02d.obj" % (path, frame), frame)
     for suffix in (".glb", ".fbx"):
         print("wrote", path + suffix, os.path.getsize(path + suffix), "bytes")
 
 
 def bending_arm():
-    empty_scene()
+    empty_scene(KEY_FRAMES[0], KEY_FRAMES[-1])
     body = cylinder("Arm", 0.25, 3.0, 24, 24, lambda x, y, z: (x, y, z))
     rig = chain((0.0, 0.0, 0.0), 1.0)
-    skin_automatically(body, rig)
+    skin(body, rig)
     key_bend(rig, 35.0, 35.0 * 1.4)
     export("bending_arm", body)
 
 
 def turned_limb():
-    empty_scene()
+    empty_scene(KEY_FRAMES[0], KEY_FRAMES[-1])
     # The armature's turn (90 degrees about Y) takes its (x, y, z) to the
     # world's (z, y, -x); its scale makes the 3 m chain 4.5 m long.
     scale = 1.5
     body = cylinder("Limb", 0.2 * scale, 3.0 * scale, 24, 24, lambda x, y, z: (z, y, -x))
     rig = chain((0.0, math.radians(90.0), 0.0), scale)
-    skin_automatically(body, rig)
+    skin(body, rig)
     key_bend(rig, 40.0, 55.0)
     export("turned_limb", body)
 

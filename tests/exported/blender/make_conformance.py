@@ -54,7 +54,8 @@
 # 9 (toond and three.js agree with each other on every one of these
 # files): the COLLADA files of an armature object with a transform of its
 # own (turned, stretched, parented) bind the skin where their joints do not
-# put it at rest, so even frame 1 is 0.2-1.4 m off Blender's mesh; and
+# put it at rest, so even at frame 1 the skin is 0.4-1.8 m from where it
+# was bound, and 1-4 m off Blender's mesh at frame 9; and
 # conf_constant.dae holds only the one bone whose keys change (B2), a clip
 # of a single channel that toond's helper (assimp 5.2) cannot convert.
 #
@@ -69,27 +70,20 @@ import json
 import math
 import os
 import struct
+import sys
 
-import bmesh
 import bpy
-from mathutils import Euler, Matrix, Quaternion, Vector
+from mathutils import Euler, Matrix, Vector
 
-FPS = 24
 FIRST, LAST = 1, 25
 OBJ_FRAME = 9
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from rig_parts import empty_scene as scene_of_frames, skin, smooth_tube, write_deformed_obj  # noqa: E402
 
 
 def empty_scene():
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    for obj in list(bpy.data.objects):
-        bpy.data.objects.remove(obj, do_unlink=True)
-    scene = bpy.context.scene
-    scene.render.fps = FPS
-    scene.render.fps_base = 1.0
-    scene.frame_start = FIRST
-    scene.frame_end = LAST
-    return scene
+    return scene_of_frames(FIRST, LAST)
 
 
 def link(obj):
@@ -134,41 +128,14 @@ def tube(name, path, radius, sides, rings_per_segment, matrix=Matrix.Identity(4)
             centres.append(a.lerp(b, k / rings_per_segment))
             tangents.append((b - a).normalized())
     normal = tangents[0].orthogonal().normalized()
-    bm = bmesh.new()
-    loops = []
+    rings = []
     for centre, tangent in zip(centres, tangents):
         normal = (normal - tangent * normal.dot(tangent)).normalized()
         binormal = tangent.cross(normal)
-        loop = []
-        for i in range(sides):
-            a = 2 * math.pi * i / sides
-            local = centre + radius * (math.cos(a) * normal + math.sin(a) * binormal)
-            loop.append(bm.verts.new(matrix @ local))
-        loops.append(loop)
-    for r in range(len(loops) - 1):
-        for i in range(sides):
-            j = (i + 1) % sides
-            bm.faces.new((loops[r][i], loops[r][j], loops[r + 1][j], loops[r + 1][i]))
-    bm.faces.new(list(reversed(loops[0])))
-    bm.faces.new(loops[-1])
-    for f in bm.faces:
-        f.smooth = True
-    bm.normal_update()
-    mesh = bpy.data.meshes.new(name)
-    bm.to_mesh(mesh)
-    bm.free()
-    return link(bpy.data.objects.new(name, mesh))
-
-
-def skin(body, rig, automatic=True):
-    bpy.ops.object.select_all(action='DESELECT')
-    body.select_set(True)
-    rig.select_set(True)
-    bpy.context.view_layer.objects.active = rig
-    bpy.ops.object.parent_set(type='ARMATURE_AUTO' if automatic else 'ARMATURE_NAME')
-    if automatic:
-        unweighted = [v.index for v in body.data.vertices if not any(g.weight > 1e-4 for g in v.groups)]
-        assert not unweighted, unweighted
+        rings.append([matrix @ (centre + radius * (math.cos(2 * math.pi * i / sides) * normal +
+                                                   math.sin(2 * math.pi * i / sides) * binormal))
+                      for i in range(sides)])
+    return smooth_tube(name, rings)
 
 
 def new_action(rig, name="Move"):
@@ -219,14 +186,7 @@ def export(stem, body, gltf=None, fbx=True, dae=True):
                                   export_animation_type_selection='sample', sampling_rate=1,
                                   triangulate=True)
         written.append(path + ".dae")
-    bpy.ops.object.select_all(action='DESELECT')
-    body.select_set(True)
-    bpy.context.view_layer.objects.active = body
-    scene.frame_set(OBJ_FRAME)
-    bpy.context.view_layer.update()
-    bpy.ops.export_scene.obj(filepath="%s_f%02d.obj" % (path, OBJ_FRAME), use_selection=True,
-                             use_mesh_modifiers=True, use_triangles=True, use_normals=False, use_uvs=False,
-                             use_materials=False, use_animation=False)
+    write_deformed_obj(body, "%s_f%02d.obj" % (path, OBJ_FRAME), OBJ_FRAME)
     for f in written:
         print("wrote", f, os.path.getsize(f), "bytes")
 
