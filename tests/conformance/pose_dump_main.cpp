@@ -30,7 +30,7 @@
 #include "scene/clip_sampling.h"
 #include "scene/import_error.h"
 #include "scene/pose.h"
-#include "surface_distance.h"
+#include "support/surface_distance.h"
 
 namespace toond::conformance {
 namespace {
@@ -97,7 +97,9 @@ std::size_t find_clip(const scene::Rig& rig, const std::string& name) {
 }
 
 // The largest singular value of a joint matrix's linear part: how much the
-// joint can stretch a distance. The square root of the largest eigenvalue
+// joint can stretch a distance. Worked out here again on purpose, apart
+// from scene::largest_joint_stretch (which the renderer scales a level's
+// error by), so a wrong bound there cannot also pass here. The square root of the largest eigenvalue
 // of MᵀM, a symmetric 3×3 matrix, by the closed form for its roots.
 double stretch_of(const glm::mat4& joint) {
   const glm::dmat3 m(joint);
@@ -143,7 +145,7 @@ nlohmann::json level_distances(const scene::Mesh& mesh, const std::vector<glm::d
   nlohmann::json levels = nlohmann::json::array();
   for (std::size_t l = 0; l < mesh.lods.size(); ++l) {
     const scene::MeshLod& lod = mesh.lods[l];
-    const SurfaceDistance surface(posed, lod.indices);
+    const test::SurfaceDistance surface(posed, lod.indices);
     double farthest = 0;
     std::size_t beyond = 0;
     const double bound = lod.error * stretch + rounding;

@@ -154,10 +154,11 @@ Stray stray_in_pose(const Model& model, const MeshLod& level, double time) {
   const NodePose nodes = pose_nodes(rig, &rig.clips[0], time);
   const PosedVertices posed = pose_vertices(model.mesh, rig, nodes);
   const std::vector<glm::dvec3> points(posed.positions.begin(), posed.positions.end());
-  const std::vector<double> distances = test::distances_to_surface(points, points, level.indices);
+  const test::SurfaceDistance surface(points, level.indices);
   Stray stray;
   stray.allowed = level.error * skin_pose(model.mesh, rig, nodes).stretch + 1e-5 * kLength;
-  for (const double d : distances) {
+  for (const glm::dvec3& p : points) {
+    const double d = surface.distance(p);
     stray.worst = std::max(stray.worst, d);
     stray.outliers += d > stray.allowed ? 1 : 0;
   }
