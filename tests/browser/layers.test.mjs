@@ -227,7 +227,7 @@ async function checkSheet(page, requests) {
   'the atlas places tile 4 in the middle of the lower row', JSON.stringify({ box, view }));
   await tile.hover();
   const label = tile.locator('span');
-  check(await label.isVisible() && /frame_004 · yaw/.test(await label.textContent()),
+  check(await label.isVisible() && /frame 4 · yaw/.test(await label.textContent()),
     'hovering a tile outlines it and names its frame and yaw', await label.textContent());
   await shot(page, '14-sprite-sheet.png');
 

@@ -305,16 +305,20 @@ TEST_F(AnimatedModel, AnAnimatedSheetHasARowPerDirectionAndAColumnPerFrame) {
   // Bend: 4 rows of 8 frames; Twist (0.5 s at 12 fps): 4 rows of 6.
   ASSERT_EQ(atlas["frames"].size(), 4u * 8u + 4u * 6u);
   EXPECT_EQ(atlas["meta"]["size"], json({{"w", 8 * 48}, {"h", 8 * 48}}));
-  const json& f9 = atlas["frames"]["frame_009"];  // Bend, second direction, second frame
+  const json& f9 = atlas["frames"]["9"];  // Bend, second direction, second frame
   EXPECT_EQ(f9["clip"], "Bend");
   EXPECT_DOUBLE_EQ(f9["time"].get<double>(), 0.125);
-  EXPECT_DOUBLE_EQ(f9["duration"].get<double>(), 125.0);
+  EXPECT_EQ(f9["duration"], 125);
   EXPECT_EQ(f9["frame"]["x"], 48);
   EXPECT_EQ(f9["frame"]["y"], 48);
-  const json& twist = atlas["frames"]["frame_033"];  // Twist, first direction, second frame
+  const json& twist = atlas["frames"]["33"];  // Twist, first direction, second frame
   EXPECT_EQ(twist["clip"], "Twist");
   EXPECT_NEAR(twist["time"].get<double>(), 0.5 / 6, 1e-12);
-  EXPECT_NEAR(twist["duration"].get<double>(), 500.0 / 6, 1e-9);
+  // Whole milliseconds, as engines play them: 83 and 84 in turn, 500 a row.
+  EXPECT_EQ(twist["duration"], 84);
+  int twist_row_ms = 0;
+  for (int i = 32; i < 38; ++i) twist_row_ms += atlas["frames"][std::to_string(i)]["duration"].get<int>();
+  EXPECT_EQ(twist_row_ms, 500);
   EXPECT_EQ(twist["frame"]["y"], 4 * 48);
   // Aseprite tags: one per clip and direction, over its row.
   const json& tags = atlas["meta"]["frameTags"];
@@ -330,6 +334,9 @@ TEST_F(AnimatedModel, AnAnimatedSheetHasARowPerDirectionAndAColumnPerFrame) {
   EXPECT_EQ(tags[4]["name"], "Twist_30");
   EXPECT_EQ(tags[4]["from"], 32);
   EXPECT_EQ(tags[4]["to"], 37);
+  // PixiJS plays the top-level animations: a tag's frames by name.
+  ASSERT_EQ(atlas["animations"].size(), 8u);
+  EXPECT_EQ(atlas["animations"]["Twist_30"], json({"32", "33", "34", "35", "36", "37"}));
 }
 
 TEST_F(AnimatedModel, EachTileOfAnAnimatedSheetIsTheSingleRenderOfItsPoseAndView) {

@@ -413,9 +413,8 @@ TEST_F(PixelArtSheet, AnimateAnswersALosslessWebpOfTheSheetsTiles) {
   EXPECT_EQ(decoded.loop_count, 0) << "loops forever";
   ASSERT_EQ(decoded.frames.size(), 12u) << "6 frames × 2 pitches";
   for (std::size_t i = 0; i < decoded.frames.size(); ++i) {
-    // Pitch by pitch: frame_000 .. frame_005 at pitch 10, then pitch 40.
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%03zu", i);
+    // Pitch by pitch: frames 0 .. 5 at pitch 10, then pitch 40.
+    const std::string name = std::to_string(i);
     const json& frame = atlas["frames"][name];
     EXPECT_EQ(frame["pitch"].get<double>(), i < 6 ? 10 : 40) << name;
     EXPECT_TRUE(same_visible_pixels(decoded.frames[i], tile_of(sheet, frame["frame"])))
@@ -449,8 +448,7 @@ TEST_F(PixelArtSheet, AnimatedPixelArtIsBlocksOnOnePaletteInEveryFrame) {
   std::set<std::uint32_t> every_frame;
   for (std::size_t i = 0; i < decoded.frames.size(); ++i) {
     const image::Image& frame = decoded.frames[i];
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%03zu", i);
+    const std::string name = std::to_string(i);
     EXPECT_TRUE(same_visible_pixels(frame, tile_of(sheet, atlas["frames"][name]["frame"]))) << name;
     EXPECT_TRUE(whole_blocks(frame, 8));
     const std::set<std::uint32_t> colours = visible_colours(frame);
