@@ -63,6 +63,9 @@ async function enginePage(browser, sheets) {
   for (const [name, sheet] of Object.entries(sheets)) {
     files[`/${name}.png`] = { body: sheet.png, type: 'image/png' };
     files[`/${name}.json`] = { body: sheet.json, type: 'application/json' };
+    // As saved beside each other under the atlas's own meta.image name.
+    files[`/${name}/${sheet.atlas.meta.image}`] = files[`/${name}.png`];
+    files[`/${name}/sheet.json`] = files[`/${name}.json`];
   }
   await context.route(`${ORIGIN}/**`, (route) => {
     const file = files[new URL(route.request().url()).pathname];
@@ -165,7 +168,10 @@ function pixiLoads(page, name) {
       timed.update({ deltaTime: ((ms + 0.5) * 60) / 1000, deltaMS: ms + 0.5 });
       timedSeen.push(timed.currentFrame);
     }
-    return { textures, animations, seen, timedSeen, anchor: { x: sprite.anchor.x, y: sprite.anchor.y } };
+    // The usual way: Assets.load on the JSON, which finds the image by meta.image.
+    const loaded = await PIXI.Assets.load(`${key}/sheet.json`);
+    const viaAssets = Object.fromEntries(Object.entries(loaded.animations ?? {}).map(([n, t]) => [n, t.length]));
+    return { textures, animations, seen, timedSeen, viaAssets, anchor: { x: sprite.anchor.x, y: sprite.anchor.y } };
   }, name);
 }
 
@@ -216,6 +222,9 @@ function checkPixiWalk(pixi, atlas) {
       && close(t.anchor.x, f.anchor.x) && close(t.anchor.y, f.anchor.y);
   }));
   check(placed, 'PixiJS: every texture cuts its tile and carries its anchor');
+  check(JSON.stringify(pixi.viaAssets) === JSON.stringify(Object.fromEntries(names.map((n) => [n, 6]))),
+    'PixiJS: Assets.load on the JSON finds the PNG by meta.image and gives the same animations',
+    JSON.stringify(pixi.viaAssets));
   check(pixi.seen.join() === '0,1,2,3,4,5,0', 'PixiJS: an AnimatedSprite of a direction steps through its frames',
     pixi.seen.join());
   check(pixi.timedSeen.join() === '0,1,2,3,4,5,0',
