@@ -382,7 +382,9 @@ json render_params(const Look& look, const json& preset_params, const ModelView&
   } else {
     lights = default_lights(schema);
   }
-  const double yaw_delta = view.yaw - default_yaw;
+  // A sheet's lights turn with its camera already (lights[].space view is
+  // a sheet's default): turning them here too would light it from behind.
+  const double yaw_delta = params.contains("sheet") ? 0.0 : view.yaw - default_yaw;
   if (lights.is_array() && (yaw_delta != 0 || (relative_points && has_point_light(lights)))) {
     params["lights"] = place_lights(lights, yaw_delta, frame, relative_points);
   }

@@ -422,7 +422,7 @@ function showTiles(atlas) {
       left: `${(f.frame.x / size.w) * 100}%`, top: `${(f.frame.y / size.h) * 100}%`,
       width: `${(f.frame.w / size.w) * 100}%`, height: `${(f.frame.h / size.h) * 100}%`,
     });
-    const label = `${name} · yaw ${+f.yaw.toFixed(2)}° · pitch ${+f.pitch.toFixed(2)}°`;
+    const label = `frame ${name} · yaw ${+f.yaw.toFixed(2)}° · pitch ${+f.pitch.toFixed(2)}°`;
     tile.title = label;
     const tag = document.createElement('span');
     tag.textContent = label;

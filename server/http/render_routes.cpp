@@ -256,8 +256,8 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     image::PngOptions png_options;
     png_options.compression_level = job.params.png_compression;
     if (layout) {
-      const nlohmann::json atlas = render::sheet_atlas(*layout, job.params, scene_of(job),
-                                                       job.params.sheet->animate ? "sheet.webp" : "sheet.png");
+      const nlohmann::ordered_json atlas = render::sheet_atlas(
+          *layout, job.params, scene_of(job), job.params.sheet->animate ? "sheet.webp" : "sheet.png");
       if (atlas_only) {
         res.set_content(atlas.dump(2), "application/json");
         return;

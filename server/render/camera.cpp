@@ -10,21 +10,6 @@
 namespace toond::render {
 namespace {
 
-// The view's axes: right and up across the image, toward_eye out of it.
-struct ViewAxes {
-  glm::dvec3 right, up, toward_eye;
-};
-
-ViewAxes view_axes(double yaw_deg, double pitch_deg) {
-  ViewAxes axes;
-  axes.toward_eye = toward_eye(yaw_deg, pitch_deg);
-  // Looking straight up or down makes +Y a bad up vector; pitch is limited
-  // to ±89° by the schema, so +Y is always usable.
-  axes.right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), axes.toward_eye));
-  axes.up = glm::cross(axes.toward_eye, axes.right);
-  return axes;
-}
-
 std::vector<glm::dvec3> box_corners(const scene::Bounds& bounds) {
   std::vector<glm::dvec3> corners;
   for (int c = 0; c < 8; ++c) corners.push_back(bounds.corner(c));
@@ -72,6 +57,16 @@ glm::dvec3 toward_eye(double yaw_deg, double pitch_deg) {
   return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
 }
 
+ViewAxes view_axes(double yaw_deg, double pitch_deg) {
+  ViewAxes axes;
+  axes.toward_eye = toward_eye(yaw_deg, pitch_deg);
+  // Looking straight up or down makes +Y a bad up vector; pitch is limited
+  // to ±89° by the schema, so +Y is always usable.
+  axes.right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), axes.toward_eye));
+  axes.up = glm::cross(axes.toward_eye, axes.right);
+  return axes;
+}
+
 CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, double aspect,
                        std::span<const glm::dvec3> outline) {
   const glm::dvec3 centre = glm::dvec3(bounds.min + bounds.max) * 0.5;
@@ -89,17 +84,18 @@ CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, 
   const bool ortho = params.projection == Projection::Orthographic;
   // Zoom only scales what fitting chose; an explicit distance is taken as meant.
   const double zoom = params.distance > 0.0 || !(params.zoom > 0.0) ? 1.0 : params.zoom;
-  double distance = params.distance;
+  // The eye's distance. An orthographic image does not change with it, so
+  // the eye stays where near and far hug the whole model, and a given
+  // `distance` sets the view's size instead (below).
+  double distance = ortho ? radius * 3.0 : params.distance;
   if (distance <= 0.0) {
     // A flat model seen edge-on projects to a line: the eye still keeps a
     // tenth of a radius clear of it.
     double fitted = 0.0;
-    if (!ortho) {
-      for (const ViewAxes& view : views) {
-        fitted = std::max(fitted, fitted_distance(points, centre, view, tan_half_x, tan_half_y, kFrameFill));
-      }
+    for (const ViewAxes& view : views) {
+      fitted = std::max(fitted, fitted_distance(points, centre, view, tan_half_x, tan_half_y, kFrameFill));
     }
-    distance = ortho ? radius * 3.0 : std::max(fitted, radius * 0.1) / zoom;
+    distance = std::max(fitted, radius * 0.1) / zoom;
   }
   // Strafing moves eye and target together, so the view direction (and with
   // it the lighting seen) stays; in radii so it means the same at any scale.
@@ -113,11 +109,22 @@ CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, 
   cam.far_plane = distance + reach;
   if (ortho) {
     cam.near_plane = distance - reach;
-    double half_h = 0.0;
-    for (const ViewAxes& view : views) half_h = std::max(half_h, fitted_half_height(points, centre, view, aspect, kFrameFill));
-    half_h /= zoom;
-    if (!(half_h > 0.0)) half_h = radius / zoom;
+    // The view is as tall as a perspective view of `fov` from `sized_at`
+    // is at the orbit's centre: the distance given, or the one that holds
+    // the fitted frame. Both go through the same product, so asking for
+    // `cam.distance` again gives this very view, bit for bit (a sheet's
+    // tile as a single render).
+    double sized_at = params.distance;
+    if (!(sized_at > 0.0)) {
+      double half_h = 0.0;
+      for (const ViewAxes& view : views) half_h = std::max(half_h, fitted_half_height(points, centre, view, aspect, kFrameFill));
+      half_h /= zoom;
+      if (!(half_h > 0.0)) half_h = radius / zoom;
+      sized_at = half_h / tan_half_y;
+    }
+    const double half_h = sized_at * tan_half_y;
     cam.half_height = half_h;
+    cam.distance = sized_at;
     const double half_w = half_h * aspect;
     cam.projection = glm::ortho(-half_w, half_w, -half_h, half_h, cam.near_plane, cam.far_plane);
   } else {

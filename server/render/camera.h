@@ -19,7 +19,10 @@ struct CameraSetup {
   glm::dvec3 target{0.0};  // the point looked at: the bounds' centre
   double near_plane = 0.1;
   double far_plane = 100;
-  double distance = 0;     // from eye to target
+  // The camera.distance that asks for this view again: from eye to target
+  // in perspective; in orthographic, where the eye stays 3 radii out, the
+  // distance that sets this half_height (half_height / tan(fov / 2)).
+  double distance = 0;
   double half_height = 0;  // orthographic: half the view's height in model units; perspective: 0
   glm::mat4 view_projection() const { return glm::mat4(projection * view); }
 };
@@ -27,7 +30,16 @@ struct CameraSetup {
 // The unit vector from the target toward the eye at this yaw and pitch.
 glm::dvec3 toward_eye(double yaw_deg, double pitch_deg);
 
+// The view's axes in scene coordinates: right and up across the image,
+// toward_eye out of it.
+struct ViewAxes {
+  glm::dvec3 right, up, toward_eye;
+};
+ViewAxes view_axes(double yaw_deg, double pitch_deg);
+
 // yaw 0, pitch 0 puts the eye on +Z of the bounds' centre, looking toward -Z.
+// Orthographic, a given distance sets the view's size: as tall as the
+// perspective view of fov from that distance is at the bounds' centre.
 // With distance 0 the eye backs off (orthographic: the view widens) until
 // every point of `outline` lies within kFrameFill of the image's half
 // width and half height: the model fills that much of the limiting

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "render/light_space.h"
 #include "render/lod_choice.h"
 #include "render/outline_width.h"
 
@@ -53,11 +54,11 @@ std::vector<LodUse> choose_levels(const FrameContext& frame) {
   return uses;
 }
 
-// Light positions are in scene coordinates (a lone model's own); the render
-// works relative to the frame's origin, so point lights move with it.
-ShadingLights lights_of(const RenderParams& params, const glm::dvec3& origin) {
+// `placed` are in scene coordinates (a lone model's own); the render works
+// relative to the frame's origin, so point lights move with it.
+ShadingLights lights_of(const std::vector<Light>& placed, const glm::dvec3& origin) {
   ShadingLights lights;
-  for (const Light& l : params.lights) {
+  for (const Light& l : placed) {
     if (l.kind == LightKind::Point) {
       lights.vec.push_back(glm::vec3(l.position - origin));
     } else {
@@ -114,11 +115,14 @@ FrameContext build_frame_context(const std::vector<RenderObject>& objects, const
     frame.main_faces.push_back(frame.culling_for(i, frame.clip, frame.viewer, true));
     frame.lods[i].culled = frame.main_faces[i].hidden;
   }
+  // View-space lights turn with the camera about the point it orbits.
+  const std::vector<Light> placed =
+      lights_in_scene(params.lights, params.camera, frame.scene.origin + glm::dvec3(frame.scene.bounds.centre()));
   if (frame.plan.has(Pass::Shadow)) {
-    const Light& caster = params.lights[static_cast<std::size_t>(frame.plan.shadow_light)];
+    const Light& caster = placed[static_cast<std::size_t>(frame.plan.shadow_light)];
     frame.shadow = fit_shadow(caster.direction, frame.scene.bounds, params.shadows.map_size);
   }
-  frame.lights = lights_of(params, frame.scene.origin);
+  frame.lights = lights_of(placed, frame.scene.origin);
   for (const RampStop& stop : params.ramp) {
     frame.ramp_at.push_back(stop.at);
     frame.ramp_color.push_back(stop.color);

@@ -1,6 +1,7 @@
 #include "render/render_cost.h"
 
 #include "render/camera.h"
+#include "render/light_space.h"
 #include "render/outline_width.h"
 
 #include <algorithm>
@@ -117,7 +118,9 @@ RenderCost predict_frame_cost(const RenderParams& params, const PassPlan& plan,
   for (int i = frame_geometry_passes(plan); i > 0; --i) cost += one_pass;
   if (plan.has(Pass::Shadow)) {
     const double side = params.shadows.map_size;
-    const glm::dvec3 light = params.lights[static_cast<std::size_t>(plan.shadow_light)].direction;
+    const Light& caster = params.lights[static_cast<std::size_t>(plan.shadow_light)];
+    const glm::dvec3 light =
+        caster.space == LightSpace::View ? view_to_scene(params.camera, caster.direction) : caster.direction;
     cost += pass_cost(meshes, known ? std::optional(light) : std::nullopt, side, side, 1);
     cost.framebuffer += side * side;  // its clear
   }

@@ -100,6 +100,12 @@ struct SheetParams {
 };
 
 enum class LightKind { Directional, Point };
+// Model: direction and position in the scene's coordinates (a lone model's
+// own); the light stays put while the camera turns. View: along the
+// camera's axes (x right, y up, z toward the viewer), a position as an
+// offset from the point the camera orbits; the light turns with the camera
+// (render/light_space.h).
+enum class LightSpace { Model, View };
 enum class LightCombine { Max, Sum };
 enum class RimMask { Lit, Shadow, Both };
 enum class HalftoneStyle { Dots, Checker };
@@ -111,6 +117,7 @@ struct Light {
   glm::dvec3 position{0.0};        // point: in model coordinates
   double radius = 0;               // point: reach in model units, 0 = unlimited
   glm::vec3 color{1.0f};           // linear, intensity applied
+  LightSpace space = LightSpace::Model;
 };
 
 struct SpecularParams {

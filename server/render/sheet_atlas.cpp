@@ -1,20 +1,19 @@
 #include "render/sheet_atlas.h"
 
 #include <cstdio>
+#include <map>
 
 namespace toond::render {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
-std::string frame_name(int index) {
-  char name[16];
-  std::snprintf(name, sizeof name, "frame_%03d", index);
-  return name;
-}
+// Aseprite's file name format `{frame}`: the frame's index, which is how
+// Phaser looks a tag's frames up.
+std::string frame_name(int index) { return std::to_string(index); }
 
 // Where `point` projects in the tile, 0..1 across and down.
-json pivot_of(const CameraSetup& camera, const glm::dvec3& point) {
+json anchor_of(const CameraSetup& camera, const glm::dvec3& point) {
   const glm::dvec4 clip = camera.projection * camera.view * glm::dvec4(point, 1.0);
   return {{"x", (clip.x / clip.w + 1.0) * 0.5}, {"y", (1.0 - clip.y / clip.w) * 0.5}};
 }
@@ -30,69 +29,101 @@ json framing_of(const CameraParams& params, const CameraSetup& camera) {
   return framing;
 }
 
-// Aseprite's tags: one per clip, pitch and direction, over its row's frames
-// ("walk_45", "walk_45_p30" when the sheet has several pitches).
-json frame_tags(const SheetLayout& layout, const SheetParams& sheet) {
-  json tags = json::array();
-  const auto tag_name = [&](const SheetFrame& frame) {
-    char angle[32];
-    std::snprintf(angle, sizeof angle, "%g", frame.yaw_deg);
-    std::string name = sheet.clips[static_cast<std::size_t>(frame.clip)].name + "_" + angle;
-    if (sheet.pitches_deg.size() > 1) {
-      std::snprintf(angle, sizeof angle, "%g", frame.pitch_deg);
-      name += std::string("_p") + angle;
-    }
-    return name;
-  };
+std::string degrees(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// The frames one tag plays: an animated sheet's row (one clip, pitch and
+// direction), or a turntable's frames of one pitch.
+bool same_track(const SheetFrame& a, const SheetFrame& b) {
+  if (a.clip >= 0) return a.clip == b.clip && a.y == b.y;
+  return a.pitch_deg == b.pitch_deg;
+}
+
+// "Walk_45" (clip and yaw), "turn" for a turntable; "_p30" added when the
+// sheet has several pitches.
+std::string track_name(const SheetFrame& first, const SheetParams& sheet) {
+  std::string name =
+      first.clip >= 0 ? sheet.clips[static_cast<std::size_t>(first.clip)].name + "_" + degrees(first.yaw_deg) : "turn";
+  if (sheet.pitches_deg.size() > 1) name += "_p" + degrees(first.pitch_deg);
+  return name;
+}
+
+struct Tracks {
+  json tags = json::array();         // meta.frameTags, Aseprite's
+  json animations = json::object();  // Pixi's: tag name → frame names
+};
+
+// A name a track already has (a clip listed twice, yaws that come round
+// again) gets " (2)", " (3)", …: engines keep one animation per name.
+std::string unique_name(const std::string& name, std::map<std::string, int>& uses) {
+  const int n = ++uses[name];
+  return n == 1 ? name : name + " (" + std::to_string(n) + ")";
+}
+
+Tracks tracks_of(const SheetLayout& layout, const SheetParams& sheet) {
+  Tracks tracks;
+  std::map<std::string, int> uses;
   for (std::size_t i = 0; i < layout.frames.size();) {
     const SheetFrame& first = layout.frames[i];
     std::size_t end = i;
-    while (end < layout.frames.size() && layout.frames[end].y == first.y) ++end;
-    tags.push_back({{"name", tag_name(first)},
-                    {"from", first.index},
-                    {"to", layout.frames[end - 1].index},
-                    {"direction", "forward"},
-                    {"clip", sheet.clips[static_cast<std::size_t>(first.clip)].name},
-                    {"yaw", first.yaw_deg},
-                    {"pitch", first.pitch_deg}});
+    json names = json::array();
+    while (end < layout.frames.size() && same_track(first, layout.frames[end])) {
+      names.push_back(frame_name(layout.frames[end].index));
+      ++end;
+    }
+    const std::string name = unique_name(track_name(first, sheet), uses);
+    json tag = {{"name", name}, {"from", first.index}, {"to", layout.frames[end - 1].index}, {"direction", "forward"}};
+    if (first.clip >= 0) {
+      tag["clip"] = sheet.clips[static_cast<std::size_t>(first.clip)].name;
+      tag["yaw"] = first.yaw_deg;
+    }
+    tag["pitch"] = first.pitch_deg;
+    tracks.tags.push_back(std::move(tag));
+    tracks.animations[name] = std::move(names);
     i = end;
   }
-  return tags;
+  return tracks;
 }
 
 }  // namespace
 
-json sheet_atlas(const SheetLayout& layout, const RenderParams& params, const SceneFrame& scene,
-                 const std::string& image_name) {
+nlohmann::ordered_json sheet_atlas(const SheetLayout& layout, const RenderParams& params, const SceneFrame& scene,
+                                   const std::string& image_name) {
   const double aspect = static_cast<double>(layout.tile_width) / layout.tile_height;
   const glm::dvec3 foot((scene.bounds.min.x + scene.bounds.max.x) * 0.5, scene.bounds.min.y,
                         (scene.bounds.min.z + scene.bounds.max.z) * 0.5);
   const json size = {{"w", layout.tile_width}, {"h", layout.tile_height}};
+  const SheetParams& sheet = *params.sheet;
   json frames = json::object();
   json framing;
   for (const SheetFrame& frame : layout.frames) {
     const RenderParams one = frame_params(params, layout, frame);
     const CameraSetup camera = fit_camera(one.camera, scene.bounds, aspect, scene.outline);
     if (framing.is_null()) framing = framing_of(one.camera, camera);
-    frames[frame_name(frame.index)] = {
+    const json anchor = anchor_of(camera, foot);
+    json entry = {
         {"frame", {{"x", frame.x}, {"y", frame.y}, {"w", layout.tile_width}, {"h", layout.tile_height}}},
         {"rotated", false},
         {"trimmed", false},
         {"spriteSourceSize", {{"x", 0}, {"y", 0}, {"w", layout.tile_width}, {"h", layout.tile_height}}},
         {"sourceSize", size},
-        {"pivot", pivot_of(camera, foot)},
+        {"duration", frame.duration_ms},
+        {"anchor", anchor},
+        {"pivot", anchor},
         {"index", frame.index},
         {"yaw", frame.yaw_deg},
         {"pitch", frame.pitch_deg},
     };
     if (frame.clip >= 0) {
-      json& entry = frames[frame_name(frame.index)];
-      entry["clip"] = params.sheet->clips[static_cast<std::size_t>(frame.clip)].name;
+      entry["clip"] = sheet.clips[static_cast<std::size_t>(frame.clip)].name;
       entry["time"] = frame.time;
-      entry["duration"] = frame.duration_ms;
     }
+    frames[frame_name(frame.index)] = std::move(entry);
   }
-  const SheetParams& sheet = *params.sheet;
+  Tracks tracks = tracks_of(layout, sheet);
   json meta = {
       {"app", "toond"},
       {"version", "1"},
@@ -100,6 +131,7 @@ json sheet_atlas(const SheetLayout& layout, const RenderParams& params, const Sc
       {"format", "RGBA8888"},
       {"size", {{"w", layout.width}, {"h", layout.height}}},
       {"scale", "1"},
+      {"frameTags", std::move(tracks.tags)},
       {"padding", layout.padding},
       {"columns", layout.columns},
       {"rows", layout.rows},
@@ -109,8 +141,7 @@ json sheet_atlas(const SheetLayout& layout, const RenderParams& params, const Sc
       {"pitches", sheet.pitches_deg},
       {"camera", framing},
   };
-  if (!sheet.clips.empty()) meta["frameTags"] = frame_tags(layout, sheet);
-  return {{"frames", frames}, {"meta", meta}};
+  return {{"frames", std::move(frames)}, {"animations", std::move(tracks.animations)}, {"meta", std::move(meta)}};
 }
 
 }  // namespace toond::render

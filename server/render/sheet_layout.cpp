@@ -13,6 +13,14 @@ double normalised_yaw(double deg) {
   return wrapped < 0.0 ? wrapped + 360.0 : wrapped;
 }
 
+// Frame k's share of a clip `length_ms` long in `count` frames: the
+// rounded ends of its exact span, so the shares add up to the rounded
+// length and none is off by more than a millisecond.
+int whole_ms(double length_ms, int k, int count) {
+  const auto end = [&](int i) { return std::llround(length_ms * i / count); };
+  return std::max(1, static_cast<int>(end(k + 1) - end(k)));
+}
+
 SheetLayout layout_clips(const SheetParams& sheet, int tile_width, int tile_height) {
   SheetLayout layout;
   layout.tile_width = tile_width;
@@ -35,7 +43,7 @@ SheetLayout layout_clips(const SheetParams& sheet, int tile_width, int tile_heig
           frame.pitch_deg = pitch;
           frame.clip = static_cast<int>(c);
           frame.time = k * step;
-          frame.duration_ms = clip.duration > 0.0 ? step * 1000.0 : sheet.frame_ms;
+          frame.duration_ms = clip.duration > 0.0 ? whole_ms(clip.duration * 1000.0, k, clip.frame_count) : sheet.frame_ms;
           layout.frames.push_back(frame);
         }
       }
@@ -71,6 +79,7 @@ SheetLayout layout_sheet(const SheetParams& sheet, int tile_width, int tile_heig
       frame.y = row * (tile_height + sheet.padding);
       frame.yaw_deg = normalised_yaw(sheet.yaw_start_deg + f * sheet.yaw_step_deg);
       frame.pitch_deg = sheet.pitches_deg[p];
+      frame.duration_ms = sheet.frame_ms;
       layout.frames.push_back(frame);
     }
   }

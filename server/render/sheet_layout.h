@@ -15,10 +15,15 @@ struct SheetFrame {
   double yaw_deg = 0;    // in [0, 360)
   double pitch_deg = 0;
   // An animated sheet's frame: which of SheetParams::clips, at which time
-  // (seconds), shown for how long.
+  // (seconds).
   int clip = -1;  // -1: a turntable frame
   double time = 0;
-  double duration_ms = 0;
+  // How long the frame shows, in whole milliseconds (what game engines
+  // play): a clip's frames round their exact times so that a row adds up
+  // to the clip's length (83, 84, 83 ms for a quarter second in three), at
+  // least 1 ms each; a turntable's frames, and a clip of no length, show
+  // for `frame_ms`.
+  int duration_ms = 0;
 };
 
 struct SheetLayout {

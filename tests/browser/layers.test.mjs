@@ -97,6 +97,32 @@ async function checkLightType(page, requests) {
     'back to directional hides the position again');
 }
 
+// The light's space, a select made from the schema's enum: absent (the
+// default: model for this single image) until chosen; view is sent. And
+// the field of view shows for an orthographic camera only once a distance
+// sizes the view through it.
+async function checkLightSpaceAndFov(page, requests) {
+  const options = await page.locator('#f-lights-0-space option').evaluateAll((os) => os.map((o) => o.value));
+  check(options.join() === ',model,view' && await page.inputValue('#f-lights-0-space') === '',
+    'the light has a space select: unset, model or view', options.join());
+  let rendered = await rendersShown(page);
+  await page.selectOption('#f-lights-0-space', 'view');
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  check(lastRender(requests)?.lights?.[0]?.space === 'view', 'choosing view sends lights[0].space',
+    JSON.stringify(lastRender(requests)?.lights));
+  rendered = await rendersShown(page);
+  await page.selectOption('#f-camera-projection', 'orthographic');
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  check(!(await shown(page, '/camera/fov')), 'orthographic and fitted: the field of view is hidden');
+  rendered = await rendersShown(page);
+  const distance = page.locator('[data-path="/camera/distance"] input[type=number]');
+  await distance.fill('6');
+  await distance.press('Enter');
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  check(await shown(page, '/camera/fov') && lastRender(requests)?.camera?.distance === 6,
+    'orthographic at a distance: the field of view, which sizes the view, shows');
+}
+
 async function checkGroupSwitches(page) {
   check(!(await shown(page, '/rim/power')) && !(await shown(page, '/rim/color')),
     'rim is off by default: its power and colour are hidden');
@@ -227,7 +253,7 @@ async function checkSheet(page, requests) {
   'the atlas places tile 4 in the middle of the lower row', JSON.stringify({ box, view }));
   await tile.hover();
   const label = tile.locator('span');
-  check(await label.isVisible() && /frame_004 · yaw/.test(await label.textContent()),
+  check(await label.isVisible() && /frame 4 · yaw/.test(await label.textContent()),
     'hovering a tile outlines it and names its frame and yaw', await label.textContent());
   await shot(page, '14-sprite-sheet.png');
 
@@ -277,7 +303,8 @@ try {
   // Small tiles keep the sheet quick on llvmpipe. Each part starts from a
   // fresh page, so one that fails does not hide what the others find.
   const start = encodeURIComponent(JSON.stringify({ width: 192, height: 192 }));
-  for (const [name, part] of [['light type', (p) => checkLightType(p, requests)], ['group switches', checkGroupSwitches],
+  for (const [name, part] of [['light type', (p) => checkLightType(p, requests)],
+    ['light space and fov', (p) => checkLightSpaceAndFov(p, requests)], ['group switches', checkGroupSwitches],
     ['layers', (p) => checkLayers(p, requests)], ['sprite sheet', (p) => checkSheet(p, requests)]]) {
     try {
       await page.goto('about:blank');

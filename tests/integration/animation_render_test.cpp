@@ -5,11 +5,16 @@
 // pose, the errors, and the CLI.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "image/png_codec.h"
+#include "support/edge_measure.h"
 #include "support/golden_compare.h"
 #include "support/webp_frames.h"
 #include "support/shared_models.h"
@@ -58,6 +63,38 @@ class AnimatedModel : public SharedDaemonTest {
                               {"animation", {{"clip", clip}, {"time", time}}}});
   }
 };
+
+// Blender's walking character (tests/exported/blender/make_walker.py): a
+// Walk and an Idle clip.
+std::string upload_walker(httplib::Client& client) {
+  const auto uploaded = upload_files(client, TOOND_EXPORTED_DIR "/blender", {"walker.glb"});
+  if (!uploaded || (uploaded->status != 200 && uploaded->status != 201)) {
+    ADD_FAILURE() << (uploaded ? uploaded->body : "no answer");
+    return {};
+  }
+  return json::parse(uploaded->body)["id"];
+}
+
+// A sheet of the walker's Walk: `directions` rows from yaw 0 of `frames`
+// frames each, 96² tiles on a transparent background.
+json walk_sheet(const std::string& walker, const json& camera, int directions, int frames) {
+  return {{"model", walker},
+          {"width", 96},
+          {"height", 96},
+          {"background", {0, 0, 0, 0}},
+          {"camera", camera},
+          {"sheet", {{"frames", directions}, {"yaw_start", 0}, {"animation", {{"clip", "Walk"}, {"frames", frames}}}}}};
+}
+
+// The PNG of a sheet request that must succeed, decoded.
+image::Image rendered_sheet(httplib::Client& client, const json& params) {
+  const auto res = post_json(client, "/render", params);
+  if (!res || res->status != 200) {
+    ADD_FAILURE() << (res ? std::to_string(res->status) + ": " + res->body : "no answer");
+    return {};
+  }
+  return image::decode_png(res->body);
+}
 
 // Pixels that are not the background (alpha or colour differs from the
 // corner pixel's).
@@ -305,16 +342,20 @@ TEST_F(AnimatedModel, AnAnimatedSheetHasARowPerDirectionAndAColumnPerFrame) {
   // Bend: 4 rows of 8 frames; Twist (0.5 s at 12 fps): 4 rows of 6.
   ASSERT_EQ(atlas["frames"].size(), 4u * 8u + 4u * 6u);
   EXPECT_EQ(atlas["meta"]["size"], json({{"w", 8 * 48}, {"h", 8 * 48}}));
-  const json& f9 = atlas["frames"]["frame_009"];  // Bend, second direction, second frame
+  const json& f9 = atlas["frames"]["9"];  // Bend, second direction, second frame
   EXPECT_EQ(f9["clip"], "Bend");
   EXPECT_DOUBLE_EQ(f9["time"].get<double>(), 0.125);
-  EXPECT_DOUBLE_EQ(f9["duration"].get<double>(), 125.0);
+  EXPECT_EQ(f9["duration"], 125);
   EXPECT_EQ(f9["frame"]["x"], 48);
   EXPECT_EQ(f9["frame"]["y"], 48);
-  const json& twist = atlas["frames"]["frame_033"];  // Twist, first direction, second frame
+  const json& twist = atlas["frames"]["33"];  // Twist, first direction, second frame
   EXPECT_EQ(twist["clip"], "Twist");
   EXPECT_NEAR(twist["time"].get<double>(), 0.5 / 6, 1e-12);
-  EXPECT_NEAR(twist["duration"].get<double>(), 500.0 / 6, 1e-9);
+  // Whole milliseconds, as engines play them: 83 and 84 in turn, 500 a row.
+  EXPECT_EQ(twist["duration"], 84);
+  int twist_row_ms = 0;
+  for (int i = 32; i < 38; ++i) twist_row_ms += atlas["frames"][std::to_string(i)]["duration"].get<int>();
+  EXPECT_EQ(twist_row_ms, 500);
   EXPECT_EQ(twist["frame"]["y"], 4 * 48);
   // Aseprite tags: one per clip and direction, over its row.
   const json& tags = atlas["meta"]["frameTags"];
@@ -330,6 +371,9 @@ TEST_F(AnimatedModel, AnAnimatedSheetHasARowPerDirectionAndAColumnPerFrame) {
   EXPECT_EQ(tags[4]["name"], "Twist_30");
   EXPECT_EQ(tags[4]["from"], 32);
   EXPECT_EQ(tags[4]["to"], 37);
+  // PixiJS plays the top-level animations: a tag's frames by name.
+  ASSERT_EQ(atlas["animations"].size(), 8u);
+  EXPECT_EQ(atlas["animations"]["Twist_30"], json({"32", "33", "34", "35", "36", "37"}));
 }
 
 TEST_F(AnimatedModel, EachTileOfAnAnimatedSheetIsTheSingleRenderOfItsPoseAndView) {
@@ -344,15 +388,104 @@ TEST_F(AnimatedModel, EachTileOfAnAnimatedSheetIsTheSingleRenderOfItsPoseAndView
   const json atlas = sheet_atlas(params);
   const double distance = atlas["meta"]["camera"]["distance"];
   ASSERT_EQ(atlas["frames"].size(), 12u);
+  // The sheet's light turns with its camera: the single render's does too.
+  const json view_light = {{{"type", "directional"}, {"direction", {-0.4, -0.5, -1}}, {"space", "view"}}};
   for (const auto& [name, frame] : atlas["frames"].items()) {
     const image::Image single =
         render_ok(client, {{"model", id()},
                            {"width", 64},
                            {"height", 64},
                            {"camera", {{"yaw", frame["yaw"]}, {"pitch", frame["pitch"]}, {"distance", distance}}},
+                           {"lights", view_light},
                            {"animation", {{"clip", frame["clip"]}, {"time", frame["time"]}}}});
     const GoldenDiff diff = compare_golden(single, tile_of(sheet, frame["frame"]));
     EXPECT_TRUE(diff.passes()) << name << ": " << diff.pixels_over << " pixels differ, largest " << diff.largest;
+  }
+}
+
+// The walk in a dimetric (orthographic) sheet, 4 directions × 6 frames:
+// each tile, the yaw-0 ones too, is the single render of its pose and view
+// with the sheet's view-space light at meta.camera.distance, which in an
+// orthographic view sizes it. (Before that, a single render there fitted
+// its own view alone, and only the direction whose fit the sheet's was
+// came out the same: 9-18 % of the pixels of the other three differed.)
+TEST_F(AnimatedModel, EachTileOfADimetricWalkIsTheSingleRenderOfItsPoseAndView) {
+  auto client = daemon_client();
+  const std::string walker = upload_walker(client);
+  ASSERT_FALSE(walker.empty());
+  const json params = walk_sheet(walker, {{"preset", "dimetric"}}, 4, 6);
+  const image::Image sheet = rendered_sheet(client, params);
+  ASSERT_GT(sheet.width, 0);
+  const json atlas = sheet_atlas(params);
+  ASSERT_EQ(atlas["frames"].size(), 24u);
+  const double distance = atlas["meta"]["camera"]["distance"];
+  const json view_light = {{{"type", "directional"}, {"direction", {-0.4, -0.5, -1}}, {"space", "view"}}};
+  for (const auto& [name, frame] : atlas["frames"].items()) {
+    const image::Image single = render_ok(
+        client, {{"model", walker},
+                 {"width", 96},
+                 {"height", 96},
+                 {"background", {0, 0, 0, 0}},
+                 {"camera", {{"preset", "dimetric"}, {"yaw", frame["yaw"]}, {"pitch", frame["pitch"]}, {"distance", distance}}},
+                 {"lights", view_light},
+                 {"animation", {{"clip", frame["clip"]}, {"time", frame["time"]}}}});
+    const GoldenDiff diff = compare_golden(single, tile_of(sheet, frame["frame"]));
+    EXPECT_TRUE(diff.passes()) << name << " (yaw " << frame["yaw"] << "): " << diff.pixels_over
+                               << " pixels differ, largest " << diff.largest;
+  }
+}
+
+// The median relative luminance (linear light) of a row's fully covered
+// pixels, per yaw.
+std::map<double, double> median_luminance_by_yaw(const image::Image& sheet, const json& atlas) {
+  if (sheet.width == 0) return {};
+  std::map<double, std::vector<double>> values;
+  for (const auto& [name, frame] : atlas["frames"].items()) {
+    const image::Image tile = tile_of(sheet, frame["frame"]);
+    std::vector<double>& row = values[frame["yaw"].get<double>()];
+    for (int y = 0; y < tile.height; ++y) {
+      for (int x = 0; x < tile.width; ++x) {
+        const std::uint8_t* p = tile.pixel(x, y);
+        if (p[3] != 255) continue;
+        row.push_back(0.2126 * srgb_byte_to_linear(p[0]) + 0.7152 * srgb_byte_to_linear(p[1]) +
+                      0.0722 * srgb_byte_to_linear(p[2]));
+      }
+    }
+  }
+  std::map<double, double> medians;
+  for (auto& [yaw, row] : values) {
+    std::nth_element(row.begin(), row.begin() + static_cast<std::ptrdiff_t>(row.size() / 2), row.end());
+    medians[yaw] = row.empty() ? 0.0 : row[row.size() / 2];
+  }
+  return medians;
+}
+
+// A sheet's directions are lit alike: the character turns under the
+// light, as it does in a game. Seen from behind (yaw 180) the walker is
+// lit like its front (yaw 0): its median luminance at least 80 % of the
+// front's. With the light kept in the model's space, the back is in the
+// model's own shade.
+TEST_F(AnimatedModel, ASheetLightsTheBackViewLikeTheFront) {
+  auto client = daemon_client();
+  const std::string walker = upload_walker(client);
+  ASSERT_FALSE(walker.empty());
+  for (const json& camera : {json::object(), json{{"preset", "dimetric"}}}) {
+    json params = walk_sheet(walker, camera, 4, 6);
+    const std::map<double, double> by_default =
+        median_luminance_by_yaw(rendered_sheet(client, params), sheet_atlas(params));
+    ASSERT_TRUE(by_default.contains(0.0) && by_default.contains(180.0));
+    EXPECT_GE(by_default.at(180.0), 0.8 * by_default.at(0.0))
+        << camera.dump() << ": back " << by_default.at(180.0) << ", front " << by_default.at(0.0);
+
+    params["lights"] = {{{"type", "directional"}, {"direction", {-0.4, -0.5, -1}}, {"space", "model"}}};
+    const std::map<double, double> in_model =
+        median_luminance_by_yaw(rendered_sheet(client, params), sheet_atlas(params));
+    ASSERT_TRUE(in_model.contains(0.0) && in_model.contains(180.0));
+    EXPECT_LT(in_model.at(180.0), 0.8 * in_model.at(0.0))
+        << camera.dump() << ": a model-space light leaves the back darker (back " << in_model.at(180.0) << ", front "
+        << in_model.at(0.0) << ")";
+    std::printf("camera %s: back / front median luminance %.3f by default (view), %.3f with the light in model space\n",
+                camera.dump().c_str(), by_default.at(180.0) / by_default.at(0.0), in_model.at(180.0) / in_model.at(0.0));
   }
 }
 
@@ -409,18 +542,11 @@ TEST_F(AnimatedModel, ANormalLayerSheetOfAClipMatchesItsColourSheetFrameForFrame
 // row of each direction's frames stays where it is, within a pixel.
 TEST_F(AnimatedModel, AWalkingCharactersFeetStayPutInEveryDirection) {
   auto client = daemon_client();
-  const auto uploaded = upload_files(client, TOOND_EXPORTED_DIR "/blender", {"walker.glb"});
-  ASSERT_TRUE(uploaded && (uploaded->status == 200 || uploaded->status == 201)) << (uploaded ? uploaded->body : "");
-  const std::string walker = json::parse(uploaded->body)["id"];
-  const json params = {{"model", walker},
-                       {"width", 96},
-                       {"height", 96},
-                       {"background", {0, 0, 0, 0}},
-                       {"camera", {{"projection", "orthographic"}, {"pitch", 0}}},
-                       {"sheet", {{"frames", 8}, {"yaw_start", 0}, {"animation", {{"clip", "Walk"}, {"frames", 12}}}}}};
-  const auto res = post_json(client, "/render", params);
-  ASSERT_TRUE(res && res->status == 200) << (res ? res->body : "");
-  const image::Image sheet = image::decode_png(res->body);
+  const std::string walker = upload_walker(client);
+  ASSERT_FALSE(walker.empty());
+  const json params = walk_sheet(walker, {{"projection", "orthographic"}, {"pitch", 0}}, 8, 12);
+  const image::Image sheet = rendered_sheet(client, params);
+  ASSERT_GT(sheet.width, 0);
   const json atlas = sheet_atlas(params);
   ASSERT_EQ(atlas["frames"].size(), 96u);
   std::map<double, std::pair<int, int>> lowest_by_yaw;  // yaw → (min, max) of the lowest covered row

@@ -214,5 +214,37 @@ TEST(Camera, ShiftStrafesInRadiiAndKeepsTheViewDirection) {
   }
 }
 
+// Orthographic, a given distance sizes the view (as tall as the perspective
+// view of fov from there is at the centre) while the eye stays clear of the
+// model, and the distance a fit reports gives that fit back bit for bit: a
+// sheet's tile as a single render.
+TEST(Camera, AnOrthographicDistanceSizesTheViewAndGivesAFitBack) {
+  const scene::Bounds walker_like = box({-0.3f, 0, -0.6f}, {0.3f, 2, 0.6f});
+  CameraParams sheet;
+  sheet.projection = Projection::Orthographic;
+  sheet.yaw_deg = 90;  // the side view: the widest is the front's
+  sheet.pitch_deg = 30;
+  sheet.framed_views = {{0, 30}, {90, 30}, {180, 30}, {270, 30}};
+  const CameraSetup tile = fit_camera(sheet, walker_like, 1.0);
+
+  CameraParams single = sheet;
+  single.framed_views.clear();
+  const CameraSetup alone = fit_camera(single, walker_like, 1.0);
+  ASSERT_NE(alone.half_height, tile.half_height) << "framed alone, the view differs; the check below needs that";
+  single.distance = tile.distance;
+  const CameraSetup again = fit_camera(single, walker_like, 1.0);
+  EXPECT_EQ(again.projection, tile.projection);
+  EXPECT_EQ(again.view, tile.view);
+  EXPECT_EQ(again.distance, tile.distance);
+
+  const double tan_half = std::tan(glm::radians(single.fov_deg) * 0.5);
+  single.distance = 4;
+  EXPECT_NEAR(fit_camera(single, walker_like, 1.0).half_height, 4 * tan_half, 1e-12);
+  single.distance = 0.01;  // far inside the model
+  const CameraSetup close = fit_camera(single, walker_like, 1.0);
+  EXPECT_NEAR(close.half_height, 0.01 * tan_half, 1e-15);
+  EXPECT_GT(close.near_plane, 0) << "the eye stays outside the model";
+}
+
 }  // namespace
 }  // namespace toond::render

@@ -149,13 +149,16 @@ TEST(GalleryViews, TheDefaultViewSendsNoCameraAndNoLights) {
 TEST(GalleryViews, EveryDirectionalLightLightsTheSideTheCameraSees) {
   const ModelFrame frame;
   for (const ModelView& view : some_views()) {
-    const auto c = toward_camera(view);
     for (const Look& look : all_looks()) {
       json params = render_params(look, preset_params_of(look), view, frame, 64, "", schema());
+      // A sheet's lights are in view space, where the camera looks from +z.
+      const bool sheet = params.contains("sheet");
+      const auto c = sheet ? std::array<double, 3>{0, 0, 1} : toward_camera(view);
       // Without "lights" in the request the preset's or the schema's
-      // default lights apply, which is right for the default camera only.
+      // default lights apply, which is right for the default camera (or a
+      // sheet's turning one) only.
       if (!params.contains("lights")) {
-        EXPECT_EQ(view.yaw, 30) << look.name;
+        EXPECT_TRUE(view.yaw == 30 || sheet) << look.name;
         const json preset = preset_params_of(look);
         params["lights"] = preset.is_object() && preset.contains("lights")
                                ? preset["lights"]

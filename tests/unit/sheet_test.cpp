@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <set>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "limit_error.h"
 #include "param_schema.h"
@@ -147,14 +149,51 @@ TEST(SheetFraming, FrameParamsTurnTheViewAndDropTheSheet) {
   EXPECT_EQ(one.camera.framed_views.size(), 8u);
 }
 
-TEST(SheetAtlas, FollowsTexturePackersHashLayoutWithYawAndPitch) {
+// A clip's frames show for whole milliseconds, each within one of its
+// exact share, adding up to the clip's length row by row; a turntable's
+// frames for frame_ms.
+TEST(SheetLayout, FramesShowForWholeMillisecondsThatAddUpToTheClip) {
+  SheetParams sheet;
+  sheet.frames = 2;
+  sheet.pitches_deg = {30};
+  sheet.frame_ms = 70;
+  SheetClip walk;
+  walk.name = "Walk";
+  walk.duration = 0.9583;  // 23 frames at 24 fps
+  walk.frame_count = 7;
+  SheetClip still;
+  still.name = "Still";
+  still.duration = 0;
+  still.frame_count = 2;
+  sheet.clips = {walk, still};
+  const SheetLayout layout = layout_sheet(sheet, 8, 8);
+  ASSERT_EQ(layout.frames.size(), 2u * 7 + 2u * 2);
+  for (int row = 0; row < 2; ++row) {
+    int sum = 0;
+    for (int k = 0; k < 7; ++k) {
+      const SheetFrame& f = layout.frames[static_cast<std::size_t>(row * 7 + k)];
+      EXPECT_NEAR(f.duration_ms, 958.3 / 7, 1.0) << "row " << row << ", frame " << k;
+      sum += f.duration_ms;
+    }
+    EXPECT_EQ(sum, 958) << "row " << row;
+  }
+  EXPECT_EQ(layout.frames[14].duration_ms, 70) << "a clip of no length shows each frame for frame_ms";
+  sheet.clips.clear();
+  for (const SheetFrame& f : layout_sheet(sheet, 8, 8).frames) EXPECT_EQ(f.duration_ms, 70);
+}
+
+TEST(SheetAtlas, FollowsAsepritesHashLayoutWithYawAndPitch) {
   const RenderParams p = params_of({{"width", 32}, {"height", 48}, {"sheet", {{"frames", 8}, {"columns", 4}}}});
   const SheetLayout layout = layout_sheet(*p.sheet, p.width, p.height);
   SceneFrame scene;
   scene.bounds = {{-1, 0, -1}, {1, 2, 1}};
-  const json atlas = sheet_atlas(layout, p, scene, "sheet.png");
-  ASSERT_EQ(atlas["frames"].size(), 8u);
-  const json& f = atlas["frames"]["frame_005"];
+  const nlohmann::ordered_json listed = sheet_atlas(layout, p, scene, "sheet.png");
+  // Named by index, as Aseprite's {frame} names them, and listed in order.
+  std::vector<std::string> names;
+  for (const auto& [name, frame] : listed["frames"].items()) names.push_back(name);
+  EXPECT_EQ(names, (std::vector<std::string>{"0", "1", "2", "3", "4", "5", "6", "7"}));
+  const json atlas = listed;
+  const json& f = atlas["frames"]["5"];
   EXPECT_EQ(f["frame"], (json{{"x", 32}, {"y", 48}, {"w", 32}, {"h", 48}}));
   EXPECT_EQ(f["spriteSourceSize"], (json{{"x", 0}, {"y", 0}, {"w", 32}, {"h", 48}}));
   EXPECT_EQ(f["sourceSize"], (json{{"w", 32}, {"h", 48}}));
@@ -167,7 +206,13 @@ TEST(SheetAtlas, FollowsTexturePackersHashLayoutWithYawAndPitch) {
   EXPECT_NEAR(f["pivot"]["x"].get<double>(), 0.5, 1e-9);
   EXPECT_GT(f["pivot"]["y"].get<double>(), 0.5);
   EXPECT_LT(f["pivot"]["y"].get<double>(), 1.0);
-  EXPECT_NEAR(f["pivot"]["y"].get<double>(), atlas["frames"]["frame_000"]["pivot"]["y"].get<double>(), 1e-9);
+  EXPECT_NEAR(f["pivot"]["y"].get<double>(), atlas["frames"]["0"]["pivot"]["y"].get<double>(), 1e-9);
+  EXPECT_EQ(f["anchor"], f["pivot"]) << "anchor for Pixi and Phaser, the same point";
+  EXPECT_EQ(f["duration"], 100) << "a turntable frame shows for frame_ms";
+  // A turntable is one tag (and one Pixi animation) per pitch.
+  EXPECT_EQ(atlas["meta"]["frameTags"],
+            json::parse(R"([{"name": "turn", "from": 0, "to": 7, "direction": "forward", "pitch": 15.0}])"));
+  EXPECT_EQ(atlas["animations"], (json{{"turn", {"0", "1", "2", "3", "4", "5", "6", "7"}}}));
   const json& meta = atlas["meta"];
   EXPECT_EQ(meta["image"], "sheet.png");
   EXPECT_EQ(meta["size"], (json{{"w", 128}, {"h", 96}}));
