@@ -18,8 +18,7 @@ Against a running toond started with --max-render-cost 0 --result-cache-mb 0
   over and over; prints the small renders' p50/p99/max and each costly
   render's outcome and time. With --edges the costly renders are the
   shared windmill's default request at 2048² instead (hard-edged: its crease
-  lines take the screen-space edge pass, which at that size costs more
-  than its meshes).
+  lines are drawn along its crease edges).
 
     bench/render_cost.py http://127.0.0.1:8080 [--shared ../shared/models] [--contention SECONDS [--edges]]
 """
@@ -62,6 +61,17 @@ def slivers(n):
         d = 2.0 * i / n - 1.0
         out.append(vertex(-1 + d, -1 - d, 0) + vertex(1 + d, 1 - d, 0) + vertex(1 + d + 1e-4, 1 - d, 0) +
                    "f -3 -2 -1\n")
+    return "".join(out)
+
+
+def cube_field(k):
+    """k³ cubes apart, a normal per face: a hard-edged model of 12k³ crease edges."""
+    faces = ((0, 4, 6, 2), (1, 3, 7, 5), (0, 1, 5, 4), (2, 6, 7, 3), (0, 2, 3, 1), (4, 5, 7, 6))
+    out = []
+    for i in range(k ** 3):
+        x, y, z = i % k, i // k % k, i // (k * k)
+        out.extend(vertex(x + 0.75 * (c & 1), y + 0.75 * (c >> 1 & 1), z + 0.75 * (c >> 2 & 1)) for c in range(8))
+        out.extend("f " + " ".join(str(8 * i + 1 + c) for c in f) + "\n" for f in faces)
     return "".join(out)
 
 
@@ -117,9 +127,10 @@ def cost_fields(headers):
     return fields
 
 
-TERMS = ("samples", "triangles", "tiles", "framebuffer", "frames", "edge_texels")
-# render/render_cost.h: kTriangleSamples, kTileSamples, kFramebufferSamples, kFrameSamples, kEdgeTexelSamples.
-DAEMON_WEIGHTS = (1, 40, 320, 1, 1.3e6, 4.5)
+TERMS = ("samples", "triangles", "tiles", "framebuffer", "frames", "edge_texels", "crease_edges")
+# render/render_cost.h: kTriangleSamples, kTileSamples, kFramebufferSamples, kFrameSamples, kEdgeTexelSamples,
+# kCreaseEdgeSamples.
+DAEMON_WEIGHTS = (1, 40, 320, 1, 1.3e6, 4.5, 200)
 
 
 def solve(matrix, vector):
@@ -177,14 +188,17 @@ def prediction(url, shared):
         models[f"stacked_{n}"] = client.upload([("m.obj", stacked(n))])["id"]
     for n in (20000, 80000):
         models[f"slivers_{n}"] = client.upload([("m.obj", slivers(n))])["id"]
+    for k in (8, 15):
+        models[f"cube_field_{k}"] = client.upload([("m.obj", cube_field(k))])["id"]
     client.render({"width": 64, "height": 64})  # programs built
     requests = []
     for name, model in models.items():
         for size, msaa in ((256, 1), (512, 4), (1024, 4)):
             requests.append((name, {"model": model, "width": size, "height": size, "msaa": msaa}))
-    # The screen-space edge pass, whose cost grows with the line's width:
-    # silhouettes and creases (the edges method), crease lines beside the
-    # hull (the windmill is hard-edged), at two widths and up to 2048².
+    # The screen-space edge pass, whose cost grows with the line's width
+    # (silhouettes and creases, the edges method), and crease lines along
+    # the crease edges beside the hull (the windmill is hard-edged), at two
+    # widths and up to 2048².
     for name in ("stanford-bunny", "windmill"):
         for size, msaa in ((512, 4), (2048, 1)):
             for width in (2, 8):

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bench_http.h"
+#include "crease_ratios.h"
 #include "pareto_plot.h"
 #include "quality_sweep.h"
 #include "scaling.h"
@@ -42,6 +43,8 @@ Parts (default: sweep scaling load):
             512², interleaved), the PNG encode at 512² and 1024², and
             renders/s at 1 and 16 clients against a second daemon with
             --frames-in-flight 2; floor.json
+  creases   the hard-edged shared models' default request at 512² against
+            the same with creases never, interleaved; creases.json
 Options:
   --quick          fewer points and repeats (about a minute)
   --smoke          one tiny render per part that has one (a test of the driver)
@@ -83,7 +86,8 @@ Args parse(int argc, char** argv) {
     else if (arg == "-h" || arg == "--help") {
       std::cout << kUsage;
       std::exit(0);
-    } else if (arg == "sweep" || arg == "scaling" || arg == "load" || arg == "versus" || arg == "floor") {
+    } else if (arg == "sweep" || arg == "scaling" || arg == "load" || arg == "versus" || arg == "floor" ||
+               arg == "creases") {
       a.parts.insert(arg);
     } else throw std::invalid_argument("unknown argument " + arg);
   }
@@ -151,6 +155,9 @@ int main(int argc, char** argv) {
       const json floor = run_floor_ratios(client, daemon.url(), daemon_args, args.models, args.repeats * 4,
                                           args.quick ? 2.0 : 6.0);
       write_text(args.out / "floor.json", floor.dump(1));
+    }
+    if (args.parts.count("creases") && have_models) {
+      write_text(args.out / "creases.json", run_crease_ratios(client, args.models, args.repeats * 4).dump(1));
     }
     write_text(args.out / "run.json", summary.dump(1));
     return 0;

@@ -17,11 +17,7 @@ in vec2 v_texcoord;
 flat in vec2 v_segment_a;
 flat in vec2 v_segment_b;
 
-float distance_to_segment(vec2 p, vec2 a, vec2 b) {
-  vec2 ab = b - a;
-  float t = clamp(dot(p - a, ab) / max(dot(ab, ab), 1e-12), 0.0, 1.0);
-  return length(p - (a + t * ab));
-}
+#include "line_segment.glsl"
 #endif
 
 layout(location = 0) out vec4 o_color;

@@ -81,6 +81,39 @@ void RenderTarget::make_drawing_framebuffer() {
   check_complete(draw_fbo_.id(), "draw");
 }
 
+GLuint RenderTarget::bind_line_coverage() {
+  if (samples_ > 1) throw GpuError("RenderTarget: a line coverage channel is for one sample a pixel");
+  if (!line_coverage_fbo_) {
+    line_coverage_ = Texture::create(GL_TEXTURE_2D);
+    glTextureStorage2D(line_coverage_.id(), 1, GL_R8, width_, height_);
+    line_coverage_fbo_ = Framebuffer::create();
+    glNamedFramebufferTexture(line_coverage_fbo_.id(), GL_COLOR_ATTACHMENT0, line_coverage_.id(), 0);
+    glNamedFramebufferRenderbuffer(line_coverage_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                   depth_stencil_.id());
+    check_complete(line_coverage_fbo_.id(), "line coverage");
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, line_coverage_fbo_.id());
+  glViewport(0, 0, width_, height_);
+  const float none[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(line_coverage_fbo_.id(), GL_COLOR, 0, none);
+  return line_coverage_.id();
+}
+
+GLuint RenderTarget::copy_depth() {
+  if (!depth_copy_fbo_) {
+    depth_copy_ = Texture::create(GL_TEXTURE_2D);
+    glTextureStorage2D(depth_copy_.id(), 1, GL_DEPTH24_STENCIL8, width_, height_);
+    glTextureParameteri(depth_copy_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(depth_copy_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    depth_copy_fbo_ = Framebuffer::create();
+    glNamedFramebufferTexture(depth_copy_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_copy_.id(), 0);
+    check_complete(depth_copy_fbo_.id(), "depth copy");
+  }
+  glBlitNamedFramebuffer(draw_fbo_.id(), depth_copy_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
+                         GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  return depth_copy_.id();
+}
+
 // The samples resolve into what is read next: the texture the downsample
 // pass reads when shrinking, else a renderbuffer read back as it is.
 void RenderTarget::make_resolve_framebuffer() {

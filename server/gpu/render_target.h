@@ -38,6 +38,17 @@ class RenderTarget {
 
   // Binds the drawing framebuffer and sets the viewport.
   void bind_for_drawing() const;
+  // One sample a pixel only: binds a framebuffer of one channel (R8, made
+  // on first use), drawn with this target's depth and stencil, sets the
+  // viewport and clears it to 0; returns its texture. Where lines
+  // overlapping must darken a pixel once (render/passes/crease_pass.cpp),
+  // their coverage gathers here before it is laid over the image.
+  GLuint bind_line_coverage();
+  // The depth drawn so far, one sample a pixel (a multisampled target's
+  // samples reduced to one of them), copied into a texture (made on first
+  // use) that a pass may read while it draws into this target: reading
+  // the attached buffer itself would be a feedback loop. Returns it.
+  GLuint copy_depth();
 
   // Shrinking targets only. Resolves the samples (when multisampled) into
   // the single-sample colour texture and returns that texture.
@@ -77,6 +88,10 @@ class RenderTarget {
   Framebuffer draw_fbo_;
   Renderbuffer resolved_color_;   // only with samples > 1, without shrinking
   Framebuffer resolve_fbo_;       // only with samples > 1
+  Texture line_coverage_;         // bind_line_coverage's, made on first use
+  Framebuffer line_coverage_fbo_;
+  Texture depth_copy_;            // copy_depth's, made on first use
+  Framebuffer depth_copy_fbo_;
   Texture single_color_;          // shrinking only: the resolve's target, or the drawn colour
   Renderbuffer shrunk_color_;     // shrinking only
   Framebuffer shrunk_fbo_;        // shrinking only

@@ -31,12 +31,16 @@ std::vector<RenderParams> drawn_frames(const RenderParams& params) {
   return frames;
 }
 
-// Only what changes the passes drawn: a hard-edged model adds the edge
-// passes for its creases.
+// Only what changes the passes drawn: a hard-edged model adds crease lines,
+// drawn along its crease edges (or found in screen space on masked
+// materials).
 render::ModelTraits traits_of(const render::RenderJob& job) {
   render::ModelTraits traits;
+  const double crease_angle = job.params.outline.crease_angle_deg;
   for (const render::JobObject& o : job.objects) {
-    traits.hard_edged |= o.model->mesh.creases.hard_edged(job.params.outline.crease_angle_deg);
+    traits.hard_edged |= o.model->mesh.creases.hard_edged(crease_angle);
+    traits.has_crease_edges |= o.model->mesh.crease_edges.creased_at(crease_angle) > 0;
+    for (const scene::Material& m : o.model->materials) traits.has_masked_materials |= m.alpha_cutoff >= 0.0f;
   }
   return traits;
 }
@@ -114,6 +118,7 @@ RenderCost RenderPrice::per_frame() const {
   one.framebuffer /= n;
   one.frames /= n;
   one.edge_texels /= n;
+  one.crease_edges /= n;
   return one;
 }
 
@@ -141,6 +146,7 @@ std::size_t paced_chunk_triangles(const RenderCost& frame) {
   if (frame.units() < kPacedFrameCost || frame.triangles <= 0) return 0;
   RenderCost drawing = frame;
   drawing.edge_texels = 0;
+  drawing.crease_edges = 0;
   const double per_triangle = drawing.units() / frame.triangles;
   return static_cast<std::size_t>(std::max(16.0, std::floor(kPacedChunkCost / per_triangle)));
 }

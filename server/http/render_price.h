@@ -32,8 +32,9 @@ void check_render_cost(const render::RenderJob& job, const RenderPrice& price, c
 // and a short render waits for at most one of its chunks.
 inline constexpr double kPacedFrameCost = 400;
 inline constexpr double kPacedChunkCost = 25;
-// Triangles per chunk for a frame of this price (the edge pass left out:
-// it is paced in bands of its own); 0: not paced.
+// Triangles per chunk for a frame of this price (the edge pass and the
+// crease edges left out: they are paced in bands and chunks of their
+// own); 0: not paced.
 std::size_t paced_chunk_triangles(const render::RenderCost& frame);
 // Texels of the edge pass per band for a frame of this price, a chunk's
 // worth (render/draw_pacing.h); 0: not paced.

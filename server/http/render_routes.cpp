@@ -165,7 +165,8 @@ std::string cost_header(const RenderPrice& price) {
   s.precision(4);
   const render::RenderCost& c = price.total;
   s << "cost=" << c.units() << "; frames=" << price.frames << "; samples=" << c.samples << "; triangles=" << c.triangles
-    << "; tiles=" << c.tiles << "; framebuffer=" << c.framebuffer << "; edge_texels=" << c.edge_texels;
+    << "; tiles=" << c.tiles << "; framebuffer=" << c.framebuffer << "; edge_texels=" << c.edge_texels
+    << "; crease_edges=" << c.crease_edges;
   return s.str();
 }
 

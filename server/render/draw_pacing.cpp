@@ -2,15 +2,26 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
+
+#include "render/render_cost.h"
 
 namespace toond::render {
 namespace {
 
 thread_local DrawPacing* current_pacing = nullptr;
 
-void draw_elements(std::size_t index_count, std::size_t first_index) {
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(index_count), GL_UNSIGNED_INT,
+void draw_elements(GLenum mode, std::size_t index_count, std::size_t first_index) {
+  glDrawElements(mode, static_cast<GLsizei>(index_count), GL_UNSIGNED_INT,
                  reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first_index * sizeof(std::uint32_t))));
+}
+
+// Crease edges a chunk: as many as cost what a band of the edge pass does;
+// without bands, all of them.
+std::size_t crease_chunk_indices(std::size_t band_texels) {
+  if (band_texels == 0) return std::numeric_limits<std::size_t>::max();
+  const double edges = static_cast<double>(band_texels) * kEdgeTexelSamples / kCreaseEdgeSamples;
+  return 4 * std::max<std::size_t>(static_cast<std::size_t>(edges), 1);
 }
 
 }  // namespace
@@ -19,21 +30,31 @@ DrawPacing::DrawPacing(std::size_t chunk_triangles, std::size_t band_texels, Clo
                        std::function<void()> between_chunks)
     : chunk_indices_(std::max<std::size_t>(chunk_triangles, 1) * 3),
       band_texels_(band_texels),
+      crease_chunk_indices_(crease_chunk_indices(band_texels)),
       deadline_(deadline),
       between_chunks_(std::move(between_chunks)) {}
 
 void DrawPacing::draw_triangles(std::size_t index_count, std::size_t first_index) {
+  draw_elements_in_chunks(GL_TRIANGLES, index_count, first_index, chunk_indices_, issued_);
+}
+
+void DrawPacing::draw_crease_edges(std::size_t index_count, std::size_t first_index) {
+  draw_elements_in_chunks(GL_LINES_ADJACENCY, index_count, first_index, crease_chunk_indices_, crease_indices_issued_);
+}
+
+void DrawPacing::draw_elements_in_chunks(GLenum mode, std::size_t index_count, std::size_t first_index,
+                                         std::size_t chunk, std::size_t& issued) {
   for (std::size_t done = 0; done < index_count && !expired_;) {
     if (Clock::now() > deadline_) {
       expired_ = true;
       return;
     }
-    const std::size_t count = std::min(chunk_indices_ - issued_, index_count - done);
-    draw_elements(count, first_index + done);
+    const std::size_t count = std::min(chunk - issued, index_count - done);
+    draw_elements(mode, count, first_index + done);
     done += count;
-    issued_ += count;
-    if (issued_ < chunk_indices_) continue;
-    issued_ = 0;
+    issued += count;
+    if (issued < chunk) continue;
+    issued = 0;
     end_chunk();
   }
 }
@@ -96,7 +117,15 @@ void draw_triangles(std::size_t index_count, std::size_t first_index) {
   if (current_pacing != nullptr) {
     current_pacing->draw_triangles(index_count, first_index);
   } else {
-    draw_elements(index_count, first_index);
+    draw_elements(GL_TRIANGLES, index_count, first_index);
+  }
+}
+
+void draw_crease_edges(std::size_t index_count, std::size_t first_index) {
+  if (current_pacing != nullptr) {
+    current_pacing->draw_crease_edges(index_count, first_index);
+  } else {
+    draw_elements(GL_LINES_ADJACENCY, index_count, first_index);
   }
 }
 

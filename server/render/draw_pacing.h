@@ -44,6 +44,12 @@ class DrawPacing {
   // counted across calls: a pass drawn as many short ranges (runs left out
   // between them) waits once per chunk's triangles, not once per range.
   void draw_triangles(std::size_t index_count, std::size_t first_index);
+  // glDrawElements of `index_count` indices of crease edges
+  // (GL_LINES_ADJACENCY, four an edge) from `first_index`, in chunks of
+  // edges each worth about a band (kEdgeTexelSamples a texel against
+  // kCreaseEdgeSamples an edge, render_cost.h), counted across calls
+  // apart from the triangles.
+  void draw_crease_edges(std::size_t index_count, std::size_t first_index);
   // `draw` (a full-screen pass over a target `width` × `height`, reading
   // `texels_per_pixel` texels a pixel) once per band of rows, each band its
   // own viewport, waited for like a chunk. The pass's pixels do not depend
@@ -60,9 +66,16 @@ class DrawPacing {
   // After a chunk or band was issued: waits for it, then steps aside.
   void end_chunk();
 
+  // glDrawElements of `mode` primitives in chunks of `chunk` indices,
+  // `issued` of them drawn since the last wait.
+  void draw_elements_in_chunks(GLenum mode, std::size_t index_count, std::size_t first_index, std::size_t chunk,
+                               std::size_t& issued);
+
   std::size_t chunk_indices_;
   std::size_t band_texels_;
+  std::size_t crease_chunk_indices_;
   std::size_t issued_ = 0;  // indices drawn since the last wait
+  std::size_t crease_indices_issued_ = 0;
   Clock::time_point deadline_;
   std::function<void()> between_chunks_;
   std::size_t chunks_ = 0;
@@ -87,6 +100,10 @@ class PacingScope {
 // What the meshes draw with: glDrawElements at once without a pacing
 // scope, through the scope's pacing within one.
 void draw_triangles(std::size_t index_count, std::size_t first_index);
+// What the crease pass draws its edges with (GL_LINES_ADJACENCY):
+// glDrawElements at once without a pacing scope, through the scope's
+// pacing within one.
+void draw_crease_edges(std::size_t index_count, std::size_t first_index);
 // What full-screen passes that may take long draw with: `draw` once without
 // a pacing scope, in bands within one (DrawPacing::draw_in_bands).
 void draw_full_screen(int width, int height, double texels_per_pixel, const std::function<void()>& draw);

@@ -16,6 +16,7 @@ PassPlan plan_for(const std::vector<RenderObject>& objects, const RenderParams& 
     traits.has_normal_maps |= o.model.has_normal_maps();
     traits.has_vertex_colors |= o.model.has_vertex_colors();
     traits.hard_edged |= o.model.creases().hard_edged(params.outline.crease_angle_deg);
+    traits.has_crease_edges |= o.model.creased_edges(0, params.outline.crease_angle_deg) > 0;
     traits.has_masked_materials |= o.model.has_masked_materials();
   }
   return plan_passes(params, traits);
@@ -77,8 +78,13 @@ ShadingLights lights_of(const std::vector<Light>& placed, const glm::dvec3& orig
 
 FaceSkip FrameContext::culling_for(std::size_t i, const glm::dmat4& view_to_clip, const Viewer& seen_by,
                                    bool caps_checked) const {
+  if (!face_culling) return {};
+  return hidden_from(i, view_to_clip, seen_by, caps_checked);
+}
+
+FaceSkip FrameContext::hidden_from(std::size_t i, const glm::dmat4& view_to_clip, const Viewer& seen_by,
+                                   bool caps_checked) const {
   FaceSkip skip;
-  if (!face_culling) return skip;
   const GpuModel& model = objects[i].model;
   const scene::Enclosure enclosure = model.enclosure(lod_of(i));
   const bool caps_away = caps_face_away(model.caps(lod_of(i)), enclosure, scene.matrices[i], seen_by);

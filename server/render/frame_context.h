@@ -89,6 +89,11 @@ struct FrameContext {
   // them too in a pass that can check its caps (`caps_checked`), else none.
   FaceSkip culling_for(std::size_t i, const glm::dmat4& view_projection, const Viewer& seen_by,
                        bool caps_checked) const;
+  // The same whether or not this frame culls faces (`face_culling`): the
+  // faces that cannot show, which a pass may leave out of what it draws
+  // over the surface (crease lines) without changing a pixel either way.
+  FaceSkip hidden_from(std::size_t i, const glm::dmat4& view_projection, const Viewer& seen_by,
+                       bool caps_checked) const;
 };
 
 // `face_culling` off draws both sides of every face (tests that show

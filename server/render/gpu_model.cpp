@@ -80,6 +80,23 @@ gpu::Texture upload_texture(const scene::Texture& tex, std::size_t& bytes) {
   return t;
 }
 
+// Runs of crease edges, each edge standing for its two faces (face 1
+// (a, b, c1), face 2 (b, a, c2)): a run whose faces all surely turn away
+// holds only creases hidden behind the model's own faces. Six indices an
+// edge, so a run of FacingRuns::kRunTriangles faces is a whole number of
+// edges.
+FacingRuns crease_runs(std::span<const glm::vec3> positions, const scene::CreaseEdges& creases) {
+  static_assert(FacingRuns::kRunTriangles % 2 == 0);
+  std::vector<std::uint32_t> faces;
+  faces.reserve(creases.size() * 6);
+  for (std::size_t e = 0; e < creases.size(); ++e) {
+    const std::uint32_t* edge = &creases.indices[4 * e];  // c1, a, b, c2
+    faces.insert(faces.end(), {edge[1], edge[2], edge[0], edge[2], edge[1], edge[3]});
+  }
+  const scene::Submesh all{0, static_cast<std::uint32_t>(faces.size()), 0};
+  return FacingRuns(positions, faces, std::span<const scene::Submesh>(&all, 1));
+}
+
 }  // namespace
 
 GpuModel::GpuModel(const scene::Model& model)
@@ -106,6 +123,14 @@ GpuModel::GpuModel(const scene::Model& model)
   };
   add_caps(levels_[0], mesh.cap_indices);
   for (std::size_t i = 0; i < mesh.lods.size(); ++i) add_caps(levels_[i + 1], mesh.lods[i].cap_indices);
+  auto add_creases = [&](Level& level, const scene::CreaseEdges& creases) {
+    level.first_crease_index = indices.size();
+    level.creased_over = creases.edges_over;
+    if (creases.size() > 0) level.crease_runs = crease_runs(mesh.positions, creases);
+    indices.insert(indices.end(), creases.indices.begin(), creases.indices.end());
+  };
+  add_creases(levels_[0], mesh.crease_edges);
+  for (std::size_t i = 0; i < mesh.lods.size(); ++i) add_creases(levels_[i + 1], mesh.lods[i].crease_edges);
 
   vertices_ = gpu::Buffer::create();
   glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
@@ -223,6 +248,34 @@ std::size_t GpuModel::draw_facing(std::size_t lod, std::size_t k, const MeshView
     drawn += range.index_count;
   }
   return (sub.index_count - drawn) / 3;
+}
+
+std::size_t GpuModel::creased_edges(std::size_t lod, double degrees) const {
+  const auto whole = static_cast<std::size_t>(std::clamp(std::floor(degrees), 0.0, 180.0));
+  return levels_[lod].creased_over[whole];
+}
+
+std::size_t GpuModel::draw_creases(std::size_t lod, double degrees, const std::optional<MeshViewer>& viewer) const {
+  const Level& level = levels_[lod];
+  const std::size_t creased = creased_edges(lod, degrees);
+  if (creased == 0) return 0;
+  if (!viewer || posed_) {
+    draw_crease_edges(4 * creased, level.first_crease_index);
+    return creased;
+  }
+  // The runs' ranges count six indices an edge; the edges creased at this
+  // angle are the first `creased`.
+  static thread_local std::vector<IndexRange> ranges;
+  level.crease_runs.ranges_facing(0, *viewer, ranges);
+  std::size_t drawn = 0;
+  for (const IndexRange& range : ranges) {
+    const std::size_t first = range.first_index / 6;
+    if (first >= creased) break;
+    const std::size_t end = std::min<std::size_t>(creased, (range.first_index + range.index_count) / 6);
+    draw_crease_edges(4 * (end - first), level.first_crease_index + 4 * first);
+    drawn += end - first;
+  }
+  return drawn;
 }
 
 void GpuModel::draw_all(std::size_t lod) const {

@@ -1,12 +1,15 @@
 #pragma once
 // A model's GPU copy: one interleaved vertex buffer, one index buffer (the
-// full mesh, then each coarser level of detail, then every level's caps),
+// full mesh, then each coarser level of detail, then every level's caps,
+// then every level's crease edges),
 // its textures (sRGB, mipmapped, repeating), per-material draw ranges, one
 // uniform block per material and, for a rigged model, its skinning
 // (render/gpu_skin.h).
 // Created and destroyed on the render thread only.
+#include <array>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "gpu/gl_object.h"
@@ -72,6 +75,14 @@ class GpuModel {
   // The triangles closing a level's holes (caps()), with the mesh's own
   // vertices; nothing when it has none.
   void draw_caps(std::size_t lod = 0) const;
+  // How many of a level's edges are creased at a crease angle of `degrees`
+  // (scene/crease_edges.h).
+  std::size_t creased_edges(std::size_t lod, double degrees) const;
+  // Those edges as GL_LINES_ADJACENCY primitives (the crease pass's), with
+  // `viewer` without the runs of them whose faces all surely turn away
+  // from it (render/facing_runs.h; all of them while posed, since the runs
+  // hold the rest pose). Returns how many edges it drew.
+  std::size_t draw_creases(std::size_t lod, double degrees, const std::optional<MeshViewer>& viewer) const;
   // `index_count` indices from `first_index` of another element buffer (the
   // hull's faces that may show, render/hull_cull.h), with this model's
   // vertices; its own indices are bound again after.
@@ -151,6 +162,11 @@ class GpuModel {
     std::size_t cap_index_count = 0;
     std::shared_ptr<HullCullSlot> hull_cull = std::make_shared<HullCullSlot>();
     FacingRuns facing_runs{};
+    std::size_t first_crease_index = 0;  // the crease edges' range of the index buffer, four an edge
+    std::array<std::uint32_t, 181> creased_over{};  // scene::CreaseEdges::edges_over
+    // The crease edges' two faces each, as runs of FacingRuns::kRunTriangles
+    // faces: half as many edges a run, in the edges' order.
+    FacingRuns crease_runs{};
   };
   std::vector<Level> levels_;
   // The rest pose's positions and outline offsets and every level's

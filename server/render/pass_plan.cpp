@@ -11,6 +11,7 @@ const char* pass_name(Pass pass) {
     case Pass::Floor: return "floor";
     case Pass::HullOutline: return "hull_outline";
     case Pass::Wireframe: return "wireframe";
+    case Pass::Creases: return "creases";
     case Pass::EdgePrepass: return "edge_prepass";
     case Pass::Edges: return "edges";
     case Pass::Layer: return "layer";
@@ -150,7 +151,16 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
     const bool silhouette_drawn = params.outline.hull || params.outline.wireframe;
     const bool creases_wanted = params.outline.creases == OutlineCreases::Always ||
                                 (params.outline.creases == OutlineCreases::Auto && model.hard_edged);
-    plan.creases_only = !params.outline.edges && silhouette_drawn && creases_wanted;
+    const bool crease_lines = !params.outline.edges && silhouette_drawn && creases_wanted;
+    // Crease lines are drawn along the crease edges, at their cost, not the
+    // pixels'. Where what decides a line is what the pixels show, the edge
+    // pass finds them in screen space instead: sprite lines (only between
+    // areas wide enough to read, in whole pixels) and masked materials
+    // (the edges know nothing of the parts cut out). A model with no edge
+    // turning that far has no crease line to draw.
+    const bool in_screen_space = params.outline.screen_space_creases || model.has_masked_materials;
+    plan.creases_only = crease_lines && in_screen_space;
+    if (crease_lines && !in_screen_space && model.has_crease_edges) plan.passes.push_back(Pass::Creases);
     if (params.outline.edges || plan.creases_only) {
       plan.passes.push_back(Pass::EdgePrepass);
       plan.passes.push_back(Pass::Edges);

@@ -17,6 +17,7 @@ enum class Pass {
   Floor,        // the ground plane (no stencil mark: it gets no outline)
   HullOutline,  // inverted hull outside the stencil mark
   Wireframe,    // back-face edges widened into lines
+  Creases,      // crease lines along the model's crease edges (scene/crease_edges.h)
   EdgePrepass,  // normals and eye distances for the edge pass
   Edges,        // screen-space depth/normal discontinuities (or creases only)
   Layer,        // a data layer (depth, normal or id) in place of the colour
@@ -33,6 +34,7 @@ struct ModelTraits {
   bool has_normal_maps = false;
   bool has_vertex_colors = false;
   bool hard_edged = false;  // creased at the requested crease angle (scene::CreaseProfile)
+  bool has_crease_edges = false;  // some edge turns by more than the crease angle (scene::CreaseEdges)
   bool has_masked_materials = false;  // glTF alphaMode MASK
 };
 
@@ -65,7 +67,8 @@ struct PassPlan {
   bool alpha_tested_outlines = false;
   bool alpha_tested_shadows = false;  // the shadow pass tests it too
   // The edge pass draws crease lines only: it joins a hull or wireframe
-  // outline (which draws the silhouette) on a hard-edged model.
+  // outline (which draws the silhouette) on a hard-edged model where the
+  // crease lines are found in screen space (see plan_passes).
   bool creases_only = false;
   // The main pass marks the samples it covers in the stencil: only for the
   // hull outline, which draws outside the mark (a stencil test costs

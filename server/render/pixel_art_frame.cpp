@@ -12,6 +12,9 @@ void draw_lines_as_a_sprite(RenderParams& frame) {
   frame.outline.units = OutlineUnits::Pixels;
   frame.outline.readable_area_px = kReadableAreaArtPx;
   frame.outline.whole_pixel_lines = true;
+  // Both rules are about pixels: the edge pass, which sees them, finds the
+  // crease lines (on a frame of a few dozen pixels it costs little).
+  frame.outline.screen_space_creases = true;
   // Contour lines run inside the silhouette wherever the surface turns
   // away; at this size they would double the outline on every limb.
   frame.contour.enabled = false;

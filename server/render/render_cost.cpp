@@ -73,6 +73,24 @@ double drawn_line_px(const RenderParams& params, std::span<const scene::Mesh* co
   return outline_width_px(params.outline, camera, orthographic, params.height) * supersample;
 }
 
+// The crease pass: every edge creased at the request's angle, and the
+// samples its lines cover (each mesh's creased length at the frame's scale:
+// framed, its bounding sphere fills the frame's shorter side). Drawn one
+// sample a pixel, the lines' coverage is gathered in a target of its own,
+// cleared and laid over the image: two more passes over the frame.
+RenderCost crease_cost(const RenderParams& params, const PassPlan& plan, std::span<const scene::Mesh* const> meshes,
+                       double width, double height) {
+  RenderCost cost;
+  const double angle = params.outline.crease_angle_deg;
+  const double line_px = drawn_line_px(params, meshes, plan.supersample);
+  for (const scene::Mesh* mesh : meshes) {
+    cost.crease_edges += static_cast<double>(mesh->crease_edges.creased_at(angle));
+    cost.samples += mesh->crease_edges.length_at(angle) * std::min(width, height) * line_px * plan.samples;
+  }
+  if (plan.samples == 1) cost.framebuffer += 2 * width * height;
+  return cost;
+}
+
 }  // namespace
 
 double edge_texels_per_pixel(double line_px, bool creases_only) {
@@ -82,7 +100,7 @@ double edge_texels_per_pixel(double line_px, bool creases_only) {
 
 double RenderCost::units() const {
   return (samples + triangles * kTriangleSamples + tiles * kTileSamples + framebuffer * kFramebufferSamples +
-          frames * kFrameSamples + edge_texels * kEdgeTexelSamples) /
+          frames * kFrameSamples + edge_texels * kEdgeTexelSamples + crease_edges * kCreaseEdgeSamples) /
          1e6;
 }
 
@@ -92,6 +110,7 @@ std::string RenderCost::describe() const {
   s << units() << " Msamples (surface samples " << samples / 1e6 << " M, triangles " << triangles / 1e6
     << " M, tile samples crossed " << tiles / 1e6 << " M, frame samples " << framebuffer / 1e6 << " M";
   if (edge_texels > 0) s << ", edge pass texels " << edge_texels / 1e6 << " M";
+  if (crease_edges > 0) s << ", crease edges " << crease_edges / 1e6 << " M";
   s << ")";
   return s.str();
 }
@@ -103,6 +122,7 @@ RenderCost& RenderCost::operator+=(const RenderCost& other) {
   framebuffer += other.framebuffer;
   frames += other.frames;
   edge_texels += other.edge_texels;
+  crease_edges += other.crease_edges;
   return *this;
 }
 
@@ -129,6 +149,7 @@ RenderCost predict_frame_cost(const RenderParams& params, const PassPlan& plan,
     cost.edge_texels =
         width * height * edge_texels_per_pixel(drawn_line_px(params, meshes, plan.supersample), plan.creases_only);
   }
+  if (plan.has(Pass::Creases)) cost += crease_cost(params, plan, meshes, width, height);
   cost.frames = 1;
   return cost;
 }

@@ -32,11 +32,17 @@ struct RenderCost {
   // with the line's width. At 2048² that pass alone costs llvmpipe more
   // than drawing the meshes.
   double edge_texels = 0;
+  // Crease edges the crease pass draws (every edge creased at the
+  // request's angle, of every mesh): each is four vertices posed, a
+  // geometry stage and two quads set up, whatever its length. The samples
+  // its lines cover are counted with the others.
+  double crease_edges = 0;
 
   // One figure, in millions of sample-equivalents ("Msamples"): a triangle
   // set up counts as kTriangleSamples samples, a tile sample crossed as
   // kTileSamples, a frame sample as kFramebufferSamples, a frame as
-  // kFrameSamples, a texel the edge pass reads as kEdgeTexelSamples. The
+  // kFrameSamples, a texel the edge pass reads as kEdgeTexelSamples, a
+  // crease edge drawn as kCreaseEdgeSamples. The
   // weights were fitted to llvmpipe's render times (bench/render_cost.py:
   // 1.0–1.8 ms per Msample on a 2-core machine, from day to day); on a GPU
   // the figure is still proportional to the work.
@@ -51,6 +57,7 @@ inline constexpr double kTileSamples = 320;
 inline constexpr double kFramebufferSamples = 1;
 inline constexpr double kFrameSamples = 1.3e6;
 inline constexpr double kEdgeTexelSamples = 4.5;
+inline constexpr double kCreaseEdgeSamples = 200;
 // The screen tile a rasteriser bins triangles into (llvmpipe's is 64 pixels).
 inline constexpr double kTilePixels = 64;
 

@@ -33,6 +33,9 @@ struct RenderOutput {
   // The main pass's triangles left out in runs that surely turn away from
   // the camera (render/facing_runs.h).
   std::size_t main_triangles_skipped = 0;
+  // The crease edges the crease pass drew, runs of them whose faces all
+  // surely turn away left out (render/passes/crease_pass.cpp).
+  std::size_t crease_edges_drawn = 0;
 };
 
 }  // namespace toond::render

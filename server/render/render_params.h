@@ -200,6 +200,11 @@ struct OutlineParams {
   // axis, fully covered) instead of the share of each pixel the line
   // covers. Not on the wire: pixel-art sprites set it.
   bool whole_pixel_lines = false;
+  // Crease lines found by the screen-space edge pass instead of drawn along
+  // the crease edges. Not on the wire: pixel-art sprites set it (their
+  // rules read the pixels on both sides of a line), and tests compare the
+  // two.
+  bool screen_space_creases = false;
   bool any() const { return enabled && width > 0.0f && (hull || wireframe || edges); }
 };
 

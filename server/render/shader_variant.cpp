@@ -19,6 +19,7 @@ constexpr std::array<const char*, static_cast<std::size_t>(OutlineFeature::Count
     "OUTLINE_MATERIAL", "OUTLINE_TEXTURE", "LINE_SEGMENT", "ALPHA_MASK"};
 constexpr std::array<const char*, static_cast<std::size_t>(DepthFeature::Count)> kDepthDefines = {"ALPHA_MASK"};
 constexpr std::array<const char*, static_cast<std::size_t>(EdgeFeature::Count)> kEdgeDefines = {"CREASES_ONLY"};
+constexpr std::array<const char*, static_cast<std::size_t>(CreaseFeature::Count)> kCreaseDefines = {"SAMPLE_MASK"};
 constexpr std::array<const char*, static_cast<std::size_t>(DownsampleFeature::Count)> kDownsampleDefines = {
     "PREMULTIPLIED"};
 constexpr std::array<const char*, static_cast<std::size_t>(LayerFeature::Count)> kLayerDefines = {
@@ -32,7 +33,8 @@ constexpr bool all_named(const std::array<const char*, N>& names) {
   return true;
 }
 static_assert(all_named(kToonDefines) && all_named(kOutlineDefines) && all_named(kDepthDefines) &&
-              all_named(kEdgeDefines) && all_named(kDownsampleDefines) && all_named(kLayerDefines));
+              all_named(kEdgeDefines) && all_named(kCreaseDefines) && all_named(kDownsampleDefines) &&
+              all_named(kLayerDefines));
 
 template <class Feature, std::size_t N>
 const char* name_in(const std::array<const char*, N>& names, Feature feature) {
@@ -46,6 +48,7 @@ const char* define_name(ToonFeature feature) { return name_in(kToonDefines, feat
 const char* define_name(OutlineFeature feature) { return name_in(kOutlineDefines, feature); }
 const char* define_name(DepthFeature feature) { return name_in(kDepthDefines, feature); }
 const char* define_name(EdgeFeature feature) { return name_in(kEdgeDefines, feature); }
+const char* define_name(CreaseFeature feature) { return name_in(kCreaseDefines, feature); }
 const char* define_name(DownsampleFeature feature) { return name_in(kDownsampleDefines, feature); }
 const char* define_name(LayerFeature feature) { return name_in(kLayerDefines, feature); }
 

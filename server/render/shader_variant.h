@@ -109,6 +109,12 @@ enum class EdgeFeature : std::size_t { CreasesOnly, Count };
 const char* define_name(EdgeFeature feature);
 using EdgeVariant = FeatureSet<EdgeFeature>;
 
+// crease.frag's: the target has several samples a pixel, which each line
+// writes by the samples it covers (else it writes each pixel's coverage).
+enum class CreaseFeature : std::size_t { SampleMask, Count };
+const char* define_name(CreaseFeature feature);
+using CreaseVariant = FeatureSet<CreaseFeature>;
+
 // downsample.frag's: the drawn colour is premultiplied (the lines layer).
 enum class DownsampleFeature : std::size_t { Premultiplied, Count };
 const char* define_name(DownsampleFeature feature);

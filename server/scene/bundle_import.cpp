@@ -6,6 +6,7 @@
 
 #include "bundle_paths/model_formats.h"
 #include "scene/assimp_import.h"
+#include "scene/crease_edges.h"
 #include "scene/enclosure.h"
 #include "scene/gltf_container.h"
 #include "scene/gltf_import.h"
@@ -128,6 +129,8 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
   prepare_levels_of_detail(model.mesh, lod);
   check_import_time(limits, "ordering triangles");
   classify_enclosures(model.mesh);
+  find_crease_edges(model.mesh);
+  check_import_time(limits, "finding crease edges");
   return model;
 }
 

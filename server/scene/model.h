@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/crease_edges.h"
 #include "scene/crease_profile.h"
 #include "scene/render_cost_profile.h"
 #include "scene/rig.h"
@@ -99,6 +100,7 @@ struct MeshLod {
   Enclosure enclosure = Enclosure::Open;
   std::vector<glm::vec3> caps;  // see Mesh::caps
   std::vector<std::uint32_t> cap_indices;  // see Mesh::cap_indices
+  CreaseEdges crease_edges;  // see Mesh::crease_edges
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
@@ -147,6 +149,9 @@ struct Mesh {
   std::size_t welded_positions = 0;
   // How much of the edge length is creased at each angle (scene/crease_profile.h).
   CreaseProfile creases;
+  // The edges that turn, greatest turn first, that crease lines are drawn
+  // along (scene/crease_edges.h).
+  CreaseEdges crease_edges;
   // What rasterising the full mesh once costs (scene/render_cost_profile.h):
   // what a request is priced by before it is queued.
   RenderCostProfile cost;

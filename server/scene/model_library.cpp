@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "scene/crease_edges.h"
 #include "scene/demo_model.h"
 #include "scene/bundle_import.h"
 #include "scene/obj_import.h"
@@ -25,12 +26,18 @@ void insert_bounded(Map& map, std::list<std::string>& order, const std::string& 
   }
 }
 
+// The built-in demo model, with the crease edges its box's crease lines
+// are drawn along (scene/crease_edges.h).
+scene::Model demo_with_crease_edges() {
+  scene::Model demo = scene::import_obj_bundle(scene::make_demo_bundle());
+  scene::find_crease_edges(demo.mesh);
+  return demo;
+}
+
 }  // namespace
 
 ModelLibrary::ModelLibrary(scene::ModelStore& store, std::size_t capacity)
-    : store_(store),
-      capacity_(capacity),
-      demo_(std::make_shared<const scene::Model>(scene::import_obj_bundle(scene::make_demo_bundle()))) {}
+    : store_(store), capacity_(capacity), demo_(std::make_shared<const scene::Model>(demo_with_crease_edges())) {}
 
 std::shared_ptr<const scene::Model> ModelLibrary::get(const std::string& id) {
   // Replicas share the data directory: a model another replica deleted must

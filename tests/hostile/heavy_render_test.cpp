@@ -115,6 +115,71 @@ TEST(HeavyRender, ALongRenderHoldsUpNoOtherClientAndStopsAtItsDeadline) {
   EXPECT_EQ(counter_value(later, "toond_render_predicted_cost_msamples_count{lane=\"long\"}"), 1) << later;
 }
 
+// k³ cubes apart from one another, each a face a normal: 12 crease edges a
+// cube, a hard-edged model of many crease edges.
+std::string cube_field_obj(int k) {
+  std::string obj;
+  const int faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  int first = 1;
+  for (int i = 0; i < k * k * k; ++i) {
+    const int x = i % k, y = i / k % k, z = i / (k * k);
+    for (int c = 0; c < 8; ++c) {
+      obj += "v " + std::to_string(x + 0.75 * (c & 1)) + " " + std::to_string(y + 0.75 * (c >> 1 & 1)) + " " +
+             std::to_string(z + 0.75 * (c >> 2 & 1)) + "\n";
+    }
+    for (const auto& f : faces) {
+      obj += "f " + std::to_string(first + f[0]) + " " + std::to_string(first + f[1]) + " " +
+             std::to_string(first + f[2]) + " " + std::to_string(first + f[3]) + "\n";
+    }
+    first += 8;
+  }
+  return obj;
+}
+
+// A hard-edged model of many crease edges (40,500 of them: 3,375 cubes),
+// rendered large by default: its crease lines are priced by their edges
+// and drawn in chunks of them in the long lane, like its meshes, so
+// another client's small renders are answered while it draws.
+TEST(HeavyRender, ManyCreaseEdgesHoldUpNoOtherClient) {
+  Daemon daemon({}, {"--max-render-cost", "0", "--render-timeout", "20"});
+  auto heavy_client = daemon.client();
+  const std::string id = upload_obj_text(heavy_client, cube_field_obj(15));
+  ASSERT_FALSE(id.empty());
+  auto light_client = daemon.client();
+  ASSERT_EQ(post_json(light_client, "/render", {{"width", 128}, {"height", 128}})->status, 200);
+  std::atomic<bool> heavy_done{false};
+  auto heavy = std::async(std::launch::async, [&] {
+    auto res = post_json(heavy_client, "/render", {{"model", id}, {"width", 2048}, {"height", 2048}});
+    heavy_done = true;
+    return res;
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  int answered_while_heavy_drew = 0;
+  for (int i = 0; i < 5; ++i) {
+    auto res = post_json(light_client, "/render", {{"width", 128}, {"height", 128}, {"camera", {{"yaw", 7 + 13 * i}}}});
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 200) << res->body;
+    if (!heavy_done) ++answered_while_heavy_drew;
+  }
+  EXPECT_EQ(answered_while_heavy_drew, 5) << "the small renders waited for the crease lines";
+  auto res = heavy.get();
+  ASSERT_TRUE(res);
+  const std::string cost = res->get_header_value("X-Toond-Cost");
+  std::cout << "cube field at 2048²: " << res->status << ", " << res->get_header_value("X-Toond-Passes") << ", " << cost
+            << "\n";
+  if (res->status == 200) {
+    EXPECT_EQ(res->get_header_value("X-Toond-Passes"), "main,hull_outline,creases,resolve,readback");
+    const auto at = cost.find("crease_edges=");
+    ASSERT_NE(at, std::string::npos) << cost;
+    EXPECT_EQ(std::stod(cost.substr(at + 13)), 40500.0) << cost;
+  } else {
+    EXPECT_EQ(res->status, 503) << res->body;
+    EXPECT_EQ(error_of(res).value("code", ""), "render_aborted") << res->body;
+  }
+  const std::string metrics = light_client.Get("/metrics")->body;
+  EXPECT_EQ(counter_value(metrics, "toond_render_predicted_cost_msamples_count{lane=\"long\"}"), 1) << metrics;
+}
+
 // A long render under the limit ends with its image, and says its price.
 // A long sheet queues all its frames at once, more than the queue holds;
 // they wait in the long lane, which is held to the capacity on its own, so

@@ -414,9 +414,8 @@ TEST_F(Render, ServerTimingNamesThePassesThatRan) {
   EXPECT_NE(res->get_header_value("Server-Timing").find("main;dur="), std::string::npos);
   auto with_outline = post_json(client, "/render", {{"width", 64}, {"height", 64}, {"msaa", 4}});
   ASSERT_TRUE(with_outline);
-  // The demo model's box is hard-edged: its creases join the outline.
-  EXPECT_EQ(with_outline->get_header_value("X-Toond-Passes"),
-            "main,hull_outline,edge_prepass,edges(creases),resolve,readback");
+  // The demo model's box is hard-edged: its crease lines join the outline.
+  EXPECT_EQ(with_outline->get_header_value("X-Toond-Passes"), "main,hull_outline,creases,resolve,readback");
 }
 
 // `total` is the request's own work; the passes' thread times and the

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <thread>
 
@@ -100,16 +101,41 @@ TEST_F(DrawPacingTest, TheEdgePassInBandsDrawsTheSameImage) {
   const GpuModel gpu_cube(cube);
   for (const nlohmann::json& outline : {nlohmann::json{{"method", "edges"}, {"width", 3}},
                                         nlohmann::json{{"creases", "always"}}}) {
-    const RenderParams params = test::complete_params({{"width", 96}, {"height", 96}, {"outline", outline}});
+    RenderParams params = test::complete_params({{"width", 96}, {"height", 96}, {"outline", outline}});
+    // Crease lines as sprite lines find them, in screen space.
+    params.outline.screen_space_creases = true;
     const RenderOutput whole = renderer_->render({RenderObject{gpu_cube}}, params);
     // No triangle chunk ever full.
     int steps_aside = 0;
     DrawPacing pacing(1000000, ten_rows_a_band(params), Clock::now() + std::chrono::minutes(5), [&] { ++steps_aside; });
     const RenderOutput banded = renderer_->render({RenderObject{gpu_cube}}, params, &pacing);
-    EXPECT_EQ(pacing.chunks_drawn(), 10u) << outline;
+    EXPECT_EQ(pacing.chunks_drawn(), 10u) << outline << " " << whole.plan;
     EXPECT_EQ(static_cast<std::size_t>(steps_aside), pacing.chunks_drawn());
     EXPECT_TRUE(banded.image.rgba == whole.image.rgba) << outline;
   }
+}
+
+// The crease pass draws its edges in chunks of its own, each worth what a
+// band is: the same bytes, and a wait after every chunk of them.
+TEST_F(DrawPacingTest, CreaseEdgesInChunksDrawTheSameImage) {
+  scene::Bundle bundle;
+  bundle.add("cube.obj", test::cube_obj());
+  const scene::Model cube = scene::import_bundle(bundle);
+  ASSERT_EQ(cube.mesh.crease_edges.creased_at(40), 12u);
+  const GpuModel gpu_cube(cube);
+  const RenderParams params = test::complete_params({{"width", 96}, {"height", 96}, {"camera", {{"pitch", 30}}}});
+  const RenderOutput whole = renderer_->render({RenderObject{gpu_cube}}, params);
+  ASSERT_EQ(whole.plan, "main,hull_outline,creases,resolve,readback");
+  ASSERT_GE(whole.crease_edges_drawn, 6u);
+  // Two crease edges a chunk; no triangle chunk ever full.
+  const auto two_edges = static_cast<std::size_t>(std::ceil(2.0 * kCreaseEdgeSamples / kEdgeTexelSamples));
+  int steps_aside = 0;
+  DrawPacing pacing(1000000, two_edges, Clock::now() + std::chrono::minutes(5), [&] { ++steps_aside; });
+  const RenderOutput paced = renderer_->render({RenderObject{gpu_cube}}, params, &pacing);
+  EXPECT_EQ(paced.crease_edges_drawn, whole.crease_edges_drawn);
+  EXPECT_EQ(pacing.chunks_drawn(), whole.crease_edges_drawn / 2);
+  EXPECT_EQ(static_cast<std::size_t>(steps_aside), pacing.chunks_drawn());
+  EXPECT_TRUE(paced.image.rgba == whole.image.rgba);
 }
 
 TEST_F(DrawPacingTest, PastTheDeadlineTheRenderStopsAndTheNextDrawsAsBefore) {

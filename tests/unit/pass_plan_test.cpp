@@ -35,21 +35,53 @@ TEST(PassPlan, NoOutlinePassAtWidthZeroOrWhenDisabled) {
 }
 
 // Crease lines join the default outline on a hard-edged model only, and
-// the request can ask for them always or never.
+// the request can ask for them always or never. They are drawn along the
+// crease edges: a model with none draws none, even asked always.
 TEST(PassPlan, CreaseLinesJoinTheOutlineOfHardEdgedModels) {
-  ModelTraits smooth, hard;
+  ModelTraits smooth, hard, creased_smooth;
   hard.hard_edged = true;
+  hard.has_crease_edges = true;
+  creased_smooth.has_crease_edges = true;
   EXPECT_EQ(plan_passes(params(json::object()), smooth).describe(), "main,hull_outline,resolve,readback");
   const PassPlan creased = plan_passes(params(json::object()), hard);
-  EXPECT_TRUE(creased.creases_only);
-  EXPECT_EQ(creased.describe(), "main,hull_outline,edge_prepass,edges(creases),resolve,readback");
-  EXPECT_FALSE(plan_passes(params({{"outline", {{"creases", "never"}}}}), hard).has(Pass::Edges));
-  EXPECT_TRUE(plan_passes(params({{"outline", {{"creases", "always"}}}}), smooth).creases_only);
+  EXPECT_FALSE(creased.creases_only);
+  EXPECT_EQ(creased.describe(), "main,hull_outline,creases,resolve,readback");
+  EXPECT_FALSE(plan_passes(params({{"outline", {{"creases", "never"}}}}), hard).has(Pass::Creases));
+  EXPECT_FALSE(plan_passes(params(json::object()), creased_smooth).has(Pass::Creases)) << "not hard-edged";
+  EXPECT_TRUE(plan_passes(params({{"outline", {{"creases", "always"}}}}), creased_smooth).has(Pass::Creases));
+  EXPECT_EQ(plan_passes(params({{"outline", {{"creases", "always"}}}}), smooth).describe(),
+            "main,hull_outline,resolve,readback")
+      << "no crease edge at the angle: nothing to draw";
+  EXPECT_EQ(plan_passes(params({{"outline", {{"method", "wireframe"}}}}), hard).describe(),
+            "main,wireframe,creases,resolve,readback");
   // The edges method draws creases with its silhouettes already.
   const PassPlan edges = plan_passes(params({{"outline", {{"method", "edges"}}}}), hard);
   EXPECT_TRUE(edges.has(Pass::Edges));
+  EXPECT_FALSE(edges.has(Pass::Creases));
   EXPECT_FALSE(edges.creases_only);
-  EXPECT_FALSE(plan_passes(params({{"outline", {{"width", 0}}}}), hard).has(Pass::Edges));
+  EXPECT_FALSE(plan_passes(params({{"outline", {{"width", 0}}}}), hard).has(Pass::Creases));
+}
+
+// Where what decides a crease line is what the pixels show, the edge pass
+// finds crease lines in screen space: sprite lines (their rules read the
+// areas on both sides of a line) and masked materials (cut-out parts the
+// edges know nothing of).
+TEST(PassPlan, CreaseLinesAreFoundInScreenSpaceWhereThePixelsDecide) {
+  ModelTraits hard;
+  hard.hard_edged = true;
+  hard.has_crease_edges = true;
+  RenderParams sprite = params(json::object());
+  sprite.outline.screen_space_creases = true;
+  const PassPlan by_pixels = plan_passes(sprite, hard);
+  EXPECT_TRUE(by_pixels.creases_only);
+  EXPECT_EQ(by_pixels.describe(), "main,hull_outline,edge_prepass,edges(creases),resolve,readback");
+  ModelTraits masked = hard;
+  masked.has_masked_materials = true;
+  EXPECT_EQ(plan_passes(params(json::object()), masked).describe(),
+            "main,hull_outline,edge_prepass,edges(creases),resolve,readback");
+  ModelTraits masked_smooth;
+  masked_smooth.has_masked_materials = true;
+  EXPECT_FALSE(plan_passes(params(json::object()), masked_smooth).has(Pass::Edges));
 }
 
 TEST(PassPlan, NoResolveWithoutMsaa) {
@@ -251,17 +283,18 @@ TEST(PassPlan, IdsNumberTheObjectsOfASceneOrTheMaterialsOfAModel) {
 TEST(PassPlan, TheLinesLayerKeepsTheLinePassesAndDropsTheShading) {
   ModelTraits hard;
   hard.hard_edged = true;
+  hard.has_crease_edges = true;
   const json request = {{"output", "lines"}, {"shadows", {{"enabled", true}}}, {"floor", {{"enabled", true}}},
                         {"supersample", 2}};
   const PassPlan plan = plan_passes(params(request), hard);
-  EXPECT_EQ(plan.describe(), "main,floor,hull_outline,edge_prepass,edges(creases),resolve,downsample,readback");
+  EXPECT_EQ(plan.describe(), "main,floor,hull_outline,creases,resolve,downsample,readback");
   EXPECT_TRUE(has_define(plan, "LINES_ONLY"));
   EXPECT_FALSE(has_define(plan, "SHADOWS"));
   EXPECT_TRUE(plan.downsample.has(DownsampleFeature::Premultiplied));
   json single = request;
   single["supersample"] = 1;
   EXPECT_EQ(plan_passes(params(single), hard).describe(),
-            "main,floor,hull_outline,edge_prepass,edges(creases),resolve,readback,unpremultiply");
+            "main,floor,hull_outline,creases,resolve,readback,unpremultiply");
   json colour = request;
   colour.erase("output");
   const PassPlan full = plan_passes(params(colour), hard);

@@ -10,6 +10,7 @@
 #include "model_checks.h"
 #include "render/pass_plan.h"
 #include "render/render_cost.h"
+#include "scene/crease_edges.h"
 #include "scene/duplicate_triangles.h"
 #include "scene/obj_import.h"
 #include "scene/render_cost_profile.h"
@@ -242,6 +243,43 @@ TEST(RenderCost, TheEdgePassCountsTheTexelsItsWalksRead) {
   EXPECT_NEAR(cost_of(m, p).units() - narrow.units(),
               (cost_of(m, p).edge_texels - narrow.edge_texels) * render::kEdgeTexelSamples / 1e6, 1e-9);
   EXPECT_NE(cost_of(m, p).describe().find("edge pass texels"), std::string::npos);
+}
+
+// Crease lines along the crease edges are priced by the edges (each set
+// up alike) and the samples their lines cover, not by the frame's pixels:
+// the cube's twelve edges, and its creased length (12 edges of 2 over a
+// diagonal of 2√3) across the frame's side, the line's width wide. One
+// sample a pixel, their coverage is gathered and laid over the frame: two
+// more passes over it.
+TEST(RenderCost, CreaseLinesArePricedByTheirEdgesNotThePixels) {
+  scene::Model m = scene::import_obj_bundle(make_bundle({{"a.obj", kCube}}));
+  scene::find_crease_edges(m.mesh);
+  ASSERT_EQ(m.mesh.crease_edges.creased_at(40), 12u);
+  render::ModelTraits hard;
+  hard.hard_edged = true;
+  hard.has_crease_edges = true;
+  const scene::Mesh* meshes[] = {&m.mesh};
+  const auto priced = [&](const render::RenderParams& p) {
+    return render::predict_frame_cost(p, render::plan_passes(p, hard), meshes);
+  };
+  render::RenderParams p = params_at(256, 256, 4);
+  p.outline.width = 2;
+  render::RenderParams never = p;
+  never.outline.creases = render::OutlineCreases::Never;
+  const render::RenderCost creased = priced(p), bare = priced(never);
+  EXPECT_EQ(creased.edge_texels, 0.0);
+  EXPECT_EQ(creased.crease_edges, 12.0);
+  const double line_samples = 12.0 * 2.0 / (2.0 * std::sqrt(3.0)) * 256 * 2 * 4;
+  EXPECT_NEAR(creased.samples - bare.samples, line_samples, 1e-2);
+  EXPECT_NEAR(creased.units() - bare.units(), (12.0 * render::kCreaseEdgeSamples + line_samples) / 1e6, 1e-9);
+  EXPECT_NE(creased.describe().find("crease edges"), std::string::npos);
+  // Four times the pixels: the same edges, twice the line's length.
+  const render::RenderCost larger = priced(params_with_size(p, 512));
+  EXPECT_EQ(larger.crease_edges, 12.0);
+  EXPECT_NEAR(larger.samples - priced(params_with_size(never, 512)).samples, 2 * line_samples, 1e-2);
+  p.msaa = 1;
+  never.msaa = 1;
+  EXPECT_NEAR(priced(p).framebuffer - priced(never).framebuffer, 2.0 * 256 * 256, 1e-6);
 }
 
 // A width in world units is priced at the pixels the framing gives it: the

@@ -109,12 +109,14 @@ TEST_F(ShaderVariants, EveryOutlineVariantCompilesForTheHullAndTheWireframe) {
   glslang.expect_all_compile({"wire.vert", "wire.geom", "hull.frag"}, wire);
 }
 
-TEST_F(ShaderVariants, EveryDepthEdgeDownsampleAndLayerVariantCompiles) {
+TEST_F(ShaderVariants, EveryDepthEdgeCreaseDownsampleAndLayerVariantCompiles) {
   const GlslangCheck glslang;
   glslang.expect_all_compile({"shadow.vert", "shadow.frag"}, DepthVariant::all());
   glslang.expect_all_compile({"toon.vert", "normal_depth.frag"}, DepthVariant::all());
   glslang.expect_all_compile({"fullscreen.vert", "edges.frag"}, EdgeVariant::all());
   glslang.expect_all_compile({"fullscreen.vert", "normal_depth_resolve.frag"}, std::vector<EdgeVariant>{{}});
+  glslang.expect_all_compile({"crease.vert", "crease.geom", "crease.frag"}, CreaseVariant::all());
+  glslang.expect_all_compile({"fullscreen.vert", "crease_coverage.frag"}, std::vector<CreaseVariant>{{}});
   glslang.expect_all_compile({"fullscreen.vert", "downsample.frag"}, DownsampleVariant::all());
   glslang.expect_all_compile({"toon.vert", "layer.frag"}, LayerVariant::all());
 }

@@ -30,6 +30,7 @@ const std::vector<ProgramSpec> kPrograms = {
     {{"toon.vert", "toon.frag"}, {"MODE_CEL", "RAMP", "RAMP_COUNT 3"}},
     {{"hull.vert", "hull.frag"}, {"OUTLINE_MATERIAL"}},
     {{"wire.vert", "wire.geom", "hull.frag"}, {"LINE_SEGMENT"}},
+    {{"crease.vert", "crease.geom", "crease.frag"}, {"SAMPLE_MASK"}},
     {{"toon.vert", "normal_depth.frag"}, {"ALPHA_MASK"}},
     {{"shadow.vert", "shadow.frag"}, {"ALPHA_MASK"}},
 };

@@ -21,19 +21,6 @@ ToonVariant material_variant(const FrameContext& frame, const GpuMaterial& mater
   return variant;
 }
 
-// Where object i's runs of faces that surely turn away from the camera may
-// be left out (render/facing_runs.h), the camera seen from its mesh: the
-// main pass culls the faces turned away (not an inside-out mesh's, which
-// turn toward it), and the object is placed by a similarity.
-std::optional<MeshViewer> turned_away_runs_viewer(const PassContext& context, std::size_t i) {
-  const FrameContext& frame = context.frame;
-  const glm::dmat4& placement = frame.scene.matrices[i];
-  const bool mirrored = glm::determinant(glm::dmat3(placement)) < 0.0;
-  const HiddenFaces turned_away = mirrored ? HiddenFaces::Front : HiddenFaces::Back;
-  if (!context.skip_turned_away_runs || frame.main_faces[i].hidden != turned_away) return std::nullopt;
-  return viewer_in_mesh(placement, frame.viewer, frame.world_per_px_at_w1());
-}
-
 // Object i, submesh by submesh, each with its material's program and
 // block; a program is switched only where the variant changes. With
 // `viewer`, runs of faces that surely turn away from it are left out.
@@ -61,6 +48,15 @@ void shade_object(PassContext& context, std::size_t i, const std::optional<MeshV
 }
 
 }  // namespace
+
+std::optional<MeshViewer> turned_away_runs_viewer(const PassContext& context, std::size_t i) {
+  const FrameContext& frame = context.frame;
+  const glm::dmat4& placement = frame.scene.matrices[i];
+  const bool mirrored = glm::determinant(glm::dmat3(placement)) < 0.0;
+  const HiddenFaces turned_away = mirrored ? HiddenFaces::Front : HiddenFaces::Back;
+  if (!context.skip_turned_away_runs || frame.main_faces[i].hidden != turned_away) return std::nullopt;
+  return viewer_in_mesh(placement, frame.viewer, frame.world_per_px_at_w1());
+}
 
 // Shades every object, and (where the plan has a hull outline) marks every
 // covered sample in the stencil so the hull can only land outside the model.

@@ -9,6 +9,7 @@ DrawPass drawing_pass(Pass pass) {
     case Pass::Floor: return draw_floor_pass;
     case Pass::HullOutline: return draw_hull_outline_pass;
     case Pass::Wireframe: return draw_wireframe_pass;
+    case Pass::Creases: return draw_crease_pass;
     case Pass::EdgePrepass: return draw_edge_prepass;
     case Pass::Edges: return draw_edge_pass;
     case Pass::Layer: return draw_layer_pass;

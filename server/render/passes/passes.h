@@ -3,6 +3,9 @@
 // them (pass_plan.h). A new pass is a function here in its own file, a
 // Pass value and its name (pass_plan), a line in `drawing_pass` and a line
 // in plan_passes.
+#include <optional>
+
+#include "render/facing_runs.h"
 #include "render/pass_plan.h"
 #include "render/passes/pass_context.h"
 
@@ -13,6 +16,7 @@ void draw_main_pass(PassContext& context);        // clears the target, shades, 
 void draw_floor_pass(PassContext& context);       // the ground plane, shaded like the model
 void draw_hull_outline_pass(PassContext& context);
 void draw_wireframe_pass(PassContext& context);
+void draw_crease_pass(PassContext& context);      // crease lines along the crease edges
 void draw_edge_prepass(PassContext& context);     // normals, distances and coverage per pixel
 void draw_edge_pass(PassContext& context);
 void draw_layer_pass(PassContext& context);      // depth, normal or id in place of the colour
@@ -23,6 +27,12 @@ void draw_downsample_pass(PassContext& context);  // supersampling's box filter 
 // (render/hull_cull.h), for draw_hull_outline_pass to take; called before
 // the first pass of a frame whose plan has the hull.
 void start_hull_cull(PassContext& context);
+
+// Where object i's runs of faces that surely turn away from the camera may
+// be left out (render/facing_runs.h), the camera seen from its mesh: the
+// main pass culls the faces turned away (not an inside-out mesh's, which
+// turn toward it), and the object is placed by a similarity. Else nullopt.
+std::optional<MeshViewer> turned_away_runs_viewer(const PassContext& context, std::size_t i);
 
 using DrawPass = void (*)(PassContext&);
 

@@ -1,0 +1,105 @@
+#include "render/draw_pacing.h"
+#include "render/passes/passes.h"
+#include "render/texture_unit.h"
+
+namespace toond::render {
+namespace {
+
+// crease.geom's u_culled_winding for object i: the winding on screen of
+// the faces that cannot show (those the main pass culls, whether or not
+// it does), so a crease between two of them, hidden by the model's own
+// faces, is dropped before it is rasterised. None where that side may show
+// through a hole.
+int culled_winding(const FrameContext& frame, std::size_t i) {
+  const FaceSkip skip = frame.hidden_from(i, frame.clip, frame.viewer, true);
+  if (skip.unless_caps_show) return 0;
+  switch (skip.hidden) {
+    case HiddenFaces::None: return 0;
+    case HiddenFaces::Back: return 1;
+    case HiddenFaces::Front: return 2;
+  }
+  return 0;
+}
+
+// Every object's edges creased at the request's angle; runs of them whose
+// faces all surely turn to the side the main pass culls are left out
+// (they hide behind the model's own faces). Returns how many were drawn.
+std::size_t draw_crease_edges_of_objects(PassContext& context, gpu::Program& program) {
+  const FrameContext& frame = context.frame;
+  const double angle = frame.params.outline.crease_angle_deg;
+  std::size_t drawn = 0;
+  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+    const GpuModel& model = frame.objects[i].model;
+    if (model.creased_edges(frame.lod_of(i), angle) == 0) continue;
+    context.blocks.bind_object(i);
+    model.bind();
+    program.set("u_culled_winding", culled_winding(frame, i));
+    const std::optional<MeshViewer> viewer =
+        frame.main_faces[i].unless_caps_show ? std::nullopt : turned_away_runs_viewer(context, i);
+    drawn += model.draw_creases(frame.lod_of(i), angle, viewer);
+  }
+  return drawn;
+}
+
+// One sample a pixel: the pixels' coverage, gathered by crease.frag, laid
+// over the image in the outline's colour (in bands when paced, like any
+// full-screen pass).
+void lay_line_coverage_over(PassContext& context, GLuint coverage) {
+  const FrameContext& frame = context.frame;
+  context.target->bind_for_drawing();
+  glDisable(GL_DEPTH_TEST);
+  gpu::Program& program = context.programs.get("fullscreen.vert", "crease_coverage.frag", {});
+  program.use();
+  glBindTextureUnit(texture_unit::kLineCoverage, coverage);
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  draw_full_screen(frame.draw_width, frame.draw_height, 1.0, [&] { context.resources.draw_fullscreen_triangle(); });
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace
+
+// After the silhouette's outline: a line along every crease edge whose two
+// faces show (crease.geom), depth-tested against what the main pass drew,
+// at the cost of the crease edges rather than of the frame's pixels.
+// Multisampled, each line writes the samples it covers, opaque; with one
+// sample a pixel, the lines' coverage is gathered first, the largest a
+// pixel gets kept, and laid over the image once, so that lines joining at
+// a point darken it once.
+void draw_crease_pass(PassContext& context) {
+  const bool multisampled = context.target->samples() > 1;
+  glBindTextureUnit(texture_unit::kSceneDepth, context.target->copy_depth());
+  GLuint coverage = 0;
+  if (multisampled) {
+    context.target->bind_for_drawing();
+    glDisable(GL_BLEND);
+  } else {
+    coverage = context.target->bind_line_coverage();
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_MAX);
+  }
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  // Toward the viewer by one pixel's depth change along the line's own
+  // face, and the depth buffer's least step for faces seen face-on.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-1.0f, -1.0f);
+  const CreaseVariant variant = CreaseVariant{}.set(CreaseFeature::SampleMask, multisampled);
+  gpu::Program& program =
+      context.programs.get(std::vector<std::string>{"crease.vert", "crease.geom", "crease.frag"}, variant.defines());
+  program.use();
+  context.crease_edges_drawn = draw_crease_edges_of_objects(context, program);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDepthMask(GL_TRUE);
+  glBlendEquation(GL_FUNC_ADD);
+  glDisable(GL_BLEND);
+  if (!multisampled && context.crease_edges_drawn > 0) lay_line_coverage_over(context, coverage);
+  else if (!multisampled) context.target->bind_for_drawing();
+}
+
+}  // namespace toond::render

@@ -1,0 +1,159 @@
+#version 430 core
+// Crease lines along the model's crease edges (scene/crease_edges.h): each
+// edge becomes a quad of the outline's width centred on it, reaching half
+// a width past its ends so lines meeting at a corner join (the fragment
+// stage keeps only what lies within half the width of the segment itself:
+// round caps and joins), plus a pixel for the line's antialiased border.
+// The quad is drawn in two halves, each lying in the plane of the face on
+// its side of the edge: its depth where it covers that face is the face's
+// own, so the depth test against what the main pass left keeps the line
+// where its faces show and hides it where something nearer covers them.
+// The pass offsets each half toward the viewer by its own depth slope
+// (glPolygonOffset), which is its face's: a constant offset lets hidden
+// creases through behind faces seen at a grazing angle and cuts lines on
+// steep ones. A crease shows only where both its faces do: the fragment
+// stage also checks the face across the edge (crease.frag), for which each
+// line carries both faces' planes. Input: c1, a, b, c2 (face 1 is
+// (a, b, c1) in its winding). An edge whose faces fold over one another on
+// screen draws nothing: it is a silhouette, which the hull or wireframe
+// draws, or it lies behind its own faces.
+layout(lines_adjacency) in;
+layout(triangle_strip, max_vertices = 6) out;
+
+flat out vec2 v_segment_a;  // the edge's ends in window coordinates
+flat out vec2 v_segment_b;
+flat out float v_depth_a;   // NDC depth at a
+// The faces' planes: how NDC depth changes per window pixel on face 1's
+// side (xy) and on face 2's (zw).
+flat out vec4 v_depth_gradients;
+flat out vec2 v_toward_face1;  // unit, across the edge toward face 1's side
+// The window position, for the fragment stage to place each sample by
+// (interpolateAtSample).
+noperspective out vec2 v_window;
+
+#include "view.glsl"
+#include "outline_style.glsl"
+
+// The side of its faces the main pass culled for this object, by winding
+// on screen: 0 none, 1 clockwise (GL's back faces), 2 counter-clockwise.
+// A crease whose faces both turn that way is hidden by the model itself.
+uniform int u_culled_winding;
+
+#ifdef SAMPLE_MASK
+// The quad reaches this far past the line's half width. Multisampled, the
+// samples are rasterised where they lie: a hair past the width will do.
+const float kCoverageMargin = 1.0 / 64.0;
+#else
+// One sample a pixel, the fragment stage's coverage of a pixel reaches half
+// a pixel (diagonally √½) past the width.
+const float kCoverageMargin = 1.0;
+#endif
+
+// Window depth of what was drawn before the lines, one sample a pixel.
+layout(binding = 0) uniform sampler2D u_scene_depth;
+
+vec2 to_window(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * u_viewport_px; }
+
+float cross2(vec2 u, vec2 v) { return u.x * v.y - u.y * v.x; }
+
+// How NDC depth changes per window pixel in the plane of the face a, b, c
+// (over the window a plane's NDC depth is affine, even in perspective).
+// A face seen nearly edge-on has no plane to speak of: the line keeps the
+// edge's own depth across it.
+vec2 depth_gradient(vec2 a, float za, vec2 b, float zb, vec2 c, float zc) {
+  vec2 e = b - a;
+  vec2 f = c - a;
+  float det = cross2(e, f);
+  if (abs(det) <= 1e-3 * length(e) * length(f)) return e * (zb - za) / max(dot(e, e), 1e-12);
+  return vec2((zb - za) * f.y - (zc - za) * e.y, (zc - za) * e.x - (zb - za) * f.x) / det;
+}
+
+// Whether the edge shows at some point along it, the middles of stretches
+// of 8 pixels (up to 16): where its depth is no farther than what was drawn there,
+// give or take its faces' depth change over a pixel and a half and a few
+// of the depth buffer's steps. Hidden edges (on the far side of an open
+// model, behind other parts) are then not rasterised at all: a long thin
+// quad costs a tiled rasteriser by the tiles it crosses, whether its
+// fragments pass or not. A point between those that shows alone is lost
+// with its edge. The ends are not asked: an edge hidden behind the model's
+// own faces but for its end on the silhouette would draw its round cap
+// out past it.
+bool edge_shows(vec2 a, float za, vec2 b, float zb, float slope) {
+  int steps = int(clamp(ceil(distance(a, b) / 8.0), 1.0, 16.0));
+  ivec2 last = textureSize(u_scene_depth, 0) - 1;
+  float slack = 1.5 * 0.5 * slope + 8.0 / 16777216.0;
+  for (int i = 0; i < steps; ++i) {
+    float t = (float(i) + 0.5) / float(steps);
+    float drawn = texelFetch(u_scene_depth, clamp(ivec2(floor(mix(a, b, t))), ivec2(0), last), 0).r;
+    if (0.5 * mix(za, zb, t) + 0.5 <= drawn + slack) return true;
+  }
+  return false;
+}
+
+vec2 g_a;
+vec2 g_b;
+float g_depth_a;
+vec4 g_gradients;
+vec2 g_toward_face1;
+
+void emit(vec2 window, float depth) {
+  gl_Position = vec4(window / u_viewport_px * 2.0 - 1.0, depth, 1.0);
+  // Set before every vertex: outputs are undefined after EmitVertex.
+  v_segment_a = g_a;
+  v_segment_b = g_b;
+  v_depth_a = g_depth_a;
+  v_depth_gradients = g_gradients;
+  v_toward_face1 = g_toward_face1;
+  v_window = window;
+  EmitVertex();
+}
+
+void main() {
+  for (int i = 0; i < 4; ++i) {
+    // Corners behind the eye plane would project inside out.
+    if (gl_in[i].gl_Position.w <= 0.0) return;
+  }
+  vec4 c1 = gl_in[0].gl_Position;
+  vec4 a = gl_in[1].gl_Position;
+  vec4 b = gl_in[2].gl_Position;
+  vec4 c2 = gl_in[3].gl_Position;
+  g_a = to_window(a);
+  g_b = to_window(b);
+  vec2 s1 = to_window(c1);
+  vec2 s2 = to_window(c2);
+  vec2 e = g_b - g_a;
+  float len = length(e);
+  if (len < 1e-6) return;
+  float side1 = cross2(e, s1 - g_a);
+  float side2 = cross2(e, s2 - g_a);
+  if (side1 * side2 >= 0.0) return;  // folded over: a silhouette, or behind its faces
+  // Both faces wind as face 1 does, unfolded: counter-clockwise when c1
+  // lies left of a→b.
+  if (u_culled_winding == 1 && side1 < 0.0) return;
+  if (u_culled_winding == 2 && side1 > 0.0) return;
+
+  float za = a.z / a.w;
+  float zb = b.z / b.w;
+  vec2 grad1 = depth_gradient(g_a, za, g_b, zb, s1, c1.z / c1.w);
+  vec2 grad2 = depth_gradient(g_a, za, g_b, zb, s2, c2.z / c2.w);
+  float slope = max(abs(grad1.x) + abs(grad1.y), abs(grad2.x) + abs(grad2.y));
+  if (!edge_shows(g_a, za, g_b, zb, slope)) return;
+  vec2 along = e / len;
+  float reach = 0.5 * u_width + kCoverageMargin;
+  g_toward_face1 = side1 > 0.0 ? vec2(-along.y, along.x) : vec2(along.y, -along.x);
+  g_depth_a = za;
+  g_gradients = vec4(grad1, grad2);
+  vec2 toward1 = g_toward_face1 * reach;
+  vec2 start = g_a - along * reach;
+  vec2 end = g_b + along * reach;
+  // On the edge's own line both planes give the edge's depth.
+  float z_start = za - reach * (zb - za) / len;
+  float z_end = zb + reach * (zb - za) / len;
+  emit(start + toward1, z_start + dot(grad1, toward1));
+  emit(end + toward1, z_end + dot(grad1, toward1));
+  emit(start, z_start);
+  emit(end, z_end);
+  emit(start - toward1, z_start - dot(grad2, toward1));
+  emit(end - toward1, z_end - dot(grad2, toward1));
+  EndPrimitive();
+}
