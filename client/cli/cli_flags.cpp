@@ -165,7 +165,8 @@ Prints the daemon's answer (id, triangles, materials, textures, warnings).
     {Verb::info, "info", "ID", "show what the daemon knows of a stored model, its animation clips too",
      R"(Asks the daemon for GET /models/ID and prints its answer: triangles,
 materials, textures, files, the import's warnings and, for a model that
-moves, its animation clips (name, duration in seconds, channels) with its
+moves, its animation clips (name, duration in seconds, channels, and frame_rate
+where the format keys by frame) with its
 joint and morph-target counts. A clip is rendered with
 --set animation.clip=NAME --set animation.time=SECONDS.
 )"},

@@ -109,7 +109,9 @@ nlohmann::json ModelInfo::to_json() const {
   if (animation.any()) {
     nlohmann::json clips = nlohmann::json::array();
     for (const ClipInfo& c : animation.clips) {
-      clips.push_back({{"name", c.name}, {"duration", c.duration}, {"channels", c.channels}});
+      nlohmann::json clip = {{"name", c.name}, {"duration", c.duration}, {"channels", c.channels}};
+      if (c.frame_rate) clip["frame_rate"] = *c.frame_rate;
+      clips.push_back(std::move(clip));
     }
     j["animation"] = {{"clips", clips}, {"joints", animation.joints}, {"morph_targets", animation.morph_targets}};
   }
@@ -140,8 +142,9 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
   }
   if (const auto animation = j.find("animation"); animation != j.end() && animation->is_object()) {
     for (const nlohmann::json& c : animation->value("clips", nlohmann::json::array())) {
-      info.animation.clips.push_back(
-          {c.value("name", std::string()), c.value("duration", 0.0), c.value("channels", std::size_t{0})});
+      ClipInfo clip{c.value("name", std::string()), c.value("duration", 0.0), c.value("channels", std::size_t{0}), {}};
+      if (const auto rate = c.find("frame_rate"); rate != c.end() && rate->is_number()) clip.frame_rate = rate->get<double>();
+      info.animation.clips.push_back(std::move(clip));
     }
     info.animation.joints = animation->value("joints", std::size_t{0});
     info.animation.morph_targets = animation->value("morph_targets", std::size_t{0});
@@ -229,7 +232,9 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& 
   info.weld = {model.mesh.weld_tolerance, model.mesh.welded_positions};
   info.cost = {model.mesh.cost.layers(), model.mesh.cost.edge_span()};
   if (model.rig) {
-    for (const Clip& clip : model.rig->clips) info.animation.clips.push_back({clip.name, clip.duration, clip.channels.size()});
+    for (const Clip& clip : model.rig->clips) {
+      info.animation.clips.push_back({clip.name, clip.duration, clip.channels.size(), clip.frame_rate});
+    }
     info.animation.joints = model.rig->joint_count;
     info.animation.morph_targets = model.rig->morph_target_count;
   }

@@ -127,7 +127,7 @@ TEST(ClipTime, LoopsOverTheDurationAndCountsBackFromTheEnd) {
 
 TEST(RigClips, AreFoundByNameOrByThePartAfterTheBarWhenUnique) {
   Rig rig;
-  for (const char* name : {"Armature|Walk", "Armature|Run", "Other|Run", "idle"}) rig.clips.push_back({name, 1.0, {}});
+  for (const char* name : {"Armature|Walk", "Armature|Run", "Other|Run", "idle"}) rig.clips.push_back({name, 1.0, {}, {}});
   EXPECT_EQ(rig.find_clip("Armature|Walk"), 0u);
   EXPECT_EQ(rig.find_clip("Walk"), 0u);
   EXPECT_EQ(rig.find_clip("idle"), 3u);
