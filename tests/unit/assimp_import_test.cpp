@@ -7,9 +7,13 @@
 
 #include <stdlib.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include "fake_helpers.h"
@@ -407,6 +411,34 @@ TEST_F(AssimpImport, MinetestsPlayerPosesLikeBlendersGltfOfTheSameFileFrameForFr
   }
   // The comparison sees poses: walking is not standing.
   EXPECT_GT(test_checks::farthest_from(test_checks::posed_points(gltf, 0, 173 / 30.0), rest), 0.5);
+}
+
+// Framing over a range of the clip (pose.h): the walk (frames 168-187) of
+// a timeline that also sits and lies down is framed by the walk alone,
+// tighter than the whole clip, and holds every pose of the walk.
+TEST_F(AssimpImport, MinetestsWalkIsFramedByTheWalkAlone) {
+  const Model model = minetest_player();
+  ASSERT_TRUE(model.rig);
+  const ClipRange walk{168.0 / 60.0, 187.0 / 60.0};
+  const ClipFraming whole = frame_clip(model.mesh, *model.rig, 0);
+  const ClipFraming walking = frame_clip(model.mesh, *model.rig, 0, walk);
+  const ClipFraming again = frame_clip(model.mesh, *model.rig, 0, whole_clip(model.rig->clips[0]));
+  EXPECT_EQ(again.bounds.min, whole.bounds.min);
+  EXPECT_EQ(again.bounds.max, whole.bounds.max);
+  const auto extent = [](const Bounds& b) { return glm::length(b.max - b.min); };
+  EXPECT_LT(extent(walking.bounds), 0.8 * extent(whole.bounds));
+  const auto inside = [](const Bounds& b, const glm::vec3& p) {
+    return glm::all(glm::greaterThanEqual(p, b.min - 1e-4f)) && glm::all(glm::lessThanEqual(p, b.max + 1e-4f));
+  };
+  for (int step = 0; step <= 38; ++step) {
+    const double time = walk.start + (walk.end - walk.start) * step / 38.0;
+    const PosedVertices posed = pose_vertices(model.mesh, *model.rig, pose_nodes(*model.rig, &model.rig->clips[0], time));
+    for (const glm::vec3& p : posed.positions) ASSERT_TRUE(inside(walking.bounds, p)) << "at " << time << " s";
+  }
+  // Lying down (frame 164) leaves the walk's frame.
+  const PosedVertices lying = pose_vertices(model.mesh, *model.rig, pose_nodes(*model.rig, &model.rig->clips[0], 164.0 / 60.0));
+  EXPECT_FALSE(std::all_of(lying.positions.begin(), lying.positions.end(),
+                           [&](const glm::vec3& p) { return inside(walking.bounds, p); }));
 }
 
 TEST_F(AssimpImport, AB3dKeyPastItsClipsStatedLengthLengthensTheClip) {
