@@ -91,7 +91,7 @@ int convert(const Options& options) {
   if (options.format == "b3d") add(assimp_convert::count_b3d_frames_from_zero(*scene));
   const std::vector<std::string> frame_rates = assimp_convert::frame_rate_lines(*scene, options.format);
   add(assimp_convert::give_clips_a_speed(*scene));
-  add(assimp_convert::make_upright_metres(*scene, options.format));
+  add(assimp_convert::make_upright_metres(*scene));
   if (options.format == "fbx") assimp_convert::let_textures_replace_colours(*scene);
   if (options.format == "3mf") assimp_convert::linearise_display_colours(*scene);
   add(assimp_convert::not_carried(*scene, over_four));

@@ -193,7 +193,7 @@ class GltfImporter {
     check_counts(instances);
     decode_draco(instances);
     rig_reader_ = std::make_unique<GltfRigReader>(gltf_, *reader_, path_, drawn_nodes_,
-                                                  up_axis_turn(choices_.z_up), warnings_);
+                                                  up_axis_turn(choices_.z_up()), warnings_);
     MeshSource source = make_source(instances);
     source.limits = limits_;
     apply_import_choices(source, choices_);
@@ -208,7 +208,7 @@ class GltfImporter {
     });
     if (rig_reader_->moves()) {
       const glm::dmat4 file_to_mesh =
-          glm::translate(glm::dmat4(1.0), -model_.mesh.origin) * glm::dmat4(up_axis_turn(choices_.z_up));
+          glm::translate(glm::dmat4(1.0), -model_.mesh.origin) * glm::dmat4(up_axis_turn(choices_.z_up()));
       model_.rig = std::make_shared<const Rig>(rig_reader_->finish(file_to_mesh));
       check_import_time(limits_, "reading clips");
     }

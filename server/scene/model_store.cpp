@@ -99,6 +99,19 @@ void remove_quietly(const fs::path& path) {
   fs::remove_all(path, ec);
 }
 
+// The up axis a stored model was imported with. Models stored before the
+// format's convention was the default say "up" only when it was `z`;
+// without it they were read Y-up, but for 3MF, which the assimp helper then
+// turned itself.
+ImportChoices::Up stored_up(const nlohmann::json& j, const std::vector<std::string>& files) {
+  if (const auto up = j.find("up"); up != j.end() && up->is_string()) {
+    return *up == "z" ? ImportChoices::Up::Z : ImportChoices::Up::Y;
+  }
+  const bool three_mf =
+      std::any_of(files.begin(), files.end(), [](const std::string& file) { return has_extension(file, ".3mf"); });
+  return three_mf ? ImportChoices::Up::Z : ImportChoices::Up::Y;
+}
+
 }  // namespace
 
 nlohmann::json ModelInfo::to_json() const {
@@ -117,7 +130,7 @@ nlohmann::json ModelInfo::to_json() const {
   }
   if (choices.gltf_scene) j["scene"] = *choices.gltf_scene;
   if (choices.smooth_angle) j["smooth_angle"] = *choices.smooth_angle;
-  if (choices.z_up) j["up"] = "z";
+  if (choices.up != ImportChoices::Up::FormatDefault) j["up"] = choices.z_up() ? "z" : "y";
   return j;
 }
 
@@ -155,7 +168,7 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
   if (const auto angle = j.find("smooth_angle"); angle != j.end() && angle->is_number()) {
     info.choices.smooth_angle = angle->get<double>();
   }
-  info.choices.z_up = j.value("up", "y") == "z";
+  info.choices.up = stored_up(j, info.files);
   return info;
 }
 
@@ -187,7 +200,7 @@ std::string bundle_id(const Bundle& bundle, const ImportChoices& choices) {
     feed(std::string_view("\0smooth_angle\0", 14));
     feed(angle);
   }
-  if (choices.z_up) feed(std::string_view("\0up\0z", 6));
+  if (choices.z_up()) feed(std::string_view("\0up\0z", 6));
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   if (EVP_DigestFinal_ex(ctx.get(), digest, &length) != 1) throw std::runtime_error("SHA-256 failed");
@@ -213,7 +226,9 @@ ModelStore::ModelStore(fs::path data_dir) : root_(std::move(data_dir) / "models"
 }
 
 ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& limits,
-                                      const ImportChoices& choices) {
+                                      const ImportChoices& asked) {
+  // The id holds the up axis used, whether asked for or the format's.
+  const ImportChoices choices = with_format_up(bundle, asked);
   const std::string id = bundle_id(bundle, choices);
   if (auto existing = info(id)) return {std::move(*existing), false};
 
