@@ -94,9 +94,10 @@ const Flag kFlags[] = {
     {{"", "--set", "key.sub=value",
       "set one parameter, checked against the schema before\n"
       "anything is sent; may be repeated, later ones win.\n"
-      "Arrays and objects are written as JSON:\n"
+      "Lists are comma-separated or JSON, objects JSON:\n"
       "  --set outline.width=3 --set shading.steps=4\n"
-      "  --set background=[1,1,1] --set lights.0.intensity=1.5"},
+      "  --set background=1,1,1 --set lights.0.intensity=1.5\n"
+      "  --set outline.method=hull,edges --set sheet.animation.clip=walk"},
      kRender, true,
      [](FlagTarget& t, Value v) {
        const std::size_t eq = v.find('=');
