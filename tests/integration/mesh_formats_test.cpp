@@ -165,7 +165,8 @@ TEST_F(MeshFormats, TheUploadAnswerSaysWhichAxisWasUp) {
   EXPECT_EQ(up_of("walker.glb", ""), "y");
   EXPECT_EQ(up_of("part.stl", "?up=y"), "y");
   EXPECT_EQ(up_of("part.obj", "?up=z"), "z");
-  const auto bad = client.Post("/models?up=x", "", "multipart/form-data; boundary=x");
+  httplib::MultipartFormDataItems part{{"file", read_file(kBlender / "part.stl"), "part.stl", "application/octet-stream"}};
+  const auto bad = client.Post("/models?up=x", part);
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 400);
   EXPECT_NE(bad->body.find("the format's convention"), std::string::npos) << bad->body;

@@ -488,5 +488,62 @@ TEST_F(AssimpImportErrors, AMendedClipStillMeetsEveryOtherCheck) {
   EXPECT_NE(index.find("index.b3d: B3D Importer - error in B3D file data: Bad triangle index"), std::string::npos) << index;
 }
 
+// `creases: auto` draws crease lines on what a viewer would call a
+// hard-edged model: a CAD part of curved patches meeting at sharp edges
+// (CGAL's copies of the classic fandisk and two machined parts, OFF files
+// without normals no one here made, tests/exported/cgal) is hard-edged at
+// the default crease angle; a smooth scan (the shared Stanford bunny and
+// armadillo) and a finely tessellated sphere are not.
+const std::filesystem::path kCgal = TOOND_EXPORTED_DIR "/cgal";
+constexpr double kDefaultCreaseAngle = 40.0;
+
+class CreaseDecision : public ::testing::Test {
+ protected:
+  void SetUp() override { setenv("TOOND_ASSIMP_CONVERTER", TOOND_ASSIMP_CONVERTER_PATH, 1); }
+};
+
+CreaseProfile creases_of(const std::string& name, const std::string& bytes) {
+  const Model model = import_bundle(make_bundle({{name, bytes}}));
+  const CreaseProfile& c = model.mesh.creases;
+  std::printf("%s: edge length creased %.4f, surface beside crease lines %.4f\\n", name.c_str(), c.at(kDefaultCreaseAngle),
+              c.lines_area(kDefaultCreaseAngle));
+  return c;
+}
+
+// A UV sphere of `rings` × 2·`rings` quads, positions and faces only.
+std::string sphere_obj(int rings) {
+  std::ostringstream obj;
+  const double pi = std::acos(-1.0);
+  for (int r = 0; r <= rings; ++r) {
+    for (int s = 0; s < 2 * rings; ++s) {
+      const double theta = pi * r / rings, phi = pi * s / rings;
+      obj << "v " << std::sin(theta) * std::cos(phi) << " " << std::cos(theta) << " " << std::sin(theta) * std::sin(phi) << "\n";
+    }
+  }
+  const auto at = [rings](int r, int s) { return r * 2 * rings + (s % (2 * rings)) + 1; };
+  for (int r = 0; r < rings; ++r) {
+    for (int s = 0; s < 2 * rings; ++s) {
+      obj << "f " << at(r, s) << " " << at(r + 1, s) << " " << at(r + 1, s + 1) << " " << at(r, s + 1) << "\n";
+    }
+  }
+  return obj.str();
+}
+
+TEST_F(CreaseDecision, CadPartsOfCurvedPatchesAreHardEdged) {
+  for (const char* name : {"fandisk.off", "joint.off", "part.off"}) {
+    EXPECT_TRUE(creases_of(name, read_file(kCgal / name)).hard_edged(kDefaultCreaseAngle)) << name;
+  }
+}
+
+TEST_F(CreaseDecision, ASmoothScanOrASphereIsNot) {
+  EXPECT_FALSE(creases_of("sphere.obj", sphere_obj(48)).hard_edged(kDefaultCreaseAngle));
+  TOOND_REQUIRE_SHARED_MODELS();
+  for (const char* path : {"stanford-bunny/stanford-bunny.obj", "armadillo/armadillo.obj", "spot/spot.obj",
+                           "blub/blub_triangulated.obj", "bob/bob_tri.obj", "utah-teapot/teapot.obj"}) {
+    const std::filesystem::path file = test::shared_models_dir() / path;
+    EXPECT_FALSE(creases_of(file.filename().string(), read_file(file)).hard_edged(kDefaultCreaseAngle)) << path;
+  }
+}
+
 }  // namespace
 }  // namespace toond::scene
