@@ -505,7 +505,7 @@ class CreaseDecision : public ::testing::Test {
 CreaseProfile creases_of(const std::string& name, const std::string& bytes) {
   const Model model = import_bundle(make_bundle({{name, bytes}}));
   const CreaseProfile& c = model.mesh.creases;
-  std::printf("%s: edge length creased %.4f, surface beside crease lines %.4f\\n", name.c_str(), c.at(kDefaultCreaseAngle),
+  std::printf("%s: edge length creased %.4f, surface beside crease lines %.4f\n", name.c_str(), c.at(kDefaultCreaseAngle),
               c.lines_area(kDefaultCreaseAngle));
   return c;
 }
