@@ -99,6 +99,19 @@ void remove_quietly(const fs::path& path) {
   fs::remove_all(path, ec);
 }
 
+// The up axis a stored model was imported with. Models stored before the
+// format's convention was the default say "up" only when it was `z`;
+// without it they were read Y-up, but for 3MF, which the assimp helper then
+// turned itself.
+ImportChoices::Up stored_up(const nlohmann::json& j, const std::vector<std::string>& files) {
+  if (const auto up = j.find("up"); up != j.end() && up->is_string()) {
+    return *up == "z" ? ImportChoices::Up::Z : ImportChoices::Up::Y;
+  }
+  const bool three_mf =
+      std::any_of(files.begin(), files.end(), [](const std::string& file) { return has_extension(file, ".3mf"); });
+  return three_mf ? ImportChoices::Up::Z : ImportChoices::Up::Y;
+}
+
 }  // namespace
 
 nlohmann::json ModelInfo::to_json() const {
@@ -109,13 +122,15 @@ nlohmann::json ModelInfo::to_json() const {
   if (animation.any()) {
     nlohmann::json clips = nlohmann::json::array();
     for (const ClipInfo& c : animation.clips) {
-      clips.push_back({{"name", c.name}, {"duration", c.duration}, {"channels", c.channels}});
+      nlohmann::json clip = {{"name", c.name}, {"duration", c.duration}, {"channels", c.channels}};
+      if (c.frame_rate) clip["frame_rate"] = *c.frame_rate;
+      clips.push_back(std::move(clip));
     }
     j["animation"] = {{"clips", clips}, {"joints", animation.joints}, {"morph_targets", animation.morph_targets}};
   }
   if (choices.gltf_scene) j["scene"] = *choices.gltf_scene;
   if (choices.smooth_angle) j["smooth_angle"] = *choices.smooth_angle;
-  if (choices.z_up) j["up"] = "z";
+  if (choices.up != ImportChoices::Up::FormatDefault) j["up"] = choices.z_up() ? "z" : "y";
   return j;
 }
 
@@ -140,8 +155,9 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
   }
   if (const auto animation = j.find("animation"); animation != j.end() && animation->is_object()) {
     for (const nlohmann::json& c : animation->value("clips", nlohmann::json::array())) {
-      info.animation.clips.push_back(
-          {c.value("name", std::string()), c.value("duration", 0.0), c.value("channels", std::size_t{0})});
+      ClipInfo clip{c.value("name", std::string()), c.value("duration", 0.0), c.value("channels", std::size_t{0}), {}};
+      if (const auto rate = c.find("frame_rate"); rate != c.end() && rate->is_number()) clip.frame_rate = rate->get<double>();
+      info.animation.clips.push_back(std::move(clip));
     }
     info.animation.joints = animation->value("joints", std::size_t{0});
     info.animation.morph_targets = animation->value("morph_targets", std::size_t{0});
@@ -152,7 +168,7 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
   if (const auto angle = j.find("smooth_angle"); angle != j.end() && angle->is_number()) {
     info.choices.smooth_angle = angle->get<double>();
   }
-  info.choices.z_up = j.value("up", "y") == "z";
+  info.choices.up = stored_up(j, info.files);
   return info;
 }
 
@@ -184,7 +200,7 @@ std::string bundle_id(const Bundle& bundle, const ImportChoices& choices) {
     feed(std::string_view("\0smooth_angle\0", 14));
     feed(angle);
   }
-  if (choices.z_up) feed(std::string_view("\0up\0z", 6));
+  if (choices.z_up()) feed(std::string_view("\0up\0z", 6));
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   if (EVP_DigestFinal_ex(ctx.get(), digest, &length) != 1) throw std::runtime_error("SHA-256 failed");
@@ -210,7 +226,9 @@ ModelStore::ModelStore(fs::path data_dir) : root_(std::move(data_dir) / "models"
 }
 
 ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& limits,
-                                      const ImportChoices& choices) {
+                                      const ImportChoices& asked) {
+  // The id holds the up axis used, whether asked for or the format's.
+  const ImportChoices choices = with_format_up(bundle, asked);
   const std::string id = bundle_id(bundle, choices);
   if (auto existing = info(id)) return {std::move(*existing), false};
 
@@ -229,7 +247,9 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& 
   info.weld = {model.mesh.weld_tolerance, model.mesh.welded_positions};
   info.cost = {model.mesh.cost.layers(), model.mesh.cost.edge_span()};
   if (model.rig) {
-    for (const Clip& clip : model.rig->clips) info.animation.clips.push_back({clip.name, clip.duration, clip.channels.size()});
+    for (const Clip& clip : model.rig->clips) {
+      info.animation.clips.push_back({clip.name, clip.duration, clip.channels.size(), clip.frame_rate});
+    }
     info.animation.joints = model.rig->joint_count;
     info.animation.morph_targets = model.rig->morph_target_count;
   }

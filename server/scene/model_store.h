@@ -40,13 +40,15 @@ struct ModelInfo {
     double layers = 0;
     double edge_span = 0;
   } cost;
-  // What moves (scene/rig.h): each clip's name, duration (seconds) and
-  // channel count, the skins' joints and the morph targets. Empty clips and
-  // zero counts: nothing moves.
+  // What moves (scene/rig.h): each clip's name, duration (seconds),
+  // channel count and frame rate (where the format has one), the skins'
+  // joints and the morph targets. Empty clips and zero counts: nothing
+  // moves.
   struct ClipInfo {
     std::string name;
     double duration = 0;
     std::size_t channels = 0;
+    std::optional<double> frame_rate;
   };
   struct Animation {
     std::vector<ClipInfo> clips;
