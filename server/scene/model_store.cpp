@@ -280,16 +280,18 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& 
     std::lock_guard lock(evict_mutex_);
     Room room = make_room(bytes, id, true);
     result.evicted = std::move(room.evicted);
-    if (!room.fits) {
+    if (room.refused) {
       throw StoreError(StoreError::Kind::FullOfModelsInUse,
                        "the store is at its bound and renders hold every model that could make room for this one");
     }
-    reserved_bytes_ += bytes;
+    auto& [writers, reserved_bytes] = reserved_[id];
+    ++writers;
+    reserved_bytes = bytes;
   }
   const auto release = [&] {
     if (!bounded) return;
     std::lock_guard lock(evict_mutex_);
-    reserved_bytes_ -= bytes;
+    if (--reserved_[id].first == 0) reserved_.erase(id);
   };
   bool written = false;
   try {
@@ -475,35 +477,44 @@ ModelStore::Letting ModelStore::evict(const std::string& id) {
   return Letting::Evicted;
 }
 
-ModelStore::Room ModelStore::make_room(std::uint64_t incoming, const std::string& spare, bool all_or_nothing) {
+ModelStore::Room ModelStore::make_room(std::uint64_t incoming, const std::string& spare, bool refuse_when_held) {
   const std::vector<StoredModel> models = sizes_.scan(root_);
-  std::uint64_t kept = add_up(models).bytes + reserved_bytes_;
-  const auto fits = [&] { return kept + incoming <= options_.max_bytes; };
+  std::uint64_t kept = add_up(models).bytes;
+  for (const auto& [id, reservation] : reserved_) {
+    const bool in_place = std::any_of(models.begin(), models.end(), [&](const StoredModel& m) { return m.id == id; });
+    if (!in_place) kept += reservation.second;
+  }
+  const std::uint64_t max = options_.max_bytes;
   Room room;
-  if (fits()) return room;
-  // The least recently used that no render holds, as many as it takes.
+  if (kept + incoming <= max) return room;
+  // The least recently used that no render holds, as many as it takes; and
+  // what the held ones take, which no eviction can free.
   std::vector<const StoredModel*> chosen;
   std::uint64_t freed = 0;
+  std::uint64_t held_bytes = 0;
   {
     std::lock_guard lock(pins_mutex_);
     for (const StoredModel& m : models) {
-      if (kept - freed + incoming <= options_.max_bytes) break;
-      if (m.id == spare || held(m.id)) continue;
-      chosen.push_back(&m);
-      freed += m.bytes;
+      if (m.id == spare) continue;
+      if (held(m.id)) {
+        held_bytes += m.bytes;
+      } else if (kept - freed + incoming > max) {
+        chosen.push_back(&m);
+        freed += m.bytes;
+      }
     }
   }
-  if (all_or_nothing && kept - freed + incoming > options_.max_bytes) {
-    room.fits = false;
+  // Uploads this process is still writing do not make a refusal: they
+  // land, and the oldest of them goes in its turn.
+  if (refuse_when_held && held_bytes + incoming > max) {
+    room.refused = true;
     return room;
   }
   for (const StoredModel* m : chosen) {
     const Letting letting = evict(m->id);
     if (letting == Letting::Held) continue;  // a render took it meanwhile
-    kept -= m->bytes;
     if (letting == Letting::Evicted) room.evicted.push_back(m->id);
   }
-  room.fits = fits();
   return room;
 }
 

@@ -22,6 +22,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -146,19 +147,20 @@ class ModelStore {
   std::optional<Volume> volume() const;
 
  private:
-  // What make_room() did: whether `incoming` bytes fit now, and the models
-  // it let go.
+  // What make_room() did: the models it let go, or that it let none go
+  // because renders hold too much for `incoming` bytes to fit.
   struct Room {
-    bool fits = true;
+    bool refused = false;
     std::vector<std::string> evicted;
   };
   enum class Letting { Evicted, Gone, Held };
 
   // Lets the least recently used models go, sparing `spare`, until
   // `incoming` more bytes (and the uploads this process is writing) fit
-  // under the bound. `all_or_nothing`: lets none go unless enough can.
-  // Called with evict_mutex_ held.
-  Room make_room(std::uint64_t incoming, const std::string& spare, bool all_or_nothing);
+  // under the bound. `refuse_when_held`: lets none go when the models
+  // renders hold leave too little room for `incoming` anyway. Called with
+  // evict_mutex_ held.
+  Room make_room(std::uint64_t incoming, const std::string& spare, bool refuse_when_held);
   // Whether a render holds the model: a pin here, a lease anywhere. Called
   // with pins_mutex_ held.
   bool held(const std::string& id) const;
@@ -175,10 +177,11 @@ class ModelStore {
   StoreOptions options_;
   std::string holder_;  // this process's name in the lease folders
   mutable std::mutex mutex_;
-  // One eviction pass at a time; with it, the bytes of the uploads this
-  // process is writing now, which the scan cannot see yet.
+  // One eviction pass at a time; with it, the uploads this process is
+  // writing now (id → how many, and the bytes of one), counted until a
+  // scan finds them in place.
   std::mutex evict_mutex_;
-  std::uint64_t reserved_bytes_ = 0;
+  std::unordered_map<std::string, std::pair<int, std::uint64_t>> reserved_;
   std::mutex pins_mutex_;
   std::unordered_map<std::string, int> pins_;
   mutable ModelSizes sizes_;
