@@ -85,6 +85,12 @@ void write_file_durably(const fs::path& path, std::string_view bytes) {
   if (::close(fd.release()) != 0) throw_errno("cannot close", path);
 }
 
+StoreError larger_than_store(std::uint64_t bytes, std::uint64_t max_bytes) {
+  return StoreError(StoreError::Kind::LargerThanStore, "the model takes " + std::to_string(bytes) +
+                                                           " bytes, more than the whole store may hold (" +
+                                                           std::to_string(max_bytes) + " bytes)");
+}
+
 // A stored file's bytes; nothing when it is not there (its model was let
 // go or removed meanwhile). Any other failure is a StoreError.
 std::optional<std::string> read_stored_file(const fs::path& path) {
@@ -247,6 +253,12 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& 
     return {std::move(*existing), false, {}};
   }
 
+  const bool bounded = options_.max_bytes > 0;
+  // Larger than the bound before it is even imported: refused at once.
+  if (bounded && bundle.total_bytes() > options_.max_bytes) {
+    throw larger_than_store(bundle.total_bytes(), options_.max_bytes);
+  }
+
   // The import runs unlocked: it can take a while (texture decoding) and
   // concerns only this bundle.
   const Model model = import_bundle(bundle, limits, choices);
@@ -270,13 +282,8 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& 
   const std::uint64_t bytes = info.bytes + info_text.size();
 
   PutResult result{std::move(info), true, {}};
-  const bool bounded = options_.max_bytes > 0;
   if (bounded) {
-    if (bytes > options_.max_bytes) {
-      throw StoreError(StoreError::Kind::LargerThanStore,
-                       "the model takes " + std::to_string(bytes) + " bytes, more than the whole store may hold (" +
-                           std::to_string(options_.max_bytes) + " bytes)");
-    }
+    if (bytes > options_.max_bytes) throw larger_than_store(bytes, options_.max_bytes);
     std::lock_guard lock(evict_mutex_);
     Room room = make_room(bytes, id, true);
     result.evicted = std::move(room.evicted);
