@@ -140,8 +140,9 @@ int run(const toond::app::Options& options) {
   std::cerr << "toond: GL " << renderer.gl_info().version << " on " << renderer.gl_info().renderer
             << " (" << renderer.gl_info().platform
             << (renderer.gl_info().robust ? ", robust context" : ", no reset notification") << "), data in " << options.data_dir
-            << (store_options.max_bytes ? ", at most " + std::to_string(store_options.max_bytes >> 20) + " MiB of models"
-                                        : "")
+            << (store_options.max_bytes
+                    ? ", at most " + std::to_string(store_options.max_bytes >> 20) + " MiB of models"
+                    : "")
             << (options.shader_dir.empty() ? "" : ", shaders from " + options.shader_dir + " (reloaded on change)")
             << "\n";
   std::cout << "listening on http://" << options.host << ":" << port << std::endl;

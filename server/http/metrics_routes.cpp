@@ -11,7 +11,8 @@ void register_metrics_routes(httplib::Server& server, ServiceContext& context) {
                  [&context] { return static_cast<double>(context.renderer.queue_depth()); });
   registry.gauge("toond_models_stored", "Models in the data directory (shared by every replica that mounts it).",
                  [&context] { return static_cast<double>(context.store.usage().models); });
-  registry.gauge("toond_store_bytes", "Bytes of the stored models' files, every replica's (what --max-store-mb bounds).",
+  registry.gauge("toond_store_bytes",
+                 "Bytes of the stored models' files, every replica's (what --max-store-mb bounds).",
                  [&context] { return static_cast<double>(context.store.usage().bytes); });
   registry.gauge("toond_store_max_bytes", "The bound --max-store-mb puts on toond_store_bytes, in bytes; 0: none.",
                  [&context] { return static_cast<double>(context.store.max_bytes()); });

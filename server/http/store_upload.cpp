@@ -30,7 +30,8 @@ scene::ModelStore::PutResult store_upload(ServiceContext& context, const scene::
   try {
     result = context.store.put(bundle, context.limits.import, choices);
   } catch (const scene::StoreError& e) {
-    if (const std::string reason = refusal_reason(e.kind()); !reason.empty()) context.metrics.count_store_refusal(reason);
+    const std::string reason = refusal_reason(e.kind());
+    if (!reason.empty()) context.metrics.count_store_refusal(reason);
     throw;
   }
   // What was let go for the bound leaves this replica's memory and GPU now;

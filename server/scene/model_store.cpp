@@ -35,7 +35,8 @@ constexpr std::size_t kIdLength = 32;
 
 bool volume_full(const std::error_code& code) {
   const std::error_condition condition = code.default_error_condition();
-  return condition == std::errc::no_space_on_device || condition == std::error_condition(EDQUOT, std::generic_category());
+  return condition == std::errc::no_space_on_device ||
+         condition == std::error_condition(EDQUOT, std::generic_category());
 }
 
 // An I/O failure as a client may read it: what could not be done and the

@@ -310,10 +310,10 @@ nlohmann::json answer_for(const E& e, httplib::Response& res) {
 
 TEST(StoreAnswer, AFullVolumeIs507StorageFullNamingNoPath) {
   httplib::Response res;
-  const auto error = answer_for(StoreError(StoreError::Kind::VolumeFull,
-                                           "the volume the models are stored on is full (No space left on device)",
-                                           "cannot write /srv/toond/models/.tmp-x/files/m.obj: No space left on device"),
-                                res);
+  const StoreError full(StoreError::Kind::VolumeFull,
+                        "the volume the models are stored on is full (No space left on device)",
+                        "cannot write /srv/toond/models/.tmp-x/files/m.obj: No space left on device");
+  const auto error = answer_for(full, res);
   EXPECT_EQ(res.status, 507);
   EXPECT_EQ(error.at("code"), "storage_full");
   EXPECT_EQ(error.at("message").get<std::string>().find('/'), std::string::npos) << error;
