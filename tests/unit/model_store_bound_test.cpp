@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -52,10 +53,30 @@ class StoreBound : public ::testing::Test {
     return options;
   }
 
+  // Models "a", "b" and "c", stored in that order: room for no more.
+  static std::array<std::string, 3> fill(ModelStore& store) {
+    return {store.put(padded_model("a")).info.id, store.put(padded_model("b")).info.id,
+            store.put(padded_model("c")).info.id};
+  }
+
   // What a render does to a model: pins it while it draws, then lets go.
   static void render(ModelStore& store, const std::string& id) {
     ModelPins pins(store);
     pins.add(id);
+  }
+
+  // A full store's first model, A, held by `held` while B and C are
+  // rendered: A is the least recently used, yet an upload through
+  // `uploading` lets B go instead. Returns the upload's id.
+  static std::string upload_past_held_model(ModelPins& held, ModelStore& uploading,
+                                            const std::array<std::string, 3>& abc) {
+    held.add(abc[0]);
+    render(uploading, abc[1]);
+    render(uploading, abc[2]);
+    const auto d = uploading.put(padded_model("d"));
+    EXPECT_EQ(d.evicted, std::vector<std::string>{abc[1]});
+    EXPECT_TRUE(uploading.contains(abc[0]));
+    return d.info.id;
   }
 
   std::set<std::string> stored(const ModelStore& store) const {
@@ -78,9 +99,7 @@ class StoreBound : public ::testing::Test {
 
 TEST_F(StoreBound, LetsTheLeastRecentlyUsedGoFirstByLastUploadOrRender) {
   ModelStore store(dir_, three_models());
-  const std::string a = store.put(padded_model("a")).info.id;
-  const std::string b = store.put(padded_model("b")).info.id;
-  const std::string c = store.put(padded_model("c")).info.id;
+  const auto [a, b, c] = fill(store);
   EXPECT_EQ(stored(store), (std::set<std::string>{a, b, c}));
 
   // A rendered last: B is now the least recently used.
@@ -107,9 +126,7 @@ TEST_F(StoreBound, LetsTheLeastRecentlyUsedGoFirstByLastUploadOrRender) {
 
 TEST_F(StoreBound, TwoModelsGoWhenOneIsNotEnoughRoom) {
   ModelStore store(dir_, three_models());
-  const std::string a = store.put(padded_model("a")).info.id;
-  const std::string b = store.put(padded_model("b")).info.id;
-  const std::string c = store.put(padded_model("c")).info.id;
+  const auto [a, b, c] = fill(store);
   const auto big = store.put(padded_model("big", 20000));
   EXPECT_EQ(big.evicted, (std::vector<std::string>{a, b}));
   EXPECT_EQ(stored(store), (std::set<std::string>{c, big.info.id}));
@@ -118,39 +135,29 @@ TEST_F(StoreBound, TwoModelsGoWhenOneIsNotEnoughRoom) {
 
 TEST_F(StoreBound, NeverLetsGoAModelARenderHolds) {
   ModelStore store(dir_, three_models());
-  const std::string a = store.put(padded_model("a")).info.id;
-  const std::string b = store.put(padded_model("b")).info.id;
-  const std::string c = store.put(padded_model("c")).info.id;
+  const auto models = fill(store);
+  const auto& [a, b, c] = models;
   ModelPins held(store);
-  held.add(a);
-  // B and C rendered after A was taken: A is the least recently used, and
-  // still drawing.
-  render(store, b);
-  render(store, c);
-  const auto d = store.put(padded_model("d"));
-  EXPECT_EQ(d.evicted, std::vector<std::string>{b});
-  EXPECT_TRUE(store.contains(a));
+  const std::string d = upload_past_held_model(held, store, models);
 
   // Every model that could make room is held: the upload is refused whole,
   // and nothing is let go for it.
   held.add(c);
-  held.add(d.info.id);
+  held.add(d);
   try {
     store.put(padded_model("e"));
     FAIL() << "stored past the bound";
   } catch (const StoreError& error) {
     EXPECT_EQ(error.kind(), StoreError::Kind::FullOfModelsInUse);
   }
-  EXPECT_EQ(stored(store), (std::set<std::string>{a, c, d.info.id}));
+  EXPECT_EQ(stored(store), (std::set<std::string>{a, c, d}));
   EXPECT_TRUE(temporary_folders().empty());
   EXPECT_EQ(store.evictions(), 1u);
 }
 
 TEST_F(StoreBound, AModelIsFreeAgainOnceItsLastRenderLetsGo) {
   ModelStore store(dir_, three_models());
-  const std::string a = store.put(padded_model("a")).info.id;
-  const std::string b = store.put(padded_model("b")).info.id;
-  const std::string c = store.put(padded_model("c")).info.id;
+  const auto [a, b, c] = fill(store);
   {
     ModelPins first(store);
     first.add(a);
@@ -173,18 +180,12 @@ TEST_F(StoreBound, AModelIsFreeAgainOnceItsLastRenderLetsGo) {
 TEST_F(StoreBound, AnotherReplicasRenderHoldsItsModelThroughItsLease) {
   ModelStore rendering(dir_, three_models());
   ModelStore uploading(dir_, three_models());
-  const std::string a = uploading.put(padded_model("a")).info.id;
-  const std::string b = uploading.put(padded_model("b")).info.id;
-  const std::string c = uploading.put(padded_model("c")).info.id;
+  const auto models = fill(uploading);
+  const std::string& a = models[0];
   {
+    // The other replica draws A.
     ModelPins held(rendering);
-    held.add(a);
-    render(uploading, b);
-    render(uploading, c);
-    // A is the least recently used, but the other replica draws it.
-    const auto d = uploading.put(padded_model("d"));
-    EXPECT_EQ(d.evicted, std::vector<std::string>{b});
-    EXPECT_TRUE(rendering.contains(a));
+    upload_past_held_model(held, uploading, models);
   }
   // Its render is done: A goes.
   EXPECT_EQ(uploading.put(padded_model("e")).evicted, std::vector<std::string>{a});
@@ -197,9 +198,7 @@ TEST_F(StoreBound, ALeaseOlderThanItsExpiryIsADeadReplicasAndHoldsNothing) {
   StoreOptions options = three_models();
   options.lease_expiry = std::chrono::seconds(60);
   ModelStore uploading(dir_, options);
-  const std::string a = uploading.put(padded_model("a")).info.id;
-  const std::string b = uploading.put(padded_model("b")).info.id;
-  const std::string c = uploading.put(padded_model("c")).info.id;
+  const auto [a, b, c] = fill(uploading);
   {
     // A replica took A and was killed before it let go: its lease stays.
     ModelStore dying(dir_, options);
