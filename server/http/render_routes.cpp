@@ -199,7 +199,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
                          "/objects: give either `model` or `objects`, not both", "/objects");
     }
     render::RenderJob job;
-    // Held until the answer is sent: no replica lets these models go meanwhile.
+    // Held until the answer is sent: the store lets none of these models go.
     scene::ModelPins pins(context.store);
     const nlohmann::json completed = schema.validate_and_complete(proto::Presets::builtin().expand(request));
     job.params = render_params_from_wire(completed);
@@ -291,6 +291,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
     if (!layout) pose();
 
+    pins.lease();  // queued from here: every replica sees the models in use
     const RenderPrice price = admit_by_price(context, job, req);
     const auto submitted = Clock::now();
     // Past the deadline the render thread skips the job instead of drawing

@@ -22,7 +22,8 @@ class ModelLibrary {
   // has no such id (or lost it while it was read).
   std::shared_ptr<const scene::Model> get(const std::string& id);
   // The same for a render: the model is pinned in `pins` first, so that
-  // once it is found no replica lets it go before the render is answered.
+  // once it is found the store does not let it go before the render is
+  // answered.
   std::shared_ptr<const scene::Model> get(const std::string& id, scene::ModelPins& pins);
   std::shared_ptr<const scene::Model> demo() const { return demo_; }
   void forget(const std::string& id);

@@ -452,7 +452,7 @@ void ModelStore::pin(const std::string& id) {
   if (!is_model_id(id)) return;
   {
     std::lock_guard lock(pins_mutex_);
-    if (pins_[id]++ == 0) take_lease(root_ / id, holder_);
+    ++pins_[id];
   }
   stamp_use(root_ / id);
 }
@@ -460,9 +460,20 @@ void ModelStore::pin(const std::string& id) {
 void ModelStore::unpin(const std::string& id) {
   std::lock_guard lock(pins_mutex_);
   const auto it = pins_.find(id);
-  if (it == pins_.end()) return;
-  if (--it->second > 0) return;
-  pins_.erase(it);
+  if (it != pins_.end() && --it->second == 0) pins_.erase(it);
+}
+
+void ModelStore::lease(const std::string& id) {
+  if (!is_model_id(id)) return;
+  std::lock_guard lock(pins_mutex_);
+  if (leases_[id]++ == 0) take_lease(root_ / id, holder_);
+}
+
+void ModelStore::unlease(const std::string& id) {
+  std::lock_guard lock(pins_mutex_);
+  const auto it = leases_.find(id);
+  if (it == leases_.end() || --it->second > 0) return;
+  leases_.erase(it);
   drop_lease(root_ / id, holder_);
 }
 

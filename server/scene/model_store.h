@@ -8,8 +8,9 @@
 //
 // Bounded (StoreOptions::max_bytes), the store lets the least recently used
 // models go (last upload or render, scene/model_use.h) to make room for a
-// new one, but never a model a render holds: this process's own pins, and
-// every replica's leases on the shared volume. Each replica may evict; the
+// new one, but never a model a render holds: this process's own pins (from
+// a request's lookup to its answer), and every replica's leases on the
+// shared volume (while its render is queued or drawing). Each replica may evict; the
 // check and the rename are not one atomic step across replicas, so a render
 // that takes a model in the very instant another replica lets it go finds
 // it gone (404), as if it had come a moment later; a render that already
@@ -127,11 +128,16 @@ class ModelStore {
   std::vector<ModelInfo> list() const;
   bool remove(const std::string& id);
 
-  // A render holds the model from pin to unpin (scene/model_pins.h): no
-  // replica lets it go meanwhile. Pinning is a use. Pins nest; ids that
-  // are not stored are ignored.
+  // A render request holds the model from pin to unpin (scene/model_pins.h):
+  // this process does not let it go meanwhile. Pinning is a use. Pins nest;
+  // ids that are not stored are ignored.
   void pin(const std::string& id);
   void unpin(const std::string& id);
+  // While its render is queued or drawing, a lease in the model's folder
+  // (scene/model_use.h) keeps every replica from letting it go. Leases
+  // nest; a request answered from the result cache takes none.
+  void lease(const std::string& id);
+  void unlease(const std::string& id);
 
   // Models and bytes in the store (every replica's, on a shared volume).
   StoreUsage usage() const;
@@ -184,6 +190,7 @@ class ModelStore {
   std::unordered_map<std::string, std::pair<int, std::uint64_t>> reserved_;
   std::mutex pins_mutex_;
   std::unordered_map<std::string, int> pins_;
+  std::unordered_map<std::string, int> leases_;
   mutable ModelSizes sizes_;
   std::atomic<std::uint64_t> evictions_{0};
 };

@@ -59,10 +59,12 @@ class StoreBound : public ::testing::Test {
             store.put(padded_model("c")).info.id};
   }
 
-  // What a render does to a model: pins it while it draws, then lets go.
+  // What a render does to a model: pins it when it looks it up, leases it
+  // when it is queued, lets go when it is answered.
   static void render(ModelStore& store, const std::string& id) {
     ModelPins pins(store);
     pins.add(id);
+    pins.lease();
   }
 
   // A full store's first model, A, held by `held` while B and C are
@@ -71,6 +73,7 @@ class StoreBound : public ::testing::Test {
   static std::string upload_past_held_model(ModelPins& held, ModelStore& uploading,
                                             const std::array<std::string, 3>& abc) {
     held.add(abc[0]);
+    held.lease();
     render(uploading, abc[1]);
     render(uploading, abc[2]);
     const auto d = uploading.put(padded_model("d"));
@@ -158,21 +161,41 @@ TEST_F(StoreBound, NeverLetsGoAModelARenderHolds) {
 TEST_F(StoreBound, AModelIsFreeAgainOnceItsLastRenderLetsGo) {
   ModelStore store(dir_, three_models());
   const auto [a, b, c] = fill(store);
+  const fs::path leases = dir_ / "models" / a / kLeaseFolder;
   {
     ModelPins first(store);
     first.add(a);
+    first.lease();
     {
       ModelPins second(store);
       second.add(a);
+      second.lease();
     }
-    // One of two renders of A is done: A is still held.
+    // One of two renders of A is done: A is still held, here and for
+    // every replica.
+    EXPECT_FALSE(fs::is_empty(leases));
     render(store, b);
     render(store, c);
     EXPECT_EQ(store.put(padded_model("d")).evicted, std::vector<std::string>{b});
   }
   // Both done: A, the least recently used, goes.
+  EXPECT_TRUE(fs::is_empty(leases));
   EXPECT_EQ(store.put(padded_model("e")).evicted, std::vector<std::string>{a});
-  EXPECT_TRUE(fs::is_empty(dir_ / "models" / c / kLeaseFolder));
+}
+
+// A request answered from the result cache looks its model up but queues
+// no render: this process keeps it meanwhile, other replicas need not.
+TEST_F(StoreBound, AModelLookedUpButNotQueuedIsHeldOnlyWhereItWasLookedUp) {
+  ModelStore looking(dir_, three_models());
+  ModelStore uploading(dir_, three_models());
+  const auto [a, b, c] = fill(uploading);
+  ModelPins looked_up(looking);
+  looked_up.add(a);
+  render(uploading, b);
+  render(uploading, c);
+  EXPECT_TRUE(fs::is_empty(dir_ / "models" / a / kLeaseFolder));
+  EXPECT_EQ(looking.put(padded_model("d")).evicted, std::vector<std::string>{b});
+  EXPECT_EQ(uploading.put(padded_model("e")).evicted, std::vector<std::string>{a});
 }
 
 // Two stores on one folder are two replicas on one volume: neither sees
@@ -203,6 +226,7 @@ TEST_F(StoreBound, ALeaseOlderThanItsExpiryIsADeadReplicasAndHoldsNothing) {
     // A replica took A and was killed before it let go: its lease stays.
     ModelStore dying(dir_, options);
     dying.pin(a);
+    dying.lease(a);
   }
   const fs::path lease_folder = dir_ / "models" / a / kLeaseFolder;
   ASSERT_FALSE(fs::is_empty(lease_folder));
