@@ -200,6 +200,8 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
                          "/objects: give either `model` or `objects`, not both", "/objects");
     }
     render::RenderJob job;
+    // Held until the answer is sent: the store lets none of these models go.
+    scene::ModelPins pins(context.store);
     const nlohmann::json completed = schema.validate_and_complete(proto::Presets::builtin().expand(request));
     job.params = render_params_from_wire(completed);
     check_sheet_params(job.params);
@@ -208,7 +210,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
         const render::SceneObject& object = job.params.objects[i];
         render::JobObject o;
         o.model_key = object.model;
-        o.model = context.library.get(object.model);
+        o.model = context.library.get(object.model, pins);
         if (!o.model) {
           throw RequestError(404, "unknown_model", "no stored model with id " + object.model,
                              "/objects/" + std::to_string(i) + "/model");
@@ -221,7 +223,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     } else {
       render::JobObject o;
       o.model_key = job.params.model;
-      o.model = context.library.get(job.params.model);
+      o.model = context.library.get(job.params.model, pins);
       if (!o.model) {
         throw RequestError(404, "unknown_model", "no stored model with id " + job.params.model,
                            "/model");
@@ -290,6 +292,7 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
     if (!layout) pose();
 
+    pins.lease();  // queued from here: every replica sees the models in use
     const RenderPrice price = admit_by_price(context, job, req);
     const auto submitted = Clock::now();
     // Past the deadline the render thread skips the job instead of drawing
