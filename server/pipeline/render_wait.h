@@ -6,7 +6,7 @@
 #include "render/render_service.h"
 #include "render/renderer.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 
 // How long a request waits for `job`, queued with `deadline`: a paced job
 // stops itself at its deadline and says so (503 render_aborted) within
@@ -21,4 +21,4 @@ std::chrono::steady_clock::time_point wait_limit(const render::RenderJob& job,
 render::RenderOutput await_render(std::future<render::RenderOutput>& future,
                                   std::chrono::steady_clock::time_point deadline, std::chrono::milliseconds limit);
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

@@ -1,10 +1,10 @@
-#include "http/render_wait.h"
+#include "pipeline/render_wait.h"
 
 #include <string>
 
 #include "request_error.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 
 std::chrono::steady_clock::time_point wait_limit(const render::RenderJob& job,
                                                  std::chrono::steady_clock::time_point deadline) {
@@ -21,4 +21,4 @@ render::RenderOutput await_render(std::future<render::RenderOutput>& future,
   return future.get();
 }
 
-}  // namespace toond::http
+}  // namespace toond::pipeline
