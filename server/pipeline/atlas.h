@@ -4,12 +4,12 @@
 // and the tEXt chunk of a sheet's PNG.
 #include <nlohmann/json.hpp>
 
-#include "pipeline/pose.h"
 #include "pipeline/request.h"
+#include "render/camera.h"
 
 namespace toond::pipeline {
 
-// `poses`: the first frame's (pose.h), whose framing every frame shares.
-nlohmann::json atlas_of(const Request& request, const ObjectPoses& poses);
+// `scene`: the framing every frame of the sheet shares (plan.h).
+nlohmann::json atlas_of(const Request& request, const render::SceneFrame& scene);
 
 }  // namespace toond::pipeline

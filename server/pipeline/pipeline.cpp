@@ -4,7 +4,7 @@
 
 #include "pipeline/assemble.h"
 #include "pipeline/atlas.h"
-#include "pipeline/frames.h"
+#include "pipeline/plan.h"
 #include "pipeline/queue.h"
 
 namespace toond::pipeline {
@@ -32,24 +32,15 @@ double render_thread_ms(const render::RenderOutput& out) {
   return ms;
 }
 
-// Each frame as a job for the render threads, in layout order: its own
-// parameters and poses, the whole request's price (a sheet waits in the
-// lane its whole price says, its client's turn) and pacing.
+// Each frame as a job for the render threads, in layout order: its poses,
+// its plan and the request's schedule (a sheet waits in the lane its whole
+// price says, its client's turn, all its frames paced alike).
 std::vector<render::RenderJob> frame_jobs(const Request& request, const std::vector<ObjectPoses>& poses,
-                                          const std::string& client, const RenderPrice& price,
-                                          Clock::time_point deadline) {
-  std::vector<render::RenderParams> drawn = drawn_frames(request.params);
+                                          std::vector<render::FramePlan> plans, const render::Schedule& schedule) {
   std::vector<render::RenderJob> jobs;
-  for (std::size_t i = 0; i < drawn.size(); ++i) {
-    render::RenderJob job;
-    job.objects = request.objects;
+  for (std::size_t i = 0; i < plans.size(); ++i) {
+    render::RenderJob job{.objects = request.objects, .plan = std::move(plans[i]), .schedule = schedule};
     for (std::size_t k = 0; k < job.objects.size(); ++k) job.objects[k].pose = poses[i][k];
-    job.params = std::move(drawn[i]);
-    job.deadline = deadline;
-    job.client = client;
-    job.cost = price.total.units();
-    job.paced_chunk_triangles = paced_chunk_triangles(price.per_frame());
-    job.paced_band_texels = paced_band_texels(price.per_frame());
     jobs.push_back(std::move(job));
   }
   return jobs;
@@ -58,7 +49,8 @@ std::vector<render::RenderJob> frame_jobs(const Request& request, const std::vec
 }  // namespace
 
 nlohmann::json sheet_atlas(const Request& request, Services& services) {
-  return atlas_of(request, pose_frames(request, services.framings, services.renderer.skinning()).front());
+  const ObjectPoses poses = pose_frames(request, services.framings, services.renderer.skinning()).front();
+  return atlas_of(request, *render::frame_scene_of(planned_objects(request, poses)));
 }
 
 Rendered render(Request request, const std::string& client, Services& services) {
@@ -66,21 +58,24 @@ Rendered render(Request request, const std::string& client, Services& services) 
   const auto posing = Clock::now();
   const std::vector<ObjectPoses> poses = pose_frames(request, services.framings, services.renderer.skinning());
   if (any_posed(poses)) rendered.pose_ms = ms_since(posing);
+  std::vector<render::FramePlan> plans = plan_frames(request, poses);
   // A sheet's atlas frames it as its frames are; an animation's goes out
   // with ?atlas=json alone.
   std::optional<nlohmann::json> atlas;
-  if (request.layout && !request.params.sheet->animate) atlas = atlas_of(request, poses.front());
+  if (request.layout && !request.params.sheet->animate) atlas = atlas_of(request, *plans.front().scene);
 
-  rendered.price = price_render(request);
+  rendered.price = price_of(plans);
   check_render_cost(request, rendered.price, services.limits);
   rendered.long_lane = services.renderer.is_long(rendered.price.total.units());
   const auto submitted = Clock::now();
   // Past the deadline the render thread skips the job instead of drawing
   // an image nobody waits for any more.
-  const auto deadline = submitted + services.deadline;
+  const render::Schedule schedule{.client = client,
+                                  .cost = rendered.price.total.units(),
+                                  .pacing = pacing_of(rendered.price),
+                                  .deadline = submitted + services.deadline};
   Assembly assembly(request.params, request.layout);
-  queue_frames(services.renderer, frame_jobs(request, poses, client, rendered.price, deadline), deadline,
-               services.deadline, assembly);
+  queue_frames(services.renderer, frame_jobs(request, poses, std::move(plans), schedule), services.deadline, assembly);
   const render::RenderOutput out = assembly.finish();
   rendered.render_ms = render_thread_ms(out);
   rendered.queue_ms = std::max(0.0, ms_since(submitted) - rendered.render_ms);

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "pipeline/frames.h"
-#include "render/pass_plan.h"
+#include "pipeline/plan.h"
 
 namespace toond::pipeline {
 namespace {
@@ -14,27 +14,14 @@ namespace {
 using render::RenderCost;
 using render::RenderParams;
 
-// Only what changes the passes drawn: a hard-edged model adds the edge
-// passes for its creases.
-render::ModelTraits traits_of(const Request& request) {
-  render::ModelTraits traits;
-  for (const render::JobObject& o : request.objects) {
-    traits.hard_edged |= o.model->mesh.creases.hard_edged(request.params.outline.crease_angle_deg);
-  }
-  return traits;
-}
-
+// What the request would cost drawn with `params` instead of its own
+// (the same models, as imported: a pose changes no price).
 RenderPrice price(const Request& request, const RenderParams& params) {
-  std::vector<const scene::Mesh*> meshes;
-  for (const render::JobObject& o : request.objects) meshes.push_back(&o.model->mesh);
-  // A scene's objects are turned by their transforms: priced from their
-  // densest direction, not the camera's.
-  const render::ViewKnown view = params.objects.empty() ? render::ViewKnown::Camera : render::ViewKnown::Any;
-  const render::ModelTraits traits = traits_of(request);
+  const std::vector<render::PlannedObject> objects = planned_objects(request);
   RenderPrice p;
   p.frames = 0;
   for (const RenderParams& frame : drawn_frames(params)) {
-    p.total += render::predict_frame_cost(frame, render::plan_passes(frame, traits), meshes, view);
+    p.total += render::predict_cost(frame, objects);
     ++p.frames;
   }
   return p;
@@ -100,6 +87,13 @@ RenderCost RenderPrice::per_frame() const {
   return one;
 }
 
+RenderPrice price_of(const std::vector<render::FramePlan>& plans) {
+  RenderPrice p;
+  p.frames = plans.size();
+  for (const render::FramePlan& plan : plans) p.total += plan.cost;
+  return p;
+}
+
 RenderPrice price_render(const Request& request) { return price(request, request.params); }
 
 void check_render_cost(const Request& request, const RenderPrice& p, const RenderLimits& limits) {
@@ -131,6 +125,10 @@ std::size_t paced_chunk_triangles(const RenderCost& frame) {
 std::size_t paced_band_texels(const RenderCost& frame) {
   if (frame.units() < kPacedFrameCost || frame.triangles <= 0) return 0;
   return static_cast<std::size_t>(kPacedChunkCost * 1e6 / render::kEdgeTexelSamples);
+}
+
+render::Pacing pacing_of(const RenderPrice& price) {
+  return {paced_chunk_triangles(price.per_frame()), paced_band_texels(price.per_frame())};
 }
 
 }  // namespace toond::pipeline

@@ -5,11 +5,14 @@
 // bring it under; under it, the price picks the queue lane and whether the
 // draws are paced (render/draw_pacing.h).
 #include <cstddef>
+#include <vector>
 
 #include "limit_error.h"
 #include "pipeline/render_limits.h"
 #include "pipeline/request.h"
+#include "render/frame_plan.h"
 #include "render/render_cost.h"
+#include "render/schedule.h"
 
 namespace toond::pipeline {
 
@@ -19,7 +22,11 @@ struct RenderPrice {
   render::RenderCost per_frame() const;
 };
 
-// Prices `request` (its parameters and its objects' meshes).
+// The price of frames planned (plan.h): the sum of their plans' costs.
+RenderPrice price_of(const std::vector<render::FramePlan>& plans);
+
+// Prices `request` from its parameters and its objects' meshes, as the
+// plans of its frames would: for what-ifs, which are not framed.
 RenderPrice price_render(const Request& request);
 
 // A request refused for its price: the daemon counts these (/metrics).
@@ -45,5 +52,7 @@ std::size_t paced_chunk_triangles(const render::RenderCost& frame);
 // Texels of the edge pass per band for a frame of this price, a chunk's
 // worth (render/draw_pacing.h); 0: not paced.
 std::size_t paced_band_texels(const render::RenderCost& frame);
+// Both, for every frame of a request of this price.
+render::Pacing pacing_of(const RenderPrice& price);
 
 }  // namespace toond::pipeline

@@ -31,12 +31,11 @@ std::vector<std::size_t> render_order(const std::vector<render::RenderJob>& fram
 }  // namespace
 
 void queue_frames(render::RenderService& renderer, std::vector<render::RenderJob> frames,
-                  std::chrono::steady_clock::time_point deadline, std::chrono::milliseconds limit,
-                  Assembly& assembly) {
+                  std::chrono::milliseconds limit, Assembly& assembly) {
   const std::vector<std::size_t> order = render_order(frames);
   std::vector<render::RenderJob> queued;
   for (const std::size_t index : order) queued.push_back(std::move(frames[index]));
-  const auto waited = wait_limit(queued.front(), deadline);
+  const auto waited = wait_limit(queued.front());
   std::vector<std::future<render::RenderOutput>> futures = renderer.submit_all(std::move(queued));
   for (std::size_t i = 0; i < futures.size(); ++i) assembly.add(order[i], await_render(futures[i], waited, limit));
 }

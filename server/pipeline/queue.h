@@ -13,9 +13,9 @@ namespace toond::pipeline {
 // `frames` in layout order; they are queued so that frames sharing a pose
 // (an animated sheet's directions of one time) follow each other, and the
 // GPU copy poses once for all of them (GpuModel::apply_pose). Each is
-// waited for until `deadline` (render_wait.h); `limit` is --render-timeout.
+// waited for until its schedule's deadline (render_wait.h); `limit` is
+// --render-timeout.
 void queue_frames(render::RenderService& renderer, std::vector<render::RenderJob> frames,
-                  std::chrono::steady_clock::time_point deadline, std::chrono::milliseconds limit,
-                  Assembly& assembly);
+                  std::chrono::milliseconds limit, Assembly& assembly);
 
 }  // namespace toond::pipeline

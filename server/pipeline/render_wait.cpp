@@ -6,9 +6,9 @@
 
 namespace toond::pipeline {
 
-std::chrono::steady_clock::time_point wait_limit(const render::RenderJob& job,
-                                                 std::chrono::steady_clock::time_point deadline) {
-  return job.paced_chunk_triangles > 0 ? deadline + kAbortGrace : deadline;
+std::chrono::steady_clock::time_point wait_limit(const render::RenderJob& job) {
+  const std::chrono::steady_clock::time_point deadline = *job.schedule.deadline;
+  return job.schedule.pacing.paced() ? deadline + kAbortGrace : deadline;
 }
 
 render::RenderOutput await_render(std::future<render::RenderOutput>& future,
