@@ -10,7 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "image/parallel_tasks.h"
+#include "parallel/parallel_tasks.h"
 #include "scene/clip_sampling.h"
 #include "scene/extreme_points.h"
 #include "scene/mesh_processing.h"
@@ -184,7 +184,7 @@ PosedVertex pose_vertex(const Mesh& rest, const Rig& rig, const PoseSums& sums, 
 
 void for_each_vertex_run(std::size_t count, const std::function<void(std::size_t first, std::size_t end)>& pose) {
   const int runs = static_cast<int>((count + kPoseRun - 1) / kPoseRun);
-  image::run_tasks(runs, image::hardware_threads(), [&](int run) {
+  parallel::run_tasks(runs, parallel::hardware_threads(), [&](int run) {
     const std::size_t first = static_cast<std::size_t>(run) * kPoseRun;
     pose(first, std::min(count, first + kPoseRun));
   });
@@ -369,10 +369,10 @@ ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip_index,
     float step = 0;
   };
   std::vector<Sampled> sampled(times.size());
-  const int threads = image::hardware_threads();
+  const int threads = parallel::hardware_threads();
   const std::size_t per_run =
       (times.size() + static_cast<std::size_t>(threads) - 1) / static_cast<std::size_t>(threads);
-  image::run_tasks(threads, threads, [&](int run) {
+  parallel::run_tasks(threads, threads, [&](int run) {
     const std::size_t first = static_cast<std::size_t>(run) * per_run;
     const std::size_t end = std::min(times.size(), first + per_run);
     std::vector<glm::vec3> previous;

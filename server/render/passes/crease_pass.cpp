@@ -29,14 +29,14 @@ std::size_t draw_crease_edges_of_objects(PassContext& context, gpu::Program& pro
   const double angle = frame.params.outline.crease_angle_deg;
   std::size_t drawn = 0;
   for (std::size_t i = 0; i < frame.objects.size(); ++i) {
-    const GpuModel& model = frame.objects[i].model;
+    const GpuModel& model = context.model(i);
     if (model.creased_edges(frame.lod_of(i), angle) == 0) continue;
     context.blocks.bind_object(i);
     model.bind();
     program.set("u_culled_winding", culled_winding(frame, i));
     const std::optional<MeshViewer> viewer =
         frame.main_faces[i].unless_caps_show ? std::nullopt : turned_away_runs_viewer(context, i);
-    drawn += model.draw_creases(frame.lod_of(i), angle, viewer);
+    drawn += model.draw_creases(frame.lod_of(i), angle, viewer, context.pacing);
   }
   return drawn;
 }
@@ -54,7 +54,7 @@ void lay_line_coverage_over(PassContext& context, GLuint coverage) {
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  draw_full_screen(frame.draw_width, frame.draw_height, 1.0, [&] { context.resources.draw_fullscreen_triangle(); });
+  draw_full_screen(context.pacing, frame.draw_width, frame.draw_height, 1.0, [&] { context.resources.draw_fullscreen_triangle(); });
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }

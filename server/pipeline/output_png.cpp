@@ -1,4 +1,4 @@
-#include "http/output_png.h"
+#include "pipeline/output_png.h"
 
 #include <cstdio>
 
@@ -8,30 +8,34 @@
 #include "render/pass_plan.h"
 #include "request_error.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 namespace {
 
-bool ids_by_object(const render::RenderJob& job) { return render::id_source(job.params) == render::IdSource::Object; }
+using Objects = std::vector<render::JobObject>;
 
-int id_count(const render::RenderJob& job) {
-  if (ids_by_object(job)) return static_cast<int>(job.objects.size());
-  return static_cast<int>(job.objects.front().model->materials.size());
+bool ids_by_object(const render::RenderParams& params) {
+  return render::id_source(params) == render::IdSource::Object;
+}
+
+int id_count(const render::RenderParams& params, const Objects& objects) {
+  if (ids_by_object(params)) return static_cast<int>(objects.size());
+  return static_cast<int>(objects.front().model->materials.size());
 }
 
 // What each index of an id layer stands for, in index order from 1.
-nlohmann::json id_mapping(const render::RenderJob& job) {
+nlohmann::json id_mapping(const render::RenderParams& params, const Objects& objects) {
   nlohmann::json ids = nlohmann::json::array();
-  if (ids_by_object(job)) {
-    for (std::size_t i = 0; i < job.objects.size(); ++i) {
-      ids.push_back({{"id", i + 1}, {"object", i}, {"model", job.params.objects[i].model}});
+  if (ids_by_object(params)) {
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      ids.push_back({{"id", i + 1}, {"object", i}, {"model", params.objects[i].model}});
     }
   } else {
-    const auto& materials = job.objects.front().model->materials;
+    const auto& materials = objects.front().model->materials;
     for (std::size_t m = 0; m < materials.size(); ++m) {
       ids.push_back({{"id", m + 1}, {"material", materials[m].name}});
     }
   }
-  return {{"background", 0}, {"by", ids_by_object(job) ? "object" : "material"}, {"ids", ids}};
+  return {{"background", 0}, {"by", ids_by_object(params) ? "object" : "material"}, {"ids", ids}};
 }
 
 std::string depth_range_header(const image::DepthRange& range) {
@@ -47,19 +51,19 @@ nlohmann::json depth_description(const image::DepthRange& range) {
 
 }  // namespace
 
-OutputDescription describe_output(const render::RenderJob& job) {
+OutputDescription describe_output(const render::RenderParams& params, const Objects& objects) {
   OutputDescription description;
-  description.output = job.params.output;
-  if (job.params.output != render::Output::Id || job.objects.empty()) return description;
-  description.id_count = id_count(job);
+  description.output = params.output;
+  if (params.output != render::Output::Id || objects.empty()) return description;
+  description.id_count = id_count(params, objects);
   if (description.id_count > image::kMaxLayerIds) {
     throw RequestError(422, "too_many_ids",
                        "/output: an id layer numbers at most 255 " +
-                           std::string(ids_by_object(job) ? "objects" : "materials") + "; this one has " +
+                           std::string(ids_by_object(params) ? "objects" : "materials") + "; this one has " +
                            std::to_string(description.id_count),
                        "/output");
   }
-  description.id_mapping = id_mapping(job).dump();
+  description.id_mapping = id_mapping(params, objects).dump();
   return description;
 }
 
@@ -84,4 +88,4 @@ OutputPng encode_output(const render::RenderOutput& out, const OutputDescription
   return {};
 }
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

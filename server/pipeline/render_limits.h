@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace toond::http {
+namespace toond::pipeline {
 
 struct RenderLimits {
   // width × height of the image answered.
@@ -22,4 +22,4 @@ struct RenderLimits {
   double max_render_cost = 5000;
 };
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

@@ -1,4 +1,4 @@
-#include "http/render_budget.h"
+#include "pipeline/budget.h"
 
 #include <string>
 
@@ -7,7 +7,7 @@
 #include "render/pixel_art_frame.h"
 #include "render/sheet_layout.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 
 using render::layout_sheet;
 using render::SheetLayout;
@@ -106,4 +106,4 @@ void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
   check_drawn_render(drawn, limits);
 }
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

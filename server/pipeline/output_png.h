@@ -10,7 +10,7 @@
 #include "image/png_codec.h"
 #include "render/render_service.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 
 // What encoding a render's image needs besides its pixels, worked out from
 // the request before it is queued: the kind of output, and for an id layer
@@ -23,7 +23,7 @@ struct OutputDescription {
 
 // Throws a 422 naming `output` when an id layer would number more than 255
 // objects or materials (one palette index each).
-OutputDescription describe_output(const render::RenderJob& job);
+OutputDescription describe_output(const render::RenderParams& params, const std::vector<render::JobObject>& objects);
 
 struct OutputPng {
   std::string png;
@@ -34,4 +34,4 @@ struct OutputPng {
 OutputPng encode_output(const render::RenderOutput& out, const OutputDescription& output,
                         const image::PngOptions& options);
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

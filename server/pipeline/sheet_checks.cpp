@@ -1,11 +1,11 @@
-#include "http/sheet_checks.h"
+#include "pipeline/sheet_checks.h"
 
 #include <string>
 
 #include "render/pass_plan.h"
 #include "request_error.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 
 void check_sheet_params(const render::RenderParams& params) {
   if (!params.sheet) return;
@@ -36,4 +36,4 @@ void check_sheet_params(const render::RenderParams& params) {
   }
 }
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

@@ -5,12 +5,16 @@
 // bring it under; under it, the price picks the queue lane and whether the
 // draws are paced (render/draw_pacing.h).
 #include <cstddef>
+#include <vector>
 
-#include "http/render_limits.h"
+#include "limit_error.h"
+#include "pipeline/render_limits.h"
+#include "pipeline/request.h"
+#include "render/frame_plan.h"
 #include "render/render_cost.h"
-#include "render/render_service.h"
+#include "render/schedule.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 
 struct RenderPrice {
   render::RenderCost total;  // every frame of the request
@@ -18,13 +22,23 @@ struct RenderPrice {
   render::RenderCost per_frame() const;
 };
 
-// Prices `job` (its parameters and its objects' meshes).
-RenderPrice price_render(const render::RenderJob& job);
+// The price of frames planned (plan.h): the sum of their plans' costs.
+RenderPrice price_of(const std::vector<render::FramePlan>& plans);
 
-// Throws LimitError (422, limit_exceeded, --max-render-cost) when the price
+// Prices `request` from its parameters and its objects' meshes, as the
+// plans of its frames would: for what-ifs, which are not framed.
+RenderPrice price_render(const Request& request);
+
+// A request refused for its price: the daemon counts these (/metrics).
+class CostRefused : public LimitError {
+ public:
+  using LimitError::LimitError;
+};
+
+// Throws CostRefused (422, limit_exceeded, --max-render-cost) when the price
 // is over the limit, naming the figure, the limit, and the changes to the
 // request (size, msaa, supersample, outline, frames) that would fit.
-void check_render_cost(const render::RenderJob& job, const RenderPrice& price, const RenderLimits& limits);
+void check_render_cost(const Request& request, const RenderPrice& price, const RenderLimits& limits);
 
 // Frames priced at this many Msamples or more (about 0.7 s of llvmpipe) are
 // drawn in chunks of about kPacedChunkCost each (about 45 ms), the deadline
@@ -39,5 +53,7 @@ std::size_t paced_chunk_triangles(const render::RenderCost& frame);
 // Texels of the edge pass per band for a frame of this price, a chunk's
 // worth (render/draw_pacing.h); 0: not paced.
 std::size_t paced_band_texels(const render::RenderCost& frame);
+// Both, for every frame of a request of this price.
+render::Pacing pacing_of(const RenderPrice& price);
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

@@ -1,14 +1,14 @@
-#include "http/render_wait.h"
+#include "pipeline/render_wait.h"
 
 #include <string>
 
 #include "request_error.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 
-std::chrono::steady_clock::time_point wait_limit(const render::RenderJob& job,
-                                                 std::chrono::steady_clock::time_point deadline) {
-  return job.paced_chunk_triangles > 0 ? deadline + kAbortGrace : deadline;
+std::chrono::steady_clock::time_point wait_limit(const render::RenderJob& job) {
+  const std::chrono::steady_clock::time_point deadline = *job.schedule.deadline;
+  return job.schedule.pacing.paced() ? deadline + kAbortGrace : deadline;
 }
 
 render::RenderOutput await_render(std::future<render::RenderOutput>& future,
@@ -21,4 +21,4 @@ render::RenderOutput await_render(std::future<render::RenderOutput>& future,
   return future.get();
 }
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

@@ -4,7 +4,7 @@
 // laid out or rendered.
 #include "render/render_params.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 
 // Throws RequestError (400 invalid_parameter) when pixel art's scale does
 // not divide width and height (at /sheet/pixel_art/scale: a tile must be
@@ -13,4 +13,4 @@ namespace toond::http {
 // id; at /sheet/pixel_art or /sheet/animate).
 void check_sheet_params(const render::RenderParams& params);
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

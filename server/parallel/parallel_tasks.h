@@ -1,10 +1,11 @@
 #pragma once
-// Splitting one image's work over the cores. Starting a thread costs tens of
-// microseconds, a noticeable share of a one-millisecond encode, so helper
-// threads are started once per process and woken for each job.
+// Splitting one job's work over the cores (an image's encoding, a pose's
+// vertices). Starting a thread costs tens of microseconds, a noticeable
+// share of a one-millisecond encode, so helper threads are started once per
+// process and woken for each job.
 #include <functional>
 
-namespace toond::image {
+namespace toond::parallel {
 
 // Runs task(0) ... task(count - 1) and returns once all have finished. The
 // calling thread runs tasks itself; at most `threads - 1` helpers join it,
@@ -18,4 +19,4 @@ void run_tasks(int count, int threads, const std::function<void(int)>& task);
 // The hardware's thread count, at least 1.
 int hardware_threads();
 
-}  // namespace toond::image
+}  // namespace toond::parallel

@@ -1,10 +1,10 @@
 #pragma once
-// Admission of a render request against the daemon's --max-* limits:
-// an HTTP concern, so its errors may name the flags.
-#include "http/render_limits.h"
+// Admission of a render request's size against the daemon's --max-*
+// limits, before anything is posed or priced; its errors name the flags.
+#include "pipeline/render_limits.h"
 #include "render/render_params.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 
 using render::RenderParams;
 
@@ -18,4 +18,4 @@ inline constexpr int kMaxDrawnSide = 16384;
 // and all its frames' samples count too.
 void check_render_budget(const RenderParams& params, const RenderLimits& limits = {});
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

@@ -1,4 +1,4 @@
-#include "image/parallel_tasks.h"
+#include "parallel/parallel_tasks.h"
 
 #include <algorithm>
 #include <atomic>
@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-namespace toond::image {
+namespace toond::parallel {
 namespace {
 
 struct Job {
@@ -143,4 +143,4 @@ void run_tasks(int count, int threads, const std::function<void(int)>& task) {
   if (job->error) std::rethrow_exception(job->error);
 }
 
-}  // namespace toond::image
+}  // namespace toond::parallel

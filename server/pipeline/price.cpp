@@ -1,61 +1,27 @@
-#include "http/render_price.h"
+#include "pipeline/price.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
 
-#include "limit_error.h"
-#include "render/pass_plan.h"
-#include "render/pixel_art_frame.h"
-#include "render/sheet_layout.h"
+#include "pipeline/frames.h"
+#include "pipeline/plan.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 namespace {
 
 using render::RenderCost;
 using render::RenderParams;
 
-// The parameters each frame is drawn with, as the sheet renderer draws
-// them (http/sheet_render.cpp): its yaw and pitch, a pixel-art frame at its
-// reduced size, one sample a pixel.
-std::vector<RenderParams> drawn_frames(const RenderParams& params) {
-  if (!params.sheet) return {params};
-  const render::SheetLayout layout = render::layout_sheet(*params.sheet, params.width, params.height);
-  std::vector<RenderParams> frames;
-  for (const render::SheetFrame& frame : layout.frames) {
-    RenderParams one = render::frame_params(params, layout, frame);
-    if (params.sheet->pixel_art) one = render::pixel_art_frame_params(std::move(one), *params.sheet->pixel_art);
-    frames.push_back(std::move(one));
-  }
-  return frames;
-}
-
-// Only what changes the passes drawn: a hard-edged model adds crease lines,
-// drawn along its crease edges (or found in screen space on masked
-// materials).
-render::ModelTraits traits_of(const render::RenderJob& job) {
-  render::ModelTraits traits;
-  const double crease_angle = job.params.outline.crease_angle_deg;
-  for (const render::JobObject& o : job.objects) {
-    traits.hard_edged |= o.model->mesh.creases.hard_edged(crease_angle);
-    traits.has_crease_edges |= o.model->mesh.crease_edges.creased_at(crease_angle) > 0;
-    for (const scene::Material& m : o.model->materials) traits.has_masked_materials |= m.alpha_cutoff >= 0.0f;
-  }
-  return traits;
-}
-
-RenderPrice price(const render::RenderJob& job, const RenderParams& params) {
-  std::vector<const scene::Mesh*> meshes;
-  for (const render::JobObject& o : job.objects) meshes.push_back(&o.model->mesh);
-  // A scene's objects are turned by their transforms: priced from their
-  // densest direction, not the camera's.
-  const render::ViewKnown view = params.objects.empty() ? render::ViewKnown::Camera : render::ViewKnown::Any;
-  const render::ModelTraits traits = traits_of(job);
+// What the request would cost drawn with `params` instead of its own
+// (the same models, as imported: a pose changes no price).
+RenderPrice price(const Request& request, const RenderParams& params) {
+  const std::vector<render::PlannedObject> objects = planned_objects(request);
   RenderPrice p;
   p.frames = 0;
   for (const RenderParams& frame : drawn_frames(params)) {
-    p.total += render::predict_frame_cost(frame, render::plan_passes(frame, traits), meshes, view);
+    p.total += render::predict_cost(frame, objects);
     ++p.frames;
   }
   return p;
@@ -70,10 +36,10 @@ std::string fmt(double v) {
 
 // The changes to the request, each alone, that would bring it under the
 // limit; the size is halved (aspect kept) until it fits or reaches 16.
-std::vector<std::string> ways_under(const render::RenderJob& job, double limit) {
+std::vector<std::string> ways_under(const Request& request, double limit) {
   std::vector<std::string> ways;
-  const RenderParams& p = job.params;
-  const auto fits = [&](const RenderParams& changed) { return price(job, changed).total.units() <= limit; };
+  const RenderParams& p = request.params;
+  const auto fits = [&](const RenderParams& changed) { return price(request, changed).total.units() <= limit; };
   RenderParams smaller = p;
   while (smaller.width > 16 && smaller.height > 16) {
     smaller.width = std::max(16, smaller.width / 2);
@@ -101,9 +67,9 @@ std::vector<std::string> ways_under(const render::RenderJob& job, double limit) 
   return ways;
 }
 
-double deepest_layers(const render::RenderJob& job) {
+double deepest_layers(const Request& request) {
   double layers = 0;
-  for (const render::JobObject& o : job.objects) layers = std::max(layers, o.model->mesh.cost.layers());
+  for (const render::JobObject& o : request.objects) layers = std::max(layers, o.model->mesh.cost.layers());
   return layers;
 }
 
@@ -122,16 +88,23 @@ RenderCost RenderPrice::per_frame() const {
   return one;
 }
 
-RenderPrice price_render(const render::RenderJob& job) { return price(job, job.params); }
+RenderPrice price_of(const std::vector<render::FramePlan>& plans) {
+  RenderPrice p;
+  p.frames = plans.size();
+  for (const render::FramePlan& plan : plans) p.total += plan.cost;
+  return p;
+}
 
-void check_render_cost(const render::RenderJob& job, const RenderPrice& p, const RenderLimits& limits) {
+RenderPrice price_render(const Request& request) { return price(request, request.params); }
+
+void check_render_cost(const Request& request, const RenderPrice& p, const RenderLimits& limits) {
   const double limit = limits.max_render_cost;
   if (limit <= 0 || p.total.units() <= limit) return;
   std::string message = "the render is predicted to cost " + p.total.describe();
   if (p.frames > 1) message += " for its " + std::to_string(p.frames) + " frames";
   message += ", more than the limit --max-render-cost = " + fmt(limit) + " Msamples; the model's surface lies up to " +
-             fmt(deepest_layers(job)) + " layers deep";
-  const std::vector<std::string> ways = ways_under(job, limit);
+             fmt(deepest_layers(request)) + " layers deep";
+  const std::vector<std::string> ways = ways_under(request, limit);
   if (ways.empty()) {
     message += "; no single change of size, msaa, supersample or outline brings it under: the model itself is too "
                "costly to draw (upload it with fewer overlapping faces)";
@@ -139,7 +112,7 @@ void check_render_cost(const render::RenderJob& job, const RenderPrice& p, const
     message += "; any of these would bring it under: ";
     for (std::size_t i = 0; i < ways.size(); ++i) message += (i ? ", " : "") + ways[i];
   }
-  throw LimitError(422, "--max-render-cost", message, job.params.sheet ? "/sheet" : "/width");
+  throw CostRefused(422, "--max-render-cost", message, request.params.sheet ? "/sheet" : "/width");
 }
 
 std::size_t paced_chunk_triangles(const RenderCost& frame) {
@@ -156,4 +129,8 @@ std::size_t paced_band_texels(const RenderCost& frame) {
   return static_cast<std::size_t>(kPacedChunkCost * 1e6 / render::kEdgeTexelSamples);
 }
 
-}  // namespace toond::http
+render::Pacing pacing_of(const RenderPrice& price) {
+  return {paced_chunk_triangles(price.per_frame()), paced_band_texels(price.per_frame())};
+}
+
+}  // namespace toond::pipeline
