@@ -30,6 +30,13 @@ enum class HiddenFaces {
 HiddenFaces hidden_faces(scene::Enclosure enclosure, const glm::dmat4& model, const glm::dmat4& view_projection,
                          const scene::Bounds& bounds, double reach = 0.0);
 
+// Which faces of an object a pass skips.
+struct FaceSkip {
+  HiddenFaces hidden = HiddenFaces::None;
+  // The object has holes whose caps may face the camera: the skipped side
+  // is drawn after all wherever one of them shows.
+  bool unless_caps_show = false;
+};
 
 // Where the camera is and which way it looks, in scene coordinates.
 struct Viewer {

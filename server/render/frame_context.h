@@ -13,7 +13,6 @@
 #include "render/camera.h"
 #include "render/face_culling.h"
 #include "render/frame_plan.h"
-#include "render/object_draw.h"
 #include "render/pass_plan.h"
 #include "render/render_params.h"
 #include "render/shadow_fit.h"

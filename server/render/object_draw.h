@@ -13,14 +13,6 @@ namespace toond::render {
 struct PassContext;
 class GpuModel;
 
-// Which faces of an object a pass skips.
-struct FaceSkip {
-  HiddenFaces hidden = HiddenFaces::None;
-  // The object has holes whose caps may face the camera: the skipped side
-  // is drawn after all wherever one of them shows.
-  bool unless_caps_show = false;
-};
-
 // Enables culling of `faces` (None: culling off).
 void cull(HiddenFaces faces);
 

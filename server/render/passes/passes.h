@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "render/facing_runs.h"
+#include "render/object_draw.h"
 #include "render/pass_plan.h"
 #include "render/passes/pass_context.h"
 
