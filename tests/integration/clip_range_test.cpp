@@ -401,5 +401,37 @@ TEST_F(ClipRange, BadRangesAreRefusedAtTheirField) {
       << "the first entry, without a range, is refused first, at its clip";
 }
 
+// The CLI as users type it: a range as two numbers, into a sheet's clip.
+TEST_F(ClipRange, TheCliTakesARangeInSecondsOrInFrames) {
+  const RangeModel& b3d = minetest();
+  ASSERT_FALSE(b3d.id.empty());
+  const auto dir = make_temp_dir("toon-range");
+  const json range = walk_range(60.0);
+  const json request = sheet_request(b3d.id, {{"clip", "anim"}, {"frames", 2}, {"range", range}, {"loop", false}});
+  const image::Image expected = sheet_of(request);
+  const auto render = [&](const std::string& range_text, const std::string& png) {
+    return run_process({TOON_BINARY, "render", "--model", b3d.id, "--set", "width=96", "--set", "height=96",
+                        "--set", "background=[0,0,0,0]", "--set", "sheet.frames=4", "--set", "sheet.yaw_start=0",
+                        "--set", "sheet.animation.clip=anim", "--set", "sheet.animation.frames=2", "--set",
+                        "sheet.animation.loop=false", "--set", "sheet.animation.range=" + range_text, "-o",
+                        (dir / png).string(), "--server", daemon().url()});
+  };
+  char seconds[64];
+  std::snprintf(seconds, sizeof seconds, "%.17g,%.17g", range[0].get<double>(), range[1].get<double>());
+  const auto in_seconds = render(seconds, "seconds.png");
+  ASSERT_EQ(in_seconds.status, 0) << in_seconds.err;
+  EXPECT_EQ(image::decode_png(read_file(dir / "seconds.png")).rgba, expected.rgba);
+  const auto in_frames = render("168f,187f", "frames.png");
+  ASSERT_EQ(in_frames.status, 0) << in_frames.err;
+  EXPECT_EQ(image::decode_png(read_file(dir / "frames.png")).rgba, expected.rgba);
+  // glTF keys by seconds: no frames to count.
+  ASSERT_FALSE(blender_twin().id.empty());
+  const auto gltf = run_process({TOON_BINARY, "render", "--model", blender_twin().id, "--set",
+                                 "animation.clip=0", "--set", "animation.range=168f,187f", "-o",
+                                 (dir / "gltf.png").string(), "--server", daemon().url()});
+  EXPECT_EQ(gltf.status, 2);
+  EXPECT_NE(gltf.err.find("frame rate"), std::string::npos) << gltf.err;
+}
+
 }  // namespace
 }  // namespace toond::test
