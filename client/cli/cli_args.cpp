@@ -287,7 +287,8 @@ Options parse_args(const std::vector<std::string>& args,
   return o;
 }
 
-nlohmann::json build_render_params(const Options& options, const proto::ParamSchema& schema) {
+nlohmann::json build_render_params(const Options& options, const proto::ParamSchema& schema,
+                                   const ClipsOfModel& clips_of) {
   json params = json::object();
   if (!options.params_file.empty()) {
     const std::string where = options.params_file == "-" ? "standard input" : options.params_file;
@@ -301,23 +302,35 @@ nlohmann::json build_render_params(const Options& options, const proto::ParamSch
     }
   }
 
-  for (const auto& [key, text] : options.sets) {
+  const auto set = [&](const std::string& key, const std::string& text, const std::string& value) {
     try {
-      schema.set_from_text(params, key, text);
+      schema.set_from_text(params, key, value);
     } catch (const RequestError& e) {
       // The schema's message may already start with "key=value: ".
       const std::string message = e.what();
-      const std::string assignment = key + "=" + text;
-      throw UsageError("--set " +
-                       (message.rfind(assignment, 0) == 0 ? message : assignment + ": " + message));
+      const std::string assignment = key + "=" + value;
+      throw UsageError("--set " + key + "=" + text + ": " +
+                       (message.rfind(assignment, 0) == 0 ? message.substr(assignment.size() + 2) : message));
     } catch (const json::exception& e) {
       // A --set that walks into a scalar the params file already holds
       // ("--set outline.width.x=1" after "outline": 3).
       throw UsageError("--set " + key + "=" + text + ": " + plain_json_error(e.what()));
     }
+  };
+  // Ranges in frames wait for the clip and the model they need.
+  std::vector<std::pair<std::string, std::string>> in_frames;
+  for (const auto& [key, text] : options.sets) {
+    if (frame_range_of(key, text)) {
+      in_frames.emplace_back(key, text);
+    } else {
+      set(key, text, text);
+    }
   }
 
   if (!options.model_id.empty()) params["model"] = options.model_id;
+  for (const auto& [key, text] : in_frames) {
+    set(key, text, range_in_seconds(params, key, text, *frame_range_of(key, text), clips_of));
+  }
   if (!options.obj_path.empty() && params.contains("model")) {
     throw UsageError("the parameters name model " + params["model"].dump() + " but " +
                      options.obj_path + " is uploaded with the request; drop one");

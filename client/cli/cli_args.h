@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "frame_ranges.h"
+
 namespace toond::proto {
 class ParamSchema;
 }
@@ -66,9 +68,12 @@ Options parse_args(const std::vector<std::string>& args,
 std::optional<std::string> server_from_environment();
 
 // The render request the options describe: the --params file, then each
-// --set in order, then --model; validated against the schema. Throws
+// --set in order, then --model, then each clip range given in frames
+// (168f,187f: frame_ranges.h), turned into seconds with the frame rates
+// `clips_of` reads from the daemon; validated against the schema. Throws
 // UsageError naming the file or key at fault.
-nlohmann::json build_render_params(const Options& options, const proto::ParamSchema& schema);
+nlohmann::json build_render_params(const Options& options, const proto::ParamSchema& schema,
+                                   const ClipsOfModel& clips_of = {});
 
 // Usage text for one verb, or the overview for Verb::none.
 std::string usage_text(Verb verb);

@@ -170,7 +170,8 @@ materials, textures, files, the import's warnings and, for a model that
 moves, its animation clips (name, duration in seconds, channels, and frame_rate
 where the format keys by frame) with its
 joint and morph-target counts. A clip is rendered with
---set animation.clip=NAME --set animation.time=SECONDS.
+--set animation.clip=NAME --set animation.time=SECONDS, a part of it
+with --set animation.range=START,END (see toon render --help).
 )"},
     {Verb::render, "render",
      "[PATH.obj|PATH.m | --model ID] [--params FILE.json]\n[--set key.sub=value ...] -o OUT.png|OUT.webp",
@@ -179,6 +180,10 @@ joint and morph-target counts. A clip is rendered with
 for sheet.animate. With PATH.obj (or a .m, .gltf or .glb model) the model and
 its MTL files and textures are uploaded with the request; with --model a stored model is used;
 with neither the daemon's built-in demo model renders.
+A clip's range (animation.range, sheet.animation.range) is two numbers,
+seconds on the file's time base (--set sheet.animation.range=5.6,6.23),
+or frames where the clip has a frame rate (toon info lists it): with
+--model ID, --set sheet.animation.range=168f,187f is frames 168 to 187.
 )"},
     {Verb::gallery, "gallery", "[--models DIR] [--all | --only NAME[,NAME...]]\n[--size N] -o OUTDIR",
      "render every preset and effect on a folder of models into PNGs,\na contact sheet and an HTML index",

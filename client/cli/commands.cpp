@@ -150,9 +150,27 @@ std::string render_route(const json& params) {
   return id_shaped ? "/models/" + id + "/render" : "/render";
 }
 
+// The clips of a stored model, as the daemon lists them: what turns a
+// range given in frames into seconds.
+json clips_of_model(const Options& options, const std::string& model_id) {
+  Connection conn(options.server);
+  const httplib::Result result = conn.get("/models/" + model_id);
+  if (!result) throw std::runtime_error(conn.describe_failure(result));
+  const json body = json::parse(result->body, nullptr, false);
+  if (result->status != 200) {
+    const json* message = body.is_object() && body.contains("error") ? &body["error"]["message"] : nullptr;
+    throw UsageError("model " + model_id + ": " +
+                     (message && message->is_string() ? message->get<std::string>() : result->body));
+  }
+  return body.is_object() && body.contains("animation") ? body["animation"].value("clips", json::array())
+                                                         : json::array();
+}
+
 int render(const Options& options) {
-  // Everything that can be checked locally is, before a byte is sent.
-  const json params = build_render_params(options, proto::ParamSchema::render_params());
+  // Everything that can be checked locally is, before a byte is sent (a
+  // range in frames asks for the model's clips first).
+  const json params = build_render_params(options, proto::ParamSchema::render_params(),
+                                          [&](const std::string& id) { return clips_of_model(options, id); });
   BundleScan scan;
   if (!options.obj_path.empty()) {
     scan = scan_obj_bundle(options.obj_path);

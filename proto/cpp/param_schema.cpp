@@ -191,7 +191,20 @@ void check_known_fields(const json& schema, const json& value, std::vector<std::
   }
 }
 
-void fill_defaults(const json& schema, json& value) {
+// The alternative of a validated value's field that describes it: the one
+// of its kind (an object or a list: sheet.animation is either), or the
+// field's own schema.
+const json& schema_of_kind(const json& schema, const json& value) {
+  for (const json* alternative : alternatives(schema)) {
+    const auto type = alternative->find("type");
+    if (type == alternative->end() || !type->is_string()) continue;
+    if ((value.is_object() && *type == "object") || (value.is_array() && *type == "array")) return *alternative;
+  }
+  return schema;
+}
+
+void fill_defaults(const json& field_schema, json& value) {
+  const json& schema = schema_of_kind(field_schema, value);
   if (value.is_object()) {
     if (auto props = schema.find("properties"); props != schema.end()) {
       for (const auto& [key, sub] : props->items()) {

@@ -49,10 +49,19 @@ void read_clip(const json& clip, std::string& name, int& index) {
   }
 }
 
+// A `range` field, [start, end] in seconds; the pipeline holds it to the
+// clip (pipeline/clips.h).
+std::optional<scene::ClipRange> range_of(const json& a) {
+  if (!a.contains("range")) return std::nullopt;
+  const json& range = a.at("range");
+  return scene::ClipRange{range.at(0).get<double>(), range.at(1).get<double>()};
+}
+
 AnimationParams animation_of(const json& a) {
   AnimationParams animation;
   read_clip(a.at("clip"), animation.clip, animation.clip_index);
   animation.time = a.at("time").get<double>();
+  animation.range = range_of(a);
   return animation;
 }
 
@@ -61,6 +70,8 @@ SheetClip sheet_clip_of(const json& a) {
   read_clip(a.at("clip"), clip.clip, clip.clip_index);
   if (a.contains("frames")) clip.frames = a.at("frames").get<int>();
   if (a.contains("fps")) clip.fps = a.at("fps").get<double>();
+  clip.range = range_of(a);
+  clip.loop = a.at("loop").get<bool>();
   return clip;
 }
 

@@ -15,6 +15,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/clip_sampling.h"
 #include "scene/model.h"
 
 namespace toond::render {
@@ -49,11 +50,13 @@ struct CameraParams {
 };
 
 // The `animation` block: a clip by name (`clip`) or by index
-// (`clip_index` >= 0), at `time` seconds of its loop.
+// (`clip_index` >= 0), at `time` seconds of its loop: of `range` when one
+// is given (time counted from its start), else of the whole clip.
 struct AnimationParams {
   std::string clip;
   int clip_index = -1;
   double time = 0;
+  std::optional<scene::ClipRange> range;  // seconds on the file's time base, as asked
 };
 
 // One clip of an animated sheet (`sheet.animation`): as asked, then, once
@@ -63,10 +66,15 @@ struct SheetClip {
   int clip_index = -1;  // by index (>= 0)
   std::optional<int> frames;
   std::optional<double> fps;
+  std::optional<scene::ClipRange> range;  // as asked; unset: the whole clip
+  // A loop leaves its end out (it is its start again); a one-shot (false)
+  // puts frames on both ends, its last pose included.
+  bool loop = true;
   // Resolved (pipeline/clips.h):
   std::size_t index = 0;  // into the model's Rig::clips
   std::string name;
-  double duration = 0;  // seconds
+  scene::ClipRange span;  // what the row plays: `range`, or the whole clip
+  double duration = 0;  // span's length, seconds
   int frame_count = 0;  // columns of its rows
 };
 

@@ -77,7 +77,11 @@ Tracks tracks_of(const SheetLayout& layout, const SheetParams& sheet) {
     const std::string name = unique_name(track_name(first, sheet), uses);
     json tag = {{"name", name}, {"from", first.index}, {"to", layout.frames[end - 1].index}, {"direction", "forward"}};
     if (first.clip >= 0) {
-      tag["clip"] = sheet.clips[static_cast<std::size_t>(first.clip)].name;
+      const SheetClip& clip = sheet.clips[static_cast<std::size_t>(first.clip)];
+      // Aseprite's count of plays, a string, written only when set (not
+      // set: the tag loops); a one-shot plays once.
+      if (!clip.loop) tag["repeat"] = "1";
+      tag["clip"] = clip.name;
       tag["yaw"] = first.yaw_deg;
     }
     tag["pitch"] = first.pitch_deg;

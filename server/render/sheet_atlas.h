@@ -26,8 +26,8 @@ namespace toond::render {
 // its `pivot`, the same point) is where the point under the orbit's
 // centre, at the foot of the bounds, lands in its tile (0..1 from the top
 // left): the spot a game stands the sprite on. One tag (and one Pixi
-// animation) per clip, pitch and direction of an animated sheet, per pitch
-// of a turntable.
+// animation) per clip, pitch and direction of an animated sheet (a
+// one-shot clip's with Aseprite's "repeat": "1"), per pitch of a turntable.
 nlohmann::ordered_json sheet_atlas(const SheetLayout& layout, const RenderParams& params, const SceneFrame& scene,
                                    const std::string& image_name);
 

@@ -21,6 +21,15 @@ int whole_ms(double length_ms, int k, int count) {
   return std::max(1, static_cast<int>(end(k + 1) - end(k)));
 }
 
+// The time between a clip's neighbouring frames, which each frame shows
+// for: a loop's frames share out its length (the end is the start again);
+// a one-shot's reach its end, one step fewer, and its last pose shows for
+// a step too (a one-shot of one frame: its start, for its length).
+double clip_step(const SheetClip& clip) {
+  if (clip.loop || clip.frame_count < 2) return clip.duration / clip.frame_count;
+  return clip.duration / (clip.frame_count - 1);
+}
+
 SheetLayout layout_clips(const SheetParams& sheet, int tile_width, int tile_height) {
   SheetLayout layout;
   layout.tile_width = tile_width;
@@ -31,7 +40,8 @@ SheetLayout layout_clips(const SheetParams& sheet, int tile_width, int tile_heig
   int index = 0;
   for (std::size_t c = 0; c < sheet.clips.size(); ++c) {
     const SheetClip& clip = sheet.clips[c];
-    const double step = clip.duration / clip.frame_count;
+    const double step = clip_step(clip);
+    const double row_ms = (clip.loop ? clip.duration : step * clip.frame_count) * 1000.0;
     for (const double pitch : sheet.pitches_deg) {
       for (int d = 0; d < sheet.frames; ++d, ++row) {
         for (int k = 0; k < clip.frame_count; ++k) {
@@ -42,8 +52,8 @@ SheetLayout layout_clips(const SheetParams& sheet, int tile_width, int tile_heig
           frame.yaw_deg = normalised_yaw(sheet.yaw_start_deg + d * sheet.yaw_step_deg);
           frame.pitch_deg = pitch;
           frame.clip = static_cast<int>(c);
-          frame.time = k * step;
-          frame.duration_ms = clip.duration > 0.0 ? whole_ms(clip.duration * 1000.0, k, clip.frame_count) : sheet.frame_ms;
+          frame.time = clip.span.start + k * step;
+          frame.duration_ms = step > 0.0 ? whole_ms(row_ms, k, clip.frame_count) : sheet.frame_ms;
           layout.frames.push_back(frame);
         }
       }

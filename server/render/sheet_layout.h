@@ -15,14 +15,15 @@ struct SheetFrame {
   double yaw_deg = 0;    // in [0, 360)
   double pitch_deg = 0;
   // An animated sheet's frame: which of SheetParams::clips, at which time
-  // (seconds).
+  // (seconds on the file's time base, inside the clip's span).
   int clip = -1;  // -1: a turntable frame
   double time = 0;
   // How long the frame shows, in whole milliseconds (what game engines
-  // play): a clip's frames round their exact times so that a row adds up
-  // to the clip's length (83, 84, 83 ms for a quarter second in three), at
-  // least 1 ms each; a turntable's frames, and a clip of no length, show
-  // for `frame_ms`.
+  // play): a clip's frames round their exact times so that a looping row
+  // adds up to the clip's length (83, 84, 83 ms for a quarter second in
+  // three), a one-shot's to its length and one step more (its last pose
+  // shows for a step too), at least 1 ms each; a turntable's frames, and a
+  // clip of no length, show for `frame_ms`.
   int duration_ms = 0;
 };
 
@@ -40,7 +41,9 @@ struct SheetLayout {
 // Pitch by pitch, frames fill rows of `columns` tiles from the top left; a
 // pitch's last row may be short, and the next pitch starts a new row. An
 // animated sheet (resolved clips) has instead, clip by clip and pitch by
-// pitch, a row per direction of the clip's frames at k · duration / frames.
+// pitch, a row per direction of the clip's frames over its span: a loop's
+// at start + k · length / frames, a one-shot's at start + k · length /
+// (frames − 1), its last pose included.
 SheetLayout layout_sheet(const SheetParams& sheet, int tile_width, int tile_height);
 
 // The parameters of one frame's render: the sheet's own, turned to the

@@ -337,6 +337,47 @@ TEST(RenderParams, SetWalksIntoFieldsOfAlternativesAndTakesCommaLists) {
   EXPECT_TRUE(contains(usage_error([&] { build_render_params(unknown, schema()); }), "unknown"));
 }
 
+// A clip's range as users type it: two numbers in seconds, or in frames
+// (168f,187f) where the clip has a frame rate, which the daemon's answer
+// for the model lists; the frames become seconds before the request goes.
+TEST(RenderParams, ARangeIsSecondsOrFramesOfAClipWithAFrameRate) {
+  const Options seconds = parse({"render", "-o", "x.png", "--set", "sheet.animation.clip=walk", "--set",
+                                 "sheet.animation.range=5.6,6.23", "--set", "sheet.animation.loop=false"});
+  EXPECT_EQ(build_render_params(seconds, schema())["sheet"]["animation"],
+            json::parse(R"({"clip":"walk","range":[5.6,6.23],"loop":false})"));
+
+  std::vector<std::string> asked;
+  const ClipsOfModel clips = [&](const std::string& id) {
+    asked.push_back(id);
+    return json::parse(R"([{"name":"anim","duration":3.67,"frame_rate":60},
+                           {"name":"Armature|Walk","duration":1.0}])");
+  };
+  const Options frames = parse({"render", "-o", "x.png", "--model", "0123456789abcdef", "--set", "sheet.animation.range=168f,187f",
+                                "--set", "sheet.animation.clip=anim", "--set", "animation.clip=0", "--set",
+                                "animation.range=[ 0f, 30f ]"});
+  const json p = build_render_params(frames, schema(), clips);
+  EXPECT_EQ(asked, (std::vector<std::string>{"0123456789abcdef", "0123456789abcdef"}));
+  EXPECT_EQ(p["sheet"]["animation"]["range"], json::parse("[2.8, 3.1166666666666667]"));
+  EXPECT_EQ(p["animation"]["range"], json::parse("[0, 0.5]"));
+
+  const auto refused = [&](const Args& args) { return usage_error([&] { build_render_params(parse(args), schema(), clips); }); };
+  const std::string by_seconds = refused({"render", "-o", "x.png", "--model", "0123456789abcdef", "--set", "animation.clip=Walk",
+                                          "--set", "animation.range=1f,2f"});
+  EXPECT_TRUE(contains(by_seconds, "no frame rate")) << by_seconds;
+  EXPECT_TRUE(contains(by_seconds, "animation.range=1f,2f")) << by_seconds;
+  const std::string no_model = refused({"render", "-o", "x.png", "--set", "animation.clip=anim", "--set",
+                                        "animation.range=1f,2f"});
+  EXPECT_TRUE(contains(no_model, "--model ID")) << no_model;
+  const std::string no_clip = refused({"render", "-o", "x.png", "--model", "0123456789abcdef", "--set", "animation.range=1f,2f"});
+  EXPECT_TRUE(contains(no_clip, "--set animation.clip=NAME")) << no_clip;
+  const std::string unknown = refused({"render", "-o", "x.png", "--model", "0123456789abcdef", "--set", "animation.clip=run",
+                                       "--set", "animation.range=1f,2f"});
+  EXPECT_TRUE(contains(unknown, "no clip \"run\"")) << unknown;
+  const std::string mixed = refused({"render", "-o", "x.png", "--model", "0123456789abcdef", "--set", "animation.clip=anim",
+                                     "--set", "animation.range=1f,2"});
+  EXPECT_TRUE(contains(mixed, "both ends in frames")) << mixed;
+}
+
 TEST(RenderParams, UnknownKeyIsRejectedNamingIt) {
   const Options o = parse({"render", "-o", "x.png", "--set", "outline.widht=3"});
   const std::string message = usage_error([&] { build_render_params(o, schema()); });
