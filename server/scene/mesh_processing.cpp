@@ -5,12 +5,13 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <unordered_map>
 
 #include "scene/edge_table.h"
 
 namespace toond::scene {
 namespace {
+
+constexpr std::uint32_t kNoGroup = ~0u;
 
 // Longest outline offset, in units of the outline width.
 constexpr double kMaxMitre = 3.0;
@@ -25,14 +26,6 @@ struct PositionKey {
   bool operator==(const PositionKey&) const = default;
 };
 
-struct PositionKeyHash {
-  std::size_t operator()(const PositionKey& k) const noexcept {
-    std::uint64_t h = 1469598103934665603ull;
-    for (const auto b : k.bits) h = (h ^ b) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
-  }
-};
-
 PositionKey key_of(const glm::vec3& p) {
   PositionKey key{};
   for (int i = 0; i < 3; ++i) {
@@ -40,6 +33,14 @@ PositionKey key_of(const glm::vec3& p) {
     std::memcpy(&key.bits[static_cast<std::size_t>(i)], &value, sizeof value);
   }
   return key;
+}
+
+// FNV-1a over the three words, then Fibonacci hashing: the table's index
+// is taken from the top bits, which the multiply mixes best.
+std::uint64_t hash_of(const PositionKey& k) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const auto b : k.bits) h = (h ^ b) * 1099511628211ull;
+  return h * 0x9E3779B97F4A7C15ull;
 }
 
 glm::vec3 to_unit_float(const glm::dvec3& v) {
@@ -91,12 +92,26 @@ void for_each_shaded_triangle(std::span<const glm::vec3> positions, std::span<co
 }  // namespace
 
 std::vector<std::uint32_t> group_by_position(std::span<const glm::vec3> positions) {
-  std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> ids;
-  ids.reserve(positions.size());
+  // Open addressing in one flat array sized once, each slot a point's key
+  // and id: an import asks for the groups of every vertex, and a node per
+  // point (a std::unordered_map) cost an allocation each and scattered
+  // the points over the heap.
+  struct Slot {
+    PositionKey key;
+    std::uint32_t id = kNoGroup;
+  };
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 2 * positions.size()) ++bits;
+  std::vector<Slot> slots(std::size_t{1} << bits);
+  const std::size_t mask = slots.size() - 1;
   std::vector<std::uint32_t> groups(positions.size());
+  std::uint32_t next = 0;
   for (std::size_t v = 0; v < positions.size(); ++v) {
-    const auto [it, inserted] = ids.emplace(key_of(positions[v]), static_cast<std::uint32_t>(ids.size()));
-    groups[v] = it->second;
+    const PositionKey key = key_of(positions[v]);
+    std::size_t i = static_cast<std::size_t>(hash_of(key) >> (64 - bits));
+    while (slots[i].id != kNoGroup && !(slots[i].key == key)) i = (i + 1) & mask;
+    if (slots[i].id == kNoGroup) slots[i] = {key, next++};
+    groups[v] = slots[i].id;
   }
   return groups;
 }
