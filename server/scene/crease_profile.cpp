@@ -120,8 +120,12 @@ double bounding_diagonal(std::span<const glm::vec3> positions) {
 
 CreaseProfile measure_creases(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                               std::span<const std::uint32_t> indices) {
+  return measure_creases(positions, normals, indices, group_by_position(positions));
+}
+
+CreaseProfile measure_creases(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                              std::span<const std::uint32_t> indices, std::span<const std::uint32_t> group) {
   CreaseProfile profile;
-  const std::vector<std::uint32_t> group = group_by_position(positions);
   std::unordered_map<std::uint64_t, OpenSide> sides;
   sides.reserve(indices.size());
   std::array<double, 181> length_over{};

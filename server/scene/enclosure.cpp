@@ -199,8 +199,9 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
   return Enclosure::Open;
 }
 
-void classify_enclosures(Mesh& mesh) {
-  const std::vector<std::uint32_t> group = group_by_position(mesh.positions);
+void classify_enclosures(Mesh& mesh) { classify_enclosures(mesh, group_by_position(mesh.positions)); }
+
+void classify_enclosures(Mesh& mesh, std::span<const std::uint32_t> group) {
   mesh.enclosure = classify_enclosure(mesh.positions, group, mesh.indices, &mesh.caps, &mesh.cap_indices);
   for (MeshLod& lod : mesh.lods) {
     lod.enclosure = classify_enclosure(mesh.positions, group, lod.indices, &lod.caps, &lod.cap_indices);

@@ -472,8 +472,10 @@ class Builder {
     mesh.weld_tolerance = weld.tolerance;
     mesh.welded_positions = weld.moved;
 
+    // Which vertices lie at one point, for every step below; split copies
+    // made for normals by angle join their original's class.
+    std::vector<std::uint32_t> position_class = group_by_position(mesh.positions);
     if (std::find(needs_normal.begin(), needs_normal.end(), true) != needs_normal.end()) {
-      std::vector<std::uint32_t> position_class = group_by_position(mesh.positions);
       // Without smoothing groups the angle between faces decides.
       const std::vector<std::uint32_t> angle_group =
           smoothing_in_use ? std::vector<std::uint32_t>{}
@@ -495,13 +497,13 @@ class Builder {
     }
 
     check_import_time(src_.limits, "computing normals");
-    mesh.outline_normals = compute_outline_normals(mesh.positions, mesh.indices, mesh.normals);
+    mesh.outline_normals = compute_outline_normals(mesh.positions, mesh.indices, mesh.normals, position_class);
     check_import_time(src_.limits, "computing outline normals");
     mesh.tangents = compute_tangents(mesh.positions, mesh.normals, mesh.texcoords, mesh.indices);
     keep_file_tangents(mesh, file_tangents);
     mesh.bounds = compute_bounds(mesh.positions);
     mesh.extremes = extreme_points(mesh.positions);
-    mesh.creases = measure_creases(mesh.positions, mesh.normals, mesh.indices);
+    mesh.creases = measure_creases(mesh.positions, mesh.normals, mesh.indices, position_class);
     mesh.cost = measure_render_cost(mesh.positions, mesh.indices, mesh.bounds.max - mesh.bounds.min);
     check_import_time(src_.limits, "measuring the mesh");
 

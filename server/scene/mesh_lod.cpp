@@ -90,9 +90,9 @@ class CompactIds {
 // The position groups refined by how vertices move: two vertices are one
 // point for the levels only where they also move alike, so a triangle whose
 // corners a pose pulls apart is never taken for a sliver.
-std::vector<std::uint32_t> groups_moving_alike(const std::vector<glm::vec3>& positions,
+std::vector<std::uint32_t> groups_moving_alike(std::span<const std::uint32_t> position_group,
                                                const std::vector<std::uint32_t>& motion_class) {
-  std::vector<std::uint32_t> groups = group_by_position(positions);
+  std::vector<std::uint32_t> groups(position_group.begin(), position_group.end());
   if (motion_class.empty()) return groups;
   std::unordered_map<std::uint64_t, std::uint32_t> refined;
   for (std::size_t v = 0; v < groups.size(); ++v) {
@@ -231,6 +231,11 @@ void optimize_for_vertex_cache(Mesh& mesh) {
 }
 
 std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options) {
+  return build_lod_chain(mesh, group_by_position(mesh.positions), options);
+}
+
+std::vector<MeshLod> build_lod_chain(const Mesh& mesh, std::span<const std::uint32_t> groups,
+                                     const LodOptions& options) {
   std::vector<MeshLod> chain;
   if (mesh.positions.empty() || mesh.indices.empty()) return chain;
 
@@ -239,7 +244,7 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options
   // A level may not open the surface more than the full mesh is open:
   // meshopt occasionally tears one open, and a torn level would show
   // through the outline as a gap in the hull.
-  const std::vector<std::uint32_t> position_group = groups_moving_alike(mesh.positions, options.motion_class);
+  const std::vector<std::uint32_t> position_group = groups_moving_alike(groups, options.motion_class);
   const std::size_t full_open_edges = open_edge_count(position_group, mesh.indices);
 
   std::vector<std::uint32_t> source = mesh.indices;
@@ -279,7 +284,11 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options
 }
 
 void prepare_levels_of_detail(Mesh& mesh, const LodOptions& options) {
-  mesh.lods = build_lod_chain(mesh, options);
+  prepare_levels_of_detail(mesh, group_by_position(mesh.positions), options);
+}
+
+void prepare_levels_of_detail(Mesh& mesh, std::span<const std::uint32_t> position_group, const LodOptions& options) {
+  mesh.lods = build_lod_chain(mesh, position_group, options);
   optimize_for_vertex_cache(mesh);
 }
 

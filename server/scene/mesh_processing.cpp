@@ -154,7 +154,13 @@ std::vector<glm::vec3> compute_angle_weighted_normals(std::span<const glm::vec3>
 std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positions,
                                                std::span<const std::uint32_t> indices,
                                                std::span<const glm::vec3> shading_normals) {
-  const auto groups = group_by_position(positions);
+  return compute_outline_normals(positions, indices, shading_normals, group_by_position(positions));
+}
+
+std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positions,
+                                               std::span<const std::uint32_t> indices,
+                                               std::span<const glm::vec3> shading_normals,
+                                               std::span<const std::uint32_t> groups) {
   const std::size_t group_count = groups.empty() ? 0 : *std::max_element(groups.begin(), groups.end()) + 1u;
 
   // Every direction a vertex's hull must move away from: its faces' normals
