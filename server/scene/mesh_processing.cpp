@@ -89,6 +89,25 @@ void for_each_shaded_triangle(std::span<const glm::vec3> positions, std::span<co
   }
 }
 
+// A triangle with an area: its corners (vertex ids), unit normal and
+// corner angles.
+struct ShadedTriangle {
+  std::uint32_t corner[3];
+  glm::dvec3 normal;
+  glm::dvec3 angles;
+};
+
+std::vector<ShadedTriangle> shaded_triangles(std::span<const glm::vec3> positions,
+                                             std::span<const std::uint32_t> indices) {
+  std::vector<ShadedTriangle> shaded;
+  shaded.reserve(indices.size() / 3);
+  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&)[3],
+                                                   const glm::dvec3& n, const glm::dvec3& angles) {
+    shaded.push_back({{i[0], i[1], i[2]}, n, angles});
+  });
+  return shaded;
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> group_by_position(std::span<const glm::vec3> positions) {
@@ -177,47 +196,61 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
       ++edge_use[edge_key(indices[t + static_cast<std::size_t>(k)], indices[t + static_cast<std::size_t>((k + 1) % 3)])];
     }
   }
+  // Every triangle with an area, its normal and corner angles found once:
+  // the pushes are visited twice and the face directions once, and the
+  // angles' arc tangents were most of the time.
+  const std::vector<ShadedTriangle> shaded = shaded_triangles(positions, indices);
   // A few distinct face directions per position, to tell a real rim from
   // an edge that only looks open: at a T-junction (one face splits an edge
   // its neighbour does not) the edge is used once, but the neighbour's face
   // already pushes the way the rim would. Counting both tilted a corner's
-  // offset off its faces and its mitre out to three widths.
+  // offset off its faces and its mitre out to three widths. Each is kept as
+  // the triangle whose normal it is.
   constexpr std::size_t kDirectionsKept = 8;
-  std::vector<glm::dvec3> face_directions(group_count * kDirectionsKept);
+  std::vector<std::uint32_t> face_directions(group_count * kDirectionsKept);
   std::vector<std::uint8_t> directions_known(group_count, 0);
-  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&)[3],
-                                                   const glm::dvec3& n, const glm::dvec3&) {
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t g = groups[i[k]];
-      const glm::dvec3* dirs = &face_directions[g * kDirectionsKept];
-      const bool known = std::any_of(dirs, dirs + directions_known[g], [&](const glm::dvec3& d) { return glm::dot(d, n) > 0.999; });
-      if (!known && directions_known[g] < kDirectionsKept) face_directions[g * kDirectionsKept + directions_known[g]++] = n;
-    }
-  });
-  auto faces_push_that_way = [&](std::uint32_t group, const glm::dvec3& direction) {
-    const glm::dvec3* dirs = &face_directions[group * kDirectionsKept];
-    return std::any_of(dirs, dirs + directions_known[group], [&](const glm::dvec3& d) { return glm::dot(d, direction) > 0.7; });
+  const auto directions_of = [&](std::uint32_t group) {
+    return std::span(&face_directions[group * kDirectionsKept], directions_known[group]);
   };
+  for (std::uint32_t s = 0; s < shaded.size(); ++s) {
+    const glm::dvec3& n = shaded[s].normal;
+    for (const std::uint32_t corner : shaded[s].corner) {
+      const std::uint32_t g = groups[corner];
+      const auto dirs = directions_of(g);
+      const bool known = std::any_of(dirs.begin(), dirs.end(), [&](std::uint32_t d) { return glm::dot(shaded[d].normal, n) > 0.999; });
+      if (!known && directions_known[g] < kDirectionsKept) face_directions[g * kDirectionsKept + directions_known[g]++] = s;
+    }
+  }
+  auto faces_push_that_way = [&](std::uint32_t group, const glm::dvec3& direction) {
+    const auto dirs = directions_of(group);
+    return std::any_of(dirs.begin(), dirs.end(), [&](std::uint32_t d) { return glm::dot(shaded[d].normal, direction) > 0.7; });
+  };
+  // The pushes across open rims, found once for both visits.
+  struct RimPush {
+    std::uint32_t group;
+    glm::dvec3 outward;
+  };
+  std::vector<RimPush> rim_pushes;
+  for (const ShadedTriangle& tri : shaded) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = tri.corner[k], b = tri.corner[(k + 1) % 3];
+      if (edge_use.get(edge_key(a, b)) != 1) continue;
+      // In the face's plane, perpendicular to the edge, away from the
+      // triangle (counter-clockwise winding puts the interior on the left).
+      const glm::dvec3 outward =
+          glm::normalize(glm::cross(glm::dvec3(positions[b]) - glm::dvec3(positions[a]), tri.normal));
+      for (const std::uint32_t g : {groups[a], groups[b]}) {
+        if (!faces_push_that_way(g, outward)) rim_pushes.push_back({g, outward});
+      }
+    }
+  }
   // Calls push(group, direction, weight) for every push of every position.
   auto for_each_push = [&](auto&& push) {
-    for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&)[3],
-                                                     const glm::dvec3& n, const glm::dvec3& angles) {
-      for (int k = 0; k < 3; ++k) push(groups[i[k]], n, angles[k]);
-    });
-    for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&p)[3],
-                                                     const glm::dvec3& n, const glm::dvec3&) {
-      for (int k = 0; k < 3; ++k) {
-        const int a = k, b = (k + 1) % 3;
-        if (edge_use.get(edge_key(i[a], i[b])) != 1) continue;
-        // In the face's plane, perpendicular to the edge, away from the
-        // triangle (counter-clockwise winding puts the interior on the left).
-        const glm::dvec3 outward = glm::normalize(glm::cross(p[b] - p[a], n));
-        const double quarter_turn = std::acos(0.0);
-        for (const std::uint32_t g : {groups[i[a]], groups[i[b]]}) {
-          if (!faces_push_that_way(g, outward)) push(g, outward, quarter_turn);
-        }
-      }
-    });
+    for (const ShadedTriangle& tri : shaded) {
+      for (int k = 0; k < 3; ++k) push(groups[tri.corner[k]], tri.normal, tri.angles[k]);
+    }
+    const double quarter_turn = std::acos(0.0);
+    for (const RimPush& rim : rim_pushes) push(rim.group, rim.outward, quarter_turn);
   };
 
   std::vector<glm::dvec3> sums(group_count, glm::dvec3(0.0));
