@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <unordered_map>
 
 #include "scene/import_error.h"
 #include "scene/extreme_points.h"
+#include "scene/flat_map.h"
 #include "scene/mesh_processing.h"
 #include "scene/duplicate_triangles.h"
 #include "scene/normals_by_angle.h"
@@ -369,16 +369,16 @@ class Builder {
         corner_groups_by_angle(mesh.positions, position_class, mesh.indices, eligible, src_.smooth_angle_deg);
     constexpr std::uint32_t kNone = ~0u;
     std::vector<std::uint32_t> group_of_vertex(mesh.positions.size(), kNone);
-    std::unordered_map<std::uint64_t, std::uint32_t> copies;
+    FlatMap<std::uint64_t, std::uint32_t, std::hash<std::uint64_t>> copies;
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
       if (!eligible[c]) continue;
       const std::uint32_t v = mesh.indices[c];
       const std::uint32_t g = corner_group[c];
       if (group_of_vertex[v] == kNone) group_of_vertex[v] = g;
       if (group_of_vertex[v] == g) continue;
-      const auto [it, inserted] = copies.try_emplace((static_cast<std::uint64_t>(v) << 32) | g, 0u);
+      const auto [copy, inserted] =
+          copies.try_emplace((static_cast<std::uint64_t>(v) << 32) | g, static_cast<std::uint32_t>(mesh.positions.size()));
       if (inserted) {
-        it->second = static_cast<std::uint32_t>(mesh.positions.size());
         mesh.positions.push_back(mesh.positions[v]);
         mesh.normals.push_back(mesh.normals[v]);
         mesh.texcoords.push_back(mesh.texcoords[v]);
@@ -390,7 +390,7 @@ class Builder {
         position_class.push_back(position_class[v]);
         group_of_vertex.push_back(g);
       }
-      mesh.indices[c] = it->second;
+      mesh.indices[c] = copy;
     }
     return group_of_vertex;
   }
@@ -409,7 +409,7 @@ class Builder {
       }
     }
 
-    std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> vertex_of;
+    FlatMap<VertexKey, std::uint32_t, VertexKeyHash> vertex_of(triangles.size());
     std::vector<std::int64_t> smoothing_of_vertex;
     std::vector<bool> needs_normal;
     std::vector<std::int64_t> file_tangents;  // per vertex: its corner's tangent in the source, or -1
@@ -434,7 +434,7 @@ class Builder {
         }
         const VertexKey key{corner.position, has_normal ? corner.normal : -1, corner.texcoord, corner.tangent,
                             smoothing};
-        const auto [it, inserted] = vertex_of.emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+        const auto [vertex, inserted] = vertex_of.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
         if (inserted) {
           if (mesh.positions.size() >= std::numeric_limits<std::uint32_t>::max()) {
             throw ImportError(src_.file, src_.file + " has too many vertices");
@@ -459,7 +459,7 @@ class Builder {
           smoothing_of_vertex.push_back(smoothing);
           needs_normal.push_back(!has_normal);
         }
-        mesh.indices.push_back(it->second);
+        mesh.indices.push_back(vertex);
       }
     }
     if (bad_texcoords > 0) {
@@ -480,7 +480,7 @@ class Builder {
       const std::vector<std::uint32_t> angle_group =
           smoothing_in_use ? std::vector<std::uint32_t>{}
                            : split_by_angle(position_class, needs_normal, smoothing_of_vertex, file_tangents);
-      std::unordered_map<GroupKey, std::uint32_t, GroupKeyHash> group_ids;
+      FlatMap<GroupKey, std::uint32_t, GroupKeyHash> group_ids(mesh.positions.size());
       std::vector<std::uint32_t> groups(mesh.positions.size());
       for (std::size_t v = 0; v < groups.size(); ++v) {
         // A vertex that brought its own normal forms a group of its own
@@ -488,7 +488,7 @@ class Builder {
         const GroupKey key = !needs_normal[v] ? GroupKey{static_cast<std::uint32_t>(v), std::numeric_limits<std::int64_t>::min()}
                              : !angle_group.empty() ? GroupKey{angle_group[v], kAngleGroup}
                                                     : GroupKey{position_class[v], smoothing_of_vertex[v]};
-        groups[v] = group_ids.emplace(key, static_cast<std::uint32_t>(group_ids.size())).first->second;
+        groups[v] = group_ids.try_emplace(key, static_cast<std::uint32_t>(group_ids.size())).first;
       }
       const auto computed = compute_grouped_normals(mesh.positions, mesh.indices, groups);
       for (std::size_t v = 0; v < groups.size(); ++v) {
