@@ -502,7 +502,7 @@ class Builder {
     mesh.tangents = compute_tangents(mesh.positions, mesh.normals, mesh.texcoords, mesh.indices);
     keep_file_tangents(mesh, file_tangents);
     mesh.bounds = compute_bounds(mesh.positions);
-    mesh.extremes = extreme_points(mesh.positions);
+    mesh.extremes = extreme_points(mesh.positions, position_class);
     mesh.creases = measure_creases(mesh.positions, mesh.normals, mesh.indices, position_class);
     mesh.cost = measure_render_cost(mesh.positions, mesh.indices, mesh.bounds.max - mesh.bounds.min);
     check_import_time(src_.limits, "measuring the mesh");
