@@ -1,6 +1,7 @@
 #include "scene/mesh_builder.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <cstring>
 #include <limits>

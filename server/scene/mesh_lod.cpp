@@ -3,12 +3,12 @@
 #include <meshoptimizer.h>
 
 #include <algorithm>
+#include <functional>
 #include <array>
 #include <cmath>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "scene/edge_table.h"
+#include "scene/flat_map.h"
 #include "scene/mesh_processing.h"
 
 namespace toond::scene {
@@ -44,8 +44,7 @@ struct CornerGroupsHash {
 std::vector<bool> droppable_triangles(const std::vector<std::uint32_t>& position_group,
                                       const std::vector<std::uint32_t>& indices) {
   std::vector<bool> drop(indices.size() / 3, false);
-  std::unordered_set<std::array<std::uint32_t, 3>, CornerGroupsHash> seen;
-  seen.reserve(drop.size());
+  FlatMap<std::array<std::uint32_t, 3>, bool, CornerGroupsHash> seen(drop.size());
   for (std::size_t t = 0; t < drop.size(); ++t) {
     auto g = corner_groups(position_group, &indices[3 * t]);
     if (g[0] == g[1] || g[1] == g[2] || g[2] == g[0]) {
@@ -53,7 +52,7 @@ std::vector<bool> droppable_triangles(const std::vector<std::uint32_t>& position
       continue;
     }
     std::rotate(g.begin(), std::min_element(g.begin(), g.end()), g.end());
-    drop[t] = !seen.insert(g).second;
+    drop[t] = !seen.try_emplace(g, true).second;
   }
   return drop;
 }
@@ -76,14 +75,14 @@ std::vector<std::uint32_t> valence_of_positions(const std::vector<std::uint32_t>
 class CompactIds {
  public:
   std::uint32_t local(std::uint32_t model_id) {
-    const auto [it, added] = local_of_.emplace(model_id, static_cast<std::uint32_t>(to_model_.size()));
+    const auto [local, added] = local_of_.try_emplace(model_id, static_cast<std::uint32_t>(to_model_.size()));
     if (added) to_model_.push_back(model_id);
-    return it->second;
+    return local;
   }
   const std::vector<std::uint32_t>& to_model() const { return to_model_; }
 
  private:
-  std::unordered_map<std::uint32_t, std::uint32_t> local_of_;
+  FlatMap<std::uint32_t, std::uint32_t, std::hash<std::uint32_t>> local_of_;
   std::vector<std::uint32_t> to_model_;
 };
 
@@ -94,10 +93,10 @@ std::vector<std::uint32_t> groups_moving_alike(std::span<const std::uint32_t> po
                                                const std::vector<std::uint32_t>& motion_class) {
   std::vector<std::uint32_t> groups(position_group.begin(), position_group.end());
   if (motion_class.empty()) return groups;
-  std::unordered_map<std::uint64_t, std::uint32_t> refined;
+  FlatMap<std::uint64_t, std::uint32_t, std::hash<std::uint64_t>> refined(groups.size());
   for (std::size_t v = 0; v < groups.size(); ++v) {
     const std::uint64_t key = (std::uint64_t{groups[v]} << 32) | motion_class[v];
-    groups[v] = refined.emplace(key, static_cast<std::uint32_t>(refined.size())).first->second;
+    groups[v] = refined.try_emplace(key, static_cast<std::uint32_t>(refined.size())).first;
   }
   return groups;
 }
