@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <optional>
 #include <array>
 #include <cmath>
 
@@ -244,7 +245,9 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, std::span<const std::uint
   // meshopt occasionally tears one open, and a torn level would show
   // through the outline as a gap in the hull.
   const std::vector<std::uint32_t> position_group = groups_moving_alike(groups, options.motion_class);
-  const std::size_t full_open_edges = open_edge_count(position_group, mesh.indices);
+  // Counted once a level is made: a mesh that gives none (a fan around one
+  // hub, whose triangles all stay) need not count them.
+  std::optional<std::size_t> full_open_edges;
 
   std::vector<std::uint32_t> source = mesh.indices;
   std::vector<Submesh> source_subs = mesh.submeshes;
@@ -277,7 +280,8 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, std::span<const std::uint
     source_triangles = triangles;
     // The next level still grows from a torn one (seen to close again),
     // but a torn level is never drawn.
-    if (open_edge_count(position_group, lod.indices) <= full_open_edges) chain.push_back(std::move(lod));
+    if (!full_open_edges) full_open_edges = open_edge_count(position_group, mesh.indices);
+    if (open_edge_count(position_group, lod.indices) <= *full_open_edges) chain.push_back(std::move(lod));
   }
   return chain;
 }
