@@ -137,8 +137,12 @@ class Builder {
                                                "degenerate faces, or nothing at all)");
     }
     assign_materials(src_.triangles);
-    std::stable_sort(src_.triangles.begin(), src_.triangles.end(),
-                     [](const SourceTriangle& a, const SourceTriangle& b) { return a.material < b.material; });
+    const auto by_material = [](const SourceTriangle& a, const SourceTriangle& b) { return a.material < b.material; };
+    // Most files are sorted already (one material, or a run per material),
+    // and a stable sort moves every triangle of a sorted list all the same.
+    if (!std::is_sorted(src_.triangles.begin(), src_.triangles.end(), by_material)) {
+      std::stable_sort(src_.triangles.begin(), src_.triangles.end(), by_material);
+    }
     drop_repeated();
     build();
     return std::move(mesh_);
