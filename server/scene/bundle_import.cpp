@@ -12,6 +12,7 @@
 #include "scene/gltf_import.h"
 #include "scene/import_error.h"
 #include "scene/m_import.h"
+#include "scene/mesh_processing.h"
 #include "scene/mesh_lod.h"
 #include "scene/motion_classes.h"
 #include "scene/obj_import.h"
@@ -155,10 +156,12 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
   LodOptions lod;
   lod.between_levels = [&limits] { check_import_time(limits, "simplifying"); };
   if (model.rig) lod.motion_class = motion_classes(model.mesh, *model.rig);
-  prepare_levels_of_detail(model.mesh, lod);
+  // What every step after reading shares: which vertices lie at one point.
+  const std::vector<std::uint32_t> position_group = group_by_position(model.mesh.positions);
+  prepare_levels_of_detail(model.mesh, position_group, lod);
   check_import_time(limits, "ordering triangles");
-  classify_enclosures(model.mesh);
-  find_crease_edges(model.mesh);
+  classify_enclosures(model.mesh, position_group);
+  find_crease_edges(model.mesh, position_group);
   check_import_time(limits, "finding crease edges");
   return model;
 }

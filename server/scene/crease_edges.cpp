@@ -23,8 +23,8 @@ struct PointGroups {
   double diagonal = 0;      // of that box
 };
 
-PointGroups group_points(std::span<const glm::vec3> positions) {
-  PointGroups groups{group_by_position(positions), {}, {}, 0};
+PointGroups group_points(std::span<const glm::vec3> positions, std::span<const std::uint32_t> position_group) {
+  PointGroups groups{{position_group.begin(), position_group.end()}, {}, {}, 0};
   std::vector<std::uint8_t> vertices;
   for (const std::uint32_t g : groups.of_vertex) {
     if (g >= vertices.size()) vertices.resize(g + 1, 0);
@@ -181,11 +181,13 @@ double CreaseEdges::length_at(double degrees) const { return length_over[whole_d
 
 CreaseEdges find_crease_edges(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                               std::span<const std::uint32_t> indices) {
-  return find_in(positions, normals, indices, group_points(positions));
+  return find_in(positions, normals, indices, group_points(positions, group_by_position(positions)));
 }
 
-void find_crease_edges(Mesh& mesh) {
-  const PointGroups groups = group_points(mesh.positions);
+void find_crease_edges(Mesh& mesh) { find_crease_edges(mesh, group_by_position(mesh.positions)); }
+
+void find_crease_edges(Mesh& mesh, std::span<const std::uint32_t> position_group) {
+  const PointGroups groups = group_points(mesh.positions, position_group);
   mesh.crease_edges = find_in(mesh.positions, mesh.normals, mesh.indices, groups);
   for (MeshLod& lod : mesh.lods) lod.crease_edges = find_in(mesh.positions, mesh.normals, lod.indices, groups);
 }

@@ -55,5 +55,7 @@ CreaseEdges find_crease_edges(std::span<const glm::vec3> positions, std::span<co
 // Sets Mesh::crease_edges for the full mesh and every level of detail (a
 // level's own triangles meet at its own edges).
 void find_crease_edges(Mesh& mesh);
+// The same for a caller that has group_by_position(mesh.positions) already.
+void find_crease_edges(Mesh& mesh, std::span<const std::uint32_t> position_group);
 
 }  // namespace toond::scene

@@ -1,10 +1,11 @@
 #include "scene/crease_profile.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
-#include <unordered_map>
 #include <vector>
 
+#include "scene/flat_map.h"
 #include "scene/mesh_processing.h"
 
 namespace toond::scene {
@@ -120,10 +121,13 @@ double bounding_diagonal(std::span<const glm::vec3> positions) {
 
 CreaseProfile measure_creases(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                               std::span<const std::uint32_t> indices) {
+  return measure_creases(positions, normals, indices, group_by_position(positions));
+}
+
+CreaseProfile measure_creases(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                              std::span<const std::uint32_t> indices, std::span<const std::uint32_t> group) {
   CreaseProfile profile;
-  const std::vector<std::uint32_t> group = group_by_position(positions);
-  std::unordered_map<std::uint64_t, OpenSide> sides;
-  sides.reserve(indices.size());
+  FlatMap<std::uint64_t, OpenSide, std::hash<std::uint64_t>> sides(indices.size() / 2);
   std::array<double, 181> length_over{};
   double total_length = 0.0;
   std::vector<CreasedEdge> creased;
@@ -133,20 +137,20 @@ CreaseProfile measure_creases(std::span<const glm::vec3> positions, std::span<co
       if (group[a] == group[b]) continue;
       if (group[a] > group[b]) std::swap(a, b);
       const std::uint64_t key = static_cast<std::uint64_t>(group[a]) << 32 | group[b];
-      const auto [it, first] = sides.try_emplace(key, OpenSide{normals[a], normals[b], false, t / 3});
+      const auto [side, first] = sides.try_emplace(key, OpenSide{normals[a], normals[b], false, t / 3});
       // An edge counts once, with the first two sides met; further sides of
       // a non-manifold edge add nothing.
-      if (first || it->second.matched) continue;
-      it->second.matched = true;
-      const double turn = std::max(angle_deg(it->second.normal_at_low, normals[a]),
-                                   angle_deg(it->second.normal_at_high, normals[b]));
+      if (first || side.matched) continue;
+      side.matched = true;
+      const double turn =
+          std::max(angle_deg(side.normal_at_low, normals[a]), angle_deg(side.normal_at_high, normals[b]));
       const double length = glm::length(glm::dvec3(positions[a]) - glm::dvec3(positions[b]));
       total_length += length;
       if (!(turn > 0.0)) continue;
       // Counted at the largest whole degree it exceeds; summed down below.
       const auto degree = static_cast<std::size_t>(std::min(std::ceil(turn) - 1.0, 180.0));
       length_over[degree] += length;
-      creased.push_back({group[a], group[b], length, {it->second.triangle, t / 3}, degree});
+      creased.push_back({group[a], group[b], length, {side.triangle, t / 3}, degree});
     }
   }
   std::vector<double> areas(indices.size() / 3);
@@ -160,7 +164,8 @@ CreaseProfile measure_creases(std::span<const glm::vec3> positions, std::span<co
   // From the sharpest creases down: at angle d every edge turning by more
   // than d is creased, and lines only grow as d falls.
   std::sort(creased.begin(), creased.end(), [](const CreasedEdge& x, const CreasedEdge& y) { return x.degree > y.degree; });
-  CreaseLines lines(positions.size(), areas, kCreaseLineLength * bounding_diagonal(positions));
+  const std::size_t groups = group.empty() ? 0 : *std::max_element(group.begin(), group.end()) + std::size_t{1};
+  CreaseLines lines(groups, areas, kCreaseLineLength * bounding_diagonal(positions));
   std::size_t next = 0;
   for (std::size_t d = profile.lines_area_over.size(); d-- > 0;) {
     for (; next < creased.size() && creased[next].degree >= d; ++next) lines.add(creased[next]);

@@ -43,5 +43,8 @@ inline constexpr double kCreaseLineLength = 0.25;
 // Positions must be welded (equal where the model means one point).
 CreaseProfile measure_creases(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                               std::span<const std::uint32_t> indices);
+// The same for a caller that has group_by_position(positions) already.
+CreaseProfile measure_creases(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                              std::span<const std::uint32_t> indices, std::span<const std::uint32_t> group);
 
 }  // namespace toond::scene

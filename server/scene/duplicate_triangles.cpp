@@ -3,7 +3,8 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
-#include <unordered_map>
+
+#include "scene/flat_map.h"
 
 namespace toond::scene {
 namespace {
@@ -51,13 +52,12 @@ struct TriangleKeyHash {
 
 std::vector<bool> last_of_each_triangle(std::span<const TriangleCorners> triangles) {
   std::vector<bool> keep(triangles.size(), true);
-  std::unordered_map<TriangleKey, std::size_t, TriangleKeyHash> last_seen;
-  last_seen.reserve(triangles.size());
+  FlatMap<TriangleKey, std::size_t, TriangleKeyHash> last_seen(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
-    auto [it, inserted] = last_seen.try_emplace(triangle_key(triangles[t]), t);
+    auto [last, inserted] = last_seen.try_emplace(triangle_key(triangles[t]), t);
     if (!inserted) {
-      keep[it->second] = false;
-      it->second = t;
+      keep[last] = false;
+      last = t;
     }
   }
   return keep;

@@ -71,6 +71,47 @@ bool trace_rims(const EdgeTable& balance, std::vector<std::vector<std::uint32_t>
 constexpr std::size_t kLongestRim = 256;
 constexpr double kCappingBudget = 4e7;  // Σ n³ over the rims: a fraction of a second, not minutes
 
+// Whether the holes surely cannot be capped: a rim longer than kLongestRim,
+// or rims over the capping budget. The rims' lengths do not depend on where
+// each is entered, so they are found here over flat arrays, each loop
+// walked once; trace_rims, whose order the caps follow, then runs only
+// where capping may succeed. False also where the rim edges do not close
+// into separate loops (trace_rims refuses those).
+bool rims_surely_too_long(const EdgeTable& balance, std::size_t groups) {
+  constexpr std::uint32_t kNone = ~0u;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> rim_edges;  // from, to
+  bool unique = true;
+  balance.for_each([&](std::uint64_t key, int b) {
+    if (b == 0) return;
+    if (b != 1 && b != -1) unique = false;
+    const auto low = static_cast<std::uint32_t>(key >> 32);
+    const auto high = static_cast<std::uint32_t>(key & 0xffffffffu);
+    rim_edges.push_back(b > 0 ? std::pair(low, high) : std::pair(high, low));
+  });
+  if (!unique || rim_edges.empty()) return false;
+  std::vector<std::uint32_t> next(groups, kNone);
+  for (const auto& [from, to] : rim_edges) {
+    if (next[from] != kNone) return false;
+    next[from] = to;
+  }
+  double capping = 0;
+  for (const auto& [start, first_step] : rim_edges) {
+    if (next[start] == kNone) continue;  // on a loop walked already
+    std::size_t length = 0;
+    std::uint32_t at = start;
+    while (next[at] != kNone) {
+      const std::uint32_t to = next[at];
+      next[at] = kNone;
+      at = to;
+      ++length;
+    }
+    if (at != start) return false;
+    if (length > kLongestRim) return true;
+    capping += std::pow(static_cast<double>(length), 3.0);
+  }
+  return capping > kCappingBudget;
+}
+
 // The triangulation of least total area spanning the loop of points (dynamic
 // programming over its vertices, O(n³)), its triangles wound like the loop.
 // A fan from the middle would do for round holes, but scanned models (the
@@ -138,15 +179,17 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
   if (caps) caps->clear();
   if (cap_indices) cap_indices->clear();
   if (indices.size() < 3) return Enclosure::Open;
+  const std::size_t groups =
+      position_group.empty() ? 0 : *std::max_element(position_group.begin(), position_group.end()) + 1u;
+  const EdgeTable balance = edge_balance(position_group, indices);
+  if (rims_surely_too_long(balance, groups)) return Enclosure::Open;
   std::vector<std::vector<std::uint32_t>> rims;
-  if (!trace_rims(edge_balance(position_group, indices), rims)) return Enclosure::Open;
+  if (!trace_rims(balance, rims)) return Enclosure::Open;
   if (!rims.empty() && !caps) return Enclosure::Open;
   double capping = 0;
   for (const std::vector<std::uint32_t>& rim : rims) capping += std::pow(static_cast<double>(rim.size()), 3.0);
   if (capping > kCappingBudget) return Enclosure::Open;
 
-  const std::size_t groups =
-      position_group.empty() ? 0 : *std::max_element(position_group.begin(), position_group.end()) + 1u;
   std::vector<glm::dvec3> point(groups);
   std::vector<std::uint32_t> vertex_of(groups);  // one vertex at each point: the caps draw with the mesh's
   for (std::size_t v = 0; v < positions.size(); ++v) {
@@ -199,8 +242,9 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
   return Enclosure::Open;
 }
 
-void classify_enclosures(Mesh& mesh) {
-  const std::vector<std::uint32_t> group = group_by_position(mesh.positions);
+void classify_enclosures(Mesh& mesh) { classify_enclosures(mesh, group_by_position(mesh.positions)); }
+
+void classify_enclosures(Mesh& mesh, std::span<const std::uint32_t> group) {
   mesh.enclosure = classify_enclosure(mesh.positions, group, mesh.indices, &mesh.caps, &mesh.cap_indices);
   for (MeshLod& lod : mesh.lods) {
     lod.enclosure = classify_enclosure(mesh.positions, group, lod.indices, &lod.caps, &lod.cap_indices);

@@ -24,5 +24,7 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
 // Sets Mesh::enclosure, Mesh::caps and Mesh::cap_indices for the full mesh
 // and every level of detail.
 void classify_enclosures(Mesh& mesh);
+// The same for a caller that has group_by_position(mesh.positions) already.
+void classify_enclosures(Mesh& mesh, std::span<const std::uint32_t> position_group);
 
 }  // namespace toond::scene

@@ -3,6 +3,7 @@
 // sphere around its box (which leaves a sphere filling half the frame). The
 // outline of a projection is made of points extreme in some direction, so a
 // render projects these few instead of every vertex.
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -19,5 +20,11 @@ inline constexpr int kExtremeDirections = 256;
 // kExtremeDirections of them, in no particular order. Linear in the number
 // of positions.
 std::vector<glm::vec3> extreme_points(std::span<const glm::vec3> positions);
+// The same, searching only the first vertex at each point: `position_group`
+// is group_by_position(positions) (scene/mesh_processing.h), which an
+// import has at hand. A copy of a point (split for shading or a seam) is
+// never farther than the point itself.
+std::vector<glm::vec3> extreme_points(std::span<const glm::vec3> positions,
+                                      std::span<const std::uint32_t> position_group);
 
 }  // namespace toond::scene

@@ -1,13 +1,14 @@
 #include "scene/mesh_builder.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <unordered_map>
 
 #include "scene/import_error.h"
 #include "scene/extreme_points.h"
+#include "scene/flat_map.h"
 #include "scene/mesh_processing.h"
 #include "scene/duplicate_triangles.h"
 #include "scene/normals_by_angle.h"
@@ -136,8 +137,12 @@ class Builder {
                                                "degenerate faces, or nothing at all)");
     }
     assign_materials(src_.triangles);
-    std::stable_sort(src_.triangles.begin(), src_.triangles.end(),
-                     [](const SourceTriangle& a, const SourceTriangle& b) { return a.material < b.material; });
+    const auto by_material = [](const SourceTriangle& a, const SourceTriangle& b) { return a.material < b.material; };
+    // Most files are sorted already (one material, or a run per material),
+    // and a stable sort moves every triangle of a sorted list all the same.
+    if (!std::is_sorted(src_.triangles.begin(), src_.triangles.end(), by_material)) {
+      std::stable_sort(src_.triangles.begin(), src_.triangles.end(), by_material);
+    }
     drop_repeated();
     build();
     return std::move(mesh_);
@@ -369,16 +374,16 @@ class Builder {
         corner_groups_by_angle(mesh.positions, position_class, mesh.indices, eligible, src_.smooth_angle_deg);
     constexpr std::uint32_t kNone = ~0u;
     std::vector<std::uint32_t> group_of_vertex(mesh.positions.size(), kNone);
-    std::unordered_map<std::uint64_t, std::uint32_t> copies;
+    FlatMap<std::uint64_t, std::uint32_t, std::hash<std::uint64_t>> copies;
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
       if (!eligible[c]) continue;
       const std::uint32_t v = mesh.indices[c];
       const std::uint32_t g = corner_group[c];
       if (group_of_vertex[v] == kNone) group_of_vertex[v] = g;
       if (group_of_vertex[v] == g) continue;
-      const auto [it, inserted] = copies.try_emplace((static_cast<std::uint64_t>(v) << 32) | g, 0u);
+      const auto [copy, inserted] =
+          copies.try_emplace((static_cast<std::uint64_t>(v) << 32) | g, static_cast<std::uint32_t>(mesh.positions.size()));
       if (inserted) {
-        it->second = static_cast<std::uint32_t>(mesh.positions.size());
         mesh.positions.push_back(mesh.positions[v]);
         mesh.normals.push_back(mesh.normals[v]);
         mesh.texcoords.push_back(mesh.texcoords[v]);
@@ -390,7 +395,7 @@ class Builder {
         position_class.push_back(position_class[v]);
         group_of_vertex.push_back(g);
       }
-      mesh.indices[c] = it->second;
+      mesh.indices[c] = copy;
     }
     return group_of_vertex;
   }
@@ -409,7 +414,7 @@ class Builder {
       }
     }
 
-    std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> vertex_of;
+    FlatMap<VertexKey, std::uint32_t, VertexKeyHash> vertex_of(triangles.size());
     std::vector<std::int64_t> smoothing_of_vertex;
     std::vector<bool> needs_normal;
     std::vector<std::int64_t> file_tangents;  // per vertex: its corner's tangent in the source, or -1
@@ -434,7 +439,7 @@ class Builder {
         }
         const VertexKey key{corner.position, has_normal ? corner.normal : -1, corner.texcoord, corner.tangent,
                             smoothing};
-        const auto [it, inserted] = vertex_of.emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+        const auto [vertex, inserted] = vertex_of.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
         if (inserted) {
           if (mesh.positions.size() >= std::numeric_limits<std::uint32_t>::max()) {
             throw ImportError(src_.file, src_.file + " has too many vertices");
@@ -459,7 +464,7 @@ class Builder {
           smoothing_of_vertex.push_back(smoothing);
           needs_normal.push_back(!has_normal);
         }
-        mesh.indices.push_back(it->second);
+        mesh.indices.push_back(vertex);
       }
     }
     if (bad_texcoords > 0) {
@@ -472,13 +477,15 @@ class Builder {
     mesh.weld_tolerance = weld.tolerance;
     mesh.welded_positions = weld.moved;
 
+    // Which vertices lie at one point, for every step below; split copies
+    // made for normals by angle join their original's class.
+    std::vector<std::uint32_t> position_class = group_by_position(mesh.positions);
     if (std::find(needs_normal.begin(), needs_normal.end(), true) != needs_normal.end()) {
-      std::vector<std::uint32_t> position_class = group_by_position(mesh.positions);
       // Without smoothing groups the angle between faces decides.
       const std::vector<std::uint32_t> angle_group =
           smoothing_in_use ? std::vector<std::uint32_t>{}
                            : split_by_angle(position_class, needs_normal, smoothing_of_vertex, file_tangents);
-      std::unordered_map<GroupKey, std::uint32_t, GroupKeyHash> group_ids;
+      FlatMap<GroupKey, std::uint32_t, GroupKeyHash> group_ids(mesh.positions.size());
       std::vector<std::uint32_t> groups(mesh.positions.size());
       for (std::size_t v = 0; v < groups.size(); ++v) {
         // A vertex that brought its own normal forms a group of its own
@@ -486,7 +493,7 @@ class Builder {
         const GroupKey key = !needs_normal[v] ? GroupKey{static_cast<std::uint32_t>(v), std::numeric_limits<std::int64_t>::min()}
                              : !angle_group.empty() ? GroupKey{angle_group[v], kAngleGroup}
                                                     : GroupKey{position_class[v], smoothing_of_vertex[v]};
-        groups[v] = group_ids.emplace(key, static_cast<std::uint32_t>(group_ids.size())).first->second;
+        groups[v] = group_ids.try_emplace(key, static_cast<std::uint32_t>(group_ids.size())).first;
       }
       const auto computed = compute_grouped_normals(mesh.positions, mesh.indices, groups);
       for (std::size_t v = 0; v < groups.size(); ++v) {
@@ -495,13 +502,13 @@ class Builder {
     }
 
     check_import_time(src_.limits, "computing normals");
-    mesh.outline_normals = compute_outline_normals(mesh.positions, mesh.indices, mesh.normals);
+    mesh.outline_normals = compute_outline_normals(mesh.positions, mesh.indices, mesh.normals, position_class);
     check_import_time(src_.limits, "computing outline normals");
     mesh.tangents = compute_tangents(mesh.positions, mesh.normals, mesh.texcoords, mesh.indices);
     keep_file_tangents(mesh, file_tangents);
     mesh.bounds = compute_bounds(mesh.positions);
-    mesh.extremes = extreme_points(mesh.positions);
-    mesh.creases = measure_creases(mesh.positions, mesh.normals, mesh.indices);
+    mesh.extremes = extreme_points(mesh.positions, position_class);
+    mesh.creases = measure_creases(mesh.positions, mesh.normals, mesh.indices, position_class);
     mesh.cost = measure_render_cost(mesh.positions, mesh.indices, mesh.bounds.max - mesh.bounds.min);
     check_import_time(src_.limits, "measuring the mesh");
 

@@ -3,12 +3,13 @@
 #include <meshoptimizer.h>
 
 #include <algorithm>
+#include <functional>
+#include <optional>
 #include <array>
 #include <cmath>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "scene/edge_table.h"
+#include "scene/flat_map.h"
 #include "scene/mesh_processing.h"
 
 namespace toond::scene {
@@ -44,8 +45,7 @@ struct CornerGroupsHash {
 std::vector<bool> droppable_triangles(const std::vector<std::uint32_t>& position_group,
                                       const std::vector<std::uint32_t>& indices) {
   std::vector<bool> drop(indices.size() / 3, false);
-  std::unordered_set<std::array<std::uint32_t, 3>, CornerGroupsHash> seen;
-  seen.reserve(drop.size());
+  FlatMap<std::array<std::uint32_t, 3>, bool, CornerGroupsHash> seen(drop.size());
   for (std::size_t t = 0; t < drop.size(); ++t) {
     auto g = corner_groups(position_group, &indices[3 * t]);
     if (g[0] == g[1] || g[1] == g[2] || g[2] == g[0]) {
@@ -53,7 +53,7 @@ std::vector<bool> droppable_triangles(const std::vector<std::uint32_t>& position
       continue;
     }
     std::rotate(g.begin(), std::min_element(g.begin(), g.end()), g.end());
-    drop[t] = !seen.insert(g).second;
+    drop[t] = !seen.try_emplace(g, true).second;
   }
   return drop;
 }
@@ -76,28 +76,28 @@ std::vector<std::uint32_t> valence_of_positions(const std::vector<std::uint32_t>
 class CompactIds {
  public:
   std::uint32_t local(std::uint32_t model_id) {
-    const auto [it, added] = local_of_.emplace(model_id, static_cast<std::uint32_t>(to_model_.size()));
+    const auto [local, added] = local_of_.try_emplace(model_id, static_cast<std::uint32_t>(to_model_.size()));
     if (added) to_model_.push_back(model_id);
-    return it->second;
+    return local;
   }
   const std::vector<std::uint32_t>& to_model() const { return to_model_; }
 
  private:
-  std::unordered_map<std::uint32_t, std::uint32_t> local_of_;
+  FlatMap<std::uint32_t, std::uint32_t, std::hash<std::uint32_t>> local_of_;
   std::vector<std::uint32_t> to_model_;
 };
 
 // The position groups refined by how vertices move: two vertices are one
 // point for the levels only where they also move alike, so a triangle whose
 // corners a pose pulls apart is never taken for a sliver.
-std::vector<std::uint32_t> groups_moving_alike(const std::vector<glm::vec3>& positions,
+std::vector<std::uint32_t> groups_moving_alike(std::span<const std::uint32_t> position_group,
                                                const std::vector<std::uint32_t>& motion_class) {
-  std::vector<std::uint32_t> groups = group_by_position(positions);
+  std::vector<std::uint32_t> groups(position_group.begin(), position_group.end());
   if (motion_class.empty()) return groups;
-  std::unordered_map<std::uint64_t, std::uint32_t> refined;
+  FlatMap<std::uint64_t, std::uint32_t, std::hash<std::uint64_t>> refined(groups.size());
   for (std::size_t v = 0; v < groups.size(); ++v) {
     const std::uint64_t key = (std::uint64_t{groups[v]} << 32) | motion_class[v];
-    groups[v] = refined.emplace(key, static_cast<std::uint32_t>(refined.size())).first->second;
+    groups[v] = refined.try_emplace(key, static_cast<std::uint32_t>(refined.size())).first;
   }
   return groups;
 }
@@ -231,6 +231,11 @@ void optimize_for_vertex_cache(Mesh& mesh) {
 }
 
 std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options) {
+  return build_lod_chain(mesh, group_by_position(mesh.positions), options);
+}
+
+std::vector<MeshLod> build_lod_chain(const Mesh& mesh, std::span<const std::uint32_t> groups,
+                                     const LodOptions& options) {
   std::vector<MeshLod> chain;
   if (mesh.positions.empty() || mesh.indices.empty()) return chain;
 
@@ -239,8 +244,10 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options
   // A level may not open the surface more than the full mesh is open:
   // meshopt occasionally tears one open, and a torn level would show
   // through the outline as a gap in the hull.
-  const std::vector<std::uint32_t> position_group = groups_moving_alike(mesh.positions, options.motion_class);
-  const std::size_t full_open_edges = open_edge_count(position_group, mesh.indices);
+  const std::vector<std::uint32_t> position_group = groups_moving_alike(groups, options.motion_class);
+  // Counted once a level is made: a mesh that gives none (a fan around one
+  // hub, whose triangles all stay) need not count them.
+  std::optional<std::size_t> full_open_edges;
 
   std::vector<std::uint32_t> source = mesh.indices;
   std::vector<Submesh> source_subs = mesh.submeshes;
@@ -273,13 +280,18 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options
     source_triangles = triangles;
     // The next level still grows from a torn one (seen to close again),
     // but a torn level is never drawn.
-    if (open_edge_count(position_group, lod.indices) <= full_open_edges) chain.push_back(std::move(lod));
+    if (!full_open_edges) full_open_edges = open_edge_count(position_group, mesh.indices);
+    if (open_edge_count(position_group, lod.indices) <= *full_open_edges) chain.push_back(std::move(lod));
   }
   return chain;
 }
 
 void prepare_levels_of_detail(Mesh& mesh, const LodOptions& options) {
-  mesh.lods = build_lod_chain(mesh, options);
+  prepare_levels_of_detail(mesh, group_by_position(mesh.positions), options);
+}
+
+void prepare_levels_of_detail(Mesh& mesh, std::span<const std::uint32_t> position_group, const LodOptions& options) {
+  mesh.lods = build_lod_chain(mesh, position_group, options);
   optimize_for_vertex_cache(mesh);
 }
 

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "scene/model.h"
@@ -56,9 +57,13 @@ void optimize_for_vertex_cache(Mesh& mesh);
 // bound of how far a level's surface strays from the full mesh, in the
 // mesh's own units (summed over the simplification steps that made it).
 std::vector<MeshLod> build_lod_chain(const Mesh& mesh, const LodOptions& options = {});
+// The same for a caller that has group_by_position(mesh.positions) already.
+std::vector<MeshLod> build_lod_chain(const Mesh& mesh, std::span<const std::uint32_t> position_group,
+                                     const LodOptions& options);
 
 // Both of the above, as the importer runs them: the chain is built and
 // every index buffer reordered for the vertex cache.
 void prepare_levels_of_detail(Mesh& mesh, const LodOptions& options = {});
+void prepare_levels_of_detail(Mesh& mesh, std::span<const std::uint32_t> position_group, const LodOptions& options);
 
 }  // namespace toond::scene

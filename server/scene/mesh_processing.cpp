@@ -5,12 +5,13 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <unordered_map>
 
 #include "scene/edge_table.h"
 
 namespace toond::scene {
 namespace {
+
+constexpr std::uint32_t kNoGroup = ~0u;
 
 // Longest outline offset, in units of the outline width.
 constexpr double kMaxMitre = 3.0;
@@ -25,14 +26,6 @@ struct PositionKey {
   bool operator==(const PositionKey&) const = default;
 };
 
-struct PositionKeyHash {
-  std::size_t operator()(const PositionKey& k) const noexcept {
-    std::uint64_t h = 1469598103934665603ull;
-    for (const auto b : k.bits) h = (h ^ b) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
-  }
-};
-
 PositionKey key_of(const glm::vec3& p) {
   PositionKey key{};
   for (int i = 0; i < 3; ++i) {
@@ -40,6 +33,14 @@ PositionKey key_of(const glm::vec3& p) {
     std::memcpy(&key.bits[static_cast<std::size_t>(i)], &value, sizeof value);
   }
   return key;
+}
+
+// FNV-1a over the three words, then Fibonacci hashing: the table's index
+// is taken from the top bits, which the multiply mixes best.
+std::uint64_t hash_of(const PositionKey& k) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const auto b : k.bits) h = (h ^ b) * 1099511628211ull;
+  return h * 0x9E3779B97F4A7C15ull;
 }
 
 glm::vec3 to_unit_float(const glm::dvec3& v) {
@@ -88,15 +89,49 @@ void for_each_shaded_triangle(std::span<const glm::vec3> positions, std::span<co
   }
 }
 
+// A triangle with an area: its corners (vertex ids), unit normal and
+// corner angles.
+struct ShadedTriangle {
+  std::uint32_t corner[3];
+  glm::dvec3 normal;
+  glm::dvec3 angles;
+};
+
+std::vector<ShadedTriangle> shaded_triangles(std::span<const glm::vec3> positions,
+                                             std::span<const std::uint32_t> indices) {
+  std::vector<ShadedTriangle> shaded;
+  shaded.reserve(indices.size() / 3);
+  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&)[3],
+                                                   const glm::dvec3& n, const glm::dvec3& angles) {
+    shaded.push_back({{i[0], i[1], i[2]}, n, angles});
+  });
+  return shaded;
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> group_by_position(std::span<const glm::vec3> positions) {
-  std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> ids;
-  ids.reserve(positions.size());
+  // Open addressing in one flat array sized once, each slot the first
+  // vertex at a point: an import asks for the groups of every vertex, and a
+  // node per point (a std::unordered_map) cost an allocation each and
+  // scattered the points over the heap. A slot of four bytes keeps the
+  // table in cache where a copy of the key beside it would not.
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 2 * positions.size()) ++bits;
+  std::vector<std::uint32_t> slots(std::size_t{1} << bits, kNoGroup);  // the first vertex at a point
+  const std::size_t mask = slots.size() - 1;
   std::vector<std::uint32_t> groups(positions.size());
+  std::uint32_t next = 0;
   for (std::size_t v = 0; v < positions.size(); ++v) {
-    const auto [it, inserted] = ids.emplace(key_of(positions[v]), static_cast<std::uint32_t>(ids.size()));
-    groups[v] = it->second;
+    const PositionKey key = key_of(positions[v]);
+    std::size_t i = static_cast<std::size_t>(hash_of(key) >> (64 - bits));
+    while (slots[i] != kNoGroup && !(key_of(positions[slots[i]]) == key)) i = (i + 1) & mask;
+    if (slots[i] == kNoGroup) {
+      slots[i] = static_cast<std::uint32_t>(v);
+      groups[v] = next++;
+    } else {
+      groups[v] = groups[slots[i]];
+    }
   }
   return groups;
 }
@@ -139,7 +174,13 @@ std::vector<glm::vec3> compute_angle_weighted_normals(std::span<const glm::vec3>
 std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positions,
                                                std::span<const std::uint32_t> indices,
                                                std::span<const glm::vec3> shading_normals) {
-  const auto groups = group_by_position(positions);
+  return compute_outline_normals(positions, indices, shading_normals, group_by_position(positions));
+}
+
+std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positions,
+                                               std::span<const std::uint32_t> indices,
+                                               std::span<const glm::vec3> shading_normals,
+                                               std::span<const std::uint32_t> groups) {
   const std::size_t group_count = groups.empty() ? 0 : *std::max_element(groups.begin(), groups.end()) + 1u;
 
   // Every direction a vertex's hull must move away from: its faces' normals
@@ -156,47 +197,61 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
       ++edge_use[edge_key(indices[t + static_cast<std::size_t>(k)], indices[t + static_cast<std::size_t>((k + 1) % 3)])];
     }
   }
+  // Every triangle with an area, its normal and corner angles found once:
+  // the pushes are visited twice and the face directions once, and the
+  // angles' arc tangents were most of the time.
+  const std::vector<ShadedTriangle> shaded = shaded_triangles(positions, indices);
   // A few distinct face directions per position, to tell a real rim from
   // an edge that only looks open: at a T-junction (one face splits an edge
   // its neighbour does not) the edge is used once, but the neighbour's face
   // already pushes the way the rim would. Counting both tilted a corner's
-  // offset off its faces and its mitre out to three widths.
+  // offset off its faces and its mitre out to three widths. Each is kept as
+  // the triangle whose normal it is.
   constexpr std::size_t kDirectionsKept = 8;
-  std::vector<glm::dvec3> face_directions(group_count * kDirectionsKept);
+  std::vector<std::uint32_t> face_directions(group_count * kDirectionsKept);
   std::vector<std::uint8_t> directions_known(group_count, 0);
-  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&)[3],
-                                                   const glm::dvec3& n, const glm::dvec3&) {
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t g = groups[i[k]];
-      const glm::dvec3* dirs = &face_directions[g * kDirectionsKept];
-      const bool known = std::any_of(dirs, dirs + directions_known[g], [&](const glm::dvec3& d) { return glm::dot(d, n) > 0.999; });
-      if (!known && directions_known[g] < kDirectionsKept) face_directions[g * kDirectionsKept + directions_known[g]++] = n;
-    }
-  });
-  auto faces_push_that_way = [&](std::uint32_t group, const glm::dvec3& direction) {
-    const glm::dvec3* dirs = &face_directions[group * kDirectionsKept];
-    return std::any_of(dirs, dirs + directions_known[group], [&](const glm::dvec3& d) { return glm::dot(d, direction) > 0.7; });
+  const auto directions_of = [&](std::uint32_t group) {
+    return std::span(&face_directions[group * kDirectionsKept], directions_known[group]);
   };
+  for (std::uint32_t s = 0; s < shaded.size(); ++s) {
+    const glm::dvec3& n = shaded[s].normal;
+    for (const std::uint32_t corner : shaded[s].corner) {
+      const std::uint32_t g = groups[corner];
+      const auto dirs = directions_of(g);
+      const bool known = std::any_of(dirs.begin(), dirs.end(), [&](std::uint32_t d) { return glm::dot(shaded[d].normal, n) > 0.999; });
+      if (!known && directions_known[g] < kDirectionsKept) face_directions[g * kDirectionsKept + directions_known[g]++] = s;
+    }
+  }
+  auto faces_push_that_way = [&](std::uint32_t group, const glm::dvec3& direction) {
+    const auto dirs = directions_of(group);
+    return std::any_of(dirs.begin(), dirs.end(), [&](std::uint32_t d) { return glm::dot(shaded[d].normal, direction) > 0.7; });
+  };
+  // The pushes across open rims, found once for both visits.
+  struct RimPush {
+    std::uint32_t group;
+    glm::dvec3 outward;
+  };
+  std::vector<RimPush> rim_pushes;
+  for (const ShadedTriangle& tri : shaded) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = tri.corner[k], b = tri.corner[(k + 1) % 3];
+      if (edge_use.get(edge_key(a, b)) != 1) continue;
+      // In the face's plane, perpendicular to the edge, away from the
+      // triangle (counter-clockwise winding puts the interior on the left).
+      const glm::dvec3 outward =
+          glm::normalize(glm::cross(glm::dvec3(positions[b]) - glm::dvec3(positions[a]), tri.normal));
+      for (const std::uint32_t g : {groups[a], groups[b]}) {
+        if (!faces_push_that_way(g, outward)) rim_pushes.push_back({g, outward});
+      }
+    }
+  }
   // Calls push(group, direction, weight) for every push of every position.
   auto for_each_push = [&](auto&& push) {
-    for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&)[3],
-                                                     const glm::dvec3& n, const glm::dvec3& angles) {
-      for (int k = 0; k < 3; ++k) push(groups[i[k]], n, angles[k]);
-    });
-    for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&p)[3],
-                                                     const glm::dvec3& n, const glm::dvec3&) {
-      for (int k = 0; k < 3; ++k) {
-        const int a = k, b = (k + 1) % 3;
-        if (edge_use.get(edge_key(i[a], i[b])) != 1) continue;
-        // In the face's plane, perpendicular to the edge, away from the
-        // triangle (counter-clockwise winding puts the interior on the left).
-        const glm::dvec3 outward = glm::normalize(glm::cross(p[b] - p[a], n));
-        const double quarter_turn = std::acos(0.0);
-        for (const std::uint32_t g : {groups[i[a]], groups[i[b]]}) {
-          if (!faces_push_that_way(g, outward)) push(g, outward, quarter_turn);
-        }
-      }
-    });
+    for (const ShadedTriangle& tri : shaded) {
+      for (int k = 0; k < 3; ++k) push(groups[tri.corner[k]], tri.normal, tri.angles[k]);
+    }
+    const double quarter_turn = std::acos(0.0);
+    for (const RimPush& rim : rim_pushes) push(rim.group, rim.outward, quarter_turn);
   };
 
   std::vector<glm::dvec3> sums(group_count, glm::dvec3(0.0));

@@ -49,6 +49,11 @@ std::vector<glm::vec3> compute_angle_weighted_normals(std::span<const glm::vec3>
 std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positions,
                                                std::span<const std::uint32_t> indices,
                                                std::span<const glm::vec3> shading_normals);
+// The same for a caller that has group_by_position(positions) already.
+std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positions,
+                                               std::span<const std::uint32_t> indices,
+                                               std::span<const glm::vec3> shading_normals,
+                                               std::span<const std::uint32_t> groups);
 
 // Some unit vector perpendicular to `n` (normalised first; +Y when it has no
 // direction), continuous in n everywhere but near -Z (the branch-free

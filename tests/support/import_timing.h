@@ -19,6 +19,11 @@ struct ScalingMeasure {
   double ratio() const { return seconds_2n / seconds_n; }
 };
 
+// The calling thread's CPU time (user and system, page faults included):
+// the import runs on it alone, and time the scheduler gives to other
+// processes of a busy machine does not count.
+double thread_seconds();
+
 // Makes malloc reuse freed memory instead of returning it to the kernel and
 // mapping fresh pages for the next import. On the 2-core VM a fresh page's
 // first touch costs more the more pages a process maps at once: the same
