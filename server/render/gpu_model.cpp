@@ -131,6 +131,7 @@ GpuModel::GpuModel(const scene::Model& model)
   };
   add_creases(levels_[0], mesh.crease_edges);
   for (std::size_t i = 0; i < mesh.lods.size(); ++i) add_creases(levels_[i + 1], mesh.lods[i].crease_edges);
+  upload_intersections(mesh);
 
   vertices_ = gpu::Buffer::create();
   glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
@@ -174,6 +175,34 @@ GpuModel::GpuModel(const scene::Model& model)
     material_blocks_.push_back(material_arena_.add(block));
   }
   material_arena_.upload();
+}
+
+void GpuModel::upload_intersections(const scene::Mesh& mesh) {
+  parts_ = mesh.parts;
+  std::vector<glm::vec3> points;
+  auto add_level = [&](Level& level, const scene::IntersectionLines& lines) {
+    level.first_seam_index = points.size();
+    level.seams_over = lines.edges_over;
+    points.insert(points.end(), lines.points.begin(), lines.points.end());
+    intersections_complete_ = intersections_complete_ && lines.complete;
+  };
+  add_level(levels_[0], mesh.intersections);
+  for (std::size_t i = 0; i < mesh.lods.size(); ++i) add_level(levels_[i + 1], mesh.lods[i].intersections);
+  if (points.empty()) return;
+  std::vector<std::uint32_t> indices(points.size());
+  for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint32_t>(i);
+  seam_points_ = gpu::Buffer::create();
+  glNamedBufferStorage(seam_points_.id(), static_cast<GLsizeiptr>(points.size() * sizeof(glm::vec3)), points.data(), 0);
+  seam_indices_ = gpu::Buffer::create();
+  glNamedBufferStorage(seam_indices_.id(), static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
+                       indices.data(), 0);
+  gpu_bytes_ += points.size() * sizeof(glm::vec3) + indices.size() * sizeof(std::uint32_t);
+  seam_vao_ = gpu::VertexArray::create();
+  glVertexArrayVertexBuffer(seam_vao_.id(), 0, seam_points_.id(), 0, sizeof(glm::vec3));
+  glVertexArrayElementBuffer(seam_vao_.id(), seam_indices_.id());
+  glEnableVertexArrayAttrib(seam_vao_.id(), kPositionAttribute);
+  glVertexArrayAttribFormat(seam_vao_.id(), kPositionAttribute, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(seam_vao_.id(), kPositionAttribute, 0);
 }
 
 void GpuModel::bind() const {
@@ -276,6 +305,20 @@ std::size_t GpuModel::draw_creases(std::size_t lod, double degrees, const std::o
     drawn += end - first;
   }
   return drawn;
+}
+
+std::size_t GpuModel::intersection_segments(std::size_t lod, double degrees) const {
+  if (posed_) return 0;
+  const auto whole = static_cast<std::size_t>(std::clamp(std::floor(degrees), 0.0, 180.0));
+  return levels_[lod].seams_over[whole];
+}
+
+std::size_t GpuModel::draw_intersections(std::size_t lod, double degrees) const {
+  const std::size_t segments = intersection_segments(lod, degrees);
+  if (segments == 0) return 0;
+  glBindVertexArray(seam_vao_.id());
+  draw_crease_edges(4 * segments, levels_[lod].first_seam_index);
+  return segments;
 }
 
 void GpuModel::draw_all(std::size_t lod) const {

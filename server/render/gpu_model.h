@@ -1,7 +1,8 @@
 #pragma once
 // A model's GPU copy: one interleaved vertex buffer, one index buffer (the
 // full mesh, then each coarser level of detail, then every level's caps,
-// then every level's crease edges),
+// then every level's crease edges), the points of every level's
+// intersection segments in a buffer of their own,
 // its textures (sRGB, mipmapped, repeating), per-material draw ranges, one
 // uniform block per material and, for a rigged model, its skinning
 // (render/gpu_skin.h).
@@ -83,6 +84,19 @@ class GpuModel {
   // from it (render/facing_runs.h; all of them while posed, since the runs
   // hold the rest pose). Returns how many edges it drew.
   std::size_t draw_creases(std::size_t lod, double degrees, const std::optional<MeshViewer>& viewer) const;
+  // How many of a level's segments where parts cross turn by more than
+  // `degrees` (scene/intersection_lines.h); none while posed (they hold
+  // the rest pose).
+  std::size_t intersection_segments(std::size_t lod, double degrees) const;
+  // Those segments as GL_LINES_ADJACENCY primitives (the crease pass's,
+  // p1, a, b, p2), from a vertex array of their own, left bound. Returns
+  // how many it drew.
+  std::size_t draw_intersections(std::size_t lod, double degrees) const;
+  // How many connected parts the mesh has (scene::Mesh::parts), and
+  // whether the search for where they cross saw it through on every level
+  // (scene::IntersectionLines::complete).
+  std::uint32_t parts() const { return parts_; }
+  bool intersections_complete() const { return intersections_complete_; }
   // `index_count` indices from `first_index` of another element buffer (the
   // hull's faces that may show, render/hull_cull.h), with this model's
   // vertices; its own indices are bound again after.
@@ -167,6 +181,8 @@ class GpuModel {
     // The crease edges' two faces each, as runs of FacingRuns::kRunTriangles
     // faces: half as many edges a run, in the edges' order.
     FacingRuns crease_runs{};
+    std::size_t first_seam_index = 0;  // the intersection segments' range of seam_indices_, four a segment
+    std::array<std::uint32_t, 181> seams_over{};  // scene::IntersectionLines::edges_over
   };
   std::vector<Level> levels_;
   // The rest pose's positions and outline offsets and every level's
@@ -175,10 +191,18 @@ class GpuModel {
   HullCullMesh::Stream outline_offsets_;
   std::shared_ptr<const std::vector<std::uint32_t>> all_indices_;
   void pose_into_vertex_buffer(const scene::Model& model, const scene::PoseSums& sums);
+  void upload_intersections(const scene::Mesh& mesh);
   std::vector<double> lod_errors_;
   scene::Bounds bounds_;
   std::vector<glm::vec3> extremes_;
   scene::CreaseProfile creases_;
+  // Every level's intersection segments: their points (positions only)
+  // and indices counting through them, in a vertex array of their own.
+  gpu::VertexArray seam_vao_;
+  gpu::Buffer seam_points_;
+  gpu::Buffer seam_indices_;
+  std::uint32_t parts_ = 1;
+  bool intersections_complete_ = true;
   glm::dvec3 origin_{0.0};
   bool has_vertex_colors_ = false;
   std::size_t gpu_bytes_ = 0;

@@ -7,6 +7,7 @@
 #include "bundle_paths/model_formats.h"
 #include "scene/assimp_import.h"
 #include "scene/crease_edges.h"
+#include "scene/intersection_lines.h"
 #include "scene/enclosure.h"
 #include "scene/gltf_container.h"
 #include "scene/gltf_import.h"
@@ -131,6 +132,10 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
   classify_enclosures(model.mesh);
   find_crease_edges(model.mesh);
   check_import_time(limits, "finding crease edges");
+  IntersectionSearch crossings;
+  crossings.check_time = [&limits] { check_import_time(limits, "finding where parts cross"); };
+  find_intersection_lines(model.mesh, crossings);
+  check_import_time(limits, "finding where parts cross");
   return model;
 }
 
