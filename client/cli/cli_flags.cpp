@@ -81,7 +81,7 @@ const Flag kFlags[] = {
        }
        t.options.smooth_angle = v;
      }},
-    {{"", "--up", "y|z", "the file's up axis: z for Z-up CAD and 3D-printing files"}, kUpload, false,
+    {{"", "--up", "y|z", "the file's up axis (default: the format's, z for STL, PLY, 3MF, AMF)"}, kUpload, false,
      [](FlagTarget& t, Value v) {
        if (v != "y" && v != "z") throw UsageError("--up '" + v + "': expected y or z");
        t.options.up = v;
@@ -94,9 +94,10 @@ const Flag kFlags[] = {
     {{"", "--set", "key.sub=value",
       "set one parameter, checked against the schema before\n"
       "anything is sent; may be repeated, later ones win.\n"
-      "Arrays and objects are written as JSON:\n"
+      "Lists are comma-separated or JSON, objects JSON:\n"
       "  --set outline.width=3 --set shading.steps=4\n"
-      "  --set background=[1,1,1] --set lights.0.intensity=1.5"},
+      "  --set background=1,1,1 --set lights.0.intensity=1.5\n"
+      "  --set outline.method=hull,edges --set sheet.animation.clip=walk"},
      kRender, true,
      [](FlagTarget& t, Value v) {
        const std::size_t eq = v.find('=');
@@ -158,14 +159,16 @@ with its own id). In a file without normals, faces meeting at more than 30
 degrees keep their own normals and shallower edges are smoothed (normals by
 angle, as Blender's Auto Smooth; OBJ smoothing groups decide where the file
 has them; glTF without normals is flat, as its specification says):
---smooth-angle D changes the angle, and --up z turns a Z-up file (most CAD
-and 3D-printing exports) upright. Each is part of the model's id.
+--smooth-angle D changes the angle, and --up y|z says which of the file's
+axes is up (default: the format's convention, z for STL, PLY, 3MF and AMF,
+y for the rest). Each is part of the model's id.
 Prints the daemon's answer (id, triangles, materials, textures, warnings).
 )"},
     {Verb::info, "info", "ID", "show what the daemon knows of a stored model, its animation clips too",
      R"(Asks the daemon for GET /models/ID and prints its answer: triangles,
 materials, textures, files, the import's warnings and, for a model that
-moves, its animation clips (name, duration in seconds, channels) with its
+moves, its animation clips (name, duration in seconds, channels, and frame_rate
+where the format keys by frame) with its
 joint and morph-target counts. A clip is rendered with
 --set animation.clip=NAME --set animation.time=SECONDS.
 )"},

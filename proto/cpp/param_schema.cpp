@@ -9,6 +9,8 @@
 #include <cerrno>
 #include <charconv>
 #include <cstdlib>
+#include <optional>
+#include <vector>
 
 #include "toond_proto_files.h"
 
@@ -39,6 +41,129 @@ const json* child_schema(const json& schema, const std::string& name) {
 const json* items_schema(const json& schema) {
   auto items = schema.find("items");
   return items != schema.end() && items->is_object() ? &*items : nullptr;
+}
+
+// The schemas a field may take: its oneOf or anyOf alternatives, or itself.
+std::vector<const json*> alternatives(const json& schema) {
+  std::vector<const json*> out;
+  for (const char* key : {"oneOf", "anyOf"}) {
+    if (auto list = schema.find(key); list != schema.end() && list->is_array()) {
+      for (const json& alternative : *list) out.push_back(&alternative);
+    }
+  }
+  if (out.empty()) out.push_back(&schema);
+  return out;
+}
+
+bool is_index(const std::string& segment) {
+  return !segment.empty() && segment.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// The schema of `segment` under `schema` for a dotted key: a property of
+// an object, an index into an array, or either of them in one of the
+// field's alternatives (sheet.animation is one clip's object or a list of
+// them: sheet.animation.clip and sheet.animation.0.clip both name a clip).
+const json* segment_schema(const json& schema, const std::string& segment) {
+  for (const json* alternative : alternatives(schema)) {
+    if (const json* property = child_schema(*alternative, segment)) return property;
+    if (const json* items = items_schema(*alternative); items && is_index(segment)) return items;
+  }
+  return nullptr;
+}
+
+// Command-line text as a value of a scalar schema type; nullopt when it is
+// not one.
+std::optional<json> scalar_from_text(const std::string& type, const std::string& raw) {
+  if (type == "string") return json(raw);
+  if (type == "boolean") {
+    if (raw == "true" || raw == "1" || raw == "on") return json(true);
+    if (raw == "false" || raw == "0" || raw == "off") return json(false);
+    return std::nullopt;
+  }
+  if (type == "integer") {
+    long long v = 0;
+    const auto [ptr, ec] = std::from_chars(raw.data(), raw.data() + raw.size(), v);
+    if (ec != std::errc() || ptr != raw.data() + raw.size()) return std::nullopt;
+    return json(v);
+  }
+  if (type == "number") {
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(raw.c_str(), &end);
+    if (raw.empty() || end != raw.c_str() + raw.size() || errno == ERANGE) return std::nullopt;
+    return json(v);
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> split_commas(const std::string& raw) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = raw.find(',', start);
+    parts.push_back(raw.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) return parts;
+    start = comma + 1;
+  }
+}
+
+// Command-line text as a value of `schema`: a scalar type as itself; a list
+// as JSON or as comma-separated items (outline.method=hull,edges,
+// background=1,1,1); a field of alternatives as the first that takes it,
+// JSON first where the text is JSON (clip=3 is an index, clip=walk a name);
+// an object as JSON. nullopt when nothing takes it.
+std::optional<json> value_from_text(const json& schema, const std::string& raw) {
+  const json parsed = json::parse(raw, nullptr, false);
+  const std::vector<const json*> choices = alternatives(schema);
+  std::vector<const json*> lists;
+  for (const json* alternative : choices) {
+    if (alternative->value("type", "") == "array") lists.push_back(alternative);
+  }
+  // Commas make a list where the field takes one (outline.method=hull,edges).
+  const bool list_text = !lists.empty() && raw.find(',') != std::string::npos;
+  bool untyped = false;
+  for (const json* alternative : choices) {
+    const std::string type = alternative->value("type", "");
+    if (type.empty()) untyped = true;
+    if (type == "object") {
+      if (parsed.is_object()) return parsed;
+    } else if (type != "array" && !list_text) {
+      // Text that reads as JSON of another alternative's type (3 for a clip
+      // given by index) is taken as that type, not as a name.
+      const bool json_of_other_type = type == "string" && choices.size() > 1 && !parsed.is_discarded() &&
+                                      !parsed.is_string();
+      if (json_of_other_type) continue;
+      if (const auto scalar = scalar_from_text(type, raw)) return scalar;
+    }
+  }
+  for (const json* list : lists) {
+    if (parsed.is_array()) return parsed;
+    const json* items = items_schema(*list);
+    json out = json::array();
+    for (const std::string& part : split_commas(raw)) {
+      const auto item = items ? value_from_text(*items, part) : std::optional<json>(json(part));
+      if (!item) return std::nullopt;
+      out.push_back(*item);
+    }
+    return out;
+  }
+  if (!parsed.is_discarded() && choices.size() > 1) return parsed;
+  if (untyped) return parsed.is_discarded() ? json(raw) : parsed;
+  return std::nullopt;
+}
+
+// What a field takes, for an error: "a number", "a string or a list".
+std::string expected_text(const json& schema) {
+  std::string out;
+  for (const json* alternative : alternatives(schema)) {
+    const std::string type = alternative->value("type", "");
+    const std::string name = type == "array"     ? "a comma-separated list (or JSON array)"
+                             : type == "object"  ? "JSON for an object"
+                             : type == "integer" ? "an integer"
+                             : type == "boolean" ? "true or false"
+                                                 : "a " + type;
+    if (!type.empty() && out.find(name) == std::string::npos) out += (out.empty() ? "" : " or ") + name;
+  }
+  return out.empty() ? "a value" : out;
 }
 
 // Unknown names are found by walking the schema itself, so the error can point
@@ -193,12 +318,7 @@ void ParamSchema::set_from_text(nlohmann::json& params, std::string_view dotted,
   const json* schema = &document_;
   std::vector<const json*> chain;  // the schema of each segment
   for (const auto& seg : segments) {
-    const json* next = child_schema(*schema, seg);
-    if (!next) {
-      const json* items = items_schema(*schema);
-      bool is_index = !seg.empty() && seg.find_first_not_of("0123456789") == std::string::npos;
-      next = (items && is_index) ? items : nullptr;
-    }
+    const json* next = segment_schema(*schema, seg);
     if (!next) {
       throw RequestError(400, "unknown_parameter",
                          "unknown parameter '" + key + "' (see GET /schema or proto/)",
@@ -208,52 +328,26 @@ void ParamSchema::set_from_text(nlohmann::json& params, std::string_view dotted,
     chain.push_back(schema);
   }
 
-  const std::string type = schema->value("type", "");
   const std::string raw(text);
-  json value;
   auto fail = [&](const std::string& why) {
     throw RequestError(400, "invalid_parameter", key + "=" + raw + ": " + why,
                        json_pointer(segments));
   };
-  if (type == "string") {
-    value = raw;
-  } else if (type == "boolean") {
-    if (raw == "true" || raw == "1" || raw == "on") value = true;
-    else if (raw == "false" || raw == "0" || raw == "off") value = false;
-    else fail("expected true or false");
-  } else if (type == "integer") {
-    long long v = 0;
-    auto [ptr, ec] = std::from_chars(raw.data(), raw.data() + raw.size(), v);
-    if (ec != std::errc() || ptr != raw.data() + raw.size()) fail("expected an integer");
-    value = v;
-  } else if (type == "number") {
-    char* end = nullptr;
-    errno = 0;
-    double v = std::strtod(raw.c_str(), &end);
-    if (raw.empty() || end != raw.c_str() + raw.size() || errno == ERANGE) fail("expected a number");
-    value = v;
-  } else {
-    // Arrays and objects are given as JSON: --set background=[1,1,1]. A
-    // field that may be one of several types (outline.method: a name or a
-    // list of names) takes JSON when the text is JSON, else the plain text.
-    value = json::parse(raw, nullptr, false);
-    if (value.is_discarded()) {
-      if (!type.empty()) fail("expected JSON for a " + type);
-      value = raw;
-    }
-  }
+  const std::optional<json> converted = value_from_text(*schema, raw);
+  if (!converted) fail("expected " + expected_text(*schema));
+  const json& value = *converted;
 
   json* slot = &params;
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const auto& seg = segments[i];
     if (slot->is_array()) {
+      if (!is_index(seg)) fail("'" + seg + "' names a field, but the value there is a list: give an index");
       std::size_t index = std::stoul(seg);
       if (index > slot->size()) fail("array index " + seg + " skips elements");
       if (index == slot->size()) slot->push_back(json::object());
       slot = &(*slot)[index];
     } else {
-      bool next_is_index = i + 1 < segments.size() &&
-                           segments[i + 1].find_first_not_of("0123456789") == std::string::npos;
+      bool next_is_index = i + 1 < segments.size() && is_index(segments[i + 1]);
       if (!slot->contains(seg)) {
         // `lights.0.intensity=2` means "the default light, brighter", not a
         // light with nothing but an intensity (which lacks its required

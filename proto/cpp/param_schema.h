@@ -34,11 +34,16 @@ class ParamSchema {
   // Same checks, no defaults added.
   void validate(const nlohmann::json& request) const;
 
-  // Sets `dotted` ("outline.width", "lights.0.color", "background") in
-  // `params` from command-line text. The text is converted to the type the
-  // schema gives that field (number, integer, boolean, string, or a JSON
-  // array/object). Throws RequestError naming the key when the schema has no
-  // such field or the text does not fit its type.
+  // Sets `dotted` ("outline.width", "lights.0.color", "background",
+  // "sheet.animation.clip") in `params` from command-line text. The key
+  // walks the schema's objects and arrays, and the alternatives of a field
+  // that may be either (oneOf/anyOf: sheet.animation is a clip's object or a
+  // list of them). The text is converted to the type the schema gives that
+  // field: number, integer, boolean, string; a list as comma-separated
+  // items or JSON; an object as JSON; among alternatives, the first that
+  // takes it (JSON first: animation.clip=3 is an index). Throws RequestError
+  // naming the key when the schema has no such field or the text does not
+  // fit its type.
   void set_from_text(nlohmann::json& params, std::string_view dotted, std::string_view text) const;
 
  private:

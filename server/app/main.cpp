@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -86,7 +87,13 @@ int run(const toond::app::Options& options) {
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   std::signal(SIGPIPE, SIG_IGN);  // a client that hangs up is a failed write, not a crash
 
-  toond::scene::ModelStore store(options.data_dir);
+  toond::scene::StoreOptions store_options;
+  store_options.max_bytes = options.max_store_bytes.value_or(0);
+  // A lease outlives the longest a request holds a model: its wait for the
+  // render, with room for the import and posing before it.
+  store_options.lease_expiry = std::max(std::chrono::seconds(600),
+                                        std::chrono::seconds(static_cast<long long>(2 * options.render_timeout_s)));
+  toond::scene::ModelStore store(options.data_dir, store_options);
   toond::render::RenderService::Options render_options;
   render_options.gpu_index = options.gpu;
   render_options.queue_capacity = options.queue;
@@ -133,6 +140,9 @@ int run(const toond::app::Options& options) {
   std::cerr << "toond: GL " << renderer.gl_info().version << " on " << renderer.gl_info().renderer
             << " (" << renderer.gl_info().platform
             << (renderer.gl_info().robust ? ", robust context" : ", no reset notification") << "), data in " << options.data_dir
+            << (store_options.max_bytes
+                    ? ", at most " + std::to_string(store_options.max_bytes >> 20) + " MiB of models"
+                    : "")
             << (options.shader_dir.empty() ? "" : ", shaders from " + options.shader_dir + " (reloaded on change)")
             << "\n";
   std::cout << "listening on http://" << options.host << ":" << port << std::endl;
@@ -149,6 +159,7 @@ int main(int argc, char** argv) {
   try {
     options = toond::app::parse_options(std::vector<std::string>(argv + 1, argv + argc));
     toond::app::apply_access_environment(options.access);
+    toond::app::apply_store_environment(options);
   } catch (const std::invalid_argument& e) {
     std::cerr << "toond: " << e.what() << "\n";
     return 2;

@@ -1,5 +1,6 @@
 #include "app/options.h"
 
+#include <cstdlib>
 #include <span>
 #include <stdexcept>
 
@@ -12,6 +13,13 @@ namespace {
 // Megabytes given, bytes kept.
 std::size_t megabytes(const std::string& flag, const std::string& text, unsigned long long min) {
   return static_cast<std::size_t>(parse_count(flag, text, min, 1 << 20)) << 20;
+}
+
+constexpr const char* kMaxStoreVariable = "TOOND_MAX_STORE_MB";
+
+// A store's bound: megabytes (MiB) up to a pebibyte, bytes kept.
+std::uint64_t store_megabytes(const std::string& flag, const std::string& text) {
+  return std::uint64_t{parse_count(flag, text, 0, 1ull << 30)} << 20;
 }
 
 using Value = const std::string&;
@@ -30,6 +38,14 @@ const Flag kGeneralFlags[] = {
      }},
     {{"", "--data-dir", "DIR", "where uploaded models are stored (default ./toond-data)"},
      [](Options& o, Value, Value v) { o.data_dir = v; }},
+    {{"", "--max-store-mb", "N",
+      "bound the stored models (their files) to N MiB: past it\n"
+      "the least recently used (last upload or render) are let\n"
+      "go, never one a queued or running render holds, on every\n"
+      "replica sharing the data directory; a let-go id answers\n"
+      "404 unknown_model. Default: the TOOND_MAX_STORE_MB\n"
+      "environment variable, else 0 (no bound)"},
+     [](Options& o, Value flag, Value v) { o.max_store_bytes = store_megabytes(flag, v); }},
     {{"", "--gpu", "N",
       "use EGL device N (see --list-gpus); default: the first\n"
       "hardware device, else Mesa's surfaceless platform"},
@@ -141,6 +157,12 @@ const Flag* find_flag(const std::string& arg) {
 }
 
 }  // namespace
+
+void apply_store_environment(Options& options) {
+  if (options.max_store_bytes) return;
+  const char* value = std::getenv(kMaxStoreVariable);
+  options.max_store_bytes = value != nullptr && *value != '\0' ? store_megabytes(kMaxStoreVariable, value) : 0;
+}
 
 std::vector<text::OptionHelp> flag_list() {
   std::vector<text::OptionHelp> flags;

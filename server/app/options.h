@@ -1,6 +1,7 @@
 #pragma once
 // toond's command line. Every flag has a default and is listed by --help.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ struct Options {
   // Empty: the shaders embedded in the binary. Otherwise GLSL files are read
   // from this folder and recompiled when they change (look development).
   std::string shader_dir;
+  // Bytes of stored models kept at most (--max-store-mb, else the
+  // TOOND_MAX_STORE_MB environment variable); 0: no bound. Unset until
+  // apply_store_environment() has had its say.
+  std::optional<std::uint64_t> max_store_bytes;
   // Testing aid: every Nth render acts as if the GL context were lost.
   std::size_t simulate_gpu_reset = 0;
   // RenderService::Options::frames_in_flight.
@@ -48,6 +53,9 @@ struct Options {
 
 // Parses argv. Throws std::invalid_argument with a message naming the flag.
 Options parse_options(const std::vector<std::string>& args);
+// --max-store-mb when given, else TOOND_MAX_STORE_MB, else 0. Throws
+// std::invalid_argument naming the variable for a bad value.
+void apply_store_environment(Options& options);
 // --help: every flag of flag_list() with its help, by section.
 std::string usage();
 // Every flag parse_options() reads, in --help's order.

@@ -4,8 +4,9 @@
 // that the daemon reads with its own glTF importer, checks included.
 //   toond-assimp-convert --format EXT --memory-mb N --cpu-seconds S < file
 // Standard output: the .glb. Standard error: on success, one line per thing
-// the answer does not carry or that was converted, each starting "note: ";
-// on failure, the reason. Exit status 0 on success, 1 when the file cannot
+// the answer does not carry or that was converted or mended, each starting
+// "note: ", then "frame_rate: CLIP FPS" for each clip keyed by frame; on
+// failure, the reason. Exit status 0 on success, 1 when the file cannot
 // be read, 2 on a usage error.
 #include <cstdio>
 #include <memory>
@@ -18,6 +19,7 @@
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
 
+#include "assimp_convert/animation_timing.h"
 #include "assimp_convert/format_materials.h"
 #include "assimp_convert/morph_weight_channels.h"
 #include "assimp_convert/reading_report.h"
@@ -79,16 +81,24 @@ int convert(const Options& options) {
   const std::string input = helper_process::read_all_stdin();
   if (input.empty()) return fail("the file is empty");
   Assimp::Importer importer;
-  assimp_convert::read_scene(importer, input, options.format);
+  std::vector<std::string> notes;
+  assimp_convert::read_scene(importer, input, options.format, notes);
   const std::size_t over_four = assimp_convert::keep_four_influences(importer);
   const std::unique_ptr<aiScene> scene(importer.GetOrphanedScene());
-  std::vector<std::string> notes = assimp_convert::make_upright_metres(*scene, options.format);
+  const auto add = [&notes](std::vector<std::string> more) {
+    for (std::string& note : more) notes.push_back(std::move(note));
+  };
+  if (options.format == "b3d") add(assimp_convert::count_b3d_frames_from_zero(*scene));
+  const std::vector<std::string> frame_rates = assimp_convert::frame_rate_lines(*scene, options.format);
+  add(assimp_convert::give_clips_a_speed(*scene));
+  add(assimp_convert::make_upright_metres(*scene));
   if (options.format == "fbx") assimp_convert::let_textures_replace_colours(*scene);
   if (options.format == "3mf") assimp_convert::linearise_display_colours(*scene);
-  for (std::string& note : assimp_convert::not_carried(*scene, over_four)) notes.push_back(std::move(note));
+  add(assimp_convert::not_carried(*scene, over_four));
   const std::string glb = assimp_convert::with_morph_weight_channels(as_glb(*scene), *scene, notes);
   if (!helper_process::write_all_stdout(glb)) return fail("cannot write the answer");
   for (const std::string& note : notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+  for (const std::string& line : frame_rates) std::fprintf(stderr, "%s\n", line.c_str());
   return 0;
 }
 

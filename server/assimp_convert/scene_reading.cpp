@@ -8,6 +8,8 @@
 #include <assimp/IOSystem.hpp>
 #include <assimp/postprocess.h>
 
+#include "assimp_convert/animation_timing.h"
+
 namespace toond::assimp_convert {
 namespace {
 
@@ -36,23 +38,41 @@ std::size_t vertices_over_four(const aiScene& scene) {
   return over;
 }
 
+// assimp catches its readers' exceptions, running out of memory too, and
+// keeps only their text.
+[[noreturn]] void throw_reason(const std::string& reason) {
+  if (reason.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
+  throw std::runtime_error(reason);
+}
+
+const aiScene& checked(const Assimp::Importer& importer) {
+  const aiScene* scene = importer.GetScene();
+  if (!scene || !scene->mRootNode) throw std::runtime_error("the file holds no scene");
+  return *scene;
+}
+
 }  // namespace
 
-const aiScene& read_scene(Assimp::Importer& importer, std::string_view bytes, const std::string& format) {
+const aiScene& read_scene(Assimp::Importer& importer, std::string_view bytes, const std::string& format,
+                          std::vector<std::string>& notes) {
   importer.SetIOHandler(new NoFiles);  // the importer owns it
   // Normals a file lacks are made by the daemon, by angle; assimp's
   // validation step refuses indices past a mesh's vertices and the like.
   const unsigned steps = aiProcess_Triangulate | aiProcess_ValidateDataStructure;
-  const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), steps, format.c_str());
-  if (!scene) {
-    // assimp catches its readers' exceptions, running out of memory too,
-    // and keeps only their text.
-    const std::string reason = importer.GetErrorString();
-    if (reason.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
-    throw std::runtime_error(reason);
+  if (importer.ReadFileFromMemory(bytes.data(), bytes.size(), steps, format.c_str())) return checked(importer);
+  const std::string reason = importer.GetErrorString();
+  if (!timing_refusal(reason)) throw_reason(reason);
+  // Refused for a clip's timing alone: everything the validation checks
+  // before the clips (nodes, meshes) passed. Read again unvalidated, mend
+  // the clips, and validate then.
+  if (!importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, format.c_str())) throw_reason(importer.GetErrorString());
+  // The importer keeps its scene const to its callers; it is its own,
+  // made by this read, and is mended before anything else reads it.
+  for (std::string& note : lengthen_clips_to_their_keys(const_cast<aiScene&>(*importer.GetScene()))) {
+    notes.push_back(std::move(note));
   }
-  if (!scene->mRootNode) throw std::runtime_error("the file holds no scene");
-  return *scene;
+  if (!importer.ApplyPostProcessing(steps)) throw_reason(importer.GetErrorString());
+  return checked(importer);
 }
 
 std::size_t keep_four_influences(Assimp::Importer& importer) {

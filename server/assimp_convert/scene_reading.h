@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
@@ -14,8 +15,11 @@ namespace toond::assimp_convert {
 
 // The scene `bytes` hold, read as the format its extension `format` names
 // ("fbx", "dae"), triangulated and checked by assimp's validation step.
+// A scene refused only for its clips' timing (animation_timing.h) is read
+// again, mended and checked, with a sentence in `notes` for each mend.
 // Throws std::runtime_error with assimp's reason.
-const aiScene& read_scene(Assimp::Importer& importer, std::string_view bytes, const std::string& format);
+const aiScene& read_scene(Assimp::Importer& importer, std::string_view bytes, const std::string& format,
+                          std::vector<std::string>& notes);
 
 // Keeps the four strongest joint influences of every vertex, renormalised:
 // the glTF answer carries four per vertex. Returns how many vertices had

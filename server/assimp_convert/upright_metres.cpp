@@ -56,28 +56,15 @@ std::optional<aiMatrix4x4> axis_turn(const aiScene& scene, std::string& said) {
   return turn;
 }
 
-// +Z up to +Y up: (x, y, z) -> (x, z, -y).
-aiMatrix4x4 z_up_turn() {
-  aiMatrix4x4 turn;
-  turn.b2 = 0.0f;
-  turn.b3 = 1.0f;
-  turn.c2 = -1.0f;
-  turn.c3 = 0.0f;
-  return turn;
-}
-
 }  // namespace
 
-std::vector<std::string> make_upright_metres(aiScene& scene, const std::string& format) {
+std::vector<std::string> make_upright_metres(aiScene& scene) {
   std::vector<std::string> said;
   aiMatrix4x4 change;  // identity
   std::string turn_said;
   if (const auto turn = axis_turn(scene, turn_said)) {
     change = *turn;
     said.push_back(turn_said);
-  } else if (format == "3mf") {
-    change = z_up_turn();
-    said.push_back("turned from +Z up (3MF's axes) to +Y up");
   }
   if (const auto centimetres = unit_scale_factor(scene);
       centimetres && std::isfinite(*centimetres) && *centimetres > 0.0 && *centimetres != 100.0) {

@@ -99,7 +99,8 @@ std::string ShaderDirectory::read(const std::string& name) {
   if (seen.stamp.exists) seen.text = read_file(path, &why);
   seen.checked = now();
   seen_[name] = seen;
-  if (!seen.text) throw ShaderCompileError(name, "cannot read " + path.string() + ": " + why);
+  // The name, not the path: the error goes out to the client that asked for the render.
+  if (!seen.text) throw ShaderCompileError(name, "cannot read " + name + " in the shader directory: " + why);
   return *seen.text;
 }
 

@@ -1,5 +1,6 @@
 #include "http/error_response.h"
 
+#include <filesystem>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include "request_error.h"
 #include "scene/import_error.h"
 #include "scene/import_limits.h"
+#include "scene/store_error.h"
 
 namespace toond::http {
 
@@ -36,6 +38,39 @@ std::string dump_for_client(const nlohmann::json& body) {
   return body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
+namespace {
+
+// The store's refusals and failures. Their messages name no server path;
+// the detail that does goes to the daemon's log.
+void write_store_error(httplib::Response& res, const scene::StoreError& e) {
+  using Kind = scene::StoreError::Kind;
+  switch (e.kind()) {
+    case Kind::LargerThanStore:
+      write_limit_error(res, 413, "limit_exceeded", "--max-store-mb",
+                        std::string(e.what()) + " (--max-store-mb); nothing was stored");
+      return;
+    case Kind::FullOfModelsInUse:
+      // Renders let their models go within --render-timeout.
+      res.set_header("Retry-After", "5");
+      write_error(res, 507, "storage_full",
+                  std::string(e.what()) + " (--max-store-mb); nothing was stored, retry shortly");
+      return;
+    case Kind::VolumeFull:
+      std::cerr << "toond: model store: " << e.detail() << "\n";
+      write_error(res, 507, "storage_full",
+                  std::string(e.what()) +
+                      ": nothing was stored; stored models still render (the operator frees or grows the volume, "
+                      "or bounds the store below its size with --max-store-mb)");
+      return;
+    case Kind::Failed:
+      break;
+  }
+  std::cerr << "toond: model store: " << (e.detail().empty() ? e.what() : e.detail()) << "\n";
+  write_error(res, 500, "internal", e.what());
+}
+
+}  // namespace
+
 void write_exception(httplib::Response& res, std::exception_ptr ep) {
   try {
     std::rethrow_exception(ep);
@@ -49,6 +84,8 @@ void write_exception(httplib::Response& res, std::exception_ptr ep) {
     write_error(res, e.status(), e.code(), e.what(), e.path());
   } catch (const scene::ImportError& e) {
     write_error(res, 422, "bad_bundle", e.what(), e.file());
+  } catch (const scene::StoreError& e) {
+    write_store_error(res, e);
   } catch (const render::DeadlineExceeded&) {
     res.set_header("Retry-After", "5");
     write_error(res, 503, "deadline_exceeded",
@@ -81,6 +118,10 @@ void write_exception(httplib::Response& res, std::exception_ptr ep) {
   } catch (const gpu::GpuError& e) {
     std::cerr << "toond: GPU error: " << e.what() << "\n";
     write_error(res, 500, "gpu_error", e.what());
+  } catch (const std::filesystem::filesystem_error& e) {
+    // Its text names the files it was about: the daemon's own paths.
+    std::cerr << "toond: internal error: " << e.what() << "\n";
+    write_error(res, 500, "internal", "a file operation failed (" + e.code().message() + ")");
   } catch (const std::exception& e) {
     std::cerr << "toond: internal error: " << e.what() << "\n";
     write_error(res, 500, "internal", e.what());

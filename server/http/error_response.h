@@ -2,7 +2,8 @@
 // The one place that turns failures into HTTP answers:
 //   {"error":{"code":…,"message":…,"path":…}}
 // Request errors keep their status; GPU failures are 500; a full render
-// queue is 503 with Retry-After; anything else is a logged 500.
+// queue is 503 with Retry-After; a full model store is 507 storage_full;
+// anything else is a logged 500. No message names a server path.
 #include <exception>
 
 #include <httplib.h>

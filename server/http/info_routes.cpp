@@ -8,6 +8,23 @@
 #include "presets.h"
 
 namespace toond::http {
+namespace {
+
+// How full the model store is: its models and bytes against the bound
+// (`used`, a fraction, only with one), and the volume it is on.
+nlohmann::json store_document(const scene::ModelStore& store) {
+  const scene::StoreUsage usage = store.usage();
+  nlohmann::json doc = {{"models", usage.models}, {"bytes", usage.bytes}, {"max_bytes", store.max_bytes()}};
+  if (store.max_bytes() > 0) {
+    doc["used"] = static_cast<double>(usage.bytes) / static_cast<double>(store.max_bytes());
+  }
+  if (const auto volume = store.volume()) {
+    doc["volume"] = {{"bytes", volume->bytes}, {"free_bytes", volume->free_bytes}};
+  }
+  return doc;
+}
+
+}  // namespace
 
 void register_info_routes(httplib::Server& server, ServiceContext& context) {
   server.Get("/healthz", [&context](const httplib::Request&, httplib::Response& res) {
@@ -22,6 +39,7 @@ void register_info_routes(httplib::Server& server, ServiceContext& context) {
           {"platform", gl.platform}}},
         {"queue_depth", context.renderer.queue_depth()},
         {"limits", limits_document(context.limits)},
+        {"store", store_document(context.store)},
     };
     res.set_content(body.dump(), "application/json");
   });

@@ -10,7 +10,20 @@ void register_metrics_routes(httplib::Server& server, ServiceContext& context) {
   registry.gauge("toond_render_queue_depth", "Render jobs waiting for the render thread.",
                  [&context] { return static_cast<double>(context.renderer.queue_depth()); });
   registry.gauge("toond_models_stored", "Models in the data directory (shared by every replica that mounts it).",
-                 [&context] { return static_cast<double>(context.store.list().size()); });
+                 [&context] { return static_cast<double>(context.store.usage().models); });
+  registry.gauge("toond_store_bytes",
+                 "Bytes of the stored models' files, every replica's (what --max-store-mb bounds).",
+                 [&context] { return static_cast<double>(context.store.usage().bytes); });
+  registry.gauge("toond_store_max_bytes", "The bound --max-store-mb puts on toond_store_bytes, in bytes; 0: none.",
+                 [&context] { return static_cast<double>(context.store.max_bytes()); });
+  registry.gauge("toond_store_volume_free_bytes",
+                 "Bytes still free on the file system of the data directory (to the daemon's user).", [&context] {
+                   const auto volume = context.store.volume();
+                   return volume ? static_cast<double>(volume->free_bytes) : 0.0;
+                 });
+  registry.counter_from("toond_store_evictions_total",
+                        "Models this replica let go to keep the store under --max-store-mb, least recently used first.",
+                        [&context] { return static_cast<double>(context.store.evictions()); });
   registry.counter_from("toond_gpu_context_resets_total",
                         "Lost GL contexts (GPU resets) replaced by a new one since start.",
                         [&context] { return static_cast<double>(context.renderer.gpu_resets()); });

@@ -42,21 +42,23 @@ std::optional<double> smooth_angle(const httplib::Request& req) {
   return angle;
 }
 
-// `?up=y` (the default) or `?up=z`.
-bool z_up(const httplib::Request& req) {
-  if (!req.has_param("up")) return false;
+// `?up=y` or `?up=z`; without it, the format's convention.
+scene::ImportChoices::Up up_axis(const httplib::Request& req) {
+  if (!req.has_param("up")) return scene::ImportChoices::Up::FormatDefault;
   const std::string text = req.get_param_value("up");
   if (text != "y" && text != "z") {
-    throw RequestError(400, "invalid_parameter", "?up: y (the default) or z (a Z-up file, as CAD exports)", "?up");
+    throw RequestError(400, "invalid_parameter",
+                       "?up: y or z (without it, the format's convention: z for STL, PLY, 3MF and AMF, y for the rest)",
+                       "?up");
   }
-  return text == "z";
+  return text == "z" ? scene::ImportChoices::Up::Z : scene::ImportChoices::Up::Y;
 }
 
 scene::ImportChoices import_choices(const httplib::Request& req) {
   scene::ImportChoices choices;
   choices.gltf_scene = gltf_scene(req);
   choices.smooth_angle = smooth_angle(req);
-  choices.z_up = z_up(req);
+  choices.up = up_axis(req);
   return choices;
 }
 

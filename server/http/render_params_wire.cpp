@@ -97,10 +97,8 @@ Output output_of(const std::string& name) {
   return Output::Color;
 }
 
-}  // namespace
-
-RenderParams render_params_from_wire(const json& j) {
-  RenderParams p;
+// What is drawn, and the image it is drawn into.
+void read_scene(const json& j, RenderParams& p) {
   p.model = j.value("model", "");
   if (const auto objects = j.find("objects"); objects != j.end()) {
     for (const json& o : *objects) {
@@ -118,7 +116,9 @@ RenderParams render_params_from_wire(const json& j) {
   p.height = j.at("height").get<int>();
   const json& bg = j.at("background");
   p.background = glm::vec4(srgb_to_linear(vec3_of(bg)), bg.size() > 3 ? bg[3].get<float>() : 1.0f);
+}
 
+void read_camera(const json& j, RenderParams& p) {
   const json& cam = j.at("camera");
   p.camera.projection = cam.at("projection") == "orthographic" ? Projection::Orthographic
                                                                : Projection::Perspective;
@@ -128,7 +128,10 @@ RenderParams render_params_from_wire(const json& j) {
   p.camera.distance = cam.at("distance").get<double>();
   p.camera.zoom = cam.at("zoom").get<double>();
   p.camera.shift = glm::dvec2(cam.at("shift")[0].get<double>(), cam.at("shift")[1].get<double>());
+}
 
+// The lights and how they add up.
+void read_lights(const json& j, RenderParams& p) {
   for (const json& l : j.at("lights")) {
     Light light;
     light.kind = l.at("type") == "point" ? LightKind::Point : LightKind::Directional;
@@ -144,7 +147,10 @@ RenderParams render_params_from_wire(const json& j) {
   }
   p.light_combine = j.at("light_combine") == "sum" ? LightCombine::Sum : LightCombine::Max;
   p.ambient = j.at("ambient").get<float>();
+}
 
+// The bands, ramps and base colour of the main pass.
+void read_shading(const json& j, RenderParams& p) {
   const json& shading = j.at("shading");
   const std::string mode = shading.at("mode");
   p.mode = mode == "phong" ? ShadingMode::Phong : mode == "flat" ? ShadingMode::Flat : ShadingMode::Cel;
@@ -173,7 +179,10 @@ RenderParams render_params_from_wire(const json& j) {
   p.rounding = rounding == "floor" ? Rounding::Floor
                : rounding == "round" ? Rounding::Round
                                      : Rounding::Ceil;
+}
 
+// The effects the main pass adds: specular, rim, halftone, contour.
+void read_effects(const json& j, RenderParams& p) {
   const json& specular = j.at("specular");
   p.specular.enabled = specular.at("enabled").get<bool>();
   p.specular.color = srgb_to_linear(vec3_of(specular.at("color")));
@@ -204,7 +213,10 @@ RenderParams render_params_from_wire(const json& j) {
   p.contour.width_px = contour.at("width").get<float>();
   p.contour.threshold = contour.at("threshold").get<float>();
   p.contour.color = srgb_to_linear(vec3_of(contour.at("color")));
+}
 
+// The shadow map and the floor that receives it.
+void read_ground(const json& j, RenderParams& p) {
   const json& shadows = j.at("shadows");
   p.shadows.enabled = shadows.at("enabled").get<bool>();
   p.shadows.map_size = shadows.at("map_size").get<int>();
@@ -217,7 +229,9 @@ RenderParams render_params_from_wire(const json& j) {
   p.floor.size = floor.at("size").get<float>();
   p.floor.texture = floor.at("texture").get<std::string>();
   p.floor.texture_repeat = floor.at("texture_repeat").get<float>();
+}
 
+void read_outline(const json& j, RenderParams& p) {
   const json& outline = j.at("outline");
   p.outline.enabled = outline.at("enabled").get<bool>();
   p.outline.width = outline.at("width").get<float>();
@@ -242,7 +256,19 @@ RenderParams render_params_from_wire(const json& j) {
                          : color_mode == "material" ? OutlineColorMode::Material
                                                     : OutlineColorMode::Fixed;
   p.outline.darken = outline.at("darken").get<float>();
+}
 
+}  // namespace
+
+RenderParams render_params_from_wire(const json& j) {
+  RenderParams p;
+  read_scene(j, p);
+  read_camera(j, p);
+  read_lights(j, p);
+  read_shading(j, p);
+  read_effects(j, p);
+  read_ground(j, p);
+  read_outline(j, p);
   p.msaa = j.at("msaa").get<int>();
   p.supersample = j.at("supersample").get<int>();
   p.lod_auto = j.at("lod") == "auto";

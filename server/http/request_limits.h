@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "http/render_limits.h"
+#include "pipeline/render_limits.h"
 #include "scene/import_limits.h"
 
 namespace toond::http {
@@ -19,7 +19,7 @@ struct RequestLimits {
   std::size_t max_json_bytes = 1u << 20;  // a JSON body or `params` part
   std::size_t max_json_depth = 32;        // nested arrays/objects
   scene::ImportLimits import{10'000'000, 10'000'000, 8192ull * 8192ull, 30.0};
-  RenderLimits render;
+  pipeline::RenderLimits render;
 };
 
 // Every limit by the flag that sets it ({"--max-vertices": 10000000, ...}),

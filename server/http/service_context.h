@@ -4,9 +4,9 @@
 #include <chrono>
 #include <memory>
 
-#include "http/animation_pose.h"
-#include "http/service_metrics.h"
 #include "http/request_limits.h"
+#include "http/service_metrics.h"
+#include "pipeline/pose.h"
 #include "scene/model_library.h"
 #include "render/render_service.h"
 #include "http/result_cache.h"
@@ -25,7 +25,7 @@ struct ServiceContext {
   // Finished renders by canonical parameters; null: every request renders.
   std::unique_ptr<ResultCache> results{};
   // Recently used clips' framings (a request with `animation`).
-  ClipFramings clip_framings{};
+  pipeline::ClipFramings clip_framings{};
 };
 
 }  // namespace toond::http

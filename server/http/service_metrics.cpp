@@ -45,7 +45,14 @@ ServiceMetrics::ServiceMetrics()
                                           "Uploads imported as new models, from the bundle to the stored model, in "
                                           "seconds.", {}, kImportBounds)),
       import_bytes_(registry_.histogram("toond_import_bytes", "Sizes of the bundles imported as new models, in bytes.",
-                                        {}, kImportByteBounds)) {}
+                                        {}, kImportByteBounds)),
+      store_refusals_(registry_.counter("toond_store_refusals_total",
+                                        "Uploads the model store refused (507 storage_full, or 413 for a model larger "
+                                        "than --max-store-mb), by reason.",
+                                        {"reason"})) {
+  // Each reason is there from the first scrape, at 0.
+  for (const char* reason : {"volume_full", "models_in_use", "larger_than_store"}) store_refusals_.add({reason}, 0);
+}
 
 void ServiceMetrics::count_request(const std::string& method, const std::string& route, int status) {
   requests_.add({method, route, std::to_string(status)});
@@ -73,6 +80,8 @@ void ServiceMetrics::observe_import(double seconds, std::size_t bytes) {
   import_seconds_.observe({}, seconds);
   import_bytes_.observe({}, static_cast<double>(bytes));
 }
+
+void ServiceMetrics::count_store_refusal(const std::string& reason) { store_refusals_.add({reason}); }
 
 std::string route_label(const std::string& path) {
   static const std::regex model_path("/models/[0-9a-f]{16,64}");

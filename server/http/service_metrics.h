@@ -36,6 +36,10 @@ class ServiceMetrics {
   // One upload imported as a new model: how long the import took (parse,
   // mesh processing, levels of detail, storing) and the bundle's bytes.
   void observe_import(double seconds, std::size_t bytes);
+  // An upload the model store refused: "volume_full", "models_in_use"
+  // (at --max-store-mb, every model that could go held by a render) or
+  // "larger_than_store".
+  void count_store_refusal(const std::string& reason);
 
   MetricsRegistry& registry() { return registry_; }
   const CounterFamily& requests() const { return requests_; }
@@ -52,6 +56,7 @@ class ServiceMetrics {
   CounterFamily& aborts_;
   HistogramFamily& import_seconds_;
   HistogramFamily& import_bytes_;
+  CounterFamily& store_refusals_;
 };
 
 // The route template a request path belongs to ("/models/{id}/render",

@@ -1,7 +1,8 @@
 #pragma once
 // An uploaded bundle into the model store, the one way both upload routes
 // (POST /models and a multipart POST /render) take: a new model's import is
-// timed and sized for /metrics.
+// timed and sized for /metrics, the store's refusals counted, and the models
+// it let go for its bound forgotten by this replica.
 #include "http/service_context.h"
 #include "scene/bundle.h"
 #include "scene/model_store.h"

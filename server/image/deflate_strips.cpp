@@ -7,7 +7,7 @@
 #include <climits>
 #include <stdexcept>
 
-#include "image/parallel_tasks.h"
+#include "parallel/parallel_tasks.h"
 #include "image/run_deflate.h"
 
 namespace toond::image {
@@ -122,7 +122,7 @@ std::string deflate_scanlines(int row_count, std::size_t scanline_bytes, const S
   const int strips = std::clamp(settings.strips, 1, std::max(row_count, 1));
   const int rows_per_chunk = static_cast<int>(std::max<std::size_t>(1, kChunkBytes / std::max<std::size_t>(scanline_bytes, 1)));
   std::vector<DeflatedStrip> deflated(static_cast<std::size_t>(strips));
-  run_tasks(strips, settings.threads, [&](int s) {
+  parallel::run_tasks(strips, settings.threads, [&](int s) {
     const int first = static_cast<int>(static_cast<long long>(row_count) * s / strips);
     const int end = static_cast<int>(static_cast<long long>(row_count) * (s + 1) / strips);
     const bool last = s == strips - 1;

@@ -4,7 +4,7 @@
 #include <atomic>
 #include <utility>
 
-#include "image/parallel_tasks.h"
+#include "parallel/parallel_tasks.h"
 
 namespace toond::image {
 namespace {
@@ -76,7 +76,7 @@ std::optional<Palette> find_palette(const Image& image, int threads) {
   const int bands = std::clamp(static_cast<int>(pixels / kMinBandPixels), 1, std::clamp(threads, 1, image.height));
   std::vector<ColourTable> tables(static_cast<std::size_t>(bands));
   std::atomic<bool> too_many{false};
-  run_tasks(bands, threads, [&](int b) {
+  parallel::run_tasks(bands, threads, [&](int b) {
     collect_colours(image, image.height * b / bands, image.height * (b + 1) / bands,
                     tables[static_cast<std::size_t>(b)], too_many);
   });

@@ -9,7 +9,7 @@
 
 #include "image/deflate_strips.h"
 #include "image/palette.h"
-#include "image/parallel_tasks.h"
+#include "parallel/parallel_tasks.h"
 #include "image/png_writer.h"
 #include "image/sub_filter.h"
 
@@ -48,7 +48,7 @@ constexpr std::size_t kMinStripBytes = 64 * 1024;
 constexpr int kMaxStrips = 8;
 
 int usable_threads(const PngOptions& options) {
-  return options.threads <= 0 ? hardware_threads() : std::min(options.threads, hardware_threads());
+  return options.threads <= 0 ? parallel::hardware_threads() : std::min(options.threads, parallel::hardware_threads());
 }
 
 // How many parts `bytes` of work are cut into: the deflate's strips, and

@@ -5,7 +5,7 @@
 #include <bit>
 #include <cstring>
 
-#include "image/parallel_tasks.h"
+#include "parallel/parallel_tasks.h"
 
 namespace toond::image {
 namespace {
@@ -102,7 +102,7 @@ bool is_opaque(const Image& image, int parts, int threads) {
   const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
   const auto count = static_cast<std::size_t>(std::max(parts, 1));
   std::atomic<bool> opaque{true};
-  run_tasks(static_cast<int>(count), threads, [&](int part) {
+  parallel::run_tasks(static_cast<int>(count), threads, [&](int part) {
     const std::size_t first = pixels * static_cast<std::size_t>(part) / count;
     const std::size_t end = pixels * static_cast<std::size_t>(part + 1) / count;
     if (opaque.load(std::memory_order_relaxed) && !span_opaque(image.rgba.data(), first, end)) opaque = false;

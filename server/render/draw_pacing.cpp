@@ -9,8 +9,6 @@
 namespace toond::render {
 namespace {
 
-thread_local DrawPacing* current_pacing = nullptr;
-
 void draw_elements(GLenum mode, std::size_t index_count, std::size_t first_index) {
   glDrawElements(mode, static_cast<GLsizei>(index_count), GL_UNSIGNED_INT,
                  reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first_index * sizeof(std::uint32_t))));
@@ -109,29 +107,26 @@ void DrawPacing::wait_for_chunk() {
   if (status == GL_TIMEOUT_EXPIRED || status == GL_WAIT_FAILED || Clock::now() > deadline_) expired_ = true;
 }
 
-PacingScope::PacingScope(DrawPacing* pacing) : outer_(current_pacing) { current_pacing = pacing; }
-
-PacingScope::~PacingScope() { current_pacing = outer_; }
-
-void draw_triangles(std::size_t index_count, std::size_t first_index) {
-  if (current_pacing != nullptr) {
-    current_pacing->draw_triangles(index_count, first_index);
+void draw_triangles(DrawPacing* pacing, std::size_t index_count, std::size_t first_index) {
+  if (pacing != nullptr) {
+    pacing->draw_triangles(index_count, first_index);
   } else {
     draw_elements(GL_TRIANGLES, index_count, first_index);
   }
 }
 
-void draw_crease_edges(std::size_t index_count, std::size_t first_index) {
-  if (current_pacing != nullptr) {
-    current_pacing->draw_crease_edges(index_count, first_index);
+void draw_crease_edges(DrawPacing* pacing, std::size_t index_count, std::size_t first_index) {
+  if (pacing != nullptr) {
+    pacing->draw_crease_edges(index_count, first_index);
   } else {
     draw_elements(GL_LINES_ADJACENCY, index_count, first_index);
   }
 }
 
-void draw_full_screen(int width, int height, double texels_per_pixel, const std::function<void()>& draw) {
-  if (current_pacing != nullptr) {
-    current_pacing->draw_in_bands(width, height, texels_per_pixel, draw);
+void draw_full_screen(DrawPacing* pacing, int width, int height, double texels_per_pixel,
+                      const std::function<void()>& draw) {
+  if (pacing != nullptr) {
+    pacing->draw_in_bands(width, height, texels_per_pixel, draw);
   } else {
     draw();
   }

@@ -82,30 +82,16 @@ class DrawPacing {
   bool expired_ = false;
 };
 
-// Which pacing the draws on this thread follow while it lives (none outside
-// any scope): GL's current context is per thread, and so is the render
-// drawing on it, so the meshes' draw calls find it here instead of through
-// every pass's arguments.
-class PacingScope {
- public:
-  explicit PacingScope(DrawPacing* pacing);
-  ~PacingScope();
-  PacingScope(const PacingScope&) = delete;
-  PacingScope& operator=(const PacingScope&) = delete;
-
- private:
-  DrawPacing* outer_;
-};
-
 // What the meshes draw with: glDrawElements at once without a pacing
-// scope, through the scope's pacing within one.
-void draw_triangles(std::size_t index_count, std::size_t first_index);
-// What the crease pass draws its edges with (GL_LINES_ADJACENCY):
-// glDrawElements at once without a pacing scope, through the scope's
-// pacing within one.
-void draw_crease_edges(std::size_t index_count, std::size_t first_index);
+// (null), through the frame's pacing with one. The pacing comes with the
+// frame (PassContext::pacing), from its job's schedule (schedule.h).
+void draw_triangles(DrawPacing* pacing, std::size_t index_count, std::size_t first_index);
+// What the crease pass draws its edges with (GL_LINES_ADJACENCY), the same
+// way: at once without a pacing, through the frame's pacing with one.
+void draw_crease_edges(DrawPacing* pacing, std::size_t index_count, std::size_t first_index);
 // What full-screen passes that may take long draw with: `draw` once without
-// a pacing scope, in bands within one (DrawPacing::draw_in_bands).
-void draw_full_screen(int width, int height, double texels_per_pixel, const std::function<void()>& draw);
+// a pacing, in bands with one (DrawPacing::draw_in_bands).
+void draw_full_screen(DrawPacing* pacing, int width, int height, double texels_per_pixel,
+                      const std::function<void()>& draw);
 
 }  // namespace toond::render

@@ -1,9 +1,10 @@
 #pragma once
 // Everything a frame's passes share, worked out once before the first one
-// draws: the plan, the scene's frame and matrices, the camera, the level of
-// detail and the faces each object may skip, the outline's width in
-// pixels, the shadow's fit and the lights as the shaders take them. Pure
-// arithmetic, no GL.
+// draws: from its plan (frame_plan.h: the passes, the scene's frame, the
+// camera, the outline's width in pixels) the matrices, the level of detail
+// and the faces each object may skip, the shadow's fit and the lights as
+// the shaders take them. Pure arithmetic, no GL: it sees the models as
+// imported, not their GPU copies.
 #include <optional>
 #include <vector>
 
@@ -11,19 +12,38 @@
 
 #include "render/camera.h"
 #include "render/face_culling.h"
-#include "render/gpu_model.h"
+#include "render/frame_plan.h"
 #include "render/object_draw.h"
 #include "render/pass_plan.h"
 #include "render/render_params.h"
 #include "render/shadow_fit.h"
+#include "scene/model.h"
+#include "scene/pose.h"
 
 namespace toond::render {
 
-// One object of the scene: a model on the GPU and its transform (model
-// coordinates → scene coordinates; the identity for a lone model).
-struct RenderObject {
-  const GpuModel& model;
-  glm::dmat4 transform{1.0};
+// One object of the frame as its arithmetic sees it: the model as imported
+// (its levels of detail, closed or open, their hole caps) in its pose.
+// Where it stands is the plan's (FramePlan::scene).
+struct FrameObject {
+  const scene::Model& model;
+  const scene::SkinPose* pose = nullptr;  // null: as imported
+  bool skinned = false;                   // posed by the vertex stages (GpuModel::skinned)
+
+  // The pose's when posed (which may be a whole clip's reach).
+  const scene::Bounds& bounds() const;
+  // How much the pose may lengthen a level's error (SkinPose::stretch); 1 as imported.
+  double pose_stretch() const { return pose ? pose->stretch : 1.0; }
+  // Level 0 is the full mesh; the rest come from scene::Mesh::lods.
+  std::size_t lod_count() const { return 1 + model.mesh.lods.size(); }
+  // Per level, in the mesh's units: how far its surface may stray (0 at level 0).
+  std::vector<double> lod_errors() const;
+  std::size_t triangles(std::size_t lod) const;
+  // Whether a level's triangles close around a volume (scene/enclosure.h);
+  // a pose keeps the topology.
+  scene::Enclosure enclosure(std::size_t lod) const;
+  // Triangles closing the level's holes; posed, they moved with the pose.
+  const std::vector<glm::vec3>& caps(std::size_t lod) const;
 };
 
 // The level of detail one object was drawn at (see lod_choice.h).
@@ -48,16 +68,17 @@ struct ShadingLights {
   std::vector<float> radius;
 };
 
+// The plan's parts are referred to, not copied: the plan outlives the frame.
 struct FrameContext {
-  const std::vector<RenderObject>& objects;
+  std::vector<FrameObject> objects;
   const RenderParams& params;
-  PassPlan plan;
+  const PassPlan& plan;
   // Everything below is in the frame's coordinates: scene coordinates less
   // a point at the scene's middle (camera.h, frame_scene).
-  SceneFrame scene;
+  const SceneFrame& scene;
+  const CameraSetup& camera;
   std::vector<glm::mat4> model_matrices{};   // per object, rounded to float from scene.matrices
   std::vector<glm::mat3> normal_matrices{};  // inverse-transpose of their upper 3×3
-  CameraSetup camera{};
   glm::dmat4 clip{1.0};               // projection × view, in double
   glm::mat4 view_projection{1.0f};    // the same, rounded for the shaders
   Viewer viewer{};
@@ -96,9 +117,8 @@ struct FrameContext {
                        bool caps_checked) const;
 };
 
-// `face_culling` off draws both sides of every face (tests that show
-// culling changes no pixel).
-FrameContext build_frame_context(const std::vector<RenderObject>& objects, const RenderParams& params,
-                                 bool face_culling);
+// `objects` in the plan's order. `face_culling` off draws both sides of
+// every face (tests that show culling changes no pixel).
+FrameContext build_frame_context(std::vector<FrameObject> objects, const FramePlan& plan, bool face_culling);
 
 }  // namespace toond::render

@@ -99,22 +99,18 @@ FacingRuns crease_runs(std::span<const glm::vec3> positions, const scene::Crease
 
 }  // namespace
 
-GpuModel::GpuModel(const scene::Model& model)
-    : bounds_(model.mesh.bounds), extremes_(model.mesh.extremes), creases_(model.mesh.creases), origin_(model.mesh.origin) {
+GpuModel::GpuModel(const scene::Model& model) {
   const scene::Mesh& mesh = model.mesh;
   const std::vector<Vertex> vertices = interleave(mesh);
-  has_vertex_colors_ = !mesh.colors.empty();
   // Every level's indices in one buffer, full detail first; each level's
   // submesh ranges are moved to where its indices land.
   std::vector<std::uint32_t> indices = mesh.indices;
-  levels_.push_back({mesh.submeshes, 0, mesh.indices.size(), mesh.enclosure, mesh.caps});
-  lod_errors_.push_back(0.0);
+  levels_.push_back({mesh.submeshes, 0, mesh.indices.size()});
   for (const scene::MeshLod& lod : mesh.lods) {
-    Level level{lod.submeshes, indices.size(), lod.indices.size(), lod.enclosure, lod.caps};
+    Level level{lod.submeshes, indices.size(), lod.indices.size()};
     for (scene::Submesh& sub : level.submeshes) sub.first_index += static_cast<std::uint32_t>(level.first_index);
     indices.insert(indices.end(), lod.indices.begin(), lod.indices.end());
     levels_.push_back(std::move(level));
-    lod_errors_.push_back(lod.error);
   }
   auto add_caps = [&](Level& level, const std::vector<std::uint32_t>& cap_indices) {
     level.first_cap_index = indices.size();
@@ -178,13 +174,11 @@ GpuModel::GpuModel(const scene::Model& model)
 }
 
 void GpuModel::upload_intersections(const scene::Mesh& mesh) {
-  parts_ = mesh.parts;
   std::vector<glm::vec3> points;
   auto add_level = [&](Level& level, const scene::IntersectionLines& lines) {
     level.first_seam_index = points.size();
     level.seams_over = lines.edges_over;
     points.insert(points.end(), lines.points.begin(), lines.points.end());
-    intersections_complete_ = intersections_complete_ && lines.complete;
   };
   add_level(levels_[0], mesh.intersections);
   for (std::size_t i = 0; i < mesh.lods.size(); ++i) add_level(levels_[i + 1], mesh.lods[i].intersections);
@@ -222,10 +216,6 @@ void GpuModel::apply_pose(std::shared_ptr<const scene::SkinPose> pose, const sce
   if (!posed_) return;
   if (skinned_) skin_->upload(*pose);
   if (cpu_posed) pose_into_vertex_buffer(model, *pose->cpu_sums);
-  posed_bounds_ = pose->bounds;
-  posed_extremes_ = pose->extremes;
-  pose_stretch_ = pose->stretch;
-  for (std::size_t i = 0; i < levels_.size(); ++i) levels_[i].posed_caps = pose->caps[i];
   applied_ = std::move(pose);
 }
 
@@ -258,22 +248,23 @@ void GpuModel::bind_material(int index) const {
                        sizeof(MaterialBlock));
 }
 
-void GpuModel::draw(const scene::Submesh& submesh) const {
-  draw_triangles(submesh.index_count, submesh.first_index);
+void GpuModel::draw(const scene::Submesh& submesh, DrawPacing* pacing) const {
+  draw_triangles(pacing, submesh.index_count, submesh.first_index);
 }
 
-std::size_t GpuModel::draw_facing(std::size_t lod, std::size_t k, const MeshViewer& viewer) const {
+std::size_t GpuModel::draw_facing(std::size_t lod, std::size_t k, const MeshViewer& viewer,
+                                  DrawPacing* pacing) const {
   const Level& level = levels_[lod];
   const scene::Submesh& sub = level.submeshes[k];
   if (posed_) {
-    draw(sub);
+    draw(sub, pacing);
     return 0;
   }
   static thread_local std::vector<IndexRange> ranges;
   level.facing_runs.ranges_facing(k, viewer, ranges);
   std::size_t drawn = 0;
   for (const IndexRange& range : ranges) {
-    draw_triangles(range.index_count, range.first_index);
+    draw_triangles(pacing, range.index_count, range.first_index);
     drawn += range.index_count;
   }
   return (sub.index_count - drawn) / 3;
@@ -284,12 +275,13 @@ std::size_t GpuModel::creased_edges(std::size_t lod, double degrees) const {
   return levels_[lod].creased_over[whole];
 }
 
-std::size_t GpuModel::draw_creases(std::size_t lod, double degrees, const std::optional<MeshViewer>& viewer) const {
+std::size_t GpuModel::draw_creases(std::size_t lod, double degrees, const std::optional<MeshViewer>& viewer,
+                                   DrawPacing* pacing) const {
   const Level& level = levels_[lod];
   const std::size_t creased = creased_edges(lod, degrees);
   if (creased == 0) return 0;
   if (!viewer || posed_) {
-    draw_crease_edges(4 * creased, level.first_crease_index);
+    draw_crease_edges(pacing, 4 * creased, level.first_crease_index);
     return creased;
   }
   // The runs' ranges count six indices an edge; the edges creased at this
@@ -301,7 +293,7 @@ std::size_t GpuModel::draw_creases(std::size_t lod, double degrees, const std::o
     const std::size_t first = range.first_index / 6;
     if (first >= creased) break;
     const std::size_t end = std::min<std::size_t>(creased, (range.first_index + range.index_count) / 6);
-    draw_crease_edges(4 * (end - first), level.first_crease_index + 4 * first);
+    draw_crease_edges(pacing, 4 * (end - first), level.first_crease_index + 4 * first);
     drawn += end - first;
   }
   return drawn;
@@ -313,22 +305,23 @@ std::size_t GpuModel::intersection_segments(std::size_t lod, double degrees) con
   return levels_[lod].seams_over[whole];
 }
 
-std::size_t GpuModel::draw_intersections(std::size_t lod, double degrees) const {
+std::size_t GpuModel::draw_intersections(std::size_t lod, double degrees, DrawPacing* pacing) const {
   const std::size_t segments = intersection_segments(lod, degrees);
   if (segments == 0) return 0;
   glBindVertexArray(seam_vao_.id());
-  draw_crease_edges(4 * segments, levels_[lod].first_seam_index);
+  draw_crease_edges(pacing, 4 * segments, levels_[lod].first_seam_index);
   return segments;
 }
 
-void GpuModel::draw_all(std::size_t lod) const {
+void GpuModel::draw_all(std::size_t lod, DrawPacing* pacing) const {
   const Level& level = levels_[lod];
-  draw_triangles(level.index_count, level.first_index);
+  draw_triangles(pacing, level.index_count, level.first_index);
 }
 
-void GpuModel::draw_from(const gpu::Buffer& indices, std::size_t index_count, std::size_t first_index) const {
+void GpuModel::draw_from(const gpu::Buffer& indices, std::size_t index_count, std::size_t first_index,
+                         DrawPacing* pacing) const {
   glVertexArrayElementBuffer(vao_.id(), indices.id());
-  draw_triangles(index_count, first_index);
+  draw_triangles(pacing, index_count, first_index);
   glVertexArrayElementBuffer(vao_.id(), indices_.id());
 }
 
@@ -357,10 +350,10 @@ std::shared_ptr<const HullCullMesh> GpuModel::hull_cull_mesh(std::size_t lod, Ba
   return nullptr;
 }
 
-void GpuModel::draw_caps(std::size_t lod) const {
+void GpuModel::draw_caps(std::size_t lod, DrawPacing* pacing) const {
   const Level& level = levels_[lod];
   if (level.cap_index_count == 0) return;
-  draw_triangles(level.cap_index_count, level.first_cap_index);
+  draw_triangles(pacing, level.cap_index_count, level.first_cap_index);
 }
 
 }  // namespace toond::render

@@ -5,7 +5,10 @@
 // intersection segments in a buffer of their own,
 // its textures (sRGB, mipmapped, repeating), per-material draw ranges, one
 // uniform block per material and, for a rigged model, its skinning
-// (render/gpu_skin.h).
+// (render/gpu_skin.h). It holds what the GPU draws, not how a frame sees
+// the model: bounds, levels and caps are the imported model's and the
+// pose's (frame_context.h). Every draw goes through the frame's pacing
+// (draw_pacing.h; null: drawn at once).
 // Created and destroyed on the render thread only.
 #include <array>
 #include <memory>
@@ -17,6 +20,7 @@
 #include "gpu/uniform_arena.h"
 #include "render/gpu_skin.h"
 #include "render/background_thread.h"
+#include "render/draw_pacing.h"
 #include "render/facing_runs.h"
 #include "render/hull_cull.h"
 #include "render/uniform_blocks.h"
@@ -66,16 +70,16 @@ class GpuModel {
   void bind_material(int index) const;
   // Draws one submesh (the VAO must be bound); the ranges of every level
   // index the one index buffer.
-  void draw(const scene::Submesh& submesh) const;
+  void draw(const scene::Submesh& submesh, DrawPacing* pacing) const;
   // Submesh `k` of a level without its runs of faces that surely turn away
   // from `viewer` (render/facing_runs.h); all of it while posed, since the
   // runs hold the rest pose. Returns how many triangles it left out.
-  std::size_t draw_facing(std::size_t lod, std::size_t k, const MeshViewer& viewer) const;
+  std::size_t draw_facing(std::size_t lod, std::size_t k, const MeshViewer& viewer, DrawPacing* pacing) const;
   // Every triangle of a level of detail (0 = full detail).
-  void draw_all(std::size_t lod = 0) const;
-  // The triangles closing a level's holes (caps()), with the mesh's own
-  // vertices; nothing when it has none.
-  void draw_caps(std::size_t lod = 0) const;
+  void draw_all(std::size_t lod, DrawPacing* pacing) const;
+  // The triangles closing a level's holes (scene::Mesh::cap_indices), with
+  // the mesh's own vertices; nothing when it has none.
+  void draw_caps(std::size_t lod, DrawPacing* pacing) const;
   // How many of a level's edges are creased at a crease angle of `degrees`
   // (scene/crease_edges.h).
   std::size_t creased_edges(std::size_t lod, double degrees) const;
@@ -83,7 +87,8 @@ class GpuModel {
   // `viewer` without the runs of them whose faces all surely turn away
   // from it (render/facing_runs.h; all of them while posed, since the runs
   // hold the rest pose). Returns how many edges it drew.
-  std::size_t draw_creases(std::size_t lod, double degrees, const std::optional<MeshViewer>& viewer) const;
+  std::size_t draw_creases(std::size_t lod, double degrees, const std::optional<MeshViewer>& viewer,
+                            DrawPacing* pacing) const;
   // How many of a level's segments where parts cross turn by more than
   // `degrees` (scene/intersection_lines.h); none while posed (they hold
   // the rest pose).
@@ -91,41 +96,23 @@ class GpuModel {
   // Those segments as GL_LINES_ADJACENCY primitives (the crease pass's,
   // p1, a, b, p2), from a vertex array of their own, left bound. Returns
   // how many it drew.
-  std::size_t draw_intersections(std::size_t lod, double degrees) const;
-  // How many connected parts the mesh has (scene::Mesh::parts), and
-  // whether the search for where they cross saw it through on every level
-  // (scene::IntersectionLines::complete).
-  std::uint32_t parts() const { return parts_; }
-  bool intersections_complete() const { return intersections_complete_; }
+  std::size_t draw_intersections(std::size_t lod, double degrees, DrawPacing* pacing) const;
   // `index_count` indices from `first_index` of another element buffer (the
   // hull's faces that may show, render/hull_cull.h), with this model's
   // vertices; its own indices are bound again after.
-  void draw_from(const gpu::Buffer& indices, std::size_t index_count, std::size_t first_index) const;
+  void draw_from(const gpu::Buffer& indices, std::size_t index_count, std::size_t first_index,
+                 DrawPacing* pacing) const;
   // A level's triangles as the hull cull reads them; null while posed (the
   // vertices the GPU draws are not the rest pose kept here). The first call
   // has them built on `builder`'s thread (pairing up the edges of a million
   // faces took 0.65 s, too long to hold a render for): null until then.
   std::shared_ptr<const HullCullMesh> hull_cull_mesh(std::size_t lod, BackgroundThread& builder) const;
 
-  // The submeshes of a level of detail (0 = full detail).
+  // The submeshes of a level of detail (0 = full detail; the rest come
+  // from scene::Mesh::lods).
   const std::vector<scene::Submesh>& submeshes(std::size_t lod = 0) const { return levels_[lod].submeshes; }
-  // Level 0 is the full mesh; the rest come from scene::Mesh::lods.
-  std::size_t lod_count() const { return levels_.size(); }
-  // Per level, in the mesh's units: how far its surface may stray (0 at level 0).
-  const std::vector<double>& lod_errors() const { return lod_errors_; }
-  std::size_t triangles(std::size_t lod = 0) const { return levels_[lod].index_count / 3; }
-  // Whether a level's triangles close around a volume (scene/enclosure.h).
-  // A pose keeps the topology, so a closed level stays closed.
-  scene::Enclosure enclosure(std::size_t lod = 0) const { return levels_[lod].enclosure; }
-  // Triangles closing the level's holes (scene::Mesh::caps); empty when closed.
-  // Posed: the caps moved with the pose.
-  const std::vector<glm::vec3>& caps(std::size_t lod = 0) const {
-    return posed_ ? levels_[lod].posed_caps : levels_[lod].caps;
-  }
   const std::vector<GpuMaterial>& materials() const { return materials_; }
   GLuint texture(int index) const { return textures_[static_cast<std::size_t>(index)].id(); }
-  bool has_textures() const { return !textures_.empty(); }
-  bool has_vertex_colors() const { return has_vertex_colors_; }
   // Whether a material is drawn only where its alpha passes a cutoff
   // (glTF alphaMode MASK).
   bool has_masked_materials() const {
@@ -138,15 +125,6 @@ class GpuModel {
       if (m.normal_texture >= 0) return true;
     return false;
   }
-  // The pose's when one is applied (which may be a whole clip's).
-  const scene::Bounds& bounds() const { return posed_ ? posed_bounds_ : bounds_; }
-  // How much the applied pose may lengthen a level's error (SkinPose::stretch).
-  double pose_stretch() const { return posed_ ? pose_stretch_ : 1.0; }
-  // Vertices extreme along many directions, for framing (relative to origin).
-  const std::vector<glm::vec3>& extremes() const { return posed_ ? posed_extremes_ : extremes_; }
-  const scene::CreaseProfile& creases() const { return creases_; }
-  // The model-space point the vertex positions are relative to.
-  const glm::dvec3& origin() const { return origin_; }
   std::size_t gpu_bytes() const { return gpu_bytes_; }
 
  private:
@@ -157,9 +135,6 @@ class GpuModel {
   bool skinned_ = false;        // posed by the vertex stages
   std::shared_ptr<const scene::SkinPose> applied_;  // what the buffers hold now
   gpu::Buffer posed_vertices_;  // made by the first pose posed on the CPU
-  scene::Bounds posed_bounds_;
-  std::vector<glm::vec3> posed_extremes_;
-  double pose_stretch_ = 1.0;
   gpu::Buffer indices_;
   std::vector<gpu::Texture> textures_;
   std::vector<GpuMaterial> materials_;
@@ -169,9 +144,6 @@ class GpuModel {
     std::vector<scene::Submesh> submeshes;  // ranges of the shared index buffer
     std::size_t first_index = 0;            // the level's whole range
     std::size_t index_count = 0;
-    scene::Enclosure enclosure = scene::Enclosure::Open;
-    std::vector<glm::vec3> caps;
-    std::vector<glm::vec3> posed_caps{};
     std::size_t first_cap_index = 0;  // the caps' range of the index buffer
     std::size_t cap_index_count = 0;
     std::shared_ptr<HullCullSlot> hull_cull = std::make_shared<HullCullSlot>();
@@ -192,19 +164,11 @@ class GpuModel {
   std::shared_ptr<const std::vector<std::uint32_t>> all_indices_;
   void pose_into_vertex_buffer(const scene::Model& model, const scene::PoseSums& sums);
   void upload_intersections(const scene::Mesh& mesh);
-  std::vector<double> lod_errors_;
-  scene::Bounds bounds_;
-  std::vector<glm::vec3> extremes_;
-  scene::CreaseProfile creases_;
   // Every level's intersection segments: their points (positions only)
   // and indices counting through them, in a vertex array of their own.
   gpu::VertexArray seam_vao_;
   gpu::Buffer seam_points_;
   gpu::Buffer seam_indices_;
-  std::uint32_t parts_ = 1;
-  bool intersections_complete_ = true;
-  glm::dvec3 origin_{0.0};
-  bool has_vertex_colors_ = false;
   std::size_t gpu_bytes_ = 0;
 };
 

@@ -1,7 +1,6 @@
 #include "render/object_draw.h"
 
-#include "render/frame_blocks.h"
-#include "render/frame_context.h"
+#include "render/passes/pass_context.h"
 #include "render/texture_unit.h"
 
 namespace toond::render {
@@ -19,8 +18,8 @@ HiddenFaces other_side(HiddenFaces faces) {
 // hole (a closed surface is entered through a face turned toward the
 // viewer), so past a cap turned toward the camera and nearer than that
 // face, which passes every test the face would. `query` keeps the answer.
-void redraw_where_caps_show(const GpuModel& model, std::size_t lod, HiddenFaces hidden, gpu::Query& query,
-                            const std::function<void()>& draw) {
+void redraw_where_caps_show(const GpuModel& model, std::size_t lod, DrawPacing* pacing, HiddenFaces hidden,
+                            gpu::Query& query, const std::function<void()>& draw) {
   GLboolean depth_writes = GL_TRUE;
   GLint stencil_writes = 0;
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_writes);
@@ -30,7 +29,7 @@ void redraw_where_caps_show(const GpuModel& model, std::size_t lod, HiddenFaces 
   glStencilMask(0);
   query = gpu::Query::create(GL_ANY_SAMPLES_PASSED);
   glBeginQuery(GL_ANY_SAMPLES_PASSED, query.id());
-  model.draw_caps(lod);  // their hidden side skipped like the mesh's: they are wound like it
+  model.draw_caps(lod, pacing);  // their hidden side skipped like the mesh's: they are wound like it
   glEndQuery(GL_ANY_SAMPLES_PASSED);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(depth_writes);
@@ -53,25 +52,27 @@ void cull(HiddenFaces faces) {
   glCullFace(faces == HiddenFaces::Back ? GL_BACK : GL_FRONT);
 }
 
-void draw_objects(const FrameContext& frame, const FrameBlocks& blocks, const ObjectDraw& how) {
+void draw_objects(const PassContext& context, const ObjectDraw& how) {
+  const FrameContext& frame = context.frame;
   for (std::size_t i = 0; i < frame.objects.size(); ++i) {
-    const GpuModel& model = frame.objects[i].model;
+    const GpuModel& model = context.model(i);
     const FaceSkip skip = how.faces(i);
     cull(skip.hidden);
-    blocks.bind_object(i);
+    context.blocks.bind_object(i);
     model.bind();
     how.draw(i);
     if (skip.unless_caps_show) {
       gpu::Query local;
       gpu::Query& check = how.cap_checks ? (*how.cap_checks)[i] : local;
-      redraw_where_caps_show(model, frame.lod_of(i), skip.hidden, check, [&] { (how.redraw ? how.redraw : how.draw)(i); });
+      redraw_where_caps_show(model, frame.lod_of(i), context.pacing, skip.hidden, check,
+                             [&] { (how.redraw ? how.redraw : how.draw)(i); });
     }
   }
   glDisable(GL_CULL_FACE);
 }
 
-void draw_whole_object(const FrameContext& frame, std::size_t i) {
-  frame.objects[i].model.draw_all(frame.lod_of(i));
+void draw_whole_object(const PassContext& context, std::size_t i) {
+  context.model(i).draw_all(context.frame.lod_of(i), context.pacing);
 }
 
 void bind_material(const GpuModel& model, int material) {
@@ -80,11 +81,11 @@ void bind_material(const GpuModel& model, int material) {
   if (texture >= 0) glBindTextureUnit(texture_unit::kDiffuse, model.texture(texture));
 }
 
-void draw_by_material(const FrameContext& frame, std::size_t i) {
-  const GpuModel& model = frame.objects[i].model;
-  for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
+void draw_by_material(const PassContext& context, std::size_t i) {
+  const GpuModel& model = context.model(i);
+  for (const scene::Submesh& sub : model.submeshes(context.frame.lod_of(i))) {
     bind_material(model, sub.material);
-    model.draw(sub);
+    model.draw(sub, context.pacing);
   }
 }
 

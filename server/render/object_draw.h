@@ -10,8 +10,7 @@
 
 namespace toond::render {
 
-struct FrameContext;
-class FrameBlocks;
+struct PassContext;
 class GpuModel;
 
 // Which faces of an object a pass skips.
@@ -26,7 +25,8 @@ struct FaceSkip {
 void cull(HiddenFaces faces);
 
 // Draws every object of the frame: binds the object's buffers and its
-// placement (`blocks`), culls what `faces(i)` says and calls `draw(i)`.
+// placement (the context's blocks), culls what `faces(i)` says and calls
+// `draw(i)`.
 // Where caps may show, the skipped side is drawn by `redraw(i)` when given
 // (a draw that left out faces only that side can show), else by `draw(i)`,
 // and their check's query lands in `cap_checks[i]` when given, so the
@@ -37,14 +37,14 @@ struct ObjectDraw {
   std::function<void(std::size_t)> redraw{};
   std::vector<gpu::Query>* cap_checks = nullptr;
 };
-void draw_objects(const FrameContext& frame, const FrameBlocks& blocks, const ObjectDraw& how);
+void draw_objects(const PassContext& context, const ObjectDraw& how);
 
 // Every triangle of object i at the frame's level of detail.
-void draw_whole_object(const FrameContext& frame, std::size_t i);
+void draw_whole_object(const PassContext& context, std::size_t i);
 
 // Object i submesh by submesh, each with its material's block and texture
 // bound: for passes whose colour or alpha test comes from the material.
-void draw_by_material(const FrameContext& frame, std::size_t i);
+void draw_by_material(const PassContext& context, std::size_t i);
 
 // Binds a material's block and its colour texture (when it has one).
 void bind_material(const GpuModel& model, int material);

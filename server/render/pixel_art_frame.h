@@ -14,7 +14,7 @@ inline constexpr int kReadableAreaArtPx = 3;
 
 // `frame` (one frame's parameters, as frame_params gives them) drawn at
 // 1/scale of its size, one sample a pixel, band edges hard, and its lines
-// as `art.lines` says. `art.scale` divides width and height (the HTTP layer
+// as `art.lines` says. `art.scale` divides width and height (the pipeline
 // checks).
 RenderParams pixel_art_frame_params(RenderParams frame, const SheetParams::PixelArt& art);
 

@@ -57,13 +57,13 @@ struct AnimationParams {
 };
 
 // One clip of an animated sheet (`sheet.animation`): as asked, then, once
-// the HTTP layer has looked it up in the model, resolved.
+// the pipeline has looked it up in the model, resolved.
 struct SheetClip {
   std::string clip;  // by name; or
   int clip_index = -1;  // by index (>= 0)
   std::optional<int> frames;
   std::optional<double> fps;
-  // Resolved (http/animation_pose.h):
+  // Resolved (pipeline/clips.h):
   std::size_t index = 0;  // into the model's Rig::clips
   std::string name;
   double duration = 0;  // seconds
@@ -82,7 +82,7 @@ struct SheetParams {
   // Pixel art (`sheet.pixel_art`): tiles drawn at 1/scale, quantised to one
   // palette for the whole sheet, blown up by `scale`. Unset: tiles as drawn.
   struct PixelArt {
-    int scale = 4;      // width and height are multiples of it (checked by the HTTP layer)
+    int scale = 4;      // width and height are multiples of it (checked by the pipeline, sheet_checks.h)
     int colors = 16;    // size of the computed palette when `palette` is empty
     std::vector<std::array<std::uint8_t, 3>> palette;  // sRGB; empty: computed over the sheet
     bool dither = false;  // ordered 4×4 Bayer dithering
@@ -167,7 +167,7 @@ struct FloorParams {
   float size = 4;         // half side, in bounding radii
   std::string texture;    // bundle path; empty: plain colour
   float texture_repeat = 4;
-  // The decoded `texture`, filled by the HTTP layer (which reads bundles)
+  // The decoded `texture`, filled by the pipeline (which reads bundles)
   // before the job reaches the render thread; null for a plain floor.
   std::shared_ptr<const scene::Texture> image;
 };
@@ -248,7 +248,7 @@ struct RenderParams {
   bool band_aa = true;  // blend band edges across a pixel
   TwoToneParams two_tone;
   std::vector<RampStop> ramp;  // sorted by `at`; empty: bands
-  // Bundle path of a ramp image; the HTTP layer turns it into `ramp` stops
+  // Bundle path of a ramp image; the pipeline turns it into `ramp` stops
   // (ramp_from_image) before the job is queued.
   std::string ramp_image;
   std::map<std::string, glm::vec3> shade_colors;  // material name → linear shade colour

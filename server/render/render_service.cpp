@@ -76,9 +76,9 @@ std::future<RenderOutput> RenderService::submit(RenderJob job) {
   auto future = task.promise.get_future();
   {
     std::lock_guard lock(mutex_);
-    FairQueue<Task>& lane = lane_for(task.job.cost);
+    FairQueue<Task>& lane = lane_for(task.job.schedule.cost);
     if (lane.size() >= options_.queue_capacity) throw QueueFull();
-    const std::string client = task.job.client;
+    const std::string client = task.job.schedule.client;
     lane.push(client, std::move(task));
   }
   // Every thread looks: the one woken might serve the other lane only.
@@ -97,10 +97,10 @@ std::vector<std::future<RenderOutput>> RenderService::submit_all(std::vector<Ren
     std::lock_guard lock(mutex_);
     // A sheet's frames share its price, so they share a lane; admitted as one
     // request, they may take the lane past its capacity.
-    FairQueue<Task>& lane = lane_for(tasks.empty() ? 0.0 : tasks.front().job.cost);
+    FairQueue<Task>& lane = lane_for(tasks.empty() ? 0.0 : tasks.front().job.schedule.cost);
     if (lane.size() >= options_.queue_capacity) throw QueueFull();
     for (Task& task : tasks) {
-      const std::string client = task.job.client;
+      const std::string client = task.job.schedule.client;
       lane.push(client, std::move(task));
     }
   }
@@ -319,7 +319,8 @@ bool RenderService::serve(std::size_t index, std::unique_ptr<gpu::ShaderSources>
 std::optional<RenderService::Started> RenderService::start_task(Task task, Worker& worker) {
   Started started;
   started.turn = std::make_unique<ShortTurn>(serves_long_lane(worker.index) ? nullptr : this);
-  if (task.job.deadline && std::chrono::steady_clock::now() > *task.job.deadline) {
+  const Schedule& schedule = task.job.schedule;
+  if (schedule.deadline && std::chrono::steady_clock::now() > *schedule.deadline) {
     task.promise.set_exception(std::make_exception_ptr(DeadlineExceeded()));
     return std::nullopt;
   }
@@ -347,20 +348,20 @@ std::optional<RenderService::Started> RenderService::start_task(Task task, Worke
       GpuModel& model = worker.models.get(o.model_key, *o.model, pinned);
       model.apply_pose(o.pose, *o.model);
       posed_on_cpu = posed_on_cpu || (o.pose && o.pose->cpu_sums);
-      objects.push_back({model, o.transform});
+      objects.push_back({model, *o.model, o.transform, o.pose});
     }
     const double posing_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - posing).count();
     if (posed_on_cpu) started.posing = PassTiming{"pose_vertices", posing_ms, false, posing_ms};
     record_cache_use(worker);
     std::optional<DrawPacing> pacing;
-    if (task.job.paced_chunk_triangles > 0 && task.job.deadline) {
+    if (schedule.pacing.paced() && schedule.deadline) {
       std::function<void()> between_chunks;
       if (serves_long_lane(worker.index)) between_chunks = [this] { yield_to_short_renders(); };
-      pacing.emplace(task.job.paced_chunk_triangles, task.job.paced_band_texels, *task.job.deadline,
+      pacing.emplace(schedule.pacing.chunk_triangles, schedule.pacing.band_texels, *schedule.deadline,
                      std::move(between_chunks));
     }
-    started.frame = worker.renderer.start(objects, task.job.params, pacing ? &*pacing : nullptr);
+    started.frame = worker.renderer.start(objects, task.job.plan, pacing ? &*pacing : nullptr);
   } catch (...) {
     started.failure = std::current_exception();
     // A failed render fails that request only; drain GL errors now, so

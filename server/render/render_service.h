@@ -24,14 +24,16 @@
 #include "gpu/egl_context.h"
 #include "gpu/shader_source.h"
 #include "render/fair_queue.h"
+#include "render/frame_plan.h"
 #include "render/render_params.h"
 #include "render/renderer.h"
+#include "render/schedule.h"
 #include "scene/model.h"
 #include "scene/pose.h"
 
 namespace toond::render {
 
-// One object of a job's scene.
+// One object of a job's frame.
 struct JobObject {
   std::string model_key;  // GPU cache key: the model id, or "demo"
   std::shared_ptr<const scene::Model> model;
@@ -41,23 +43,13 @@ struct JobObject {
   std::shared_ptr<const scene::SkinPose> pose;
 };
 
+// One frame to draw: its objects (at least one; a lone model has the
+// identity) in their poses, the plan made of them before it was queued,
+// which the render thread executes, and when and how it is drawn.
 struct RenderJob {
-  std::vector<JobObject> objects;  // at least one; a lone model has the identity
-  RenderParams params;
-  // Unset: none. A job still queued when its deadline passes is skipped
-  // (its future throws DeadlineExceeded); one already drawing finishes,
-  // unless it is paced.
-  std::optional<std::chrono::steady_clock::time_point> deadline;
-  // Who asked (the HTTP client's address): clients take turns in the queue.
-  std::string client;
-  // The predicted cost in Msamples (render_cost.h): which lane it waits in.
-  double cost = 0;
-  // Nonzero: the meshes are drawn in chunks of this many triangles and the
-  // render is stopped at its deadline (RenderAborted; draw_pacing.h).
-  std::size_t paced_chunk_triangles = 0;
-  // With it, the edge pass is drawn in bands of rows reading about this
-  // many texels each, a chunk's worth.
-  std::size_t paced_band_texels = 0;
+  std::vector<JobObject> objects{};
+  FramePlan plan{};
+  Schedule schedule{};
 };
 
 // Set on a job's future when its deadline passed before it was started.

@@ -28,7 +28,22 @@ void report_cap_checks(const std::vector<gpu::Query>& checks, std::vector<LodUse
   }
 }
 
+// What the frame's arithmetic sees of each object: the model as imported,
+// in the pose its GPU copy draws.
+std::vector<FrameObject> frame_objects(const std::vector<RenderObject>& objects) {
+  std::vector<FrameObject> frame;
+  for (const RenderObject& o : objects) frame.push_back({o.model, o.pose.get(), o.gpu.skinned()});
+  return frame;
+}
+
 }  // namespace
+
+std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& objects, const RenderParams& params,
+                                             DrawPacing* pacing) {
+  std::vector<PlannedObject> planned;
+  for (const RenderObject& o : objects) planned.push_back({o.model, o.transform, o.pose.get()});
+  return start(objects, plan_frame(params, planned), pacing);
+}
 
 bool Renderer::real_gpu() {
   if (!real_gpu_) {
@@ -38,11 +53,10 @@ bool Renderer::real_gpu() {
   return *real_gpu_;
 }
 
-std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& objects, const RenderParams& params,
+std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& objects, const FramePlan& plan,
                                              DrawPacing* pacing) {
   if (objects.empty()) throw gpu::GpuError("a render needs at least one object");
-  const PacingScope paced(pacing);
-  const FrameContext frame = build_frame_context(objects, params, face_culling_);
+  const FrameContext frame = build_frame_context(frame_objects(objects), plan, face_culling_);
   // GPU time only on a GPU: a CPU rasterizer's queries do not see its
   // raster threads (they stamp commands as they are recorded), and llvmpipe
   // records a query into every screen tile, which costs a pass over the
@@ -60,8 +74,16 @@ std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& o
                                           frame.supersample, real_gpu());
   out.samples = target ? target->samples() : 1;
   const FrameBlocks blocks(frame, resources_.frame_uniforms());
-  PassContext context{frame,    blocks, programs_, resources_, target, {}, hull_cull_.value_or(!real_gpu()),
-                      skip_runs_, background_};
+  PassContext context{.frame = frame,
+                      .objects = objects,
+                      .blocks = blocks,
+                      .programs = programs_,
+                      .resources = resources_,
+                      .target = target,
+                      .pacing = pacing,
+                      .cull_hull = hull_cull_.value_or(!real_gpu()),
+                      .skip_turned_away_runs = skip_runs_,
+                      .background = background_};
   if (frame.plan.has(Pass::HullOutline)) start_hull_cull(context);
   for (Pass pass : frame.plan.passes) {
     if (pacing && pacing->expired()) break;

@@ -1,7 +1,7 @@
 #pragma once
-// Draws a frame: works out what its passes share (frame_context.h), runs
-// the passes of its plan in order (passes/passes.h) and reads the image
-// back. Render thread only.
+// Draws a frame as its plan says (frame_plan.h): works out what its passes
+// share (frame_context.h), runs the passes of the plan in order
+// (passes/passes.h) and reads the image back. Render thread only.
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,8 +10,10 @@
 #include "render/background_thread.h"
 #include "render/draw_pacing.h"
 #include "render/frame_context.h"
+#include "render/frame_plan.h"
 #include "render/frame_resources.h"
 #include "render/pending_frame.h"
+#include "render/render_object.h"
 #include "render/render_output.h"
 #include "render/render_params.h"
 
@@ -37,16 +39,22 @@ class Renderer {
   // mesh, built after its first frame): for tests that need it in place.
   void settle() { background_.drain(); }
 
+  // `objects` as the plan was made of them (in its order, in its poses).
   // Every object shares the camera, the lights and the passes; camera fit,
   // shadow fit and floor use the union of their transformed bounds. With
   // `pacing` the meshes are drawn in its chunks, and a render whose
   // deadline passes throws RenderAborted (render/draw_pacing.h).
+  RenderOutput render(const std::vector<RenderObject>& objects, const FramePlan& plan, DrawPacing* pacing = nullptr) {
+    return finish(start(objects, plan, pacing));
+  }
+  // The same, planned here from `params` and the objects' transforms and
+  // poses (plan_frame).
   RenderOutput render(const std::vector<RenderObject>& objects, const RenderParams& params,
                       DrawPacing* pacing = nullptr) {
     return finish(start(objects, params, pacing));
   }
-  RenderOutput render(const GpuModel& model, const RenderParams& params) {
-    return render({RenderObject{model, glm::dmat4(1.0)}}, params);
+  RenderOutput render(const GpuModel& gpu, const scene::Model& model, const RenderParams& params) {
+    return render({RenderObject{gpu, model}}, params);
   }
 
   // The same in two halves: start() records the passes and queues the
@@ -56,6 +64,8 @@ class Renderer {
   // rasterizer too, so tests there cover the path) and the thread may start
   // other frames before it finishes this one. A data layer is always read
   // in start(). A frame that throws in start() leaves nothing to finish.
+  std::unique_ptr<PendingFrame> start(const std::vector<RenderObject>& objects, const FramePlan& plan,
+                                      DrawPacing* pacing = nullptr);
   std::unique_ptr<PendingFrame> start(const std::vector<RenderObject>& objects, const RenderParams& params,
                                       DrawPacing* pacing = nullptr);
   RenderOutput finish(std::unique_ptr<PendingFrame> frame);

@@ -1,6 +1,6 @@
 #pragma once
 // Where each frame of a sprite sheet goes and which view it shows. Pure
-// arithmetic on the resolved `sheet` parameters: the HTTP layer checks
+// arithmetic on the resolved `sheet` parameters: the pipeline checks
 // limits and writes the atlas from it before anything is rendered.
 #include <vector>
 

@@ -1,6 +1,8 @@
 #include "scene/assimp_import.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <limits>
 
 #include "bundle_paths/model_formats.h"
@@ -24,6 +26,9 @@ std::string upper(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](char c) { return c >= 'a' && c <= 'z' ? c - 32 : c; });
   return text;
 }
+
+// More frames a second than any format's clips are keyed at.
+constexpr double kMaxFrameRate = 10000.0;
 
 std::uint64_t capped_sum(std::uint64_t base, std::uint64_t factor, std::uint64_t bytes) {
   const std::uint64_t cap = std::uint64_t{1} << 40;
@@ -61,6 +66,36 @@ void add_notes(const std::string& errors, const std::string& path, std::vector<s
     if (line.starts_with("note: ")) warnings.insert(warnings.begin(), path + ": " + helper_reason(line.substr(6)));
     at = end + 1;
   }
+}
+
+// The helper's "frame_rate: CLIP FPS" lines, each clip's frames a second,
+// onto the clips read from its answer; a line that does not name one of
+// them with a rate a clip could have is not trusted.
+void add_frame_rates(const std::string& errors, Model& model) {
+  if (!model.rig) return;
+  std::vector<std::pair<std::size_t, double>> rates;
+  std::size_t at = 0;
+  while (at < errors.size()) {
+    const std::size_t end = std::min(errors.find('\n', at), errors.size());
+    const std::string line = errors.substr(at, end - at);
+    at = end + 1;
+    constexpr std::string_view kPrefix = "frame_rate: ";
+    if (!line.starts_with(kPrefix)) continue;
+    const char* const last = line.data() + line.size();
+    std::size_t clip = 0;
+    double rate = 0;
+    const auto [space, clip_error] = std::from_chars(line.data() + kPrefix.size(), last, clip);
+    if (clip_error != std::errc() || space == last || *space != ' ') continue;
+    const auto [end_of_rate, rate_error] = std::from_chars(space + 1, last, rate);
+    if (rate_error != std::errc() || end_of_rate != last) continue;
+    if (clip < model.rig->clips.size() && std::isfinite(rate) && rate > 0.0 && rate <= kMaxFrameRate) {
+      rates.emplace_back(clip, rate);
+    }
+  }
+  if (rates.empty()) return;
+  auto rig = std::make_shared<Rig>(*model.rig);
+  for (const auto& [clip, rate] : rates) rig->clips[clip].frame_rate = rate;
+  model.rig = std::move(rig);
 }
 
 // The bundle with the model file's bytes replaced by the helper's glTF, so
@@ -108,6 +143,7 @@ Model import_assimp_bundle(const Bundle& bundle, const std::string& path, const 
   Model model = import_gltf_bundle(with_converted_file(bundle, path, std::move(result.output)), path, limits,
                                    choices, GltfOrigin::Converted);
   add_notes(result.errors, path, model.warnings);
+  add_frame_rates(result.errors, model);
   return model;
 }
 

@@ -91,37 +91,66 @@ std::vector<std::string> gltf_files(const Bundle& bundle) {
   return found;
 }
 
+// The file the bundle's model is read from, and whether it is glTF: its
+// one glTF file (known by content) when it holds no OBJ or .m, else its one
+// model file by extension.
+struct ModelFile {
+  std::string path;
+  bool gltf = false;
+};
+
+ModelFile model_file(const Bundle& bundle) {
+  const std::vector<std::string> gltf = gltf_files(bundle);
+  if (gltf.size() == 1 && !std::any_of(bundle.files().begin(), bundle.files().end(), [](const auto& file) {
+        return has_extension(file.first, ".obj") || has_extension(file.first, ".m");
+      })) {
+    return {gltf.front(), true};
+  }
+  std::string path = find_model_file(bundle, model_extensions(), kModelFileNoun);
+  const bool by_name = has_extension(path, ".gltf") || has_extension(path, ".glb");
+  return {std::move(path), by_name};
+}
+
 }  // namespace
 
-Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, const ImportChoices& choices) {
+bool z_up_by_convention(std::string_view path) {
+  for (const std::string_view extension : {".stl", ".ply", ".3mf", ".amf"}) {
+    if (has_extension(path, extension)) return true;
+  }
+  return false;
+}
+
+ImportChoices with_format_up(const Bundle& bundle, ImportChoices choices) {
+  if (choices.up == ImportChoices::Up::FormatDefault) {
+    choices.up = z_up_by_convention(model_file(bundle).path) ? ImportChoices::Up::Z : ImportChoices::Up::Y;
+  }
+  return choices;
+}
+
+Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, const ImportChoices& asked) {
+  const ImportChoices choices = with_format_up(bundle, asked);
   ImportLimits limits = given_limits;
   if (limits.max_seconds > 0.0 && limits.deadline == std::chrono::steady_clock::time_point::max()) {
     limits.deadline = std::chrono::steady_clock::now() +
                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                           std::chrono::duration<double>(limits.max_seconds));
   }
-  const std::vector<std::string> gltf = gltf_files(bundle);
+  const ModelFile file = model_file(bundle);
+  const std::string& path = file.path;
+  if (choices.gltf_scene && !file.gltf) {
+    throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");
+  }
   Model model;
-  if (gltf.size() == 1 && !std::any_of(bundle.files().begin(), bundle.files().end(), [](const auto& file) {
-        return has_extension(file.first, ".obj") || has_extension(file.first, ".m");
-      })) {
-    model = import_gltf_bundle(bundle, gltf.front(), limits, choices);
+  if (file.gltf) {
+    model = import_gltf_bundle(bundle, path, limits, choices);
+  } else if (read_through_assimp(path)) {
+    model = import_assimp_bundle(bundle, path, limits, choices);
+  } else if (has_extension(path, ".stl") || has_extension(path, ".ply")) {
+    model = has_extension(path, ".stl") ? import_stl_bundle(bundle, limits, choices)
+                                        : import_ply_bundle(bundle, limits, choices);
   } else {
-    const std::string path = find_model_file(bundle, model_extensions(), kModelFileNoun);
-    if (choices.gltf_scene && !has_extension(path, ".gltf") && !has_extension(path, ".glb")) {
-      throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");
-    }
-    if (has_extension(path, ".gltf") || has_extension(path, ".glb")) {
-      model = import_gltf_bundle(bundle, path, limits, choices);
-    } else if (read_through_assimp(path)) {
-      model = import_assimp_bundle(bundle, path, limits, choices);
-    } else if (has_extension(path, ".stl") || has_extension(path, ".ply")) {
-      model = has_extension(path, ".stl") ? import_stl_bundle(bundle, limits, choices)
-                                          : import_ply_bundle(bundle, limits, choices);
-    } else {
-      model = has_extension(path, ".m") ? import_m_bundle(bundle, limits, choices)
-                                        : import_obj_bundle(bundle, limits, choices);
-    }
+    model = has_extension(path, ".m") ? import_m_bundle(bundle, limits, choices)
+                                      : import_obj_bundle(bundle, limits, choices);
   }
   check_import_time(limits, "reading the model");
   LodOptions lod;

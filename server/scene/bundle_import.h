@@ -24,8 +24,21 @@ namespace toond::scene {
 // order (prepare_levels_of_detail, mesh_lod.h).
 // `limits` bound what an upload may make (ImportLimitError beyond).
 // `choices.gltf_scene` picks a glTF file's scene (ImportError when the
-// model file is not glTF, or has no such scene).
+// model file is not glTF, or has no such scene); `choices.up` left to the
+// format is settled by with_format_up.
 Model import_bundle(const Bundle& bundle, const ImportLimits& limits = {}, const ImportChoices& choices = {});
+
+// Whether the format of model file `path` is Z-up by its tools' convention:
+// STL and PLY (CAD, 3D printing, scanners, Blender's own export), 3MF and
+// AMF (a build plate's frame, by their specifications). The rest are Y-up
+// (OBJ, glTF) or say which axis is up themselves (FBX, COLLADA).
+bool z_up_by_convention(std::string_view path);
+
+// `choices` with an up axis left to the format (ImportChoices::Up::
+// FormatDefault) settled as the bundle's model file's convention. Throws
+// ImportError as import_bundle does when the bundle holds no model file or
+// more than one.
+ImportChoices with_format_up(const Bundle& bundle, ImportChoices choices);
 
 // Whether `path` ends in `extension` (".obj"), ASCII case-insensitive.
 bool has_extension(std::string_view path, std::string_view extension);

@@ -53,6 +53,15 @@ double clip_time(const Clip& clip, double time) {
   return wrapped < 0.0 ? wrapped + clip.duration : wrapped;
 }
 
+ClipRange whole_clip(const Clip& clip) { return {0.0, clip.duration}; }
+
+double range_time(ClipRange range, double time) {
+  const double length = range.end - range.start;
+  if (!(length > 0.0) || !std::isfinite(time)) return range.start;
+  const double wrapped = std::fmod(time, length);
+  return range.start + (wrapped < 0.0 ? wrapped + length : wrapped);
+}
+
 void sample_channel(const Channel& ch, double time, std::span<double> out) {
   const std::size_t keys = ch.times.size();
   const bool rotation = ch.path == ChannelPath::Rotation;

@@ -11,6 +11,20 @@ namespace toond::scene {
 // [0, duration) as clips loop; a clip of zero duration is always at 0.
 double clip_time(const Clip& clip, double time);
 
+// A part of a clip's timeline, [start, end] in seconds on the file's time
+// base (one action of a file that keeps every action on one timeline, as
+// Minetest's player and Quake's models do). Whoever takes one from a
+// request checks 0 <= start < end <= duration.
+struct ClipRange {
+  double start = 0;
+  double end = 0;
+};
+ClipRange whole_clip(const Clip& clip);
+
+// `time` counted from range.start and looped inside it: start + time
+// wrapped into [0, end - start); a range of no length is always at start.
+double range_time(ClipRange range, double time);
+
 // The channel's value at `time`, channel.width numbers into `out`. Before
 // the first key the first value holds, after the last the last. LINEAR
 // rotations take the shorter way round (slerp) and every rotation comes

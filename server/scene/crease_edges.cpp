@@ -148,18 +148,16 @@ CreaseEdges find_in(std::span<const glm::vec3> positions, std::span<const glm::v
   // them whose faces all turn away is skipped, render/facing_runs.h).
   std::sort(found.begin(), found.end(),
             [](const Found& l, const Found& r) { return l.turn != r.turn ? l.turn > r.turn : l.place < r.place; });
-  std::vector<std::uint32_t> indices;
   std::vector<int> turns;
   std::vector<double> lengths;
-  indices.reserve(found.size() * 4);
   for (const Found& edge : found) {
-    indices.insert(indices.end(), std::begin(edge.vertices), std::end(edge.vertices));
     turns.push_back(edge.turn);
     lengths.push_back(edge.length);
   }
   CreaseEdges edges;
   static_cast<TurnTally&>(edges) = tally_turns(turns, lengths, groups.diagonal);
-  edges.indices = std::move(indices);
+  edges.indices.reserve(found.size() * 4);
+  for (const Found& edge : found) edges.indices.insert(edges.indices.end(), std::begin(edge.vertices), std::end(edge.vertices));
   return edges;
 }
 

@@ -193,20 +193,22 @@ class GltfImporter {
     check_counts(instances);
     decode_draco(instances);
     rig_reader_ = std::make_unique<GltfRigReader>(gltf_, *reader_, path_, drawn_nodes_,
-                                                  up_axis_turn(choices_.z_up), warnings_);
+                                                  up_axis_turn(choices_.z_up()), warnings_);
     MeshSource source = make_source(instances);
     source.limits = limits_;
     apply_import_choices(source, choices_);
     // glTF 2.0 §3.7.2.1: without NORMAL, flat normals. A converted file's
     // missing normals were missing in the original, which said nothing.
     if (origin_ == GltfOrigin::File) source.smooth_angle_deg = kFlatSmoothAngle;
-    model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
+    const bool has_texcoords = !source.texcoords.empty();
+    model_.mesh = build_mesh(source, warnings_, [this, has_texcoords](std::vector<SourceTriangle>& triangles) {
       build_materials(triangles);
+      if (has_texcoords) skin_with_lone_image();
       check_import_time(limits_, "decoding textures");
     });
     if (rig_reader_->moves()) {
       const glm::dmat4 file_to_mesh =
-          glm::translate(glm::dmat4(1.0), -model_.mesh.origin) * glm::dmat4(up_axis_turn(choices_.z_up));
+          glm::translate(glm::dmat4(1.0), -model_.mesh.origin) * glm::dmat4(up_axis_turn(choices_.z_up()));
       model_.rig = std::make_shared<const Rig>(rig_reader_->finish(file_to_mesh));
       check_import_time(limits_, "reading clips");
     }
@@ -854,6 +856,33 @@ class GltfImporter {
       }
     }
     for (auto& tri : triangles) tri.material = slot.at(tri.material);
+  }
+
+  // Game models leave their skin to the game's code (Minetest's B3D player
+  // is given character.png by Lua; Quake's MD3 by a .skin file): a
+  // converted file none of whose materials names a texture, uploaded with
+  // one other file that it does not name, is drawn with that file as
+  // every material's texture when it decodes as an image.
+  void skin_with_lone_image() {
+    if (origin_ != GltfOrigin::Converted || !images_.empty() || bundle_.files().size() != 2) return;
+    for (const Material& material : model_.materials) {
+      if (material.diffuse_texture >= 0) return;
+    }
+    const auto other = std::find_if(bundle_.files().begin(), bundle_.files().end(),
+                                    [this](const auto& file) { return file.first != path_; });
+    try {
+      Texture decoded = decode_model_texture(other->second, other->first, limits_.max_texture_pixels,
+                                             texture_pixels_left_);
+      decoded.color_space = ColorSpace::Srgb;
+      model_.textures.push_back(std::move(decoded));
+    } catch (const ImportLimitError&) {
+      throw;
+    } catch (const std::exception&) {
+      return;  // not an image: the file was sent for something else
+    }
+    for (Material& material : model_.materials) material.diffuse_texture = static_cast<int>(model_.textures.size()) - 1;
+    warnings_.add(path_ + ": names no texture; drawn with " + in_quotes(other->first) +
+                  ", the upload's one image, as a game gives a model its skin");
   }
 
   void report_ignored() {

@@ -38,7 +38,7 @@ namespace toond::scene {
 // buffer view and sparse part against the bytes it reads.
 // Callers that take any model file use import_bundle (bundle_import.h).
 // `choices.gltf_scene` picks the scene (none: the file's default, or its
-// first); `choices.z_up` turns the model. A primitive without NORMAL is
+// first); `choices.z_up()` turns the model. A primitive without NORMAL is
 // flat-shaded, as the specification says, whatever `choices.smooth_angle`.
 //
 // A glTF file that toond-assimp-convert wrote from another format

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iostream>
 #include <system_error>
 
 namespace toond::scene {
@@ -42,9 +43,14 @@ ChildResult run_helper(const ChildRun& run, std::string_view helper, std::string
   const std::string subject(helper);
   ChildResult result = run_child(run);
   switch (result.end) {
-    case ChildResult::End::NotStarted:
-      throw HelperError(subject + " " + run.program + " cannot be started (" +
-                        std::error_code(result.code, std::generic_category()).message() + ")");
+    case ChildResult::End::NotStarted: {
+      // The answer names the program, not where the daemon looked for it:
+      // that is the operator's to read, in the log.
+      const std::string reason = std::error_code(result.code, std::generic_category()).message();
+      std::cerr << "toond: " << subject << " " << run.program << " cannot be started (" << reason << ")\n";
+      throw HelperError(subject + " " + std::filesystem::path(run.program).filename().string() +
+                        " cannot be started (" + reason + ")");
+    }
     case ChildResult::End::TimedOut:
       throw HelperError(subject + " took longer than " + seconds_text(run.time_limit) + " and was stopped");
     case ChildResult::End::OutputTooLarge:

@@ -3,6 +3,7 @@
 // identity: the store hashes it into the id and keeps it beside the files,
 // so a re-import (after a restart, or by another replica) makes the same
 // model.
+#include <cstdint>
 #include <optional>
 
 namespace toond::scene {
@@ -16,9 +17,13 @@ struct ImportChoices {
   // kDefaultSmoothAngle. glTF is flat-shaded where normals are missing, as
   // its specification says, whatever this is.
   std::optional<double> smooth_angle;
-  // `?up=z`: the file is Z-up (most CAD and 3D-printing files): turned so
-  // that its +Z is toond's +Y.
-  bool z_up = false;
+  // `?up`: which of the file's axes is up. Z: turned so that its +Z is
+  // toond's +Y. FormatDefault: the format's convention, which import_bundle
+  // and the store settle with with_format_up (bundle_import.h); an
+  // importer called alone takes it as Y.
+  enum class Up : std::uint8_t { FormatDefault, Y, Z };
+  Up up = Up::FormatDefault;
+  bool z_up() const { return up == Up::Z; }
 
   bool operator==(const ImportChoices&) const = default;
 };

@@ -48,7 +48,7 @@ class DisjointSets {
   std::vector<std::uint32_t> parent_;
 };
 
-struct Box {
+struct SearchBox {
   glm::dvec3 min{std::numeric_limits<double>::max()};
   glm::dvec3 max{std::numeric_limits<double>::lowest()};
 
@@ -56,11 +56,11 @@ struct Box {
     min = glm::min(min, p);
     max = glm::max(max, p);
   }
-  void add(const Box& other) {
+  void add(const SearchBox& other) {
     min = glm::min(min, other.min);
     max = glm::max(max, other.max);
   }
-  bool overlaps(const Box& other) const {
+  bool overlaps(const SearchBox& other) const {
     return min.x <= other.max.x && other.min.x <= max.x && min.y <= other.max.y && other.min.y <= max.y &&
            min.z <= other.max.z && other.min.z <= max.z;
   }
@@ -72,13 +72,13 @@ struct Triangle {
   glm::dvec3 normal;  // unit, by the winding
   std::uint32_t first_index = 0;
   std::uint32_t part = 0;
-  Box box;  // grown by the tolerance, so that touching boxes overlap
+  SearchBox box;  // grown by the tolerance, so that touching boxes overlap
 };
 
 // A node of the tree of triangle boxes: a leaf holds `count` triangles
 // from `first` of the tree's order; an inner node (count 0) two children.
 struct Node {
-  Box box;
+  SearchBox box;
   std::uint32_t first = 0;
   std::uint32_t count = 0;
   std::uint32_t left = 0;
@@ -149,7 +149,7 @@ double turn_deg(const glm::dvec3& a, const glm::dvec3& b) {
 }
 
 // A segment found, before the segments are sorted.
-struct Found {
+struct FoundSeam {
   glm::vec3 points[4];  // p1, a, b, p2
   int turn = 0;         // whole degrees, rounded up
   double length = 0;
@@ -157,7 +157,7 @@ struct Found {
 
 // The stretch of the line where the planes of t1 and t2 meet that both
 // hold, as a segment, when it is one (see the header).
-std::optional<Found> crossing(const Triangle& t1, const Triangle& t2, double tolerance) {
+std::optional<FoundSeam> crossing(const Triangle& t1, const Triangle& t2, double tolerance) {
   const Cut c1 = cut_by_plane(t1.corners, t2.normal, t2.corners[0], tolerance);
   if (c1.coplanar || c1.count < 2) return std::nullopt;
   const Cut c2 = cut_by_plane(t2.corners, t1.normal, t1.corners[0], tolerance);
@@ -180,7 +180,7 @@ std::optional<Found> crossing(const Triangle& t1, const Triangle& t2, double tol
   const glm::dvec3 a = low.second, b = high.second;
   const double length = glm::length(b - a);
   if (!(length > tolerance)) return std::nullopt;
-  Found found;
+  FoundSeam found;
   const glm::dvec3 middle = 0.5 * (a + b);
   found.points[0] = glm::vec3(middle + glm::normalize(glm::cross(t1.normal, along)) * length);
   found.points[1] = glm::vec3(a);
@@ -214,13 +214,13 @@ class Search {
     if (!nodes_.empty()) within(0);
   }
   bool gave_up() const { return gave_up_; }
-  std::vector<Found>& found() { return found_; }
+  std::vector<FoundSeam>& found() { return found_; }
 
  private:
   std::uint32_t build(std::uint32_t first, std::uint32_t end) {
     const auto index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.emplace_back();
-    Box box, centres;
+    SearchBox box, centres;
     for (std::uint32_t i = first; i < end; ++i) {
       const Triangle& t = triangles_[order_[i]];
       box.add(t.box);
@@ -300,7 +300,7 @@ class Search {
     const Triangle& t1 = triangles_[i];
     const Triangle& t2 = triangles_[j];
     if (t1.part == t2.part || !t1.box.overlaps(t2.box) || !spend()) return;
-    std::optional<Found> found = crossing(t1, t2, tolerance_);
+    std::optional<FoundSeam> found = crossing(t1, t2, tolerance_);
     if (!found) return;
     const glm::dvec3 a(found->points[1]), b(found->points[2]);
     const double turn = std::max(turn_deg(shading_normal_at(a, t1, normals_, indices_),
@@ -321,7 +321,7 @@ class Search {
   bool gave_up_ = false;
   std::vector<std::uint32_t> order_;
   std::vector<Node> nodes_;
-  std::vector<Found> found_;
+  std::vector<FoundSeam> found_;
 };
 
 // The triangles that can cross anything (not degenerate), with their
@@ -381,14 +381,14 @@ IntersectionLines find_intersection_lines(std::span<const glm::vec3> positions, 
   Search search(triangles_of(positions, indices, part_of_vertex, tolerance), normals, indices, tolerance, options);
   search.run();
   lines.complete = !search.gave_up();
-  std::vector<Found>& found = search.found();
+  std::vector<FoundSeam>& found = search.found();
   // The greatest turn first; within a turn, in the order found, which
   // follows the tree: segments drawn together lie together.
-  std::stable_sort(found.begin(), found.end(), [](const Found& l, const Found& r) { return l.turn > r.turn; });
+  std::stable_sort(found.begin(), found.end(), [](const FoundSeam& l, const FoundSeam& r) { return l.turn > r.turn; });
   std::vector<int> turns;
   std::vector<double> lengths;
   lines.points.reserve(4 * found.size());
-  for (const Found& f : found) {
+  for (const FoundSeam& f : found) {
     lines.points.insert(lines.points.end(), std::begin(f.points), std::end(f.points));
     turns.push_back(f.turn);
     lengths.push_back(f.length);

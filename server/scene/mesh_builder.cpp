@@ -547,7 +547,7 @@ glm::dmat3 up_axis_turn(bool z_up) {
 
 void apply_import_choices(MeshSource& source, const ImportChoices& choices) {
   source.smooth_angle_deg = choices.smooth_angle.value_or(kDefaultSmoothAngle);
-  source.z_up = choices.z_up;
+  source.z_up = choices.z_up();
 }
 
 Mesh build_mesh(MeshSource& source, ImportWarnings& warnings,

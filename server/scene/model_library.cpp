@@ -67,6 +67,11 @@ std::shared_ptr<const scene::Model> ModelLibrary::get(const std::string& id) {
   return model;
 }
 
+std::shared_ptr<const scene::Model> ModelLibrary::get(const std::string& id, scene::ModelPins& pins) {
+  pins.add(id);
+  return get(id);
+}
+
 void ModelLibrary::forget(const std::string& id) {
   std::lock_guard lock(mutex_);
   models_.erase(id);

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "scene/model.h"
+#include "scene/model_pins.h"
 #include "scene/model_store.h"
 
 namespace toond::scene {
@@ -18,8 +19,12 @@ class ModelLibrary {
   ModelLibrary(scene::ModelStore& store, std::size_t capacity);
 
   // The model, imported from the store on first use; nullptr when the store
-  // has no such id.
+  // has no such id (or lost it while it was read).
   std::shared_ptr<const scene::Model> get(const std::string& id);
+  // The same for a render: the model is pinned in `pins` first, so that
+  // once it is found the store does not let it go before the render is
+  // answered.
+  std::shared_ptr<const scene::Model> get(const std::string& id, scene::ModelPins& pins);
   std::shared_ptr<const scene::Model> demo() const { return demo_; }
   void forget(const std::string& id);
 

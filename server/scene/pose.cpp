@@ -10,7 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "image/parallel_tasks.h"
+#include "parallel/parallel_tasks.h"
 #include "scene/clip_sampling.h"
 #include "scene/extreme_points.h"
 #include "scene/mesh_processing.h"
@@ -184,7 +184,7 @@ PosedVertex pose_vertex(const Mesh& rest, const Rig& rig, const PoseSums& sums, 
 
 void for_each_vertex_run(std::size_t count, const std::function<void(std::size_t first, std::size_t end)>& pose) {
   const int runs = static_cast<int>((count + kPoseRun - 1) / kPoseRun);
-  image::run_tasks(runs, image::hardware_threads(), [&](int run) {
+  parallel::run_tasks(runs, parallel::hardware_threads(), [&](int run) {
     const std::size_t first = static_cast<std::size_t>(run) * kPoseRun;
     pose(first, std::min(count, first + kPoseRun));
   });
@@ -271,10 +271,11 @@ SkinPose skin_pose(const Mesh& rest, const Rig& rig, const NodePose& pose, Skinn
 
 namespace {
 
-// The times a clip's framing samples, in order: every key, three times
-// evenly between neighbouring keys, and kFramingGrid times evenly over the
-// clip (so a long interval is not crossed in four steps); at most
-// kMaxFramingPoses, evenly over the clip, where that would be more.
+// The times a clip's framing samples over `range`, in order: every key in
+// it, three times evenly between neighbouring keys, and kFramingGrid times
+// evenly over the range (so a long interval is not crossed in four steps);
+// at most kMaxFramingPoses, evenly over the range, where that would be
+// more.
 constexpr std::size_t kFramingGrid = 120;
 
 // Poses × points a framing may evaluate: a mesh of many points is sampled
@@ -282,23 +283,23 @@ constexpr std::size_t kFramingGrid = 120;
 // by the larger step that leaves.
 constexpr std::size_t kFramingPointBudget = 2'000'000;
 
-std::vector<double> framing_times(const Clip& clip, std::size_t points) {
+std::vector<double> framing_times(const Clip& clip, ClipRange range, std::size_t points) {
   const std::size_t affordable = kFramingPointBudget / std::max<std::size_t>(points, 1);
-  std::set<double> keys{0.0, clip.duration};
+  std::set<double> keys{range.start, range.end};
   for (const Channel& ch : clip.channels) keys.insert(ch.times.begin(), ch.times.end());
   std::set<double> times;
   for (auto it = keys.begin(); it != keys.end(); ++it) {
-    if (*it < 0.0 || *it > clip.duration) continue;
+    if (*it < range.start || *it > range.end) continue;
     times.insert(*it);
     const auto next = std::next(it);
-    if (next == keys.end() || *next > clip.duration) continue;
+    if (next == keys.end() || *next > range.end) continue;
     if (affordable >= 4 * keys.size()) {
       for (int k = 1; k <= 3; ++k) times.insert(*it + (*next - *it) * k / 4.0);
     }
   }
   const auto even = [&](std::size_t count) {
     for (std::size_t k = 0; k < count; ++k) {
-      times.insert(clip.duration * static_cast<double>(k) / static_cast<double>(count - 1));
+      times.insert(range.start + (range.end - range.start) * static_cast<double>(k) / static_cast<double>(count - 1));
     }
   };
   even(std::clamp<std::size_t>(affordable, 16, kFramingGrid));
@@ -352,9 +353,13 @@ std::vector<glm::vec3> pose_points(const FramingPoints& points, const Rig& rig, 
 }  // namespace
 
 ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip_index) {
+  return frame_clip(rest, rig, clip_index, whole_clip(rig.clips[clip_index]));
+}
+
+ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip_index, ClipRange range) {
   const Clip& clip = rig.clips[clip_index];
   const FramingPoints points = framing_points(rest);
-  const std::vector<double> times = framing_times(clip, points.positions.size());
+  const std::vector<double> times = framing_times(clip, range, points.positions.size());
   // Each sample's extreme points, box and the largest step any point took
   // from the sample before: samples are posed over the cores, each run
   // posing the sample before its first once more.
@@ -364,10 +369,10 @@ ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip_index)
     float step = 0;
   };
   std::vector<Sampled> sampled(times.size());
-  const int threads = image::hardware_threads();
+  const int threads = parallel::hardware_threads();
   const std::size_t per_run =
       (times.size() + static_cast<std::size_t>(threads) - 1) / static_cast<std::size_t>(threads);
-  image::run_tasks(threads, threads, [&](int run) {
+  parallel::run_tasks(threads, threads, [&](int run) {
     const std::size_t first = static_cast<std::size_t>(run) * per_run;
     const std::size_t end = std::min(times.size(), first + per_run);
     std::vector<glm::vec3> previous;

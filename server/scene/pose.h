@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/clip_sampling.h"
 #include "scene/model.h"
 #include "scene/rig.h"
 
@@ -117,6 +118,10 @@ struct ClipFraming {
   std::size_t poses = 0;  // how many were sampled
 };
 ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip);
+// The same over `range` of the clip alone (its keys inside the range, the
+// range's ends, the grid over the range): a walk cut from a timeline that
+// also lies down is framed by the walk.
+ClipFraming frame_clip(const Mesh& rest, const Rig& rig, std::size_t clip, ClipRange range);
 
 // Whether the rig's rest pose (glTF's: skinned meshes placed by their
 // joints at their nodes' rest transforms, the mesh's default morph

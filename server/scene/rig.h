@@ -46,6 +46,10 @@ struct Clip {
   // The last key's time, seconds on the file's time base: a clip loops over
   // [0, duration), as three.js plays it.
   double duration = 0;
+  // Frames per second, where the format keys its clips by frame (B3D, FBX,
+  // MilkShape 3D through the assimp helper); none where it has no frames
+  // (glTF keys by seconds, COLLADA by milliseconds).
+  std::optional<double> frame_rate;
   std::vector<Channel> channels;
 };
 

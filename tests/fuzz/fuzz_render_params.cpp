@@ -10,7 +10,7 @@
 #include "http/request_limits.h"
 #include "param_schema.h"
 #include "presets.h"
-#include "http/render_budget.h"
+#include "pipeline/budget.h"
 #include "render/render_params.h"
 #include "request_error.h"
 
@@ -25,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     schema.validate(request);
     const auto params = toond::http::render_params_from_wire(
         schema.validate_and_complete(toond::proto::Presets::builtin().expand(request)));
-    toond::http::check_render_budget(params, limits.render);
+    toond::pipeline::check_render_budget(params, limits.render);
   } catch (const toond::RequestError&) {
     return 0;
   } catch (const std::exception& e) {

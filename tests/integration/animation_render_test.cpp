@@ -116,6 +116,7 @@ TEST_F(AnimatedModel, TheUploadListsClipsJointsAndMorphTargets) {
   EXPECT_EQ(a["clips"][0]["channels"], 10);
   EXPECT_EQ(a["clips"][1]["name"], "Twist");
   EXPECT_DOUBLE_EQ(a["clips"][1]["duration"].get<double>(), 0.5);
+  EXPECT_FALSE(a["clips"][0].contains("frame_rate"));  // glTF keys by seconds
   EXPECT_EQ(a["joints"], 3);
   EXPECT_EQ(a["morph_targets"], 1);
   for (const json& warning : info["warnings"]) {
@@ -126,6 +127,35 @@ TEST_F(AnimatedModel, TheUploadListsClipsJointsAndMorphTargets) {
   const auto again = client.Get(("/models/" + id()).c_str());
   ASSERT_TRUE(again && again->status == 200);
   EXPECT_EQ(json::parse(again->body)["animation"], a);
+}
+
+// Minetest's own player (tests/exported/minetest), as a new user uploads
+// it: the B3D with the skin the game gives it. Its clip runs one key past
+// the length the file states, which is said, not refused; the clip lists
+// the file's frame rate, and the walk (frames 168-187) moves it.
+TEST_F(AnimatedModel, MinetestsPlayerUploadsWithItsSkinAndItsClipsFrameRate) {
+  auto client = daemon_client();
+  const auto res = upload_files(client, TOOND_EXPORTED_DIR "/minetest", {"character.b3d", "character.png"});
+  ASSERT_TRUE(res && (res->status == 201 || res->status == 200)) << (res ? res->body : "no answer");
+  const json info = json::parse(res->body);
+  EXPECT_EQ(info["textures"], 1);
+  ASSERT_EQ(info["animation"]["clips"].size(), 1u) << info.dump();
+  const json& clip = info["animation"]["clips"][0];
+  EXPECT_EQ(clip["frame_rate"], 60.0);
+  EXPECT_NEAR(clip["duration"].get<double>(), 220.0 / 60.0, 1e-6);
+  EXPECT_NE(info["warnings"].dump().find("past the 220 its file states"), std::string::npos) << info["warnings"];
+  const std::string id = info["id"];
+  const auto again = client.Get(("/models/" + id).c_str());
+  ASSERT_TRUE(again && again->status == 200);
+  EXPECT_EQ(json::parse(again->body)["animation"], info["animation"]);
+  const auto at_frame = [&](int frame) {
+    return render_ok(client, {{"model", id}, {"width", 96}, {"height", 96},
+                              {"animation", {{"clip", 0}, {"time", frame / 60.0}}}});
+  };
+  const image::Image standing = at_frame(0), walking = at_frame(173);
+  EXPECT_NE(standing.rgba, walking.rgba);
+  const std::vector<bool> walker = drawn(walking);
+  EXPECT_GT(std::count(walker.begin(), walker.end(), true), 500);
 }
 
 TEST_F(AnimatedModel, ServerTimingCountsThePosing) {

@@ -68,11 +68,11 @@ class MeshFormats : public SharedDaemonTest {
 
   static inline const std::filesystem::path kBlender = TOOND_EXPORTED_DIR "/blender";
 
-  image::Image upload_and_render(const Files& files, const std::string& output) {
+  image::Image upload_and_render(const Files& files, const std::string& output, const std::string& query = "") {
     auto client = daemon().client();
     httplib::MultipartFormDataItems items;
     for (const auto& [name, bytes] : files) items.push_back({"file", bytes, name, "application/octet-stream"});
-    auto res = client.Post("/models", items);
+    auto res = client.Post("/models" + query, items);
     if (!res || (res->status != 200 && res->status != 201)) {
       ADD_FAILURE() << files.front().first << ": " << (res ? res->body : "no answer");
       return {};
@@ -90,7 +90,9 @@ class MeshFormats : public SharedDaemonTest {
       for (const Files& form : forms) {
         const std::string& name = form.front().first;
         if (output == "color" && name.ends_with(".glb")) continue;
-        const image::Image other = upload_and_render(form, output);
+        // STL and PLY are Z-up by default; these hold the OBJ's own axes.
+        const bool z_up_format = name.ends_with(".stl") || name.ends_with(".ply");
+        const image::Image other = upload_and_render(form, output, z_up_format ? "?up=y" : "");
         ASSERT_EQ(other.rgba.size(), reference.rgba.size()) << name;
         // The same float positions and triangles: the same pixels.
         EXPECT_EQ(other.rgba, reference.rgba) << name << " renders unlike the OBJ (" << output << ")";
@@ -121,21 +123,53 @@ TEST_F(MeshFormats, ASmoothSheetRendersAlikeFromEveryFormatThatSmoothsByAngle) {
 
 // Files written by a real exporter (tests/exported/blender/make.py, Blender
 // 3.4): its OBJ is Y-up, its binary STL and PLY Z-up, all without normals.
-// Uploaded as users would (the Z-up ones with ?up=z) their normal layers
-// agree everywhere (no pixel more than 8 levels off), and their colour
-// renders in all but a few pixels of the crease lines: the OBJ's n-gons are
-// fanned by the reader, Blender triangulates the others itself, and the
-// edge pass follows the triangles' edges (at most 0.2 % of the image).
+// Uploaded as users would, with nothing said of their axes (STL and PLY are
+// Z-up by their tools' convention, the default), their normal layers agree
+// everywhere (no pixel more than 8 levels off), and their colour renders in
+// all but a few pixels of the crease lines: the OBJ's n-gons are fanned by
+// the reader, Blender triangulates the others itself, and the edge pass
+// follows the triangles' edges (at most 0.2 % of the image). `?up=z` is the
+// same model; `?up=y` lays the part on its side.
 TEST_F(MeshFormats, BlenderExportsRenderAlike) {
   for (const std::string output : {"color", "normal"}) {
     const image::Image obj_image = render(upload_exported({"part.obj"}, "", 200), output);
     ASSERT_FALSE(obj_image.rgba.empty());
     for (const std::string name : {"part.stl", "part.ply"}) {
-      const image::Image other = render(upload_exported({name}, "?up=z", 200), output);
+      const std::string id = upload_exported({name}, "", 200);
+      EXPECT_EQ(upload_exported({name}, "?up=z", 200), id) << name;
+      const image::Image other = render(id, output);
       EXPECT_LE(differences(other, obj_image).first, output == "normal" ? 0u : 128u * 128u / 500u)
           << name << " " << output;
+      const image::Image on_its_side = render(upload_exported({name}, "?up=y", 200), output);
+      EXPECT_GT(differences(on_its_side, obj_image).first, 128u * 128u / 20u) << name << " " << output;
     }
   }
+}
+
+// The upload answer says which axis was taken as up: the format's
+// convention unless `?up` says otherwise.
+TEST_F(MeshFormats, TheUploadAnswerSaysWhichAxisWasUp) {
+  auto client = daemon().client();
+  const auto up_of = [&](const std::string& file, const std::string& query) {
+    httplib::MultipartFormDataItems items{{"file", read_file(kBlender / file), file, "application/octet-stream"}};
+    const auto res = client.Post("/models" + query, items);
+    if (!res || (res->status != 200 && res->status != 201)) {
+      ADD_FAILURE() << file << query << ": " << (res ? res->body : "no answer");
+      return std::string();
+    }
+    return json::parse(res->body).value("up", "");
+  };
+  EXPECT_EQ(up_of("part.stl", ""), "z");
+  EXPECT_EQ(up_of("part.ply", ""), "z");
+  EXPECT_EQ(up_of("part.obj", ""), "y");
+  EXPECT_EQ(up_of("walker.glb", ""), "y");
+  EXPECT_EQ(up_of("part.stl", "?up=y"), "y");
+  EXPECT_EQ(up_of("part.obj", "?up=z"), "z");
+  httplib::MultipartFormDataItems part{{"file", read_file(kBlender / "part.stl"), "part.stl", "application/octet-stream"}};
+  const auto bad = client.Post("/models?up=x", part);
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  EXPECT_NE(bad->body.find("the format's convention"), std::string::npos) << bad->body;
 }
 
 // Blender's walking character (tests/exported/blender/make_walker.py) as
@@ -152,8 +186,8 @@ TEST_F(MeshFormats, BlendersCharacterRendersAlikeInEveryFormat) {
   const std::string fbx = upload_exported({"walker.fbx"}, "", 924);
   const std::string dae = upload_exported({"walker.dae"}, "", 924);
   const std::string obj = upload_exported({"walker_rest.obj", "walker_rest.mtl"}, "", 924);
-  const std::string stl = upload_exported({"walker_rest.stl"}, "?up=z", 924);
-  const std::string ply = upload_exported({"walker_rest.ply"}, "?up=z", 924);
+  const std::string stl = upload_exported({"walker_rest.stl"}, "", 924);
+  const std::string ply = upload_exported({"walker_rest.ply"}, "", 924);
   for (const std::string output : {"color", "normal"}) {
     const image::Image reference = render(glb, output);
     ASSERT_FALSE(reference.rgba.empty());

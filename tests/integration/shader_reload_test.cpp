@@ -154,6 +154,8 @@ TEST_F(ShaderReload, AMissingFileInTheFolderIsAnErrorNamingIt) {
   const json error = error_of(res);
   EXPECT_EQ(error.value("code", ""), "shader_error") << res->body;
   EXPECT_EQ(error.value("path", ""), "toon.frag") << res->body;
+  // The answer names the file, not where the daemon reads it from.
+  EXPECT_EQ(res->body.find(dir_.string()), std::string::npos) << res->body;
 
   // Putting it there is enough: nothing was cached from the failed attempt.
   fs::copy_file(fs::path(TOOND_SHADER_SOURCE_DIR) / "toon.frag", dir_ / "toon.frag");

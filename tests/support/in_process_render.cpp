@@ -23,7 +23,7 @@ InProcessScene::InProcessScene(const PlacedModels& models)
     : programs_([](const std::string& name) { return std::string(shader_files::find(name)); }), renderer_(programs_) {
   for (const auto& [model, transform] : models) {
     uploaded_.push_back(std::make_unique<render::GpuModel>(*model));
-    objects_.push_back({*uploaded_.back(), transform});
+    objects_.push_back({*uploaded_.back(), *model, transform});
   }
 }
 

@@ -125,9 +125,23 @@ TEST(ClipTime, LoopsOverTheDurationAndCountsBackFromTheEnd) {
   EXPECT_DOUBLE_EQ(clip_time(instant, 3.0), 0.0);
 }
 
+TEST(RangeTime, CountsFromTheStartAndLoopsInsideTheRange) {
+  const ClipRange walk{5.6, 6.2};
+  EXPECT_DOUBLE_EQ(range_time(walk, 0.0), 5.6);
+  EXPECT_NEAR(range_time(walk, 0.25), 5.85, 1e-12);
+  EXPECT_NEAR(range_time(walk, 0.85), 5.85, 1e-12);   // one loop of 0.6 s on
+  EXPECT_NEAR(range_time(walk, -0.15), 6.05, 1e-12);  // back from the end
+  EXPECT_DOUBLE_EQ(range_time(walk, std::numeric_limits<double>::quiet_NaN()), 5.6);
+  EXPECT_DOUBLE_EQ(range_time({2.0, 2.0}, 7.0), 2.0);  // no length: its one pose
+  Clip clip;
+  clip.duration = 3.5;
+  EXPECT_DOUBLE_EQ(whole_clip(clip).start, 0.0);
+  EXPECT_DOUBLE_EQ(whole_clip(clip).end, 3.5);
+}
+
 TEST(RigClips, AreFoundByNameOrByThePartAfterTheBarWhenUnique) {
   Rig rig;
-  for (const char* name : {"Armature|Walk", "Armature|Run", "Other|Run", "idle"}) rig.clips.push_back({name, 1.0, {}});
+  for (const char* name : {"Armature|Walk", "Armature|Run", "Other|Run", "idle"}) rig.clips.push_back({name, 1.0, {}, {}});
   EXPECT_EQ(rig.find_clip("Armature|Walk"), 0u);
   EXPECT_EQ(rig.find_clip("Walk"), 0u);
   EXPECT_EQ(rig.find_clip("idle"), 3u);

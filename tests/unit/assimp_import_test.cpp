@@ -7,8 +7,13 @@
 
 #include <stdlib.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <limits>
+#include <sstream>
 #include <string>
 
 #include "fake_helpers.h"
@@ -253,7 +258,11 @@ TEST_F(AssimpImport, A3mfColumnStandsUpright) {
   EXPECT_NEAR(size.y, 30.0f, 1e-4f);  // the file's +Z
   EXPECT_NEAR(size.x, 10.0f, 1e-4f);
   EXPECT_NEAR(size.z, 10.0f, 1e-4f);
-  EXPECT_TRUE(has_warning(model, "column.3mf: turned from +Z up (3MF's axes) to +Y up")) << warnings_of(model);
+  // Z-up is 3MF's convention, the default; `up=y` takes the file as Y-up.
+  ImportChoices y_up;
+  y_up.up = ImportChoices::Up::Y;
+  const Model lying = import_bundle(make_bundle({{"column.3mf", column_3mf()}}), {}, y_up);
+  EXPECT_NEAR(lying.mesh.bounds.max.z - lying.mesh.bounds.min.z, 30.0f, 1e-4f);
   // #CC2020 is sRGB; materials hold linear colour.
   ASSERT_EQ(model.materials.size(), 1u);
   EXPECT_NEAR(model.materials[0].diffuse.r, 0.6038f, 1e-3f);
@@ -262,7 +271,7 @@ TEST_F(AssimpImport, A3mfColumnStandsUpright) {
 
 TEST_F(AssimpImport, UpZTurnsAFileWithoutAxes) {
   ImportChoices z_up;
-  z_up.z_up = true;
+  z_up.up = ImportChoices::Up::Z;
   const Model model =
       import_bundle(make_bundle({{"cube.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 0 3\n3 0 1 2\n"}}), {}, z_up);
   const glm::vec3 size = model.mesh.bounds.max - model.mesh.bounds.min;
@@ -325,6 +334,218 @@ TEST_F(AssimpImportErrors, AHelperThatCrashesHangsOrBabblesIsARefusalNotACrash) 
   setenv("TOOND_ASSIMP_CONVERTER", "/nonexistent/toond-assimp-convert", 1);
   error = conversion_error(files);
   EXPECT_NE(error.find("cannot be started"), std::string::npos) << error;
+  // The client learns which helper, not where the daemon keeps it.
+  EXPECT_NE(error.find("toond-assimp-convert"), std::string::npos) << error;
+  EXPECT_EQ(error.find("/nonexistent"), std::string::npos) << error;
+}
+
+// A Blitz3D B3D file written here chunk by chunk: one triangle on the
+// root node, whose position is keyed at `frames` (1 = the first frame),
+// in a clip its ANIM chunk says lasts `stated_frames` at `fps`.
+class B3dWriter {
+ public:
+  std::string file(const std::vector<std::pair<int, glm::vec3>>& keys, int stated_frames, float fps) {
+    std::string node = text("root") + floats({0, 0, 0, 1, 1, 1, 1, 0, 0, 0});
+    node += chunk("ANIM", ints({0, stated_frames}) + floats({fps}));
+    const std::string vertices = ints({0, 0, 0}) + floats({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    node += chunk("MESH", ints({-1}) + chunk("VRTS", vertices) + chunk("TRIS", ints({0, 0, 1, 2})));
+    std::string keyed = ints({1});
+    for (const auto& [frame, position] : keys) keyed += ints({frame}) + floats({position.x, position.y, position.z});
+    node += chunk("KEYS", keyed);
+    const std::string brush = ints({0}) + text("paint") + floats({1, 1, 1, 1, 0}) + ints({1, 0});
+    return chunk("BB3D", ints({1}) + chunk("BRUS", brush) + chunk("NODE", node));
+  }
+
+ private:
+  static std::string chunk(const char* tag, const std::string& body) { return tag + ints({static_cast<int>(body.size())}) + body; }
+  static std::string text(const std::string& s) { return s + '\0'; }
+  static std::string ints(std::initializer_list<int> values) {
+    std::string out;
+    for (const int v : values) out.append(reinterpret_cast<const char*>(&v), 4);
+    return out;
+  }
+  static std::string floats(std::initializer_list<float> values) {
+    std::string out;
+    for (const float v : values) out.append(reinterpret_cast<const char*>(&v), 4);
+    return out;
+  }
+};
+
+const std::filesystem::path kMinetest = TOOND_EXPORTED_DIR "/minetest";
+
+Model minetest_player() {
+  return import_bundle(make_bundle({{"character.b3d", read_file(kMinetest / "character.b3d")},
+                                    {"character.png", read_file(kMinetest / "character.png")}}));
+}
+
+// Minetest's player (tests/exported/minetest): a key one frame past its
+// clip's stated 220 frames, which assimp's validation refuses, is read
+// with the clip running to that key, its frames counted from 0 as the game
+// counts them, at the file's 60 frames a second, and the skin the game gives
+// it from its code is the upload's one image.
+TEST_F(AssimpImport, MinetestsPlayerComesWithItsClipFrameRateAndSkin) {
+  const Model model = minetest_player();
+  expect_well_formed(model);
+  ASSERT_TRUE(model.rig);
+  ASSERT_EQ(model.rig->clips.size(), 1u);
+  const Clip& clip = model.rig->clips[0];
+  ASSERT_TRUE(clip.frame_rate);
+  EXPECT_EQ(*clip.frame_rate, 60.0);
+  EXPECT_NEAR(clip.duration, 220.0 / 60.0, 1e-6);
+  EXPECT_TRUE(has_warning(model, "character.b3d: clip 'anim' has keys up to 221 ticks, past the 220 its file states"))
+      << warnings_of(model);
+  EXPECT_TRUE(has_warning(model, "B3D frames count from 1; frame 1 is taken as time 0")) << warnings_of(model);
+  EXPECT_TRUE(has_warning(model, "drawn with 'character.png', the upload's one image")) << warnings_of(model);
+  ASSERT_EQ(model.textures.size(), 1u);
+  for (const Material& material : model.materials) EXPECT_EQ(material.diffuse_texture, 0);
+}
+
+// The same character as Blender writes it from the .blend the B3D came
+// from (30 frames a second, frames 0-220): at each frame of every action
+// Minetest plays, the B3D's vertices are where Blender's glTF puts them.
+TEST_F(AssimpImport, MinetestsPlayerPosesLikeBlendersGltfOfTheSameFileFrameForFrame) {
+  const Model b3d = minetest_player();
+  const Model gltf = import_bundle(make_bundle({{"character_blender.glb", read_file(kMinetest / "character_blender.glb")}}));
+  ASSERT_TRUE(b3d.rig && gltf.rig);
+  ASSERT_EQ(gltf.rig->clips.size(), 1u);
+  EXPECT_FALSE(gltf.rig->clips[0].frame_rate);  // glTF keys by seconds
+  const std::vector<glm::dvec3> rest = test_checks::posed_points(gltf, 0, 0.0);
+  for (const int frame : {0, 40, 79, 81, 120, 160, 162, 166, 168, 173, 178, 187, 189, 194, 198, 200, 210, 219, 220}) {
+    const std::vector<glm::dvec3> ours = test_checks::posed_points(b3d, 0, frame / 60.0);
+    const std::vector<glm::dvec3> blender = test_checks::posed_points(gltf, 0, frame / 30.0);
+    EXPECT_LT(test_checks::farthest_from(ours, blender), 1e-4) << "frame " << frame;
+    EXPECT_LT(test_checks::farthest_from(blender, ours), 1e-4) << "frame " << frame;
+  }
+  // The comparison sees poses: walking is not standing.
+  EXPECT_GT(test_checks::farthest_from(test_checks::posed_points(gltf, 0, 173 / 30.0), rest), 0.5);
+}
+
+// Framing over a range of the clip (pose.h): the walk (frames 168-187) of
+// a timeline that also sits and lies down is framed by the walk alone,
+// tighter than the whole clip, and holds every pose of the walk.
+TEST_F(AssimpImport, MinetestsWalkIsFramedByTheWalkAlone) {
+  const Model model = minetest_player();
+  ASSERT_TRUE(model.rig);
+  const ClipRange walk{168.0 / 60.0, 187.0 / 60.0};
+  const ClipFraming whole = frame_clip(model.mesh, *model.rig, 0);
+  const ClipFraming walking = frame_clip(model.mesh, *model.rig, 0, walk);
+  const ClipFraming again = frame_clip(model.mesh, *model.rig, 0, whole_clip(model.rig->clips[0]));
+  EXPECT_EQ(again.bounds.min, whole.bounds.min);
+  EXPECT_EQ(again.bounds.max, whole.bounds.max);
+  const auto extent = [](const Bounds& b) { return glm::length(b.max - b.min); };
+  EXPECT_LT(extent(walking.bounds), 0.8 * extent(whole.bounds));
+  const auto inside = [](const Bounds& b, const glm::vec3& p) {
+    return glm::all(glm::greaterThanEqual(p, b.min - 1e-4f)) && glm::all(glm::lessThanEqual(p, b.max + 1e-4f));
+  };
+  for (int step = 0; step <= 38; ++step) {
+    const double time = walk.start + (walk.end - walk.start) * step / 38.0;
+    const PosedVertices posed = pose_vertices(model.mesh, *model.rig, pose_nodes(*model.rig, &model.rig->clips[0], time));
+    for (const glm::vec3& p : posed.positions) ASSERT_TRUE(inside(walking.bounds, p)) << "at " << time << " s";
+  }
+  // Lying down (frame 164) leaves the walk's frame.
+  const PosedVertices lying = pose_vertices(model.mesh, *model.rig, pose_nodes(*model.rig, &model.rig->clips[0], 164.0 / 60.0));
+  EXPECT_FALSE(std::all_of(lying.positions.begin(), lying.positions.end(),
+                           [&](const glm::vec3& p) { return inside(walking.bounds, p); }));
+}
+
+TEST_F(AssimpImport, AB3dKeyPastItsClipsStatedLengthLengthensTheClip) {
+  const std::string file = B3dWriter().file({{1, {0, 0, 0}}, {6, {1, 0, 0}}, {12, {2, 0, 0}}}, 10, 25.0f);
+  const Model model = import_bundle(make_bundle({{"slide.b3d", file}}));
+  ASSERT_TRUE(model.rig);
+  ASSERT_EQ(model.rig->clips.size(), 1u);
+  const Clip& clip = model.rig->clips[0];
+  EXPECT_NEAR(clip.duration, 11.0 / 25.0, 1e-6);  // frames 1-12, from time 0
+  ASSERT_TRUE(clip.frame_rate);
+  EXPECT_EQ(*clip.frame_rate, 25.0);
+  EXPECT_TRUE(has_warning(model, "slide.b3d: clip 'anim' has keys up to 12 ticks, past the 10 its file states"))
+      << warnings_of(model);
+  const glm::dvec3 start = test_checks::posed_points(model, 0, 0.0)[0];
+  const glm::dvec3 end = test_checks::posed_points(model, 0, 11.0 / 25.0 - 1e-9)[0];
+  EXPECT_NEAR(glm::length(end - start), 2.0, 1e-3);
+}
+
+TEST_F(AssimpImport, AClipThatStatesNoSpeedPlaysATickASecondWithoutAFrameRate) {
+  const std::string file = B3dWriter().file({{1, {0, 0, 0}}, {5, {1, 0, 0}}}, 4, 0.0f);
+  const Model model = import_bundle(make_bundle({{"still.b3d", file}}));
+  ASSERT_TRUE(model.rig);
+  EXPECT_NEAR(model.rig->clips[0].duration, 4.0, 1e-6);
+  EXPECT_FALSE(model.rig->clips[0].frame_rate);
+  EXPECT_TRUE(has_warning(model, "still.b3d: clip 'anim' states no speed: it plays one key tick a second"))
+      << warnings_of(model);
+}
+
+// Mending a clip's length lets nothing else through: the mended file still
+// meets assimp's validation and the daemon's own glTF checks.
+TEST_F(AssimpImportErrors, AMendedClipStillMeetsEveryOtherCheck) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::string not_finite =
+      conversion_error({{"nan.b3d", B3dWriter().file({{1, {0, 0, 0}}, {12, {nan, 0, 0}}}, 10, 25.0f)}});
+  EXPECT_NE(not_finite.find("nan.b3d: animation 0 sampler 0 output holds a value that is not finite"),
+            std::string::npos)
+      << not_finite;
+  std::string file = B3dWriter().file({{1, {0, 0, 0}}, {12, {1, 0, 0}}}, 10, 25.0f);
+  const std::size_t tris = file.find("TRIS");
+  ASSERT_NE(tris, std::string::npos);
+  file[tris + 16] = 7;  // the triangle's second corner: vertex 7 of 3
+  const std::string index = conversion_error({{"index.b3d", file}});
+  EXPECT_NE(index.find("index.b3d: B3D Importer - error in B3D file data: Bad triangle index"), std::string::npos) << index;
+}
+
+// `creases: auto` draws crease lines on what a viewer would call a
+// hard-edged model: a CAD part of curved patches meeting at sharp edges
+// (CGAL's copies of the classic fandisk and two machined parts, OFF files
+// without normals no one here made, tests/exported/cgal) is hard-edged at
+// the default crease angle; a smooth scan (the shared Stanford bunny and
+// armadillo) and a finely tessellated sphere are not.
+const std::filesystem::path kCgal = TOOND_EXPORTED_DIR "/cgal";
+constexpr double kDefaultCreaseAngle = 40.0;
+
+class CreaseDecision : public ::testing::Test {
+ protected:
+  void SetUp() override { setenv("TOOND_ASSIMP_CONVERTER", TOOND_ASSIMP_CONVERTER_PATH, 1); }
+};
+
+CreaseProfile creases_of(const std::string& name, const std::string& bytes) {
+  const Model model = import_bundle(make_bundle({{name, bytes}}));
+  const CreaseProfile& c = model.mesh.creases;
+  std::printf("%s: edge length creased %.4f, surface beside crease lines %.4f\n", name.c_str(), c.at(kDefaultCreaseAngle),
+              c.lines_area(kDefaultCreaseAngle));
+  return c;
+}
+
+// A UV sphere of `rings` × 2·`rings` quads, positions and faces only.
+std::string sphere_obj(int rings) {
+  std::ostringstream obj;
+  const double pi = std::acos(-1.0);
+  for (int r = 0; r <= rings; ++r) {
+    for (int s = 0; s < 2 * rings; ++s) {
+      const double theta = pi * r / rings, phi = pi * s / rings;
+      obj << "v " << std::sin(theta) * std::cos(phi) << " " << std::cos(theta) << " " << std::sin(theta) * std::sin(phi) << "\n";
+    }
+  }
+  const auto at = [rings](int r, int s) { return r * 2 * rings + (s % (2 * rings)) + 1; };
+  for (int r = 0; r < rings; ++r) {
+    for (int s = 0; s < 2 * rings; ++s) {
+      obj << "f " << at(r, s) << " " << at(r + 1, s) << " " << at(r + 1, s + 1) << " " << at(r, s + 1) << "\n";
+    }
+  }
+  return obj.str();
+}
+
+TEST_F(CreaseDecision, CadPartsOfCurvedPatchesAreHardEdged) {
+  for (const char* name : {"fandisk.off", "joint.off", "part.off"}) {
+    EXPECT_TRUE(creases_of(name, read_file(kCgal / name)).hard_edged(kDefaultCreaseAngle)) << name;
+  }
+}
+
+TEST_F(CreaseDecision, ASmoothScanOrASphereIsNot) {
+  EXPECT_FALSE(creases_of("sphere.obj", sphere_obj(48)).hard_edged(kDefaultCreaseAngle));
+  TOOND_REQUIRE_SHARED_MODELS();
+  for (const char* path : {"stanford-bunny/stanford-bunny.obj", "armadillo/armadillo.obj", "spot/spot.obj",
+                           "blub/blub_triangulated.obj", "bob/bob_tri.obj", "utah-teapot/teapot.obj"}) {
+    const std::filesystem::path file = test::shared_models_dir() / path;
+    EXPECT_FALSE(creases_of(file.filename().string(), read_file(file)).hard_edged(kDefaultCreaseAngle)) << path;
+  }
 }
 
 }  // namespace

@@ -305,6 +305,38 @@ TEST(RenderParams, RepeatedSetsMergeAndLaterOnesWin) {
                                "shading":{"steps":5}})"));
 }
 
+// Keys as users type them, driven by the schema: a path through objects
+// and through fields that are an object or a list of them
+// (sheet.animation), a comma list where the field takes a list, a name or
+// an index where it takes either.
+TEST(RenderParams, SetWalksIntoFieldsOfAlternativesAndTakesCommaLists) {
+  const Options o = parse({"render", "-o", "x.png", "--set", "sheet.animation.clip=walk", "--set",
+                           "sheet.animation.frames=8", "--set", "outline.method=hull,edges", "--set",
+                           "background=1,1,0.5", "--set", "lights.0.direction=0,0,-1", "--set", "animation.clip=2"});
+  const json p = build_render_params(o, schema());
+  EXPECT_EQ(p["sheet"]["animation"], json::parse(R"({"clip":"walk","frames":8})"));
+  EXPECT_EQ(p["outline"]["method"], json::parse(R"(["hull","edges"])"));
+  EXPECT_EQ(p["background"], json::parse("[1,1,0.5]"));
+  EXPECT_EQ(p["lights"][0]["direction"], json::parse("[0,0,-1]"));
+  EXPECT_EQ(p["animation"]["clip"], 2);  // an index, not the name "2"
+
+  const Options listed = parse({"render", "-o", "x.png", "--set", "sheet.animation.0.clip=walk", "--set",
+                                "sheet.animation.1.clip=Armature|Run", "--set", "outline.method=edges", "--set",
+                                "outline.method=[\"hull\"]"});
+  const json q = build_render_params(listed, schema());
+  EXPECT_EQ(q["sheet"]["animation"], json::parse(R"([{"clip":"walk"},{"clip":"Armature|Run"}])"));
+  EXPECT_EQ(q["outline"]["method"], json::parse(R"(["hull"])"));  // JSON still works
+
+  const Options bad_item = parse({"render", "-o", "x.png", "--set", "outline.method=hull,brush"});
+  EXPECT_TRUE(contains(usage_error([&] { build_render_params(bad_item, schema()); }), "/outline/method"));
+  const Options bad_number = parse({"render", "-o", "x.png", "--set", "background=1,one,1"});
+  const std::string number_message = usage_error([&] { build_render_params(bad_number, schema()); });
+  EXPECT_TRUE(contains(number_message, "background=1,one,1")) << number_message;
+  EXPECT_TRUE(contains(number_message, "comma-separated list")) << number_message;
+  const Options unknown = parse({"render", "-o", "x.png", "--set", "sheet.animation.speed=2"});
+  EXPECT_TRUE(contains(usage_error([&] { build_render_params(unknown, schema()); }), "unknown"));
+}
+
 TEST(RenderParams, UnknownKeyIsRejectedNamingIt) {
   const Options o = parse({"render", "-o", "x.png", "--set", "outline.widht=3"});
   const std::string message = usage_error([&] { build_render_params(o, schema()); });

@@ -38,7 +38,7 @@ class DrawPacingTest : public test::GlContextTest {
     params_ = test::complete_params({{"width", 96}, {"height", 96}});
   }
 
-  RenderOutput render(DrawPacing* pacing) { return renderer_->render({RenderObject{*gpu_model_}}, params_, pacing); }
+  RenderOutput render(DrawPacing* pacing) { return renderer_->render({RenderObject{*gpu_model_, *model_}}, params_, pacing); }
 
   static scene::Model cube_model() {
     scene::Bundle bundle;
@@ -82,11 +82,11 @@ TEST_F(DrawPacingTest, ManyShortDrawsWaitOncePerChunkOfTriangles) {
   const scene::Model sphere = scene::import_bundle(bundle);  // closed, so the main pass culls
   const GpuModel gpu_sphere(sphere);
   const RenderParams params = test::complete_params({{"width", 160}, {"height", 160}});
-  const RenderOutput whole = renderer_->render({RenderObject{gpu_sphere}}, params);
+  const RenderOutput whole = renderer_->render({RenderObject{gpu_sphere, sphere}}, params);
   ASSERT_GT(whole.main_triangles_skipped, 0u);
   constexpr std::size_t kChunk = 2000;
   DrawPacing pacing(kChunk, 0, Clock::now() + std::chrono::minutes(5));
-  const RenderOutput paced = renderer_->render({RenderObject{gpu_sphere}}, params, &pacing);
+  const RenderOutput paced = renderer_->render({RenderObject{gpu_sphere, sphere}}, params, &pacing);
   // At most the main pass's and the hull's triangles, in full chunks.
   EXPECT_LE(pacing.chunks_drawn(), 2 * sphere.mesh.triangle_count() / kChunk);
   EXPECT_GE(pacing.chunks_drawn(), 1u);
@@ -104,11 +104,11 @@ TEST_F(DrawPacingTest, TheEdgePassInBandsDrawsTheSameImage) {
     RenderParams params = test::complete_params({{"width", 96}, {"height", 96}, {"outline", outline}});
     // Crease lines as sprite lines find them, in screen space.
     params.outline.screen_space_creases = true;
-    const RenderOutput whole = renderer_->render({RenderObject{gpu_cube}}, params);
+    const RenderOutput whole = renderer_->render({RenderObject{gpu_cube, cube}}, params);
     // No triangle chunk ever full.
     int steps_aside = 0;
     DrawPacing pacing(1000000, ten_rows_a_band(params), Clock::now() + std::chrono::minutes(5), [&] { ++steps_aside; });
-    const RenderOutput banded = renderer_->render({RenderObject{gpu_cube}}, params, &pacing);
+    const RenderOutput banded = renderer_->render({RenderObject{gpu_cube, cube}}, params, &pacing);
     EXPECT_EQ(pacing.chunks_drawn(), 10u) << outline << " " << whole.plan;
     EXPECT_EQ(static_cast<std::size_t>(steps_aside), pacing.chunks_drawn());
     EXPECT_TRUE(banded.image.rgba == whole.image.rgba) << outline;
@@ -175,7 +175,7 @@ TEST_F(DrawPacingTest, ADeadlineThatPassesBetweenBandsStopsTheEdgePass) {
   const RenderParams params =
       test::complete_params({{"width", 96}, {"height", 96}, {"outline", {{"method", "edges"}}}});
   const auto started = Clock::now();
-  const image::Image before = renderer_->render({RenderObject{gpu_cube}}, params).image;
+  const image::Image before = renderer_->render({RenderObject{gpu_cube, cube}}, params).image;
   const auto warm = Clock::now() - started;
   const auto deadline = Clock::now() + std::clamp<Clock::duration>(10 * warm, std::chrono::milliseconds(300),
                                                                    std::chrono::seconds(3));
@@ -183,10 +183,10 @@ TEST_F(DrawPacingTest, ADeadlineThatPassesBetweenBandsStopsTheEdgePass) {
   DrawPacing stopping(1000000, ten_rows_a_band(params), deadline, [&] {
     if (++pauses == 3) std::this_thread::sleep_until(deadline + std::chrono::milliseconds(5));
   });
-  EXPECT_THROW(renderer_->render({RenderObject{gpu_cube}}, params, &stopping), RenderAborted);
+  EXPECT_THROW(renderer_->render({RenderObject{gpu_cube, cube}}, params, &stopping), RenderAborted);
   EXPECT_EQ(stopping.chunks_drawn(), 3u);
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  EXPECT_TRUE(renderer_->render({RenderObject{gpu_cube}}, params).image.rgba == before.rgba);
+  EXPECT_TRUE(renderer_->render({RenderObject{gpu_cube, cube}}, params).image.rgba == before.rgba);
 }
 
 }  // namespace

@@ -44,12 +44,14 @@ class FramesInFlight : public test::GlContextTest {
   void SetUp() override {
     programs_ = std::make_unique<gpu::ProgramCache>(
         [](const std::string& name) { return std::string(shader_files::find(name)); });
-    model_ = std::make_unique<GpuModel>(
+    sphere_ = std::make_unique<scene::Model>(
         scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", test::sphere_obj(24, 12)}})));
+    model_ = std::make_unique<GpuModel>(*sphere_);
   }
-  std::vector<RenderObject> objects() const { return {RenderObject{*model_, glm::dmat4(1.0)}}; }
+  std::vector<RenderObject> objects() const { return {RenderObject{*model_, *sphere_, glm::dmat4(1.0)}}; }
 
   std::unique_ptr<gpu::ProgramCache> programs_;
+  std::unique_ptr<scene::Model> sphere_;
   std::unique_ptr<GpuModel> model_;
 };
 

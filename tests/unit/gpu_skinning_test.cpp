@@ -107,13 +107,13 @@ class GpuSkinning : public test::GlContextTest {
     for (const nlohmann::json& request : requests) {
       RenderParams p = params(request);
       p.width = p.height = 160;
-      const RenderOutput reference_image = renderer.render(reference_copy, p);
+      const RenderOutput reference_image = renderer.render(reference_copy, reference, p);
       posed_copy.apply_pose(skin, model);
-      const RenderOutput in_vertex_stage = renderer.render(posed_copy, p);
+      const RenderOutput in_vertex_stage = renderer.render({RenderObject{posed_copy, model, glm::dmat4(1.0), skin}}, p);
       posed_copy.apply_pose(skin_on_cpu, model);
-      const RenderOutput on_cpu = renderer.render(posed_copy, p);
+      const RenderOutput on_cpu = renderer.render({RenderObject{posed_copy, model, glm::dmat4(1.0), skin_on_cpu}}, p);
       posed_copy.apply_pose(nullptr, model);
-      const RenderOutput rest = renderer.render(posed_copy, p);
+      const RenderOutput rest = renderer.render(posed_copy, model, p);
       const Difference gpu_vs_cpu = compare(in_vertex_stage, reference_image);
       std::cout << clip << " at " << time << " s, " << request.dump() << ": " << gpu_vs_cpu.differing
                 << " pixels differ, largest difference " << gpu_vs_cpu.largest << " levels\n";
@@ -123,7 +123,7 @@ class GpuSkinning : public test::GlContextTest {
       // pose taken back draws the rest again.
       EXPECT_GT(compare(rest, reference_image).differing, 40) << request.dump();
       GpuModel fresh(model);
-      EXPECT_EQ(compare(rest, renderer.render(fresh, p)).differing, 0) << request.dump();
+      EXPECT_EQ(compare(rest, renderer.render(fresh, model, p)).differing, 0) << request.dump();
     }
   }
 };

@@ -215,10 +215,21 @@ TEST(ModelInfo, JsonRoundTrip) {
   info.bytes = 345;
   info.files = {"a.obj", "t/x.png"};
   info.warnings = {"something"};
+  // Import resolves the format's convention, so a stored record always names its axis.
+  info.choices.up = ImportChoices::Up::Z;
   const nlohmann::json j = info.to_json();
   EXPECT_EQ(j.at("id"), info.id);
   EXPECT_EQ(j.at("triangles"), 12);
+  EXPECT_EQ(j.at("up"), "z");
   EXPECT_EQ(ModelInfo::from_json(j).to_json(), j);
+}
+
+TEST(ModelInfo, ARecordWithoutAnUpAxisReadsAsItWasImported) {
+  nlohmann::json j = {{"id", "0123456789abcdef0123456789abcdef"}, {"triangles", 1}, {"materials", 1},
+                      {"textures", 0}, {"bytes", 1}, {"files", {"a.obj"}}};
+  EXPECT_EQ(ModelInfo::from_json(j).choices.up, ImportChoices::Up::Y);
+  j["files"] = {"part.3mf"};
+  EXPECT_EQ(ModelInfo::from_json(j).choices.up, ImportChoices::Up::Z);
 }
 
 }  // namespace

@@ -82,7 +82,7 @@ TEST(ObjImport, ASmoothAngleOf180SmoothsEveryEdge) {
 TEST(ObjImport, UpZTurnsTheFileUpright) {
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 0 3\nvn 0 -1 0\nf 1//1 2//1 3//1\n";
   ImportChoices z_up;
-  z_up.z_up = true;
+  z_up.up = ImportChoices::Up::Z;
   const Model m = import_obj_bundle(make_bundle({{"tall.obj", obj}}), {}, z_up);
   EXPECT_NEAR(m.mesh.bounds.max.y - m.mesh.bounds.min.y, 3.0f, 1e-6f);
   EXPECT_NEAR(m.mesh.bounds.max.z - m.mesh.bounds.min.z, 0.0f, 1e-6f);

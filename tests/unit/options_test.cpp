@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstdlib>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -80,6 +82,36 @@ TEST(DaemonOptions, SkinningIsChosenByTheRasterizerUnlessGiven) {
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "--skinning expects gpu, cpu or auto, got 'vertex'");
   }
+}
+
+TEST(DaemonOptions, StoreBoundInMegabytesFromTheFlagElseTheEnvironment) {
+  unsetenv("TOOND_MAX_STORE_MB");
+  Options o = parse_options({});
+  EXPECT_FALSE(o.max_store_bytes.has_value());
+  apply_store_environment(o);
+  EXPECT_EQ(o.max_store_bytes, 0u);  // no bound unless asked
+  EXPECT_EQ(parse_options({"--max-store-mb", "2"}).max_store_bytes, std::uint64_t{2} << 20);
+  EXPECT_THROW(parse_options({"--max-store-mb", "-1"}), std::invalid_argument);
+  EXPECT_THROW(parse_options({"--max-store-mb", "2MB"}), std::invalid_argument);
+
+  setenv("TOOND_MAX_STORE_MB", "5", 1);
+  o = parse_options({});
+  apply_store_environment(o);
+  EXPECT_EQ(o.max_store_bytes, std::uint64_t{5} << 20);
+  o = parse_options({"--max-store-mb", "0"});
+  apply_store_environment(o);
+  EXPECT_EQ(o.max_store_bytes, 0u);  // the flag wins
+  setenv("TOOND_MAX_STORE_MB", "lots", 1);
+  o = parse_options({});
+  try {
+    apply_store_environment(o);
+    ADD_FAILURE() << "TOOND_MAX_STORE_MB=lots was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("TOOND_MAX_STORE_MB"), std::string::npos) << e.what();
+  }
+  unsetenv("TOOND_MAX_STORE_MB");
+  EXPECT_NE(usage().find("--max-store-mb N"), std::string::npos);
+  EXPECT_NE(usage().find("TOOND_MAX_STORE_MB"), std::string::npos);
 }
 
 // --help and the parser read one table; this checks that what they make of

@@ -8,9 +8,9 @@
 #include <random>
 #include <set>
 
-#include "http/render_budget.h"
+#include "pipeline/budget.h"
 #include "http/render_params_wire.h"
-#include "http/sheet_checks.h"
+#include "pipeline/sheet_checks.h"
 #include "image/block_upscale.h"
 #include "image/palette_quantise.h"
 #include "image/webp_animation.h"
@@ -273,7 +273,7 @@ TEST(PixelArtParams, BadInputsAreRefusedWithTheirPath) {
     try {
       const render::RenderParams p = http::render_params_from_wire(
           schema.validate_and_complete({{"width", 48}, {"height", 48}, {"sheet", {{"pixel_art", pixel_art}}}}));
-      http::check_sheet_params(p);
+      pipeline::check_sheet_params(p);
     } catch (const RequestError& e) {
       EXPECT_EQ(e.status(), 400) << pixel_art.dump();
       return e.path();
@@ -292,7 +292,7 @@ TEST(PixelArtParams, BadInputsAreRefusedWithTheirPath) {
   EXPECT_EQ(path_of({{"scale", 6}, {"palette", {"#123456"}}, {"dither", true}}), "(accepted)");
   auto layer_path = [&](const std::string& output, const json& sheet) {
     try {
-      http::check_sheet_params(http::render_params_from_wire(
+      pipeline::check_sheet_params(http::render_params_from_wire(
           schema.validate_and_complete({{"width", 48}, {"height", 48}, {"output", output}, {"sheet", sheet}})));
     } catch (const RequestError& e) {
       return e.path();
@@ -306,19 +306,19 @@ TEST(PixelArtParams, BadInputsAreRefusedWithTheirPath) {
 }
 
 TEST(PixelArtParams, TheBudgetWeighsTheFramesAsDrawnAndTheWholeAnimation) {
-  http::RenderLimits limits;
+  pipeline::RenderLimits limits;
   limits.max_output_pixels = 64 * 64 * 8;
   limits.max_samples = 64 * 64 * 8;
   // msaa 4 over 8 frames of 64² is four times the sample limit; as pixel
   // art the frames are drawn at 16², one sample each.
   const json sheet = {{"frames", 8}, {"pixel_art", {{"scale", 4}}}};
-  EXPECT_NO_THROW(http::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", sheet}}), limits));
-  EXPECT_THROW(http::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", {{"frames", 8}}}}), limits),
+  EXPECT_NO_THROW(pipeline::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", sheet}}), limits));
+  EXPECT_THROW(pipeline::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", {{"frames", 8}}}}), limits),
                LimitError);
   for (const json& over : {json{{"frames", 9}, {"pixel_art", {{"scale", 4}}}}, json{{"frames", 9}, {"animate", true}},
                            json{{"frames", 9}, {"animate", true}, {"pixel_art", json::object()}}}) {
     try {
-      http::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", over}}), limits);
+      pipeline::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", over}}), limits);
       ADD_FAILURE() << over.dump() << " passed a limit of 8 frames of 64²";
     } catch (const LimitError& e) {
       EXPECT_EQ(e.limit(), "--max-output-pixels") << over.dump();

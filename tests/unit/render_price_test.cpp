@@ -9,8 +9,8 @@
 #include <memory>
 #include <string>
 
-#include "http/render_limits.h"
-#include "http/render_price.h"
+#include "pipeline/price.h"
+#include "pipeline/render_limits.h"
 #include "limit_error.h"
 #include "render/sheet_layout.h"
 #include "presets.h"
@@ -20,7 +20,7 @@
 #include "support/in_process_render.h"
 #include "support/shared_models.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 namespace {
 
 std::shared_ptr<const scene::Model> obj_model(const std::string& obj) {
@@ -29,15 +29,15 @@ std::shared_ptr<const scene::Model> obj_model(const std::string& obj) {
   return std::make_shared<const scene::Model>(scene::import_obj_bundle(bundle));
 }
 
-render::RenderJob job_of(std::shared_ptr<const scene::Model> model, const nlohmann::json& request) {
-  render::RenderJob job;
+Request job_of(std::shared_ptr<const scene::Model> model, const nlohmann::json& request) {
+  Request job;
   job.objects.push_back({"m", std::move(model), glm::dmat4(1.0), nullptr});
   job.params = test::complete_params(request);
   return job;
 }
 
 TEST(RenderPrice, TheIssuesStackIsRefusedWithWhatWouldFit) {
-  const render::RenderJob job = job_of(obj_model(test::nearly_coincident_triangles(60000)), nlohmann::json::object());
+  const Request job = job_of(obj_model(test::nearly_coincident_triangles(60000)), nlohmann::json::object());
   const RenderPrice price = price_render(job);
   EXPECT_GT(price.total.units(), RenderLimits{}.max_render_cost);
   try {
@@ -57,7 +57,7 @@ TEST(RenderPrice, TheIssuesStackIsRefusedWithWhatWouldFit) {
 
 TEST(RenderPrice, TheWaysOfferedDoFit) {
   const auto model = obj_model(test::nearly_coincident_triangles(4000));
-  const render::RenderJob job = job_of(model, {{"width", 1024}, {"height", 1024}});
+  const Request job = job_of(model, {{"width", 1024}, {"height", 1024}});
   RenderLimits limits;
   limits.max_render_cost = price_render(job).total.units() / 3;
   try {
@@ -68,15 +68,15 @@ TEST(RenderPrice, TheWaysOfferedDoFit) {
     EXPECT_NE(message.find("width and height 512 × 512"), std::string::npos) << message;
     // msaa 4 → 1 takes the surface samples to a quarter: under a third.
     EXPECT_NE(message.find("msaa 1"), std::string::npos) << message;
-    const render::RenderJob smaller = job_of(model, {{"width", 512}, {"height", 512}});
+    const Request smaller = job_of(model, {{"width", 512}, {"height", 512}});
     EXPECT_LE(price_render(smaller).total.units(), limits.max_render_cost);
-    const render::RenderJob one_sample = job_of(model, {{"width", 1024}, {"height", 1024}, {"msaa", 1}});
+    const Request one_sample = job_of(model, {{"width", 1024}, {"height", 1024}, {"msaa", 1}});
     EXPECT_LE(price_render(one_sample).total.units(), limits.max_render_cost);
   }
 }
 
 TEST(RenderPrice, ZeroMeansNoLimit) {
-  const render::RenderJob job = job_of(obj_model(test::nearly_coincident_triangles(60000)), nlohmann::json::object());
+  const Request job = job_of(obj_model(test::nearly_coincident_triangles(60000)), nlohmann::json::object());
   RenderLimits limits;
   limits.max_render_cost = 0;
   EXPECT_NO_THROW(check_render_cost(job, price_render(job), limits));
@@ -85,7 +85,7 @@ TEST(RenderPrice, ZeroMeansNoLimit) {
 // Each frame at its own view: the sum of the single renders of those views.
 TEST(RenderPrice, ASheetCostsAllItsFramesEachFromItsView) {
   const auto model = obj_model(test::stacked_triangles(100));
-  const render::RenderJob job = job_of(model, {{"width", 128}, {"height", 128}, {"sheet", {{"frames", 8}}}});
+  const Request job = job_of(model, {{"width", 128}, {"height", 128}, {"sheet", {{"frames", 8}}}});
   const RenderPrice sheet = price_render(job);
   EXPECT_EQ(sheet.frames, 8u);
   double singles = 0;
@@ -160,7 +160,7 @@ TEST(RenderPrice, SharedModelsAreNeverRefused) {
       for (int side : {512, 2048, 4096}) {
         nlohmann::json request = {{"width", side}, {"height", side}, {"msaa", 8}};
         if (!preset.empty()) request["preset"] = preset;
-        const render::RenderJob job = job_of(model, request);
+        const Request job = job_of(model, request);
         const RenderPrice price = price_render(job);
         if (price.total.units() > dearest) {
           dearest = price.total.units();
@@ -176,4 +176,4 @@ TEST(RenderPrice, SharedModelsAreNeverRefused) {
 }
 
 }  // namespace
-}  // namespace toond::http
+}  // namespace toond::pipeline

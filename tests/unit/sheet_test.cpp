@@ -12,7 +12,7 @@
 #include "param_schema.h"
 #include "presets.h"
 #include "render/camera.h"
-#include "http/render_budget.h"
+#include "pipeline/budget.h"
 #include "http/render_params_wire.h"
 #include "render/sheet_atlas.h"
 #include "render/sheet_layout.h"
@@ -222,8 +222,8 @@ TEST(SheetAtlas, FollowsAsepritesHashLayoutWithYawAndPitch) {
 }
 
 TEST(SheetBudget, TheWholeSheetCountsAgainstTheLimits) {
-  using http::check_render_budget;
-  http::RenderLimits limits;
+  using pipeline::check_render_budget;
+  pipeline::RenderLimits limits;
   limits.max_output_pixels = 64 * 64 * 8;
   limits.max_samples = 64 * 64 * 8 * 4;
   const RenderParams fits = params_of({{"width", 64}, {"height", 64}, {"sheet", {{"frames", 8}}}});
@@ -249,8 +249,8 @@ TEST(SheetBudget, TheWholeSheetCountsAgainstTheLimits) {
 // A depth, normal or id layer draws one sample a pixel whatever msaa and
 // supersample say: a limit those would pass is no reason to refuse it.
 TEST(SheetBudget, DataLayersCountTheSamplesTheyDraw) {
-  using http::check_render_budget;
-  http::RenderLimits limits;
+  using pipeline::check_render_budget;
+  pipeline::RenderLimits limits;
   limits.max_samples = 256 * 256 * 4;
   const json heavy = {{"width", 256}, {"height", 256}, {"msaa", 8}, {"supersample", 2}};
   EXPECT_THROW(check_render_budget(params_of(heavy), limits), LimitError);

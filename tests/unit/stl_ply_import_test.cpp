@@ -20,8 +20,9 @@ using test_checks::expect_well_formed;
 using test_checks::make_bundle;
 using test_checks::warnings_of;
 
-Model import_one(const std::string& name, const std::string& bytes, const ImportLimits& limits = {}) {
-  return import_bundle(make_bundle({{name, bytes}}), limits);
+Model import_one(const std::string& name, const std::string& bytes, const ImportLimits& limits = {},
+                 const ImportChoices& choices = {}) {
+  return import_bundle(make_bundle({{name, bytes}}), limits, choices);
 }
 
 std::string import_error(const std::string& name, const std::string& bytes, const ImportLimits& limits = {}) {
@@ -120,7 +121,10 @@ TEST(PlyImport, NormalsUvsColoursAndPolygonsAreRead) {
       "0 0 0 0 0 1 0 0 255 0 0 0.5\n1 0 0 0 0 1 1 0 0 255 0 0.5\n1 1 0 0 0 1 1 1 0 0 255 0.5\n"
       "0 1 0 0 0 1 0 1 255 255 255 0.5\n"
       "4 0 1 2 3 8 0 0 1 0 1 1 0 1\n0 1\n";
-  const Model m = import_one("quad.ply", ply);
+  // Read in the file's own axes (PLY is Z-up by default): what was written.
+  ImportChoices as_written;
+  as_written.up = ImportChoices::Up::Y;
+  const Model m = import_one("quad.ply", ply, {}, as_written);
   EXPECT_EQ(m.mesh.triangle_count(), 2u);
   EXPECT_TRUE(m.has_vertex_colors);
   for (std::size_t v = 0; v < m.mesh.positions.size(); ++v) {
@@ -133,6 +137,10 @@ TEST(PlyImport, NormalsUvsColoursAndPolygonsAreRead) {
     }
   }
   EXPECT_NE(warnings_of(m).find("element \"edge\" is not read"), std::string::npos) << warnings_of(m);
+  // By default a PLY is Z-up, its tools' convention: the quad's +Z normal
+  // becomes toond's +Y.
+  const Model upright = import_one("quad.ply", ply);
+  for (const glm::vec3& n : upright.mesh.normals) EXPECT_FLOAT_EQ(n.y, 1.0f);
   EXPECT_NE(warnings_of(m).find("vertex properties not read: quality"), std::string::npos) << warnings_of(m);
   EXPECT_NE(warnings_of(m).find("face properties not read: texcoord"), std::string::npos) << warnings_of(m);
 }

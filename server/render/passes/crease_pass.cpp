@@ -30,7 +30,7 @@ void draw_crease_edges_of_objects(PassContext& context, gpu::Program& program) {
   const FrameContext& frame = context.frame;
   const double angle = frame.params.outline.crease_angle_deg;
   for (std::size_t i = 0; i < frame.objects.size(); ++i) {
-    const GpuModel& model = frame.objects[i].model;
+    const GpuModel& model = context.model(i);
     const std::size_t lod = frame.lod_of(i);
     const bool creases = model.creased_edges(lod, angle) > 0;
     const bool seams = model.intersection_segments(lod, angle) > 0;
@@ -42,11 +42,11 @@ void draw_crease_edges_of_objects(PassContext& context, gpu::Program& program) {
       program.set("u_culled_winding", culled_winding(frame, i));
       const std::optional<MeshViewer> viewer =
           frame.main_faces[i].unless_caps_show ? std::nullopt : turned_away_runs_viewer(context, i);
-      context.crease_edges_drawn += model.draw_creases(lod, angle, viewer);
+      context.crease_edges_drawn += model.draw_creases(lod, angle, viewer, context.pacing);
     }
     if (seams) {
       program.set("u_seams", 1);
-      context.intersection_segments_drawn += model.draw_intersections(lod, angle);
+      context.intersection_segments_drawn += model.draw_intersections(lod, angle, context.pacing);
     }
   }
 }
@@ -64,7 +64,7 @@ void lay_line_coverage_over(PassContext& context, GLuint coverage) {
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  draw_full_screen(frame.draw_width, frame.draw_height, 1.0, [&] { context.resources.draw_fullscreen_triangle(); });
+  draw_full_screen(context.pacing, frame.draw_width, frame.draw_height, 1.0, [&] { context.resources.draw_fullscreen_triangle(); });
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }

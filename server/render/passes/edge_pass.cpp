@@ -31,7 +31,7 @@ void draw_edge_pass(PassContext& context) {
   // At 2048² this pass alone can take llvmpipe longer than the meshes: a
   // render priced as long draws it in bands, stepping aside between them.
   const double texels = edge_texels_per_pixel(frame.outline_px, frame.plan.creases_only);
-  draw_full_screen(frame.draw_width, frame.draw_height, texels, [&] { context.resources.draw_fullscreen_triangle(); });
+  draw_full_screen(context.pacing, frame.draw_width, frame.draw_height, texels, [&] { context.resources.draw_fullscreen_triangle(); });
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }

@@ -27,11 +27,11 @@ void draw_edge_prepass(PassContext& context) {
   const DepthVariant variant = DepthVariant{}.set(DepthFeature::AlphaMask, alpha_tested);
   gpu::Program& prepass = context.programs.get("toon.vert", "normal_depth.frag", variant.defines());
   prepass.use();
-  draw_objects(frame, context.blocks,
+  draw_objects(context,
                {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
                 .draw = [&](std::size_t i) {
-                  if (alpha_tested) draw_by_material(frame, i);
-                  else draw_whole_object(frame, i);
+                  if (alpha_tested) draw_by_material(context, i);
+                  else draw_whole_object(context, i);
                 }});
   if (!normals.needs_resolve()) return;
   normals.bind_for_resolve();

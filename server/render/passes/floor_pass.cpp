@@ -23,7 +23,7 @@ void draw_floor_pass(PassContext& context) {
   floor.bind();
   const bool depth_only = frame.plan.output == Output::Lines;
   if (depth_only) glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  floor.draw_all();
+  floor.draw_all(0, context.pacing);
   if (depth_only) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 

@@ -30,15 +30,15 @@ double hull_reach(const FrameContext& frame, double world_per_px) {
 // floor's) the back ones would. The hull must not be cut by the near or far
 // plane either: where it is, its back faces show through the cut.
 FaceSkip hull_face_skip(const FrameContext& frame, std::size_t i) {
-  const GpuModel& model = frame.objects[i].model;
+  const FrameObject& object = frame.objects[i];
   FaceSkip hull;
   if (frame.main_faces[i].hidden == HiddenFaces::None) return hull;
   const double reach = hull_reach(frame, frame.world_per_px_at_w1());
-  hull.hidden = hidden_faces(model.enclosure(frame.lod_of(i)), frame.scene.matrices[i], frame.clip, model.bounds(), reach);
+  hull.hidden = hidden_faces(object.enclosure(frame.lod_of(i)), frame.scene.matrices[i], frame.clip, object.bounds(), reach);
   // The hull's holes move with its offset and may turn toward the camera
   // where the model's do not: its own caps, offset like it (they share
   // its vertices), are checked.
-  hull.unless_caps_show = hull.hidden != HiddenFaces::None && !model.caps(frame.lod_of(i)).empty();
+  hull.unless_caps_show = hull.hidden != HiddenFaces::None && !object.caps(frame.lod_of(i)).empty();
   return hull;
 }
 
@@ -49,7 +49,7 @@ FaceSkip hull_face_skip(const FrameContext& frame, std::size_t i) {
 // still being built (the first frame asks for it).
 std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t i) {
   const FrameContext& frame = context.frame;
-  const GpuModel& model = frame.objects[i].model;
+  const GpuModel& model = context.model(i);
   if (!context.cull_hull || !frame.plan.stencil_mark || model.has_masked_materials()) return std::nullopt;
   std::shared_ptr<const HullCullMesh> mesh = model.hull_cull_mesh(frame.lod_of(i), context.background);
   if (!mesh) return std::nullopt;
@@ -100,25 +100,25 @@ enum class HullSide { Shown, Both };
 // Object i's hull: only the faces that may show where they were worked out,
 // and of those, the ones set apart as turned to the culled side only where
 // that side is drawn.
-void draw_hull_of(const FrameContext& frame, const HullFaces& faces, std::size_t i, HullSide side) {
-  const bool per_material = outline_per_material(frame);
+void draw_hull_of(const PassContext& context, const HullFaces& faces, std::size_t i, HullSide side) {
+  const bool per_material = outline_per_material(context.frame);
   const std::optional<HullSubset>& subset = faces.subsets[i];
   if (!subset) {
-    if (per_material) draw_by_material(frame, i);
-    else draw_whole_object(frame, i);
+    if (per_material) draw_by_material(context, i);
+    else draw_whole_object(context, i);
     return;
   }
-  const GpuModel& model = frame.objects[i].model;
+  const GpuModel& model = context.model(i);
   const bool both = side == HullSide::Both;
   if (!per_material) {
     const std::size_t count = both ? subset->indices.size() : subset->facing_index_count();
-    if (count > 0) model.draw_from(*faces.buffer, count, faces.first[i]);
+    if (count > 0) model.draw_from(*faces.buffer, count, faces.first[i], context.pacing);
     return;
   }
   const auto draw_range = [&](const scene::Submesh& sub) {
     if (sub.index_count == 0) return;
     bind_material(model, sub.material);
-    model.draw_from(*faces.buffer, sub.index_count, faces.first[i] + sub.first_index);
+    model.draw_from(*faces.buffer, sub.index_count, faces.first[i] + sub.first_index, context.pacing);
   };
   for (std::size_t k = 0; k < subset->submeshes.size(); ++k) {
     draw_range(subset->submeshes[k]);
@@ -138,10 +138,10 @@ void draw_hull_outline_pass(PassContext& context) {
   gpu::Program& program = context.programs.get("hull.vert", "hull.frag", frame.plan.outline.defines());
   program.use();
   const HullFaces faces = hull_faces(context);
-  draw_objects(frame, context.blocks,
+  draw_objects(context,
                {.faces = [&](std::size_t i) { return context.hull_skips[i]; },
-                .draw = [&](std::size_t i) { draw_hull_of(frame, faces, i, HullSide::Shown); },
-                .redraw = [&](std::size_t i) { draw_hull_of(frame, faces, i, HullSide::Both); }});
+                .draw = [&](std::size_t i) { draw_hull_of(context, faces, i, HullSide::Shown); },
+                .redraw = [&](std::size_t i) { draw_hull_of(context, faces, i, HullSide::Both); }});
 }
 
 void start_hull_cull(PassContext& context) {

@@ -26,7 +26,7 @@ ToonVariant material_variant(const FrameContext& frame, const GpuMaterial& mater
 // `viewer`, runs of faces that surely turn away from it are left out.
 void shade_object(PassContext& context, std::size_t i, const std::optional<MeshViewer>& viewer) {
   const FrameContext& frame = context.frame;
-  const GpuModel& model = frame.objects[i].model;
+  const GpuModel& model = context.model(i);
   const gpu::Program* in_use = nullptr;
   const std::vector<scene::Submesh>& submeshes = model.submeshes(frame.lod_of(i));
   for (std::size_t k = 0; k < submeshes.size(); ++k) {
@@ -42,8 +42,8 @@ void shade_object(PassContext& context, std::size_t i, const std::optional<MeshV
     }
     // A request's colour for one material's darkest band, by its name.
     if (variant.has(ToonFeature::ShadeColor)) program.set("u_shade_color", frame.params.shade_colors.at(material.name));
-    if (viewer) context.main_triangles_skipped += model.draw_facing(frame.lod_of(i), k, *viewer);
-    else model.draw(sub);
+    if (viewer) context.main_triangles_skipped += model.draw_facing(frame.lod_of(i), k, *viewer, context.pacing);
+    else model.draw(sub, context.pacing);
   }
 }
 
@@ -85,7 +85,7 @@ void draw_main_pass(PassContext& context) {
   context.main_cap_checks.resize(frame.objects.size());
   if (frame.shadow) glBindTextureUnit(texture_unit::kShadowMap, context.resources.shadow_map().texture());
   // Where a cap shows, the side culled is drawn after all: whole.
-  draw_objects(frame, context.blocks,
+  draw_objects(context,
                {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
                 .draw = [&](std::size_t i) { shade_object(context, i, turned_away_runs_viewer(context, i)); },
                 .redraw = [&](std::size_t i) { shade_object(context, i, std::nullopt); },

@@ -5,10 +5,10 @@ namespace toond::render {
 void draw_outline_objects(PassContext& context, const std::function<FaceSkip(std::size_t)>& faces) {
   const FrameContext& frame = context.frame;
   const bool per_material = outline_per_material(frame);
-  draw_objects(frame, context.blocks,
+  draw_objects(context,
                {.faces = faces, .draw = [&](std::size_t i) {
-                  if (per_material) draw_by_material(frame, i);
-                  else draw_whole_object(frame, i);
+                  if (per_material) draw_by_material(context, i);
+                  else draw_whole_object(context, i);
                 }});
 }
 

@@ -24,15 +24,15 @@ void draw_shadow_pass(PassContext& context) {
   program.use();
   program.set("u_light_view_projection", glm::mat4(frame.shadow->view_projection));
   const Viewer light{glm::dvec3(0.0), glm::normalize(caster.direction), true};
-  draw_objects(frame, context.blocks,
+  draw_objects(context,
                {// The nearest surface seen from the light is the same with
                 // the far side skipped, so the map is too.
                 .faces = [&](std::size_t i) {
                   return FaceSkip{frame.culling_for(i, frame.shadow->view_projection, light, false).hidden};
                 },
                 .draw = [&](std::size_t i) {
-                  if (alpha_tested) draw_by_material(frame, i);
-                  else draw_whole_object(frame, i);
+                  if (alpha_tested) draw_by_material(context, i);
+                  else draw_whole_object(context, i);
                 }});
   glDisable(GL_POLYGON_OFFSET_FILL);
 }

@@ -1,0 +1,15 @@
+#pragma once
+// A sheet's atlas (render/sheet_atlas.h), written from its layout and the
+// framing its frames share, without rendering: the answer of ?atlas=json,
+// and the tEXt chunk of a sheet's PNG.
+#include <nlohmann/json.hpp>
+
+#include "pipeline/request.h"
+#include "render/camera.h"
+
+namespace toond::pipeline {
+
+// `scene`: the framing every frame of the sheet shares (plan.h).
+nlohmann::ordered_json atlas_of(const Request& request, const render::SceneFrame& scene);
+
+}  // namespace toond::pipeline

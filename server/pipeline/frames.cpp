@@ -1,0 +1,20 @@
+#include "pipeline/frames.h"
+
+#include "render/pixel_art_frame.h"
+#include "render/sheet_layout.h"
+
+namespace toond::pipeline {
+
+std::vector<render::RenderParams> drawn_frames(const render::RenderParams& params) {
+  if (!params.sheet) return {params};
+  const render::SheetLayout layout = render::layout_sheet(*params.sheet, params.width, params.height);
+  std::vector<render::RenderParams> frames;
+  for (const render::SheetFrame& frame : layout.frames) {
+    render::RenderParams one = render::frame_params(params, layout, frame);
+    if (params.sheet->pixel_art) one = render::pixel_art_frame_params(std::move(one), *params.sheet->pixel_art);
+    frames.push_back(std::move(one));
+  }
+  return frames;
+}
+
+}  // namespace toond::pipeline

@@ -1,0 +1,27 @@
+#include "pipeline/plan.h"
+
+#include "pipeline/frames.h"
+
+namespace toond::pipeline {
+
+std::vector<render::PlannedObject> planned_objects(const Request& request, const ObjectPoses& poses) {
+  std::vector<render::PlannedObject> planned;
+  for (std::size_t i = 0; i < request.objects.size(); ++i) {
+    const render::JobObject& o = request.objects[i];
+    planned.push_back({*o.model, o.transform, i < poses.size() ? poses[i].get() : nullptr});
+  }
+  return planned;
+}
+
+std::vector<render::FramePlan> plan_frames(const Request& request, const std::vector<ObjectPoses>& poses) {
+  std::vector<render::RenderParams> drawn = drawn_frames(request.params);
+  // Every frame's poses are framed alike (pose.h): one framing for all.
+  const auto scene = render::frame_scene_of(planned_objects(request, poses.front()));
+  std::vector<render::FramePlan> plans;
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    plans.push_back(render::plan_frame(std::move(drawn[i]), planned_objects(request, poses[i]), scene));
+  }
+  return plans;
+}
+
+}  // namespace toond::pipeline

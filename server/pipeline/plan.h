@@ -1,0 +1,21 @@
+#pragma once
+// The pipeline's planning stage: each frame's plan (render/frame_plan.h),
+// made once, after posing and before pricing: the price is the plans'
+// costs, and the render threads draw what the plans say.
+#include <vector>
+
+#include "pipeline/pose.h"
+#include "pipeline/request.h"
+#include "render/frame_plan.h"
+
+namespace toond::pipeline {
+
+// The request's objects as a plan sees them, in `poses` (pose.h; empty:
+// as imported).
+std::vector<render::PlannedObject> planned_objects(const Request& request, const ObjectPoses& poses = {});
+
+// Every frame's plan, in layout order (frames.h): its parameters as drawn
+// and its poses, all in one framing.
+std::vector<render::FramePlan> plan_frames(const Request& request, const std::vector<ObjectPoses>& poses);
+
+}  // namespace toond::pipeline

@@ -1,0 +1,39 @@
+#include "pipeline/sheet_checks.h"
+
+#include <string>
+
+#include "render/pass_plan.h"
+#include "request_error.h"
+
+namespace toond::pipeline {
+
+void check_sheet_params(const render::RenderParams& params) {
+  if (!params.sheet) return;
+  // Depth, normals and ids are data, not pictures: a palette would change
+  // their values and WebP holds 8-bit colour, not 16-bit depth or an index.
+  if (render::is_data_layer(params.output)) {
+    if (params.sheet->pixel_art) {
+      throw RequestError(400, "invalid_parameter",
+                         "/sheet/pixel_art: pixel art needs output color or lines (depth, normal and id are data "
+                         "a palette would change)",
+                         "/sheet/pixel_art");
+    }
+    if (params.sheet->animate) {
+      throw RequestError(400, "invalid_parameter",
+                         "/sheet/animate: an animated WebP needs output color or lines (depth, normal and id "
+                         "sheets come as PNG)",
+                         "/sheet/animate");
+    }
+  }
+  if (!params.sheet->pixel_art) return;
+  const int scale = params.sheet->pixel_art->scale;
+  if (params.width % scale != 0 || params.height % scale != 0) {
+    throw RequestError(400, "invalid_parameter",
+                       "/sheet/pixel_art/scale: " + std::to_string(scale) + " must divide the tile size " +
+                           std::to_string(params.width) + "×" + std::to_string(params.height) +
+                           " (width and height) so every tile is whole art pixels",
+                       "/sheet/pixel_art/scale");
+  }
+}
+
+}  // namespace toond::pipeline
