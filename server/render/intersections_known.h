@@ -2,38 +2,29 @@
 // Whether the segments where parts cross, found at import
 // (scene/intersection_lines.h), are every intersection line a frame can
 // show. They are not where parts can meet in ways import did not see:
-// - a posed model of several parts (its parts move apart from one
-//   another; the segments hold the rest pose, and the crease pass draws
-//   none while posed),
-// - a model whose search gave up (IntersectionLines::complete),
+// - a posed model whose parts cross at rest (the segments hold the rest
+//   pose; the pose moves the parts, and with them where they cross),
+// - a model of several parts whose search gave up
+//   (IntersectionLines::complete),
 // - two objects of a scene whose boxes overlap (import sees one model at a
 //   time).
 // Where they are not, the pass plan has the edge pass find crease and
-// intersection lines in screen space, as it did before the crease pass
-// (render/pass_plan.cpp).
-#include <cstdint>
+// intersection lines in screen space for the whole frame, as it did before
+// the crease pass (render/pass_plan.cpp). Pure arithmetic, no GL.
 #include <span>
 
-#include <glm/glm.hpp>
-
-#include "scene/model.h"
+#include "render/frame_plan.h"
 
 namespace toond::render {
 
-struct JobObject;
+bool intersections_known(std::span<const PlannedObject> objects);
 
-// One object of a frame, as far as this rule asks.
-struct ObjectParts {
-  std::uint32_t parts = 1;       // scene::Mesh::parts
-  bool searched_through = true;  // IntersectionLines::complete, every level
-  bool posed = false;
-  scene::Bounds bounds;          // relative to `origin`; posed: the pose's
-  glm::dvec3 origin{0.0};        // scene::Mesh::origin
-  glm::dmat4 transform{1.0};     // model to scene coordinates
-};
+// Whether a mesh's search for where its parts cross saw every level
+// through (trivially so for a mesh of one part).
+bool searched_through(const scene::Mesh& mesh);
 
-bool intersections_known(std::span<const ObjectParts> objects);
-// The same for a job's objects, as the price sees them before the render.
-bool intersections_known(std::span<const JobObject> objects);
+// Whether any level of a mesh has a segment where its parts cross, at any
+// angle.
+bool parts_cross(const scene::Mesh& mesh);
 
 }  // namespace toond::render

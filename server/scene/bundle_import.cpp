@@ -162,9 +162,8 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
   find_crease_edges(model.mesh);
   check_import_time(limits, "finding crease edges");
   IntersectionSearch crossings;
-  crossings.check_time = [&limits] { check_import_time(limits, "finding where parts cross"); };
+  crossings.deadline = limits.deadline;
   find_intersection_lines(model.mesh, crossings);
-  check_import_time(limits, "finding where parts cross");
   return model;
 }
 

@@ -23,8 +23,7 @@ constexpr double kTolerance = 1e-6;
 constexpr double kLeastSine = 1e-3;
 // Leaves of the tree of triangle boxes hold at most this many.
 constexpr std::uint32_t kLeafTriangles = 4;
-// Small meshes never give up.
-constexpr std::size_t kLeastWork = 65536;
+// The deadline is read on the first comparison and every this many after.
 constexpr std::size_t kWorkBetweenTimeChecks = 65536;
 constexpr std::uint32_t kMixedParts = std::numeric_limits<std::uint32_t>::max();
 
@@ -203,7 +202,7 @@ class Search {
         indices_(indices),
         tolerance_(tolerance),
         options_(options),
-        budget_(std::max(kLeastWork, static_cast<std::size_t>(options.work_per_triangle *
+        budget_(std::max(kLeastIntersectionWork, static_cast<std::size_t>(options.work_per_triangle *
                                                                static_cast<double>(triangles_.size())))) {
     order_.resize(triangles_.size());
     std::iota(order_.begin(), order_.end(), 0u);
@@ -256,7 +255,10 @@ class Search {
       gave_up_ = true;
       return false;
     }
-    if (options_.check_time && work_ % kWorkBetweenTimeChecks == 0) options_.check_time();
+    if (work_ % kWorkBetweenTimeChecks == 1 && std::chrono::steady_clock::now() >= options_.deadline) {
+      gave_up_ = true;
+      return false;
+    }
     return true;
   }
 
@@ -380,7 +382,10 @@ IntersectionLines find_intersection_lines(std::span<const glm::vec3> positions, 
   const double tolerance = kTolerance * diagonal;
   Search search(triangles_of(positions, indices, part_of_vertex, tolerance), normals, indices, tolerance, options);
   search.run();
-  lines.complete = !search.gave_up();
+  if (search.gave_up()) {
+    lines.complete = false;
+    return lines;
+  }
   std::vector<FoundSeam>& found = search.found();
   // The greatest turn first; within a turn, in the order found, which
   // follows the tree: segments drawn together lie together.
@@ -406,6 +411,10 @@ void find_intersection_lines(Mesh& mesh, const IntersectionSearch& search) {
   if (parts < 2) return;
   mesh.intersections = find_intersection_lines(mesh.positions, mesh.normals, mesh.indices, part_of_vertex, search);
   for (MeshLod& lod : mesh.lods) {
+    if (!mesh.intersections.complete) {
+      lod.intersections.complete = false;
+      continue;
+    }
     lod.intersections = find_intersection_lines(mesh.positions, mesh.normals, lod.indices, part_of_vertex, search);
   }
 }

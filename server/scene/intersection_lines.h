@@ -21,9 +21,9 @@
 // sides continue one another) meet at their rims, where no fold shows:
 // none either; a triangle whose edge lies inside the other's face (a
 // block standing on a floor, an ear set on a head) does make one.
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <span>
 #include <vector>
 
@@ -43,7 +43,9 @@ struct IntersectionLines : TurnTally {
   std::vector<glm::vec3> points;
   // false: the search gave up (parts crowding through one another's
   // boxes, more to compare than IntersectionSearch::work_per_triangle a
-  // triangle), and these are not all the segments there are.
+  // triangle, or its deadline passed), and kept none of what it found:
+  // the pass plan has the frames of this model find their lines in screen
+  // space (render/intersections_known.h).
   bool complete = true;
 
   std::size_t size() const { return points.size() / 4; }
@@ -51,12 +53,18 @@ struct IntersectionLines : TurnTally {
 
 struct IntersectionSearch {
   // Pairs of boxes and of triangles compared, a triangle, before the
-  // search gives up: a model of well-apart parts compares a few a triangle.
+  // search gives up (a mesh of few triangles may always compare
+  // kLeastIntersectionWork): a model of well-apart parts compares a few a
+  // triangle, parts crowding through one another (hair cards, a stack of
+  // copies) many more. It bounds the search's time by the mesh's size,
+  // the same on every machine.
   double work_per_triangle = 64;
-  // Called now and then (the import's time limit, which may throw to
-  // abandon the import).
-  std::function<void()> check_time;
+  // Nor does it go on past this (the import's deadline): it gives up
+  // rather than abandon the import.
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
+
+inline constexpr std::size_t kLeastIntersectionWork = 65536;
 
 // Each vertex's connected part, numbered from 0 in the order triangles
 // first reach them; `parts` gets how many there are. A vertex no triangle
@@ -74,8 +82,9 @@ IntersectionLines find_intersection_lines(std::span<const glm::vec3> positions, 
                                           const IntersectionSearch& search = {});
 
 // Sets Mesh::parts, and Mesh::intersections for the full mesh and every
-// level of detail (a level's own triangles cross where they do). A mesh of
-// one part searches nothing.
+// level of detail (a level's own triangles cross where they do), each
+// level with a budget of its own. A mesh of one part searches nothing;
+// where the full mesh's search gives up, the levels' are given up unseen.
 void find_intersection_lines(Mesh& mesh, const IntersectionSearch& search = {});
 
 }  // namespace toond::scene
