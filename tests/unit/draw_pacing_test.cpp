@@ -124,14 +124,14 @@ TEST_F(DrawPacingTest, CreaseEdgesInChunksDrawTheSameImage) {
   ASSERT_EQ(cube.mesh.crease_edges.creased_at(40), 12u);
   const GpuModel gpu_cube(cube);
   const RenderParams params = test::complete_params({{"width", 96}, {"height", 96}, {"camera", {{"pitch", 30}}}});
-  const RenderOutput whole = renderer_->render({RenderObject{gpu_cube}}, params);
+  const RenderOutput whole = renderer_->render({RenderObject{gpu_cube, cube}}, params);
   ASSERT_EQ(whole.plan, "main,hull_outline,creases,resolve,readback");
   ASSERT_GE(whole.crease_edges_drawn, 6u);
   // Two crease edges a chunk; no triangle chunk ever full.
   const auto two_edges = static_cast<std::size_t>(std::ceil(2.0 * kCreaseEdgeSamples / kEdgeTexelSamples));
   int steps_aside = 0;
   DrawPacing pacing(1000000, two_edges, Clock::now() + std::chrono::minutes(5), [&] { ++steps_aside; });
-  const RenderOutput paced = renderer_->render({RenderObject{gpu_cube}}, params, &pacing);
+  const RenderOutput paced = renderer_->render({RenderObject{gpu_cube, cube}}, params, &pacing);
   EXPECT_EQ(paced.crease_edges_drawn, whole.crease_edges_drawn);
   EXPECT_EQ(pacing.chunks_drawn(), whole.crease_edges_drawn / 2);
   EXPECT_EQ(static_cast<std::size_t>(steps_aside), pacing.chunks_drawn());
