@@ -94,7 +94,7 @@ TEST_P(BlenderRigSilhouette, TheDefaultRequestBendsAsBlenderDoes) {
   gpu::ProgramCache programs([](const std::string& name) { return std::string(shader_files::find(name)); });
   Renderer renderer(programs);
   const GpuModel blender_copy(blender);
-  const std::vector<bool> reference = silhouette(renderer.render(blender_copy, test::complete_params(full)));
+  const std::vector<bool> reference = silhouette(renderer.render(blender_copy, blender, test::complete_params(full)));
 
   GpuModel posed(model);
   for (const scene::Skinning where : {scene::Skinning::Cpu, scene::Skinning::VertexStage}) {
@@ -102,8 +102,8 @@ TEST_P(BlenderRigSilhouette, TheDefaultRequestBendsAsBlenderDoes) {
     skin->bounds = framing.bounds;
     skin->extremes = framing.extremes;
     posed.apply_pose(skin, model);
-    const RenderOutput by_default = renderer.render(posed, test::complete_params(transparent));
-    const RenderOutput at_full = renderer.render(posed, test::complete_params(full));
+    const RenderOutput by_default = renderer.render({RenderObject{posed, model, glm::dmat4(1.0), skin}}, test::complete_params(transparent));
+    const RenderOutput at_full = renderer.render({RenderObject{posed, model, glm::dmat4(1.0), skin}}, test::complete_params(full));
     const double default_overlap = overlap(silhouette(by_default), reference);
     const double full_overlap = overlap(silhouette(at_full), reference);
     const char* path = where == scene::Skinning::Cpu ? "cpu" : "vertex stage";
