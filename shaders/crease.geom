@@ -23,10 +23,11 @@
 // shows is the nearer on its side of the line on screen: the eye looks
 // into the empty wedge between the two surfaces, and whatever lies nearer
 // on a side is what bounds it there. So face 1's half lies on the side
-// where its plane's depth grows the slower, face 2's on the other. A seam
-// never folds over (no silhouette runs along it), and neither winding
-// tells which side of a face is inside another part: the culled winding
-// does not apply.
+// where its plane's depth grows the slower, face 2's on the other. Both
+// walls of the wedge face the eye that looks into it: where either turns
+// to the side the main pass culls (a face lying nearly in the other's
+// plane, seen from its back), no seam shows. (a, b, p1) winds as face 1,
+// (a, b, p2) as face 2.
 layout(lines_adjacency) in;
 layout(triangle_strip, max_vertices = 6) out;
 
@@ -145,6 +146,10 @@ void main() {
   // Whether face 1's half of the line lies left of a→b on screen.
   bool face1_left;
   if (u_seams != 0) {
+    float side1 = cross2(e, s1 - g_a);
+    float side2 = cross2(e, s2 - g_a);
+    if (u_culled_winding == 1 && (side1 < 0.0 || side2 < 0.0)) return;
+    if (u_culled_winding == 2 && (side1 > 0.0 || side2 > 0.0)) return;
     face1_left = dot(grad1, left) <= dot(grad2, left);
   } else {
     float side1 = cross2(e, s1 - g_a);

@@ -181,10 +181,19 @@ std::optional<FoundSeam> crossing(const Triangle& t1, const Triangle& t2, double
   if (!(length > tolerance)) return std::nullopt;
   FoundSeam found;
   const glm::dvec3 middle = 0.5 * (a + b);
-  found.points[0] = glm::vec3(middle + glm::normalize(glm::cross(t1.normal, along)) * length);
+  // Off the segment in each plane, on the side that makes (a, b, p) wind
+  // as its triangle does, as far as the triangle reaches (at least the
+  // segment's length): a piece of a seam cut short by a triangle edge
+  // still gives the shader planes it can tell apart in float.
+  const auto off = [&](const Triangle& t) {
+    const double reach = std::max({length, glm::distance(t.corners[0], t.corners[1]),
+                                   glm::distance(t.corners[1], t.corners[2]), glm::distance(t.corners[2], t.corners[0])});
+    return glm::vec3(middle + glm::normalize(glm::cross(t.normal, along)) * reach);
+  };
+  found.points[0] = off(t1);
   found.points[1] = glm::vec3(a);
   found.points[2] = glm::vec3(b);
-  found.points[3] = glm::vec3(middle + glm::normalize(glm::cross(t2.normal, along)) * length);
+  found.points[3] = off(t2);
   found.length = length;
   return found;
 }

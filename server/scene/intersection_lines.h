@@ -38,8 +38,10 @@ struct Mesh;
 struct IntersectionLines : TurnTally {
   // Four points a segment, for GL_LINES_ADJACENCY: p1, a, b, p2. a and b
   // are its ends; p1 lies in the plane of the first triangle and p2 in the
-  // second's, a segment's length off the line, on either side of it: which
-  // half of each plane shows is the view's to tell (shaders/crease.geom).
+  // second's, off the line on the side that makes (a, b, p1) wind as the
+  // first triangle does and (a, b, p2) as the second: whether each faces
+  // the eye is the view's to tell, and so is which half of each plane
+  // shows (shaders/crease.geom).
   std::vector<glm::vec3> points;
   // false: the search gave up (parts crowding through one another's
   // boxes, more to compare than IntersectionSearch::work_per_triangle a

@@ -36,10 +36,10 @@ void draw_crease_edges_of_objects(PassContext& context, gpu::Program& program) {
     const bool seams = model.intersection_segments(lod, angle) > 0;
     if (!creases && !seams) continue;
     context.blocks.bind_object(i);
+    program.set("u_culled_winding", culled_winding(frame, i));
     if (creases) {
       model.bind();
       program.set("u_seams", 0);
-      program.set("u_culled_winding", culled_winding(frame, i));
       const std::optional<MeshViewer> viewer =
           frame.main_faces[i].unless_caps_show ? std::nullopt : turned_away_runs_viewer(context, i);
       context.crease_edges_drawn += model.draw_creases(lod, angle, viewer, context.pacing);
