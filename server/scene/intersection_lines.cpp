@@ -212,7 +212,9 @@ class Search {
         tolerance_(tolerance),
         options_(options),
         budget_(std::max(kLeastIntersectionWork, static_cast<std::size_t>(options.work_per_triangle *
-                                                               static_cast<double>(triangles_.size())))) {
+                                                               static_cast<double>(triangles_.size())))),
+        most_segments_(std::max(kLeastIntersectionSegments, static_cast<std::size_t>(options.segments_per_triangle *
+                                                                      static_cast<double>(triangles_.size())))) {
     order_.resize(triangles_.size());
     std::iota(order_.begin(), order_.end(), 0u);
     if (!triangles_.empty()) build(0, static_cast<std::uint32_t>(triangles_.size()));
@@ -319,7 +321,9 @@ class Search {
                                  turn_deg(shading_normal_at(b, t1, normals_, indices_),
                                           shading_normal_at(b, t2, normals_, indices_)));
     found->turn = static_cast<int>(std::min(std::ceil(turn), 180.0));
-    if (found->turn > kLeastTurnDeg) found_.push_back(*found);
+    if (found->turn <= kLeastTurnDeg) return;
+    found_.push_back(*found);
+    if (found_.size() > most_segments_) gave_up_ = true;
   }
 
   std::vector<Triangle> triangles_;
@@ -328,6 +332,7 @@ class Search {
   double tolerance_;
   const IntersectionSearch& options_;
   std::size_t budget_;
+  std::size_t most_segments_;
   std::size_t work_ = 0;
   bool gave_up_ = false;
   std::vector<std::uint32_t> order_;

@@ -44,8 +44,8 @@ struct IntersectionLines : TurnTally {
   // shows (shaders/crease.geom).
   std::vector<glm::vec3> points;
   // false: the search gave up (parts crowding through one another's
-  // boxes, more to compare than IntersectionSearch::work_per_triangle a
-  // triangle, or its deadline passed), and kept none of what it found:
+  // boxes, more to compare or to keep than IntersectionSearch allows, or
+  // its deadline passed), and kept none of what it found:
   // the pass plan has the frames of this model find their lines in screen
   // space (render/intersections_known.h).
   bool complete = true;
@@ -61,12 +61,18 @@ struct IntersectionSearch {
   // copies) many more. It bounds the search's time by the mesh's size,
   // the same on every machine.
   double work_per_triangle = 64;
+  // Nor does it keep more segments than this a triangle (a mesh of few
+  // triangles may always keep kLeastIntersectionSegments): parts crossing
+  // one another that often (a field of grass cards) have their lines
+  // found in screen space. The shared windmill, of 138 parts, has 1.1.
+  double segments_per_triangle = 4;
   // Nor does it go on past this (the import's deadline): it gives up
   // rather than abandon the import.
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
 
 inline constexpr std::size_t kLeastIntersectionWork = 65536;
+inline constexpr std::size_t kLeastIntersectionSegments = 1024;
 
 // Each vertex's connected part, numbered from 0 in the order triangles
 // first reach them; `parts` gets how many there are. A vertex no triangle

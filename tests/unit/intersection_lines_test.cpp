@@ -280,6 +280,30 @@ TEST(IntersectionLines, TheSearchGivesUpPastItsBudget) {
   EXPECT_EQ(through.lines.size(), 0u);
 }
 
+// Thirty strips of two triangles along x woven through thirty along z, a
+// pair of triangles crossing at every one of 900 places: more seams than
+// four a triangle, past what the search keeps; allowed more, it keeps
+// them all.
+TEST(IntersectionLines, TheSearchGivesUpPastTheSegmentsItKeeps) {
+  Soup soup;
+  for (int i = 0; i < 30; ++i) {
+    const float at = -1.5f + 0.1f * static_cast<float>(i);
+    const float lift = 0.02f * static_cast<float>(i % 2);
+    soup.quad({-1.6f, lift - 0.05f, at}, {-1.6f, lift + 0.05f, at + 0.01f}, {1.6f, lift + 0.05f, at + 0.01f},
+              {1.6f, lift - 0.05f, at});
+    soup.quad({at, -0.05f, -1.6f}, {at, -0.05f, 1.6f}, {at + 0.01f, 0.05f, 1.6f}, {at + 0.01f, 0.05f, -1.6f});
+  }
+  const Found kept_too_many = search(soup);
+  EXPECT_EQ(kept_too_many.parts, 60u);
+  EXPECT_FALSE(kept_too_many.lines.complete);
+  EXPECT_EQ(kept_too_many.lines.size(), 0u);
+  IntersectionSearch more;
+  more.segments_per_triangle = 100;
+  const Found all = search(soup, more);
+  EXPECT_TRUE(all.lines.complete);
+  EXPECT_GT(all.lines.size(), kLeastIntersectionSegments);
+}
+
 // Past its deadline (the import's), the search gives up at once, even on a
 // mesh small enough never to run out of budget.
 TEST(IntersectionLines, TheSearchGivesUpAtItsDeadline) {
