@@ -97,6 +97,20 @@ FacingRuns crease_runs(std::span<const glm::vec3> positions, const scene::Crease
   return FacingRuns(positions, faces, std::span<const scene::Submesh>(&all, 1));
 }
 
+// Every level's segments where the parts cross, full detail first: at rest,
+// or in a pose.
+std::vector<const scene::IntersectionLines*> seams_of(const scene::Mesh& mesh) {
+  std::vector<const scene::IntersectionLines*> levels = {&mesh.intersections};
+  for (const scene::MeshLod& lod : mesh.lods) levels.push_back(&lod.intersections);
+  return levels;
+}
+
+std::vector<const scene::IntersectionLines*> seams_of(const scene::SkinPose& pose) {
+  std::vector<const scene::IntersectionLines*> levels;
+  for (const scene::IntersectionLines& lines : pose.intersections) levels.push_back(&lines);
+  return levels;
+}
+
 }  // namespace
 
 GpuModel::GpuModel(const scene::Model& model) {
@@ -127,7 +141,6 @@ GpuModel::GpuModel(const scene::Model& model) {
   };
   add_creases(levels_[0], mesh.crease_edges);
   for (std::size_t i = 0; i < mesh.lods.size(); ++i) add_creases(levels_[i + 1], mesh.lods[i].crease_edges);
-  upload_intersections(mesh);
 
   vertices_ = gpu::Buffer::create();
   glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
@@ -136,6 +149,8 @@ GpuModel::GpuModel(const scene::Model& model) {
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
                        indices.data(), 0);
   gpu_bytes_ = vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
+  seams_ = GpuSeams(seams_of(mesh));
+  gpu_bytes_ += seams_.gpu_bytes();
   for (Level& level : levels_) level.facing_runs = FacingRuns(mesh.positions, indices, level.submeshes);
   rest_positions_ = std::make_shared<const std::vector<glm::vec3>>(mesh.positions);
   outline_offsets_ = std::make_shared<const std::vector<glm::vec3>>(mesh.outline_normals);
@@ -173,32 +188,6 @@ GpuModel::GpuModel(const scene::Model& model) {
   material_arena_.upload();
 }
 
-void GpuModel::upload_intersections(const scene::Mesh& mesh) {
-  std::vector<glm::vec3> points;
-  auto add_level = [&](Level& level, const scene::IntersectionLines& lines) {
-    level.first_seam_index = points.size();
-    level.seams_over = lines.edges_over;
-    points.insert(points.end(), lines.points.begin(), lines.points.end());
-  };
-  add_level(levels_[0], mesh.intersections);
-  for (std::size_t i = 0; i < mesh.lods.size(); ++i) add_level(levels_[i + 1], mesh.lods[i].intersections);
-  if (points.empty()) return;
-  std::vector<std::uint32_t> indices(points.size());
-  for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint32_t>(i);
-  seam_points_ = gpu::Buffer::create();
-  glNamedBufferStorage(seam_points_.id(), static_cast<GLsizeiptr>(points.size() * sizeof(glm::vec3)), points.data(), 0);
-  seam_indices_ = gpu::Buffer::create();
-  glNamedBufferStorage(seam_indices_.id(), static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
-                       indices.data(), 0);
-  gpu_bytes_ += points.size() * sizeof(glm::vec3) + indices.size() * sizeof(std::uint32_t);
-  seam_vao_ = gpu::VertexArray::create();
-  glVertexArrayVertexBuffer(seam_vao_.id(), 0, seam_points_.id(), 0, sizeof(glm::vec3));
-  glVertexArrayElementBuffer(seam_vao_.id(), seam_indices_.id());
-  glEnableVertexArrayAttrib(seam_vao_.id(), kPositionAttribute);
-  glVertexArrayAttribFormat(seam_vao_.id(), kPositionAttribute, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(seam_vao_.id(), kPositionAttribute, 0);
-}
-
 void GpuModel::bind() const {
   glBindVertexArray(vao_.id());
   if (skinned_) skin_->bind();
@@ -213,7 +202,9 @@ void GpuModel::apply_pose(std::shared_ptr<const scene::SkinPose> pose, const sce
   const bool cpu_posed = posed_ && !skinned_;
   // A model never posed on the CPU costs no GL call here.
   if (was_cpu_posed && !cpu_posed) glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
+  posed_seams_ = GpuSeams();
   if (!posed_) return;
+  if (!pose->intersections.empty()) posed_seams_ = GpuSeams(seams_of(*pose));
   if (skinned_) skin_->upload(*pose);
   if (cpu_posed) pose_into_vertex_buffer(model, *pose->cpu_sums);
   applied_ = std::move(pose);
@@ -300,17 +291,11 @@ std::size_t GpuModel::draw_creases(std::size_t lod, double degrees, const std::o
 }
 
 std::size_t GpuModel::intersection_segments(std::size_t lod, double degrees) const {
-  if (posed_) return 0;
-  const auto whole = static_cast<std::size_t>(std::clamp(std::floor(degrees), 0.0, 180.0));
-  return levels_[lod].seams_over[whole];
+  return (posed_ ? posed_seams_ : seams_).segments(lod, degrees);
 }
 
 std::size_t GpuModel::draw_intersections(std::size_t lod, double degrees, DrawPacing* pacing) const {
-  const std::size_t segments = intersection_segments(lod, degrees);
-  if (segments == 0) return 0;
-  glBindVertexArray(seam_vao_.id());
-  draw_crease_edges(pacing, 4 * segments, levels_[lod].first_seam_index);
-  return segments;
+  return (posed_ ? posed_seams_ : seams_).draw(lod, degrees, pacing);
 }
 
 void GpuModel::draw_all(std::size_t lod, DrawPacing* pacing) const {

@@ -1,5 +1,6 @@
 #include "render/intersections_known.h"
 
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -32,8 +33,9 @@ bool overlap(const SceneBox& a, const SceneBox& b) {
 bool known_alone(const PlannedObject& o) {
   const scene::Mesh& mesh = o.model.mesh;
   if (mesh.parts < 2) return true;
-  const bool posed = o.pose != nullptr && o.model.rig != nullptr;
-  return searched_through(mesh) && !(posed && parts_cross(mesh));
+  if (o.pose == nullptr || o.model.rig == nullptr) return searched_through(mesh);
+  const std::vector<scene::IntersectionLines>& posed = o.pose->intersections;
+  return !posed.empty() && std::all_of(posed.begin(), posed.end(), [](const auto& l) { return l.complete; });
 }
 
 }  // namespace
@@ -42,12 +44,6 @@ bool searched_through(const scene::Mesh& mesh) {
   bool through = mesh.intersections.complete;
   for (const scene::MeshLod& lod : mesh.lods) through = through && lod.intersections.complete;
   return through;
-}
-
-bool parts_cross(const scene::Mesh& mesh) {
-  bool cross = mesh.intersections.size() > 0;
-  for (const scene::MeshLod& lod : mesh.lods) cross = cross || lod.intersections.size() > 0;
-  return cross;
 }
 
 bool intersections_known(std::span<const PlannedObject> objects) {

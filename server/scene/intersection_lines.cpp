@@ -416,21 +416,29 @@ IntersectionLines find_intersection_lines(std::span<const glm::vec3> positions, 
   return lines;
 }
 
-void find_intersection_lines(Mesh& mesh, const IntersectionSearch& search) {
+std::vector<IntersectionLines> find_intersection_lines(const Mesh& mesh, std::span<const glm::vec3> positions,
+                                                       std::span<const glm::vec3> normals,
+                                                       const IntersectionSearch& search) {
   std::uint32_t parts = 0;
   const std::vector<std::uint32_t> part_of_vertex = label_parts(mesh.positions, mesh.indices, parts);
-  mesh.parts = parts;
-  mesh.intersections = {};
-  for (MeshLod& lod : mesh.lods) lod.intersections = {};
-  if (parts < 2) return;
-  mesh.intersections = find_intersection_lines(mesh.positions, mesh.normals, mesh.indices, part_of_vertex, search);
-  for (MeshLod& lod : mesh.lods) {
-    if (!mesh.intersections.complete) {
-      lod.intersections.complete = false;
+  std::vector<IntersectionLines> levels(1 + mesh.lods.size());
+  if (parts < 2) return levels;
+  levels[0] = find_intersection_lines(positions, normals, mesh.indices, part_of_vertex, search);
+  for (std::size_t i = 0; i < mesh.lods.size(); ++i) {
+    if (!levels[0].complete) {
+      levels[i + 1].complete = false;
       continue;
     }
-    lod.intersections = find_intersection_lines(mesh.positions, mesh.normals, lod.indices, part_of_vertex, search);
+    levels[i + 1] = find_intersection_lines(positions, normals, mesh.lods[i].indices, part_of_vertex, search);
   }
+  return levels;
+}
+
+void find_intersection_lines(Mesh& mesh, const IntersectionSearch& search) {
+  label_parts(mesh.positions, mesh.indices, mesh.parts);
+  std::vector<IntersectionLines> levels = find_intersection_lines(mesh, mesh.positions, mesh.normals, search);
+  mesh.intersections = std::move(levels[0]);
+  for (std::size_t i = 0; i < mesh.lods.size(); ++i) mesh.lods[i].intersections = std::move(levels[i + 1]);
 }
 
 }  // namespace toond::scene

@@ -89,6 +89,16 @@ IntersectionLines find_intersection_lines(std::span<const glm::vec3> positions, 
                                           std::span<const std::uint32_t> part_of_vertex,
                                           const IntersectionSearch& search = {});
 
+// The segments where the parts of `mesh` cross with its vertices at
+// `positions` (shaded by `normals`): a pose of it, whose topology, parts
+// and levels of detail are the rest mesh's. One IntersectionLines a level,
+// the full mesh first, each with a budget of its own; all empty for a mesh
+// of one part; where the full mesh's search gives up, the levels' are
+// given up unseen.
+std::vector<IntersectionLines> find_intersection_lines(const Mesh& mesh, std::span<const glm::vec3> positions,
+                                                       std::span<const glm::vec3> normals,
+                                                       const IntersectionSearch& search = {});
+
 // Sets Mesh::parts, and Mesh::intersections for the full mesh and every
 // level of detail (a level's own triangles cross where they do), each
 // level with a budget of its own. A mesh of one part searches nothing;

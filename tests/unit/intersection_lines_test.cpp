@@ -9,20 +9,27 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <numbers>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "model_checks.h"
 #include "render/frame_plan.h"
 #include "render/intersections_known.h"
 #include "render/render_params.h"
+#include "scene/bundle_import.h"
 #include "scene/crease_edges.h"
 #include "scene/demo_model.h"
 #include "scene/intersection_lines.h"
 #include "scene/obj_import.h"
+#include "scene/pose.h"
 #include "support/in_process_render.h"
+#include "support/shared_models.h"
 
 namespace toond::scene {
 namespace {
@@ -317,6 +324,72 @@ TEST(IntersectionLines, TheSearchGivesUpAtItsDeadline) {
   for (const MeshLod& lod : demo.mesh.lods) EXPECT_FALSE(lod.intersections.complete);
 }
 
+// Minetest's player (Debian's game data, tests/exported/minetest), its
+// boxes pushed into one another, posed at a frame of its walk: every end
+// of every seam found for the pose lies on the posed surfaces of two of
+// its parts; of the seams found at rest, carried into the pose by either
+// part they lie on, some ends land apart (the parts slid along each
+// other): drawn as they are, they would not be where the parts cross.
+TEST(IntersectionLines, APosesSeamsLieOnTwoPartsInThatPose) {
+  setenv("TOOND_ASSIMP_CONVERTER", TOOND_ASSIMP_CONVERTER_PATH, 1);
+  const std::filesystem::path folder = std::filesystem::path(TOOND_EXPORTED_DIR) / "minetest";
+  const Model player = import_bundle(
+      test_checks::make_bundle({{"character.b3d", test::read_file(folder / "character.b3d")}}));
+  ASSERT_TRUE(player.rig);
+  const Mesh& mesh = player.mesh;
+  const Rig& rig = *player.rig;
+  const NodePose walking = pose_nodes(rig, &rig.clips[0], 177.0 / 60.0);
+  const SkinPose pose = skin_pose(mesh, rig, walking);
+  const PosedVertices posed = pose_vertices(mesh, rig, walking);
+  std::uint32_t parts = 0;
+  const std::vector<std::uint32_t> part_of = label_parts(mesh.positions, mesh.indices, parts);
+  ASSERT_EQ(parts, mesh.parts);
+  ASSERT_GT(parts, 1u);
+  const double diagonal = glm::distance(glm::dvec3(posed.bounds.min), glm::dvec3(posed.bounds.max));
+  // Each part whose triangle (in `at`) holds `p` within a millionth of the
+  // model, and where that triangle carries p in the pose.
+  const auto holding = [&](const std::vector<glm::vec3>& at, const glm::dvec3& p) {
+    std::vector<std::pair<std::uint32_t, glm::dvec3>> found;
+    for (std::size_t i = 0; i < mesh.indices.size(); i += 3) {
+      const std::uint32_t v[3] = {mesh.indices[i], mesh.indices[i + 1], mesh.indices[i + 2]};
+      const glm::dvec3 a(at[v[0]]), b(at[v[1]]), c(at[v[2]]);
+      const glm::dvec3 n = glm::cross(b - a, c - a);
+      const double area = glm::length(n);
+      if (area <= 0.0 || std::abs(glm::dot(p - a, n / area)) > 1e-6 * diagonal) continue;
+      const double wa = glm::dot(glm::cross(c - b, p - b), n) / (area * area);
+      const double wb = glm::dot(glm::cross(a - c, p - c), n) / (area * area);
+      if (wa < -1e-6 || wb < -1e-6 || wa + wb > 1 + 1e-6) continue;
+      if (std::any_of(found.begin(), found.end(), [&](const auto& f) { return f.first == part_of[v[0]]; })) continue;
+      const glm::dvec3 carried = wa * glm::dvec3(posed.positions[v[0]]) + wb * glm::dvec3(posed.positions[v[1]]) +
+                                 (1 - wa - wb) * glm::dvec3(posed.positions[v[2]]);
+      found.emplace_back(part_of[v[0]], carried);
+    }
+    return found;
+  };
+  const IntersectionLines& now = pose.intersections.at(0);
+  ASSERT_TRUE(now.complete);
+  ASSERT_GT(now.size(), 0u);
+  for (std::size_t s = 0; s < now.size(); ++s) {
+    for (int end = 1; end <= 2; ++end) {
+      EXPECT_GE(holding(posed.positions, glm::dvec3(now.points[4 * s + end])).size(), 2u) << "segment " << s;
+    }
+  }
+  std::size_t ends = 0, apart = 0;
+  for (std::size_t s = 0; s < mesh.intersections.size(); ++s) {
+    for (int end = 1; end <= 2; ++end) {
+      const auto carried = holding(mesh.positions, glm::dvec3(mesh.intersections.points[4 * s + end]));
+      if (carried.size() < 2) continue;
+      ++ends;
+      apart += glm::distance(carried[0].second, carried[1].second) > 0.005 * diagonal;
+    }
+  }
+  std::printf("[seams] minetest player walking: %zu seam segments in the pose, %zu at rest; of %zu rest seam ends, "
+              "%zu land more than 0.5 %% of the model apart carried by either part\n",
+              now.size(), mesh.intersections.size(), ends, apart);
+  EXPECT_GT(ends, 0u);
+  EXPECT_GT(apart, 0u);
+}
+
 // A smooth sphere is one part: nothing to search, no line.
 TEST(IntersectionLines, OnePartSearchesNothing) {
   Soup soup;
@@ -338,9 +411,9 @@ namespace toond::render {
 namespace {
 
 // The plan draws the demo's seam with the crease pass where import found
-// it all; where the search gave up, or the model is posed with parts that
-// cross, or two objects' boxes overlap, the edge pass finds the lines in
-// screen space instead.
+// it all; where the search gave up (at rest or in the pose), or a pose was
+// not searched, or two objects' boxes overlap, the edge pass finds the
+// lines in screen space instead.
 TEST(IntersectionPlan, TheScreenSpacePassTakesOverWhereTheSegmentsAreNotAll) {
   scene::Model demo = scene::import_obj_bundle(scene::make_demo_bundle());
   scene::find_crease_edges(demo.mesh);
@@ -358,12 +431,20 @@ TEST(IntersectionPlan, TheScreenSpacePassTakesOverWhereTheSegmentsAreNotAll) {
   EXPECT_EQ(plan_frame(params, unsearched).passes.describe(),
             "main,hull_outline,edge_prepass,edges(creases),resolve,readback");
 
-  // Posed, its parts may cross elsewhere than at rest.
+  // Posed, its parts may cross elsewhere than at rest: known where the
+  // pose was searched (skin_pose does it), not where it was not.
   scene::Model rigged = demo;
   rigged.rig = std::make_shared<const scene::Rig>();
-  const scene::SkinPose pose;
-  const std::vector<PlannedObject> posed = {{rigged, glm::dmat4(1.0), &pose}};
+  const scene::SkinPose pose_not_searched;
+  const std::vector<PlannedObject> posed = {{rigged, glm::dmat4(1.0), &pose_not_searched}};
   EXPECT_FALSE(intersections_known(posed));
+  scene::SkinPose searched;
+  searched.intersections.push_back(demo.mesh.intersections);
+  for (const scene::MeshLod& lod : demo.mesh.lods) searched.intersections.push_back(lod.intersections);
+  const std::vector<PlannedObject> posed_and_searched = {{rigged, glm::dmat4(1.0), &searched}};
+  EXPECT_TRUE(intersections_known(posed_and_searched));
+  searched.intersections.back().complete = false;
+  EXPECT_FALSE(intersections_known(posed_and_searched));
   const std::vector<PlannedObject> at_rest = {{rigged}};
   EXPECT_TRUE(intersections_known(at_rest));
 
