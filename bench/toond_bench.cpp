@@ -43,8 +43,9 @@ Parts (default: sweep scaling load):
             512², interleaved), the PNG encode at 512² and 1024², and
             renders/s at 1 and 16 clients against a second daemon with
             --frames-in-flight 2; floor.json
-  creases   the hard-edged shared models' default request at 512² against
-            the same with creases never, interleaved; creases.json
+  creases   the demo's, the hard-edged shared models' and Minetest's player's
+            (at rest and walking) default request at 512² against the
+            same with creases never, interleaved; creases.json
 Options:
   --quick          fewer points and repeats (about a minute)
   --smoke          one tiny render per part that has one (a test of the driver)

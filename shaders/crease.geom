@@ -17,6 +17,17 @@
 // (a, b, c1) in its winding). An edge whose faces fold over one another on
 // screen draws nothing: it is a silhouette, which the hull or wireframe
 // draws, or it lies behind its own faces.
+// A seam where two parts cross (u_seams, scene/intersection_lines.h) comes
+// as p1, a, b, p2, a point of each face's plane off the segment; both
+// planes go on past the segment to either side. The half of each that
+// shows is the nearer on its side of the line on screen: the eye looks
+// into the empty wedge between the two surfaces, and whatever lies nearer
+// on a side is what bounds it there. So face 1's half lies on the side
+// where its plane's depth grows the slower, face 2's on the other. Both
+// walls of the wedge face the eye that looks into it: where either turns
+// to the side the main pass culls (a face lying nearly in the other's
+// plane, seen from its back), no seam shows. (a, b, p1) winds as face 1,
+// (a, b, p2) as face 2.
 layout(lines_adjacency) in;
 layout(triangle_strip, max_vertices = 6) out;
 
@@ -38,6 +49,8 @@ noperspective out vec2 v_window;
 // on screen: 0 none, 1 clockwise (GL's back faces), 2 counter-clockwise.
 // A crease whose faces both turn that way is hidden by the model itself.
 uniform int u_culled_winding;
+// Nonzero: the primitives are seams where parts cross, not crease edges.
+uniform int u_seams;
 
 #ifdef SAMPLE_MASK
 // The quad reaches this far past the line's half width. Multisampled, the
@@ -124,23 +137,35 @@ void main() {
   vec2 e = g_b - g_a;
   float len = length(e);
   if (len < 1e-6) return;
-  float side1 = cross2(e, s1 - g_a);
-  float side2 = cross2(e, s2 - g_a);
-  if (side1 * side2 >= 0.0) return;  // folded over: a silhouette, or behind its faces
-  // Both faces wind as face 1 does, unfolded: counter-clockwise when c1
-  // lies left of a→b.
-  if (u_culled_winding == 1 && side1 < 0.0) return;
-  if (u_culled_winding == 2 && side1 > 0.0) return;
-
+  vec2 along = e / len;
+  vec2 left = vec2(-along.y, along.x);
   float za = a.z / a.w;
   float zb = b.z / b.w;
   vec2 grad1 = depth_gradient(g_a, za, g_b, zb, s1, c1.z / c1.w);
   vec2 grad2 = depth_gradient(g_a, za, g_b, zb, s2, c2.z / c2.w);
+  // Whether face 1's half of the line lies left of a→b on screen.
+  bool face1_left;
+  if (u_seams != 0) {
+    float side1 = cross2(e, s1 - g_a);
+    float side2 = cross2(e, s2 - g_a);
+    if (u_culled_winding == 1 && (side1 < 0.0 || side2 < 0.0)) return;
+    if (u_culled_winding == 2 && (side1 > 0.0 || side2 > 0.0)) return;
+    face1_left = dot(grad1, left) <= dot(grad2, left);
+  } else {
+    float side1 = cross2(e, s1 - g_a);
+    float side2 = cross2(e, s2 - g_a);
+    if (side1 * side2 >= 0.0) return;  // folded over: a silhouette, or behind its faces
+    // Both faces wind as face 1 does, unfolded: counter-clockwise when c1
+    // lies left of a→b.
+    if (u_culled_winding == 1 && side1 < 0.0) return;
+    if (u_culled_winding == 2 && side1 > 0.0) return;
+    face1_left = side1 > 0.0;
+  }
+
   float slope = max(abs(grad1.x) + abs(grad1.y), abs(grad2.x) + abs(grad2.y));
   if (!edge_shows(g_a, za, g_b, zb, slope)) return;
-  vec2 along = e / len;
   float reach = 0.5 * u_width + kCoverageMargin;
-  g_toward_face1 = side1 > 0.0 ? vec2(-along.y, along.x) : vec2(along.y, -along.x);
+  g_toward_face1 = face1_left ? left : -left;
   g_depth_a = za;
   g_gradients = vec4(grad1, grad2);
   vec2 toward1 = g_toward_face1 * reach;

@@ -3,14 +3,18 @@
 // the third corner of each face, GL_LINES_ADJACENCY) to clip space, posed
 // and placed exactly as the main pass places them (toon.vert), so the
 // geometry stage's face planes are the ones whose depths the main pass
-// left.
+// left. The points of seams where parts cross (u_seams) come posed
+// already (render/gpu_seams.h): only placed.
 #include "attributes.glsl"
 #include "view.glsl"
 #include "object.glsl"
 #include "skinning.glsl"
 
+// Nonzero: the primitives are seams where parts cross (crease.geom).
+uniform int u_seams;
+
 void main() {
-  PosedVertex posed = posed_vertex();
-  vec4 world = u_model * vec4(posed.position, 1.0);
+  vec3 position = u_seams != 0 ? a_position : posed_vertex().position;
+  vec4 world = u_model * vec4(position, 1.0);
   gl_Position = u_view_projection * world;
 }

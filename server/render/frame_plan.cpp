@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "render/intersections_known.h"
 #include "render/outline_width.h"
 
 namespace toond::render {
@@ -16,11 +17,15 @@ ModelTraits traits_of(const RenderParams& params, std::span<const PlannedObject>
     traits.has_vertex_colors |= !model.mesh.colors.empty();
     traits.hard_edged |= model.mesh.creases.hard_edged(params.outline.crease_angle_deg);
     traits.has_crease_edges |= model.mesh.crease_edges.creased_at(params.outline.crease_angle_deg) > 0;
+    const scene::IntersectionLines& seams =
+        o.pose && model.rig && !o.pose->intersections.empty() ? o.pose->intersections[0] : model.mesh.intersections;
+    traits.has_intersection_lines |= seams.creased_at(params.outline.crease_angle_deg) > 0;
     for (const scene::Material& m : model.materials) {
       traits.has_normal_maps |= m.normal_texture >= 0;
       traits.has_masked_materials |= m.alpha_cutoff >= 0.0f;
     }
   }
+  traits.intersections_unknown = !intersections_known(objects);
   return traits;
 }
 

@@ -97,6 +97,20 @@ FacingRuns crease_runs(std::span<const glm::vec3> positions, const scene::Crease
   return FacingRuns(positions, faces, std::span<const scene::Submesh>(&all, 1));
 }
 
+// Every level's segments where the parts cross, full detail first: at rest,
+// or in a pose.
+std::vector<const scene::IntersectionLines*> seams_of(const scene::Mesh& mesh) {
+  std::vector<const scene::IntersectionLines*> levels = {&mesh.intersections};
+  for (const scene::MeshLod& lod : mesh.lods) levels.push_back(&lod.intersections);
+  return levels;
+}
+
+std::vector<const scene::IntersectionLines*> seams_of(const scene::SkinPose& pose) {
+  std::vector<const scene::IntersectionLines*> levels;
+  for (const scene::IntersectionLines& lines : pose.intersections) levels.push_back(&lines);
+  return levels;
+}
+
 }  // namespace
 
 GpuModel::GpuModel(const scene::Model& model) {
@@ -135,6 +149,8 @@ GpuModel::GpuModel(const scene::Model& model) {
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
                        indices.data(), 0);
   gpu_bytes_ = vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
+  seams_ = GpuSeams(seams_of(mesh));
+  gpu_bytes_ += seams_.gpu_bytes();
   for (Level& level : levels_) level.facing_runs = FacingRuns(mesh.positions, indices, level.submeshes);
   rest_positions_ = std::make_shared<const std::vector<glm::vec3>>(mesh.positions);
   outline_offsets_ = std::make_shared<const std::vector<glm::vec3>>(mesh.outline_normals);
@@ -186,7 +202,9 @@ void GpuModel::apply_pose(std::shared_ptr<const scene::SkinPose> pose, const sce
   const bool cpu_posed = posed_ && !skinned_;
   // A model never posed on the CPU costs no GL call here.
   if (was_cpu_posed && !cpu_posed) glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
+  posed_seams_ = GpuSeams();
   if (!posed_) return;
+  if (!pose->intersections.empty()) posed_seams_ = GpuSeams(seams_of(*pose));
   if (skinned_) skin_->upload(*pose);
   if (cpu_posed) pose_into_vertex_buffer(model, *pose->cpu_sums);
   applied_ = std::move(pose);
@@ -270,6 +288,14 @@ std::size_t GpuModel::draw_creases(std::size_t lod, double degrees, const std::o
     drawn += end - first;
   }
   return drawn;
+}
+
+std::size_t GpuModel::intersection_segments(std::size_t lod, double degrees) const {
+  return (posed_ ? posed_seams_ : seams_).segments(lod, degrees);
+}
+
+std::size_t GpuModel::draw_intersections(std::size_t lod, double degrees, DrawPacing* pacing) const {
+  return (posed_ ? posed_seams_ : seams_).draw(lod, degrees, pacing);
 }
 
 void GpuModel::draw_all(std::size_t lod, DrawPacing* pacing) const {

@@ -1,7 +1,8 @@
 #pragma once
 // A model's GPU copy: one interleaved vertex buffer, one index buffer (the
 // full mesh, then each coarser level of detail, then every level's caps,
-// then every level's crease edges),
+// then every level's crease edges), every level's segments where its
+// parts cross, at rest and in the applied pose (gpu_seams.h),
 // its textures (sRGB, mipmapped, repeating), per-material draw ranges, one
 // uniform block per material and, for a rigged model, its skinning
 // (render/gpu_skin.h). It holds what the GPU draws, not how a frame sees
@@ -21,6 +22,7 @@
 #include "render/background_thread.h"
 #include "render/draw_pacing.h"
 #include "render/facing_runs.h"
+#include "render/gpu_seams.h"
 #include "render/hull_cull.h"
 #include "render/uniform_blocks.h"
 #include "scene/model.h"
@@ -88,6 +90,15 @@ class GpuModel {
   // hold the rest pose). Returns how many edges it drew.
   std::size_t draw_creases(std::size_t lod, double degrees, const std::optional<MeshViewer>& viewer,
                             DrawPacing* pacing) const;
+  // How many of a level's segments where parts cross turn by more than
+  // `degrees` (scene/intersection_lines.h): the rest pose's, or the
+  // applied pose's (scene::SkinPose::intersections; none where it has
+  // none).
+  std::size_t intersection_segments(std::size_t lod, double degrees) const;
+  // Those segments as GL_LINES_ADJACENCY primitives (the crease pass's,
+  // p1, a, b, p2, posed already), from a vertex array of their own
+  // (render/gpu_seams.h), left bound. Returns how many it drew.
+  std::size_t draw_intersections(std::size_t lod, double degrees, DrawPacing* pacing) const;
   // `index_count` indices from `first_index` of another element buffer (the
   // hull's faces that may show, render/hull_cull.h), with this model's
   // vertices; its own indices are bound again after.
@@ -152,6 +163,8 @@ class GpuModel {
   HullCullMesh::Stream outline_offsets_;
   std::shared_ptr<const std::vector<std::uint32_t>> all_indices_;
   void pose_into_vertex_buffer(const scene::Model& model, const scene::PoseSums& sums);
+  GpuSeams seams_;        // at rest
+  GpuSeams posed_seams_;  // in the applied pose
   std::size_t gpu_bytes_ = 0;
 };
 

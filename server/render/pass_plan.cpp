@@ -156,11 +156,15 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
     // pixels'. Where what decides a line is what the pixels show, the edge
     // pass finds them in screen space instead: sprite lines (only between
     // areas wide enough to read, in whole pixels) and masked materials
-    // (the edges know nothing of the parts cut out). A model with no edge
-    // turning that far has no crease line to draw.
-    const bool in_screen_space = params.outline.screen_space_creases || model.has_masked_materials;
+    // (the edges know nothing of the parts cut out), and a frame where parts
+    // may cross where import did not find them (a posed model, a search
+    // that gave up, objects that overlap). A model with no edge and no
+    // crossing of parts turning that far has no crease line to draw.
+    const bool in_screen_space =
+        params.outline.screen_space_creases || model.has_masked_materials || model.intersections_unknown;
     plan.creases_only = crease_lines && in_screen_space;
-    if (crease_lines && !in_screen_space && model.has_crease_edges) plan.passes.push_back(Pass::Creases);
+    const bool lines_to_draw = model.has_crease_edges || model.has_intersection_lines;
+    if (crease_lines && !in_screen_space && lines_to_draw) plan.passes.push_back(Pass::Creases);
     if (params.outline.edges || plan.creases_only) {
       plan.passes.push_back(Pass::EdgePrepass);
       plan.passes.push_back(Pass::Edges);

@@ -35,6 +35,11 @@ struct ModelTraits {
   bool has_vertex_colors = false;
   bool hard_edged = false;  // creased at the requested crease angle (scene::CreaseProfile)
   bool has_crease_edges = false;  // some edge turns by more than the crease angle (scene::CreaseEdges)
+  // Some segment where parts cross turns by more than the crease angle
+  // (scene/intersection_lines.h).
+  bool has_intersection_lines = false;
+  // Parts may cross where import did not look (render/intersections_known.h).
+  bool intersections_unknown = false;
   bool has_masked_materials = false;  // glTF alphaMode MASK
 };
 

@@ -73,7 +73,8 @@ double drawn_line_px(const RenderParams& params, std::span<const scene::Mesh* co
   return outline_width_px(params.outline, camera, orthographic, params.height) * supersample;
 }
 
-// The crease pass: every edge creased at the request's angle, and the
+// The crease pass: every edge creased at the request's angle (and every
+// segment where parts cross that turns as far, drawn alike), and the
 // samples its lines cover (each mesh's creased length at the frame's scale:
 // framed, its bounding sphere fills the frame's shorter side). Drawn one
 // sample a pixel, the lines' coverage is gathered in a target of its own,
@@ -83,9 +84,13 @@ RenderCost crease_cost(const RenderParams& params, const PassPlan& plan, std::sp
   RenderCost cost;
   const double angle = params.outline.crease_angle_deg;
   const double line_px = drawn_line_px(params, meshes, plan.supersample);
+  const auto add = [&](const scene::TurnTally& lines) {
+    cost.crease_edges += static_cast<double>(lines.creased_at(angle));
+    cost.samples += lines.length_at(angle) * std::min(width, height) * line_px * plan.samples;
+  };
   for (const scene::Mesh* mesh : meshes) {
-    cost.crease_edges += static_cast<double>(mesh->crease_edges.creased_at(angle));
-    cost.samples += mesh->crease_edges.length_at(angle) * std::min(width, height) * line_px * plan.samples;
+    add(mesh->crease_edges);
+    add(mesh->intersections);
   }
   if (plan.samples == 1) cost.framebuffer += 2 * width * height;
   return cost;

@@ -36,6 +36,8 @@ struct RenderOutput {
   // The crease edges the crease pass drew, runs of them whose faces all
   // surely turn away left out (render/passes/crease_pass.cpp).
   std::size_t crease_edges_drawn = 0;
+  // The segments where parts cross that it drew (scene/intersection_lines.h).
+  std::size_t intersection_segments_drawn = 0;
 };
 
 }  // namespace toond::render

@@ -107,6 +107,7 @@ std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& o
   out.hull_faces_turned_away = context.hull_faces_turned_away;
   out.main_triangles_skipped = context.main_triangles_skipped;
   out.crease_edges_drawn = context.crease_edges_drawn;
+  out.intersection_segments_drawn = context.intersection_segments_drawn;
   pending->unpremultiply = frame.plan.has(Pass::Unpremultiply);
   // Without supersampling the multisample resolve is a blit inside
   // read_back(); its time is part of the readback figure, since the

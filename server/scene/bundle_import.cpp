@@ -7,6 +7,7 @@
 #include "bundle_paths/model_formats.h"
 #include "scene/assimp_import.h"
 #include "scene/crease_edges.h"
+#include "scene/intersection_lines.h"
 #include "scene/enclosure.h"
 #include "scene/gltf_container.h"
 #include "scene/gltf_import.h"
@@ -163,6 +164,9 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
   classify_enclosures(model.mesh, position_group);
   find_crease_edges(model.mesh, position_group);
   check_import_time(limits, "finding crease edges");
+  IntersectionSearch crossings;
+  crossings.deadline = limits.deadline;
+  find_intersection_lines(model.mesh, crossings);
   return model;
 }
 

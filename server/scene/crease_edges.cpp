@@ -148,24 +148,16 @@ CreaseEdges find_in(std::span<const glm::vec3> positions, std::span<const glm::v
   // them whose faces all turn away is skipped, render/facing_runs.h).
   std::sort(found.begin(), found.end(),
             [](const Found& l, const Found& r) { return l.turn != r.turn ? l.turn > r.turn : l.place < r.place; });
-  CreaseEdges edges;
-  edges.indices.reserve(found.size() * 4);
-  std::array<double, 181> length_at_turn{};
-  std::array<std::uint32_t, 181> count_at_turn{};
+  std::vector<int> turns;
+  std::vector<double> lengths;
   for (const Found& edge : found) {
-    edges.indices.insert(edges.indices.end(), std::begin(edge.vertices), std::end(edge.vertices));
-    length_at_turn[static_cast<std::size_t>(edge.turn)] += edge.length;
-    ++count_at_turn[static_cast<std::size_t>(edge.turn)];
+    turns.push_back(edge.turn);
+    lengths.push_back(edge.length);
   }
-  // Over d degrees: every edge whose turn, rounded up, is above d.
-  double length = 0;
-  std::uint32_t count = 0;
-  for (std::size_t d = 180; d-- > 0;) {
-    length += length_at_turn[d + 1];
-    count += count_at_turn[d + 1];
-    edges.edges_over[d] = count;
-    edges.length_over[d] = groups.diagonal > 0.0 ? static_cast<float>(length / groups.diagonal) : 0.0f;
-  }
+  CreaseEdges edges;
+  static_cast<TurnTally&>(edges) = tally_turns(turns, lengths, groups.diagonal);
+  edges.indices.reserve(found.size() * 4);
+  for (const Found& edge : found) edges.indices.insert(edges.indices.end(), std::begin(edge.vertices), std::end(edge.vertices));
   return edges;
 }
 
@@ -175,9 +167,30 @@ std::size_t whole_degrees(double degrees) {
 
 }  // namespace
 
-std::size_t CreaseEdges::creased_at(double degrees) const { return edges_over[whole_degrees(degrees)]; }
+std::size_t TurnTally::creased_at(double degrees) const { return edges_over[whole_degrees(degrees)]; }
 
-double CreaseEdges::length_at(double degrees) const { return length_over[whole_degrees(degrees)]; }
+double TurnTally::length_at(double degrees) const { return length_over[whole_degrees(degrees)]; }
+
+TurnTally tally_turns(std::span<const int> turns, std::span<const double> lengths, double diagonal) {
+  std::array<double, 181> length_at_turn{};
+  std::array<std::uint32_t, 181> count_at_turn{};
+  for (std::size_t i = 0; i < turns.size(); ++i) {
+    const auto turn = static_cast<std::size_t>(std::clamp(turns[i], 0, 180));
+    length_at_turn[turn] += lengths[i];
+    ++count_at_turn[turn];
+  }
+  // Over d degrees: every line whose turn, rounded up, is above d.
+  TurnTally tally;
+  double length = 0;
+  std::uint32_t count = 0;
+  for (std::size_t d = 180; d-- > 0;) {
+    length += length_at_turn[d + 1];
+    count += count_at_turn[d + 1];
+    tally.edges_over[d] = count;
+    tally.length_over[d] = diagonal > 0.0 ? static_cast<float>(length / diagonal) : 0.0f;
+  }
+  return tally;
+}
 
 CreaseEdges find_crease_edges(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                               std::span<const std::uint32_t> indices) {

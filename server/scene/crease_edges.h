@@ -24,24 +24,36 @@ namespace toond::scene {
 
 struct Mesh;
 
-struct CreaseEdges {
+// Lines along which a surface turns (crease edges, and the seams where
+// parts cross, scene/intersection_lines.h), counted by their turn, the
+// greatest first.
+struct TurnTally {
+  // edges_over[d]: how many lines turn by more than d degrees; they are
+  // the first edges_over[d] of their list.
+  std::array<std::uint32_t, 181> edges_over{};
+  // length_over[d]: the length of those lines added up, in units of the
+  // mesh's bounding-box diagonal (what the price turns into pixels).
+  std::array<float, 181> length_over{};
+
+  // How many lines are creased at a crease angle of `degrees`.
+  std::size_t creased_at(double degrees) const;
+  // Their length added up, in bounding-box diagonals.
+  double length_at(double degrees) const;
+};
+
+// The tally of lines sorted greatest turn first, given each one's turn in
+// whole degrees rounded up (1..180) and its length, and the diagonal the
+// lengths are counted in.
+TurnTally tally_turns(std::span<const int> turns, std::span<const double> lengths, double diagonal);
+
+struct CreaseEdges : TurnTally {
   // Four vertex indices per edge, for GL_LINES_ADJACENCY: c1, a, b, c2.
   // Face 1 is (a, b, c1) in its own winding; c2 is the third corner of
   // face 2, which a consistently wound mesh winds (b, a, c2). a and b are
   // face 1's vertices (face 2's copies lie at the same points).
   std::vector<std::uint32_t> indices;
-  // edges_over[d]: how many edges turn by more than d degrees; they are
-  // the first edges_over[d] of `indices`.
-  std::array<std::uint32_t, 181> edges_over{};
-  // length_over[d]: the length of those edges added up, in units of the
-  // mesh's bounding-box diagonal (what the price turns into pixels).
-  std::array<float, 181> length_over{};
 
   std::size_t size() const { return indices.size() / 4; }
-  // How many edges are creased at a crease angle of `degrees`.
-  std::size_t creased_at(double degrees) const;
-  // Their length added up, in bounding-box diagonals.
-  double length_at(double degrees) const;
 };
 
 // Every edge between two triangles whose normals turn by more than 1°,

@@ -10,6 +10,7 @@
 
 #include "scene/crease_edges.h"
 #include "scene/crease_profile.h"
+#include "scene/intersection_lines.h"
 #include "scene/render_cost_profile.h"
 #include "scene/rig.h"
 
@@ -101,6 +102,7 @@ struct MeshLod {
   std::vector<glm::vec3> caps;  // see Mesh::caps
   std::vector<std::uint32_t> cap_indices;  // see Mesh::cap_indices
   CreaseEdges crease_edges;  // see Mesh::crease_edges
+  IntersectionLines intersections;  // see Mesh::intersections
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
@@ -152,6 +154,11 @@ struct Mesh {
   // The edges that turn, greatest turn first, that crease lines are drawn
   // along (scene/crease_edges.h).
   CreaseEdges crease_edges;
+  // How many connected parts the triangles make, and the segments where
+  // those of different parts cross, greatest turn first, that intersection
+  // lines are drawn along (scene/intersection_lines.h).
+  std::uint32_t parts = 1;
+  IntersectionLines intersections;
   // What rasterising the full mesh once costs (scene/render_cost_profile.h):
   // what a request is priced by before it is queued.
   RenderCostProfile cost;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "scene/crease_edges.h"
+#include "scene/intersection_lines.h"
 #include "scene/demo_model.h"
 #include "scene/bundle_import.h"
 #include "scene/obj_import.h"
@@ -27,10 +28,12 @@ void insert_bounded(Map& map, std::list<std::string>& order, const std::string& 
 }
 
 // The built-in demo model, with the crease edges its box's crease lines
-// are drawn along (scene/crease_edges.h).
+// are drawn along (scene/crease_edges.h) and the segments where its sphere
+// sinks into the box (scene/intersection_lines.h).
 scene::Model demo_with_crease_edges() {
   scene::Model demo = scene::import_obj_bundle(scene::make_demo_bundle());
   scene::find_crease_edges(demo.mesh);
+  scene::find_intersection_lines(demo.mesh);
   return demo;
 }
 

@@ -13,6 +13,7 @@
 #include "parallel/parallel_tasks.h"
 #include "scene/clip_sampling.h"
 #include "scene/extreme_points.h"
+#include "scene/intersection_lines.h"
 #include "scene/mesh_processing.h"
 #include "scene/motion_classes.h"
 
@@ -253,6 +254,22 @@ std::vector<glm::vec3> pose_some(const Mesh& rest, const Rig& rig, const std::ve
   return posed;
 }
 
+// Where the parts of `rest` cross in `pose`: every vertex posed (position
+// and normal), then searched as import searches the rest mesh.
+std::vector<IntersectionLines> posed_intersections(const Mesh& rest, const Rig& rig, const NodePose& pose) {
+  const PoseSums sums = pose_sums(rig, pose);
+  const std::size_t count = rest.positions.size();
+  std::vector<glm::vec3> positions(count), normals(count);
+  for_each_vertex_run(count, [&](std::size_t first, std::size_t end) {
+    for (std::size_t v = first; v < end; ++v) {
+      const PosedVertex posed = pose_vertex(rest, rig, sums, v, false);
+      positions[v] = posed.position;
+      normals[v] = posed.normal;
+    }
+  });
+  return find_intersection_lines(rest, positions, normals);
+}
+
 }  // namespace
 
 SkinPose skin_pose(const Mesh& rest, const Rig& rig, const NodePose& pose, Skinning where) {
@@ -264,6 +281,7 @@ SkinPose skin_pose(const Mesh& rest, const Rig& rig, const NodePose& pose, Skinn
   for (const std::vector<double>& w : weights) out.morph_weights.emplace_back(w.begin(), w.end());
   out.caps.push_back(pose_some(rest, rig, out.joints, weights, rest.cap_indices));
   for (const MeshLod& lod : rest.lods) out.caps.push_back(pose_some(rest, rig, out.joints, weights, lod.cap_indices));
+  if (rest.parts > 1) out.intersections = posed_intersections(rest, rig, pose);
   out.bounds = rest.bounds;
   out.extremes = rest.extremes;
   return out;

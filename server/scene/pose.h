@@ -87,6 +87,11 @@ struct SkinPose {
   std::vector<glm::mat4> joints;
   std::vector<std::vector<float>> morph_weights;
   std::vector<std::vector<glm::vec3>> caps;
+  // Where the mesh's parts cross in this pose, per level of detail (full
+  // mesh first), found on its vertices posed on the CPU as import finds
+  // them at rest (scene/intersection_lines.h): the seams move as the parts
+  // do. Empty for a mesh of one part.
+  std::vector<IntersectionLines> intersections;
   Bounds bounds;
   std::vector<glm::vec3> extremes;
   // How much this pose may lengthen any distance on the rest mesh

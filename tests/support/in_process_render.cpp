@@ -27,6 +27,11 @@ InProcessScene::InProcessScene(const PlacedModels& models)
   }
 }
 
+void InProcessScene::pose(std::size_t i, std::shared_ptr<const scene::SkinPose> pose) {
+  uploaded_[i]->apply_pose(pose, objects_[i].model);
+  objects_[i].pose = std::move(pose);
+}
+
 image::Image render_in_process(const PlacedModels& models, const nlohmann::json& request) {
   return InProcessScene(models).render(complete_params(request)).image;
 }

@@ -16,6 +16,7 @@
 #include "render/render_params.h"
 #include "render/renderer.h"
 #include "scene/model.h"
+#include "scene/pose.h"
 
 namespace toond::test {
 
@@ -33,6 +34,8 @@ class InProcessScene {
  public:
   explicit InProcessScene(const PlacedModels& models);
   render::Renderer& renderer() { return renderer_; }
+  // Object i drawn in `pose` from the next render on (nullptr: at rest).
+  void pose(std::size_t i, std::shared_ptr<const scene::SkinPose> pose);
   render::RenderOutput render(const render::RenderParams& params) { return renderer_.render(objects_, params); }
 
  private:

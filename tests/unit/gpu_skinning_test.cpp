@@ -29,8 +29,8 @@ namespace {
 using scene::Model;
 
 // The rest model with its vertex streams replaced by the CPU's pose: what
-// the GPU must draw. Bounds, extremes and caps are the skin pose's, so the
-// two renders frame and cull alike.
+// the GPU must draw. Bounds, extremes, caps and seams where parts cross are
+// the skin pose's, so the two renders frame, cull and line alike.
 Model cpu_posed_copy(const Model& model, const scene::PosedVertices& posed, const scene::SkinPose& skin) {
   Model copy = model;
   copy.rig.reset();
@@ -43,6 +43,11 @@ Model cpu_posed_copy(const Model& model, const scene::PosedVertices& posed, cons
   copy.mesh.extremes = skin.extremes;
   copy.mesh.caps = skin.caps[0];
   for (std::size_t i = 0; i < copy.mesh.lods.size(); ++i) copy.mesh.lods[i].caps = skin.caps[i + 1];
+  // Where its parts cross in the pose, as the pose found them.
+  if (!skin.intersections.empty()) {
+    copy.mesh.intersections = skin.intersections[0];
+    for (std::size_t i = 0; i < copy.mesh.lods.size(); ++i) copy.mesh.lods[i].intersections = skin.intersections[i + 1];
+  }
   return copy;
 }
 

@@ -21,24 +21,34 @@ int culled_winding(const FrameContext& frame, std::size_t i) {
   return 0;
 }
 
-// Every object's edges creased at the request's angle; runs of them whose
-// faces all surely turn to the side the main pass culls are left out
-// (they hide behind the model's own faces). Returns how many were drawn.
-std::size_t draw_crease_edges_of_objects(PassContext& context, gpu::Program& program) {
+// Every object's edges creased at the request's angle, and its segments
+// where parts cross that turn as far (crease.geom's u_seams); runs of
+// edges whose faces all surely turn to the side the main pass culls are
+// left out (they hide behind the model's own faces). Counts what it drew
+// in `context`.
+void draw_crease_edges_of_objects(PassContext& context, gpu::Program& program) {
   const FrameContext& frame = context.frame;
   const double angle = frame.params.outline.crease_angle_deg;
-  std::size_t drawn = 0;
   for (std::size_t i = 0; i < frame.objects.size(); ++i) {
     const GpuModel& model = context.model(i);
-    if (model.creased_edges(frame.lod_of(i), angle) == 0) continue;
+    const std::size_t lod = frame.lod_of(i);
+    const bool creases = model.creased_edges(lod, angle) > 0;
+    const bool seams = model.intersection_segments(lod, angle) > 0;
+    if (!creases && !seams) continue;
     context.blocks.bind_object(i);
-    model.bind();
     program.set("u_culled_winding", culled_winding(frame, i));
-    const std::optional<MeshViewer> viewer =
-        frame.main_faces[i].unless_caps_show ? std::nullopt : turned_away_runs_viewer(context, i);
-    drawn += model.draw_creases(frame.lod_of(i), angle, viewer, context.pacing);
+    if (creases) {
+      model.bind();
+      program.set("u_seams", 0);
+      const std::optional<MeshViewer> viewer =
+          frame.main_faces[i].unless_caps_show ? std::nullopt : turned_away_runs_viewer(context, i);
+      context.crease_edges_drawn += model.draw_creases(lod, angle, viewer, context.pacing);
+    }
+    if (seams) {
+      program.set("u_seams", 1);
+      context.intersection_segments_drawn += model.draw_intersections(lod, angle, context.pacing);
+    }
   }
-  return drawn;
 }
 
 // One sample a pixel: the pixels' coverage, gathered by crease.frag, laid
@@ -62,7 +72,8 @@ void lay_line_coverage_over(PassContext& context, GLuint coverage) {
 }  // namespace
 
 // After the silhouette's outline: a line along every crease edge whose two
-// faces show (crease.geom), depth-tested against what the main pass drew,
+// faces show, and along every segment where parts cross (crease.geom),
+// depth-tested against what the main pass drew,
 // at the cost of the crease edges rather than of the frame's pixels.
 // Multisampled, each line writes the samples it covers, opaque; with one
 // sample a pixel, the lines' coverage is gathered first, the largest a
@@ -93,12 +104,13 @@ void draw_crease_pass(PassContext& context) {
   gpu::Program& program =
       context.programs.get(std::vector<std::string>{"crease.vert", "crease.geom", "crease.frag"}, variant.defines());
   program.use();
-  context.crease_edges_drawn = draw_crease_edges_of_objects(context, program);
+  draw_crease_edges_of_objects(context, program);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDepthMask(GL_TRUE);
   glBlendEquation(GL_FUNC_ADD);
   glDisable(GL_BLEND);
-  if (!multisampled && context.crease_edges_drawn > 0) lay_line_coverage_over(context, coverage);
+  const bool lines_drawn = context.crease_edges_drawn + context.intersection_segments_drawn > 0;
+  if (!multisampled && lines_drawn) lay_line_coverage_over(context, coverage);
   else if (!multisampled) context.target->bind_for_drawing();
 }
 

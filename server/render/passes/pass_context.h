@@ -50,6 +50,7 @@ struct PassContext {
   std::size_t hull_faces_turned_away = 0;
   std::size_t main_triangles_skipped = 0;
   std::size_t crease_edges_drawn = 0;
+  std::size_t intersection_segments_drawn = 0;
 
   // Object i's GPU copy.
   const GpuModel& model(std::size_t i) const { return objects[i].gpu; }
