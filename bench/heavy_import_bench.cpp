@@ -11,14 +11,14 @@
 #include <utility>
 #include <vector>
 
-#include "scene/bundle_import.h"
-#include "scene/crease_edges.h"
-#include "scene/crease_profile.h"
-#include "scene/enclosure.h"
-#include "scene/extreme_points.h"
-#include "scene/mesh_lod.h"
-#include "scene/mesh_processing.h"
-#include "scene/obj_import.h"
+#include "scene/import/bundle_import.h"
+#include "scene/mesh/crease_edges.h"
+#include "scene/mesh/crease_profile.h"
+#include "scene/mesh/enclosure.h"
+#include "scene/mesh/extreme_points.h"
+#include "scene/mesh/mesh_lod.h"
+#include "scene/mesh/mesh_processing.h"
+#include "scene/import/obj_import.h"
 #include "stats.h"
 #include "support/import_timing.h"
 

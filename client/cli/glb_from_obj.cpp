@@ -25,7 +25,7 @@ namespace {
 using nlohmann::json;
 
 // toond's colour for an MTL material without Kd and no texture, and for
-// faces without a material (server/scene/obj_import.cpp).
+// faces without a material (server/scene/import/obj_import.cpp).
 constexpr float kPlainGrey = 0.8f;
 
 std::string lower(std::string_view s) {

@@ -20,9 +20,9 @@
 #include "http/access_control.h"
 #include "http/listen_backlog.h"
 #include "http/routes.h"
-#include "scene/model_library.h"
-#include "render/render_service.h"
-#include "scene/model_store.h"
+#include "scene/store/model_library.h"
+#include "render/run/render_service.h"
+#include "scene/store/model_store.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // toond-draco-decode: decodes one Draco mesh for the daemon
-// (scene/draco_decoder.h) in a process of its own, so that a decoder crash
+// (scene/import/draco_decoder.h) in a process of its own, so that a decoder crash
 // or runaway on a hostile file ends this process and never toond.
 //   toond-draco-decode --memory-mb N --cpu-seconds S [--attribute ID]...
 // Standard input: the Draco bytes. Standard output: the mesh

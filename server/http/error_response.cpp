@@ -9,12 +9,12 @@
 #include "gpu/shader_compile_error.h"
 #include "gpu/shader_log.h"
 #include "http/import_limit_flag.h"
-#include "render/render_service.h"
+#include "render/run/render_service.h"
 #include "limit_error.h"
 #include "request_error.h"
-#include "scene/import_error.h"
-#include "scene/import_limits.h"
-#include "scene/store_error.h"
+#include "scene/import/import_error.h"
+#include "scene/import/import_limits.h"
+#include "scene/store/store_error.h"
 
 namespace toond::http {
 

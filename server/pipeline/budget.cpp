@@ -3,9 +3,9 @@
 #include <string>
 
 #include "limit_error.h"
-#include "render/pass_plan.h"
-#include "render/pixel_art_frame.h"
-#include "render/sheet_layout.h"
+#include "render/plan/pass_plan.h"
+#include "render/plan/pixel_art_frame.h"
+#include "render/plan/sheet_layout.h"
 
 namespace toond::pipeline {
 

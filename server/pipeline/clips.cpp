@@ -6,7 +6,7 @@
 #include <string>
 
 #include "request_error.h"
-#include "scene/clip_sampling.h"
+#include "scene/animation/clip_sampling.h"
 
 namespace toond::pipeline {
 namespace {

@@ -5,8 +5,8 @@
 // a clip that does not exist is the request's error, named at its field.
 #include <cstddef>
 
-#include "render/render_params.h"
-#include "scene/model.h"
+#include "render/plan/render_params.h"
+#include "scene/mesh/model.h"
 
 namespace toond::pipeline {
 

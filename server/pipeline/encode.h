@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pipeline/request.h"
-#include "render/render_output.h"
+#include "render/frame/render_output.h"
 
 namespace toond::pipeline {
 

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "image/layer_png.h"
-#include "render/pass_plan.h"
+#include "render/plan/pass_plan.h"
 #include "request_error.h"
 
 namespace toond::pipeline {

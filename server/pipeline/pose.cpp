@@ -7,7 +7,7 @@
 #include <map>
 
 #include "request_error.h"
-#include "scene/clip_sampling.h"
+#include "scene/animation/clip_sampling.h"
 
 namespace toond::pipeline {
 namespace {

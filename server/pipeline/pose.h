@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "pipeline/request.h"
-#include "scene/pose.h"
+#include "scene/animation/pose.h"
 
 namespace toond::pipeline {
 

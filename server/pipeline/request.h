@@ -7,10 +7,10 @@
 
 #include "pipeline/clips.h"
 #include "pipeline/output_png.h"
-#include "render/render_params.h"
-#include "render/render_service.h"
-#include "render/sheet_layout.h"
-#include "scene/model_pins.h"
+#include "render/plan/render_params.h"
+#include "render/run/render_service.h"
+#include "render/plan/sheet_layout.h"
+#include "scene/store/model_pins.h"
 
 namespace toond::pipeline {
 

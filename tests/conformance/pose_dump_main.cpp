@@ -1,6 +1,6 @@
 // toond's half of the rig conformance suite (tests/conformance/): imports a
 // model through toond's own import path (scene::import_bundle, which runs
-// the assimp helper for FBX and COLLADA), poses it with scene/pose.h as
+// the assimp helper for FBX and COLLADA), poses it with scene/animation/pose.h as
 // the daemon does (clip_time, pose_nodes, pose_vertices) at the times
 // given, and writes JSON: every vertex at rest and in each pose, in the
 // file's world space, and for each pose how far each level of detail's
@@ -26,10 +26,10 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "scene/bundle_import.h"
-#include "scene/clip_sampling.h"
-#include "scene/import_error.h"
-#include "scene/pose.h"
+#include "scene/import/bundle_import.h"
+#include "scene/animation/clip_sampling.h"
+#include "scene/import/import_error.h"
+#include "scene/animation/pose.h"
 #include "support/surface_distance.h"
 
 namespace toond::conformance {

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/obj_import.h"
+#include "scene/import/obj_import.h"
 #include "support/generated_models.h"
 #include "support/gltf_draco_writer.h"
 #include "support/gltf_meshopt_writer.h"

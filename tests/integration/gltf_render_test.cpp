@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "scene/obj_import.h"
+#include "scene/import/obj_import.h"
 #include "image/png_codec.h"
 #include "support/gltf_twin.h"
 #include "support/image_checks.h"

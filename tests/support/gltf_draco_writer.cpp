@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "draco_decode/draco_wire.h"
-#include "scene/child_process.h"
+#include "scene/import/child_process.h"
 
 namespace toond::test {
 namespace {

@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "scene/bundle_import.h"
+#include "scene/import/bundle_import.h"
 
 namespace toond::test {
 double thread_seconds() {

@@ -16,8 +16,8 @@
 
 #include "gltf_import_checks.h"
 #include "pose_checks.h"
-#include "scene/clip_sampling.h"
-#include "scene/pose.h"
+#include "scene/animation/clip_sampling.h"
+#include "scene/animation/pose.h"
 #include "support/gltf_rig_writer.h"
 
 namespace toond::scene {

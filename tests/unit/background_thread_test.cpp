@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "render/background_thread.h"
+#include "render/cull/background_thread.h"
 
 namespace toond::render {
 namespace {

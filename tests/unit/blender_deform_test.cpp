@@ -16,7 +16,7 @@
 
 #include "model_checks.h"
 #include "pose_checks.h"
-#include "scene/bundle_import.h"
+#include "scene/import/bundle_import.h"
 #include "support/shared_models.h"
 
 namespace toond::scene {

@@ -22,11 +22,11 @@
 #include "image/float_image.h"
 #include "image/srgb.h"
 #include "model_checks.h"
-#include "render/frame_plan.h"
-#include "scene/bundle_import.h"
-#include "scene/model_library.h"
-#include "scene/model_store.h"
-#include "scene/pose.h"
+#include "render/plan/frame_plan.h"
+#include "scene/import/bundle_import.h"
+#include "scene/store/model_library.h"
+#include "scene/store/model_store.h"
+#include "scene/animation/pose.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"
 #include "support/shared_models.h"
@@ -65,7 +65,7 @@ class CreaseLines : public test::GlContextTest {};
 // mostly the lines the screen-space pass found where one part of the model
 // lies in front of another (no crease edge runs there). Measured 0.82 of
 // 4,222 pixels with the seams where its 138 parts cross
-// (scene/intersection_lines.h), 0.79 without.
+// (scene/mesh/intersection_lines.h), 0.79 without.
 constexpr double kLeastShareOfScreenSpaceLines = 0.6;
 
 TEST_F(CreaseLines, TheWindmillsLinesCoverMostOfWhatTheScreenSpacePassDrew) {
@@ -248,7 +248,7 @@ TEST_F(CreaseLines, TheDemoSpheresSeamOnItsBoxIsDrawn) {
 
 // The shared Kenney dog: its ears, eyes and snout are parts pushed into
 // its head, its legs into its body. Along the seams that show (those
-// import found, scene/intersection_lines.h, sampled every hundredth of
+// import found, scene/mesh/intersection_lines.h, sampled every hundredth of
 // the model), the lines come back. Measured: 0.95 of 813 pixels, 0.03
 // with the crease edges alone.
 TEST_F(CreaseLines, TheKenneyDogsSeamsAreDrawn) {
@@ -400,7 +400,7 @@ std::string sphere_with_faceted_back() {
 }
 
 // Seen from the front, every crease of that sphere is turned away: runs of
-// them are left out before the vertex stage (render/facing_runs.h), no
+// them are left out before the vertex stage (render/cull/facing_runs.h), no
 // edge is drawn, and the image is the one without crease lines. From the
 // back they draw.
 TEST_F(CreaseLines, AViewWhoseCreasesAllTurnAwayDrawsNoEdge) {

@@ -9,11 +9,11 @@
 #include <thread>
 
 #include "gpu/program_cache.h"
-#include "render/draw_pacing.h"
-#include "render/render_cost.h"
-#include "render/renderer.h"
-#include "scene/bundle_import.h"
-#include "scene/obj_import.h"
+#include "render/frame/draw_pacing.h"
+#include "render/plan/render_cost.h"
+#include "render/run/renderer.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/obj_import.h"
 #include "support/costly_models.h"
 #include "support/generated_models.h"
 #include "support/gl_context_test.h"
@@ -74,7 +74,7 @@ TEST_F(DrawPacingTest, ChunksDrawTheSameImageAsOneDrawCall) {
 }
 
 // The main pass draws a sphere as the ranges between its runs of faces
-// turned away (render/facing_runs.h), a few faces each: the chunks still
+// turned away (render/cull/facing_runs.h), a few faces each: the chunks still
 // hold the set number of triangles, not one range each.
 TEST_F(DrawPacingTest, ManyShortDrawsWaitOncePerChunkOfTriangles) {
   scene::Bundle bundle;

@@ -5,9 +5,9 @@
 #include <utility>
 
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/enclosure.h"
-#include "scene/mesh_processing.h"
+#include "scene/import/bundle_import.h"
+#include "scene/mesh/enclosure.h"
+#include "scene/mesh/mesh_processing.h"
 #include "support/generated_models.h"
 
 namespace toond::scene {

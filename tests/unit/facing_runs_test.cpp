@@ -1,5 +1,5 @@
 // Runs of faces the main pass leaves out as surely turned away from the
-// camera (render/facing_runs.h): which runs a view leaves out, where it
+// camera (render/cull/facing_runs.h): which runs a view leaves out, where it
 // leaves none, and, with a GL context, that leaving them out changes no
 // byte of any image.
 #include <gtest/gtest.h>
@@ -12,9 +12,9 @@
 #include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
-#include "render/facing_runs.h"
-#include "render/renderer.h"
-#include "scene/bundle_import.h"
+#include "render/cull/facing_runs.h"
+#include "render/run/renderer.h"
+#include "scene/import/bundle_import.h"
 #include "support/generated_models.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"

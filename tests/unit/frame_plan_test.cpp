@@ -1,4 +1,4 @@
-// A frame is planned once, before it is queued (render/frame_plan.h): the
+// A frame is planned once, before it is queued (render/plan/frame_plan.h): the
 // plan's passes, camera, outline width and cost are what the render thread
 // draws with, the frame's context is worked out from it without GL, and a
 // request's price is its frames' plans' costs.
@@ -10,10 +10,10 @@
 #include "model_checks.h"
 #include "pipeline/plan.h"
 #include "pipeline/price.h"
-#include "render/frame_context.h"
-#include "render/frame_plan.h"
-#include "render/gpu_model.h"
-#include "render/renderer.h"
+#include "render/frame/frame_context.h"
+#include "render/plan/frame_plan.h"
+#include "render/frame/gpu_model.h"
+#include "render/run/renderer.h"
 #include "support/generated_models.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"

@@ -10,9 +10,9 @@
 
 #include "http/render_params_wire.h"
 #include "param_schema.h"
-#include "render/gpu_model.h"
-#include "render/renderer.h"
-#include "scene/bundle_import.h"
+#include "render/frame/gpu_model.h"
+#include "render/run/renderer.h"
+#include "scene/import/bundle_import.h"
 #include "model_checks.h"
 #include "support/gl_context_test.h"
 #include "support/generated_models.h"

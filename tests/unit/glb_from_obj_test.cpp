@@ -18,8 +18,8 @@
 #include "cli_test_helpers.h"
 #include "glb_from_obj.h"
 #include "image/png_codec.h"
-#include "scene/gltf_import.h"
-#include "scene/obj_import.h"
+#include "scene/import/gltf_import.h"
+#include "scene/import/obj_import.h"
 
 namespace toond::cli {
 namespace {

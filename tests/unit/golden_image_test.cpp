@@ -24,8 +24,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "image/png_codec.h"
-#include "scene/bundle_import.h"
-#include "scene/demo_model.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/demo_model.h"
 #include "support/gl_context_test.h"
 #include "support/generated_models.h"
 #include "support/golden_compare.h"

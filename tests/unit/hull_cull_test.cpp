@@ -1,4 +1,4 @@
-// The hull's faces left out before drawing (render/hull_cull.h): which
+// The hull's faces left out before drawing (render/cull/hull_cull.h): which
 // edges pair up, which faces a view leaves out on the CPU, and, with a GL
 // context, that leaving them out changes no byte of any image while it
 // does leave most of them out.
@@ -19,11 +19,11 @@
 #include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
-#include "render/background_thread.h"
-#include "render/gpu_model.h"
-#include "render/hull_cull.h"
-#include "render/renderer.h"
-#include "scene/bundle_import.h"
+#include "render/cull/background_thread.h"
+#include "render/frame/gpu_model.h"
+#include "render/cull/hull_cull.h"
+#include "render/run/renderer.h"
+#include "scene/import/bundle_import.h"
 #include "support/generated_models.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "model_checks.h"
-#include "scene/bundle_import.h"
+#include "scene/import/bundle_import.h"
 #include "support/generated_models.h"
 
 namespace toond::scene {

@@ -1,5 +1,5 @@
 // Where separate parts of a model pass through each other
-// (scene/intersection_lines.h): the seams import finds, on clean and on
+// (scene/mesh/intersection_lines.h): the seams import finds, on clean and on
 // messy input (split copies of vertices, near-duplicates, seams cut into
 // pieces by the triangles of both parts), the contacts that make no line
 // (boxes stacked flush, faces lying on faces) and the one that does (a
@@ -19,15 +19,15 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "model_checks.h"
-#include "render/frame_plan.h"
-#include "render/intersections_known.h"
-#include "render/render_params.h"
-#include "scene/bundle_import.h"
-#include "scene/crease_edges.h"
-#include "scene/demo_model.h"
-#include "scene/intersection_lines.h"
-#include "scene/obj_import.h"
-#include "scene/pose.h"
+#include "render/plan/frame_plan.h"
+#include "render/plan/intersections_known.h"
+#include "render/plan/render_params.h"
+#include "scene/import/bundle_import.h"
+#include "scene/mesh/crease_edges.h"
+#include "scene/import/demo_model.h"
+#include "scene/mesh/intersection_lines.h"
+#include "scene/import/obj_import.h"
+#include "scene/animation/pose.h"
 #include "support/in_process_render.h"
 #include "support/shared_models.h"
 
@@ -147,7 +147,7 @@ std::size_t loose_ends(const IntersectionLines& lines, double near) {
   return loose;
 }
 
-// The demo model (scene/demo_model.cpp): a sphere of radius 0.6 centred
+// The demo model (scene/import/demo_model.cpp): a sphere of radius 0.6 centred
 // 0.95 above the floor, sunk 0.05 into a box 0.4 high. Where they cross is
 // a circle on the box's top of radius √(0.6² − 0.55²), the polygon the
 // sphere's facets cut from it; the surfaces meet there at a sharp wedge.

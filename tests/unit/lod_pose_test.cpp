@@ -16,8 +16,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "gltf_import_checks.h"
-#include "scene/motion_classes.h"
-#include "scene/pose.h"
+#include "scene/animation/motion_classes.h"
+#include "scene/animation/pose.h"
 #include "support/gltf_rig_writer.h"
 #include "support/surface_distance.h"
 

@@ -7,12 +7,12 @@
 #include <string>
 
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/import_error.h"
-#include "scene/m_import.h"
-#include "scene/mesh_processing.h"
-#include "scene/model_store.h"
-#include "scene/obj_import.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/import_error.h"
+#include "scene/import/m_import.h"
+#include "scene/mesh/mesh_processing.h"
+#include "scene/store/model_store.h"
+#include "scene/import/obj_import.h"
 
 namespace toond::scene {
 namespace {

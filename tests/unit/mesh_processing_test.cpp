@@ -4,7 +4,7 @@
 #include <numbers>
 #include <vector>
 
-#include "scene/mesh_processing.h"
+#include "scene/mesh/mesh_processing.h"
 
 namespace toond::scene {
 namespace {

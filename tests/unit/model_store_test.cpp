@@ -8,9 +8,9 @@
 #include <set>
 #include <thread>
 
-#include "scene/demo_model.h"
-#include "scene/import_error.h"
-#include "scene/model_store.h"
+#include "scene/import/demo_model.h"
+#include "scene/import/import_error.h"
+#include "scene/store/model_store.h"
 
 namespace toond::scene {
 namespace {

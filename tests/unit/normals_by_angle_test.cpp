@@ -7,9 +7,9 @@
 #include <string>
 
 #include "model_checks.h"
-#include "scene/mesh_processing.h"
-#include "scene/normals_by_angle.h"
-#include "scene/obj_import.h"
+#include "scene/mesh/mesh_processing.h"
+#include "scene/mesh/normals_by_angle.h"
+#include "scene/import/obj_import.h"
 
 namespace toond::scene {
 namespace {

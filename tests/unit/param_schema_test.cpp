@@ -7,7 +7,7 @@
 
 #include "http/render_params_wire.h"
 #include "param_schema.h"
-#include "render/render_params.h"
+#include "render/plan/render_params.h"
 
 namespace toond::proto {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "http/render_params_wire.h"
 #include "param_schema.h"
-#include "render/pass_plan.h"
+#include "render/plan/pass_plan.h"
 
 namespace toond::render {
 namespace {

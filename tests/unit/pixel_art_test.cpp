@@ -16,7 +16,7 @@
 #include "image/webp_animation.h"
 #include "limit_error.h"
 #include "param_schema.h"
-#include "render/pixel_art_frame.h"
+#include "render/plan/pixel_art_frame.h"
 #include "request_error.h"
 #include "support/webp_frames.h"
 

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <vector>
 
-#include "scene/crease_edges.h"
-#include "scene/crease_profile.h"
-#include "scene/mesh_processing.h"
-#include "scene/position_weld.h"
+#include "scene/mesh/crease_edges.h"
+#include "scene/mesh/crease_profile.h"
+#include "scene/mesh/mesh_processing.h"
+#include "scene/mesh/position_weld.h"
 
 namespace toond::scene {
 namespace {

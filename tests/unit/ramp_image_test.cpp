@@ -1,5 +1,5 @@
 // An image ramp becomes the same stops a JSON ramp would give.
-#include "render/ramp_image.h"
+#include "render/frame/ramp_image.h"
 
 #include <gtest/gtest.h>
 

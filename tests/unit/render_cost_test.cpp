@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "model_checks.h"
-#include "render/pass_plan.h"
-#include "render/render_cost.h"
-#include "scene/crease_edges.h"
-#include "scene/duplicate_triangles.h"
-#include "scene/obj_import.h"
-#include "scene/render_cost_profile.h"
+#include "render/plan/pass_plan.h"
+#include "render/plan/render_cost.h"
+#include "scene/mesh/crease_edges.h"
+#include "scene/mesh/duplicate_triangles.h"
+#include "scene/import/obj_import.h"
+#include "scene/mesh/render_cost_profile.h"
 #include "support/costly_models.h"
 
 namespace toond {

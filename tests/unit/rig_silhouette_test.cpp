@@ -16,9 +16,9 @@
 #include <string>
 
 #include "model_checks.h"
-#include "render/gpu_model.h"
-#include "render/renderer.h"
-#include "scene/pose.h"
+#include "render/frame/gpu_model.h"
+#include "render/run/renderer.h"
+#include "scene/animation/pose.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"
 #include "toond_shader_files.h"

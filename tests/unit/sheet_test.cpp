@@ -11,11 +11,11 @@
 #include "limit_error.h"
 #include "param_schema.h"
 #include "presets.h"
-#include "render/camera.h"
+#include "render/plan/camera.h"
 #include "pipeline/budget.h"
 #include "http/render_params_wire.h"
-#include "render/sheet_atlas.h"
-#include "render/sheet_layout.h"
+#include "render/atlas/sheet_atlas.h"
+#include "render/plan/sheet_layout.h"
 
 namespace toond::render {
 namespace {

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/import_error.h"
-#include "scene/import_limits.h"
-#include "scene/mesh_processing.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/import_error.h"
+#include "scene/import/import_limits.h"
+#include "scene/mesh/mesh_processing.h"
 #include "support/mesh_file_writers.h"
 
 namespace toond::scene {

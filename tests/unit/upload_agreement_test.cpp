@@ -9,7 +9,7 @@
 #include "bundle_scan.h"
 #include "cli_test_helpers.h"
 #include "model_checks.h"
-#include "scene/obj_import.h"
+#include "scene/import/obj_import.h"
 
 namespace toond {
 namespace {

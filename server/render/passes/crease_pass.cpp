@@ -1,6 +1,6 @@
-#include "render/draw_pacing.h"
+#include "render/frame/draw_pacing.h"
 #include "render/passes/passes.h"
-#include "render/texture_unit.h"
+#include "render/frame/texture_unit.h"
 
 namespace toond::render {
 namespace {

@@ -1,9 +1,9 @@
 #include <cmath>
 
-#include "render/draw_pacing.h"
+#include "render/frame/draw_pacing.h"
 #include "render/passes/passes.h"
-#include "render/render_cost.h"
-#include "render/texture_unit.h"
+#include "render/plan/render_cost.h"
+#include "render/frame/texture_unit.h"
 
 namespace toond::render {
 
