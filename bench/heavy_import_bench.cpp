@@ -12,13 +12,13 @@
 #include <vector>
 
 #include "scene/import/bundle_import.h"
+#include "scene/import/obj_import.h"
 #include "scene/mesh/crease_edges.h"
 #include "scene/mesh/crease_profile.h"
 #include "scene/mesh/enclosure.h"
 #include "scene/mesh/extreme_points.h"
 #include "scene/mesh/mesh_lod.h"
 #include "scene/mesh/mesh_processing.h"
-#include "scene/import/obj_import.h"
 #include "stats.h"
 #include "support/import_timing.h"
 
@@ -54,14 +54,13 @@ void print_stages(const toond::test::HeavyInput& input, int n, int runs) {
     time("  reading: import_obj_bundle", [&] { model = toond::scene::import_obj_bundle(bundle); });
     Mesh& mesh = model.mesh;
     time("    group_by_position", [&] { (void)toond::scene::group_by_position(mesh.positions); });
-    time("    compute_outline_normals", [&] {
-      (void)toond::scene::compute_outline_normals(mesh.positions, mesh.indices, mesh.normals);
-    });
-    time("    compute_tangents", [&] {
-      (void)toond::scene::compute_tangents(mesh.positions, mesh.normals, mesh.texcoords, mesh.indices);
-    });
+    time("    compute_outline_normals",
+         [&] { (void)toond::scene::compute_outline_normals(mesh.positions, mesh.indices, mesh.normals); });
+    time("    compute_tangents",
+         [&] { (void)toond::scene::compute_tangents(mesh.positions, mesh.normals, mesh.texcoords, mesh.indices); });
     time("    extreme_points", [&] { (void)toond::scene::extreme_points(mesh.positions); });
-    time("    measure_creases", [&] { (void)toond::scene::measure_creases(mesh.positions, mesh.normals, mesh.indices); });
+    time("    measure_creases",
+         [&] { (void)toond::scene::measure_creases(mesh.positions, mesh.normals, mesh.indices); });
     time("  build_lod_chain", [&] { mesh.lods = toond::scene::build_lod_chain(mesh); });
     time("  optimize_for_vertex_cache", [&] { toond::scene::optimize_for_vertex_cache(mesh); });
     time("  classify_enclosures", [&] { toond::scene::classify_enclosures(mesh); });
@@ -84,10 +83,14 @@ int main(int argc, char** argv) {
   std::string stages;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
-    if (flag == "--scale") scale = std::atof(argv[i + 1]);
-    else if (flag == "--runs") runs = std::atoi(argv[i + 1]);
-    else if (flag == "--only") only = argv[i + 1];
-    else if (flag == "--stages") stages = argv[i + 1];
+    if (flag == "--scale")
+      scale = std::atof(argv[i + 1]);
+    else if (flag == "--runs")
+      runs = std::atoi(argv[i + 1]);
+    else if (flag == "--only")
+      only = argv[i + 1];
+    else if (flag == "--stages")
+      stages = argv[i + 1];
   }
   if (!stages.empty()) {
     for (const auto& input : toond::test::heavy_inputs()) {

@@ -41,7 +41,7 @@ struct Options {
   std::string obj_path;
   // upload
   bool quiet = false;
-  std::string scene;  // a glTF scene's index (POST /models?scene=N); empty: the file's default
+  std::string scene;         // a glTF scene's index (POST /models?scene=N); empty: the file's default
   std::string smooth_angle;  // POST /models?smooth_angle=D; empty: the daemon's default (30)
   std::string up;            // POST /models?up=y|z; empty: y
   // render, info
@@ -61,8 +61,7 @@ struct Options {
 // parameter so tests need not touch the process environment. Throws
 // UsageError. With help or version set, the verb's own requirements (a
 // path, -o) are not enforced.
-Options parse_args(const std::vector<std::string>& args,
-                   const std::optional<std::string>& env_server);
+Options parse_args(const std::vector<std::string>& args, const std::optional<std::string>& env_server);
 
 // TOOND_URL from the environment; an empty value counts as unset.
 std::optional<std::string> server_from_environment();

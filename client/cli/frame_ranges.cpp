@@ -59,8 +59,7 @@ const json* entry_of(const json& params, const std::string& key) {
     const std::string& segment = segments[i];
     if (node->is_object() && node->contains(segment)) {
       node = &(*node)[segment];
-    } else if (node->is_array() && !segment.empty() &&
-               segment.find_first_not_of("0123456789") == std::string::npos &&
+    } else if (node->is_array() && !segment.empty() && segment.find_first_not_of("0123456789") == std::string::npos &&
                std::stoul(segment) < node->size()) {
       node = &(*node)[std::stoul(segment)];
     } else {
@@ -76,7 +75,7 @@ const json* find_clip(const json& clips, const json& clip) {
   if (clip.is_number_integer()) {
     const auto index = clip.get<long long>();
     return index >= 0 && static_cast<std::size_t>(index) < clips.size() ? &clips[static_cast<std::size_t>(index)]
-                                                                          : nullptr;
+                                                                        : nullptr;
   }
   if (!clip.is_string()) return nullptr;
   const std::string name = clip;
@@ -114,12 +113,13 @@ std::optional<FrameRange> frame_range_of(std::string_view key, std::string_view 
   return FrameRange{first->value, last->value};
 }
 
-std::string range_in_seconds(const json& params, const std::string& key, const std::string& text,
-                             FrameRange frames, const ClipsOfModel& clips_of) {
+std::string range_in_seconds(const json& params, const std::string& key, const std::string& text, FrameRange frames,
+                             const ClipsOfModel& clips_of) {
   const std::string assignment = "--set " + key + "=" + text;
   const auto model = params.find("model");
   if (model == params.end() || !model->is_string() || !clips_of) {
-    throw UsageError(assignment + ": a range in frames needs a stored model (--model ID), whose clip's frame rate "
+    throw UsageError(assignment +
+                     ": a range in frames needs a stored model (--model ID), whose clip's frame rate "
                      "turns frames into seconds; upload it first (toon upload), or give the range in seconds");
   }
   const json* entry = entry_of(params, key);

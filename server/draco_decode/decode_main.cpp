@@ -58,13 +58,20 @@ int fail(const std::string& why) {
 // must be converted to float.
 int gltf_type_of(draco::DataType type) {
   switch (type) {
-    case draco::DT_INT8: return draco_wire::kByte;
-    case draco::DT_UINT8: return draco_wire::kUnsignedByte;
-    case draco::DT_INT16: return draco_wire::kShort;
-    case draco::DT_UINT16: return draco_wire::kUnsignedShort;
-    case draco::DT_UINT32: return draco_wire::kUnsignedInt;
-    case draco::DT_FLOAT32: return draco_wire::kFloat;
-    default: return 0;
+    case draco::DT_INT8:
+      return draco_wire::kByte;
+    case draco::DT_UINT8:
+      return draco_wire::kUnsignedByte;
+    case draco::DT_INT16:
+      return draco_wire::kShort;
+    case draco::DT_UINT16:
+      return draco_wire::kUnsignedShort;
+    case draco::DT_UINT32:
+      return draco_wire::kUnsignedInt;
+    case draco::DT_FLOAT32:
+      return draco_wire::kFloat;
+    default:
+      return 0;
   }
 }
 

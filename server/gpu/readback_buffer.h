@@ -40,7 +40,7 @@ class ReadbackBuffer {
   std::size_t bytes_;
   Buffer buffer_;
   const std::uint8_t* mapped_ = nullptr;  // valid while buffer_ lives
-  std::optional<Fence> packed_;  // set by start(), cleared by finish()
+  std::optional<Fence> packed_;           // set by start(), cleared by finish()
 };
 
 }  // namespace toond::gpu

@@ -23,8 +23,8 @@ class ServiceMetrics {
   // One finished render: whole request (parse to PNG), and the stages of
   // its Server-Timing header: queue wait, each pass, encoding (stage
   // `encode_stage`: "png", or "webp" for an animated sheet).
-  void observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms,
-                      double encode_ms, const std::string& encode_stage);
+  void observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms, double encode_ms,
+                      const std::string& encode_stage);
   // A render request's price (render/plan/render_cost.h) as it was admitted, its
   // lane, and the render threads' time its frames took: the two counters'
   // ratio is the seconds one Msample costs on this machine.

@@ -27,8 +27,7 @@ std::size_t find_clip(const scene::Model& model, const std::string& name, int in
   }
   if (const std::optional<std::size_t> found = rig.find_clip(name)) return *found;
   throw RequestError(422, "unknown_clip",
-                     pointer + ": the model has no clip \"" + name + "\"; its clips are " + rig.clip_names(),
-                     pointer);
+                     pointer + ": the model has no clip \"" + name + "\"; its clips are " + rig.clip_names(), pointer);
 }
 
 // Seconds as a message shows them.
@@ -55,8 +54,8 @@ scene::ClipRange checked_range(const scene::Clip& clip, scene::ClipRange range, 
   const std::string clip_span = "clip \"" + clip.name + "\" runs from 0 to " + seconds(clip.duration) + " s";
   const std::string asked = "[" + seconds(range.start) + ", " + seconds(range.end) + "]";
   if (!(range.end > range.start)) {
-    throw RequestError(422, "bad_range", pointer + ": " + asked + " ends where it starts or before; the end must be later",
-                       pointer);
+    throw RequestError(422, "bad_range",
+                       pointer + ": " + asked + " ends where it starts or before; the end must be later", pointer);
   }
   if (range.start < -kRangeSlack || range.end > clip.duration + kRangeSlack) {
     throw RequestError(422, "bad_range", pointer + ": " + asked + " reaches outside the clip: " + clip_span, pointer);
@@ -82,8 +81,8 @@ int sheet_clip_frames(const render::SheetClip& clip, const std::string& entry) {
   if (frames > 64) {
     throw RequestError(400, "invalid_parameter",
                        entry + "/fps: " + std::to_string(*clip.fps) + " frames a second make " +
-                           std::to_string(static_cast<long long>(frames)) + " frames of \"" + clip.name +
-                           "\" (" + std::to_string(clip.duration) + " s), more than 64",
+                           std::to_string(static_cast<long long>(frames)) + " frames of \"" + clip.name + "\" (" +
+                           std::to_string(clip.duration) + " s), more than 64",
                        entry + "/fps");
   }
   return static_cast<int>(frames);
@@ -114,12 +113,14 @@ void resolve_sheet_clips(render::RenderParams& params, const scene::Model& model
     clip.span = clip.range ? checked_range(found, *clip.range, entry + "/range") : scene::whole_clip(found);
     clip.duration = clip.span.end - clip.span.start;
     clip.frame_count = sheet_clip_frames(clip, entry);
-    frames += static_cast<std::size_t>(clip.frame_count) * sheet.pitches_deg.size() * static_cast<std::size_t>(sheet.frames);
+    frames +=
+        static_cast<std::size_t>(clip.frame_count) * sheet.pitches_deg.size() * static_cast<std::size_t>(sheet.frames);
   }
   if (frames > kMaxAnimatedSheetFrames) {
     throw RequestError(400, "invalid_parameter",
-                       "/sheet/animation: the sheet would have " + std::to_string(frames) + " frames (clips × pitches × " +
-                           "directions × frames per clip), more than " + std::to_string(kMaxAnimatedSheetFrames),
+                       "/sheet/animation: the sheet would have " + std::to_string(frames) +
+                           " frames (clips × pitches × " + "directions × frames per clip), more than " +
+                           std::to_string(kMaxAnimatedSheetFrames),
                        "/sheet/animation");
   }
 }

@@ -21,8 +21,8 @@ image::WebpAnimationOptions animation_options(const Request& request) {
   image::WebpAnimationOptions animation;
   animation.frame_ms = sheet.frame_ms;
   if (sheet.clips.empty()) return animation;
-  const bool one_shots = std::none_of(sheet.clips.begin(), sheet.clips.end(),
-                                      [](const render::SheetClip& clip) { return clip.loop; });
+  const bool one_shots =
+      std::none_of(sheet.clips.begin(), sheet.clips.end(), [](const render::SheetClip& clip) { return clip.loop; });
   animation.loop_count = one_shots ? 1 : 0;
   double elapsed = 0;
   for (const render::SheetFrame& frame : request.layout->frames) {
@@ -36,7 +36,8 @@ image::WebpAnimationOptions animation_options(const Request& request) {
 
 }  // namespace
 
-Encoded encode(const render::RenderOutput& out, const Request& request, const std::optional<nlohmann::ordered_json>& atlas) {
+Encoded encode(const render::RenderOutput& out, const Request& request,
+               const std::optional<nlohmann::ordered_json>& atlas) {
   Encoded encoded;
   if (request.params.sheet && request.params.sheet->animate) {
     encoded.body = image::encode_webp_animation(out.frames, animation_options(request));

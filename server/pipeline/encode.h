@@ -25,6 +25,7 @@ struct Encoded {
 
 // `atlas`: a sheet's (atlas.h), written into its PNG; an animation's goes
 // out with ?atlas=json alone.
-Encoded encode(const render::RenderOutput& out, const Request& request, const std::optional<nlohmann::ordered_json>& atlas);
+Encoded encode(const render::RenderOutput& out, const Request& request,
+               const std::optional<nlohmann::ordered_json>& atlas);
 
 }  // namespace toond::pipeline

@@ -17,7 +17,8 @@ namespace {
 // times of it, so a clip that throws vertices out of range shows there.
 void check_finite(const scene::SkinPose& pose, const scene::Bounds& framing, const std::string& pointer) {
   bool finite = pose.finite();
-  for (int axis = 0; axis < 3; ++axis) finite = finite && std::isfinite(framing.min[axis]) && std::isfinite(framing.max[axis]);
+  for (int axis = 0; axis < 3; ++axis)
+    finite = finite && std::isfinite(framing.min[axis]) && std::isfinite(framing.max[axis]);
   if (!finite) {
     throw RequestError(422, "bad_pose", pointer + ": the clip moves vertices beyond the range of numbers drawn",
                        pointer);
@@ -31,8 +32,9 @@ scene::ClipFraming framing_of_all(ClipFramings& framings, const render::JobObjec
   for (std::size_t c = 0; c < clips.size(); ++c) {
     const std::shared_ptr<const scene::ClipFraming> one =
         framings.get(object.model_key, *object.model, clips[c].index, clips[c].span);
-    all.bounds = c == 0 ? one->bounds
-                        : scene::Bounds{glm::min(all.bounds.min, one->bounds.min), glm::max(all.bounds.max, one->bounds.max)};
+    all.bounds =
+        c == 0 ? one->bounds
+               : scene::Bounds{glm::min(all.bounds.min, one->bounds.min), glm::max(all.bounds.max, one->bounds.max)};
     all.extremes.insert(all.extremes.end(), one->extremes.begin(), one->extremes.end());
   }
   return all;
@@ -44,8 +46,8 @@ std::shared_ptr<const scene::SkinPose> posed_at(const scene::Model& model, const
                                                 const scene::ClipFraming& framing, const std::string& pointer,
                                                 scene::Skinning where) {
   const scene::Rig& rig = *model.rig;
-  auto posed = std::make_shared<scene::SkinPose>(
-      scene::skin_pose(model.mesh, rig, scene::pose_nodes(rig, clip, time), where));
+  auto posed =
+      std::make_shared<scene::SkinPose>(scene::skin_pose(model.mesh, rig, scene::pose_nodes(rig, clip, time), where));
   check_finite(*posed, framing.bounds, pointer);
   posed->bounds = framing.bounds;
   posed->extremes = framing.extremes;

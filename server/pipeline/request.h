@@ -8,8 +8,8 @@
 #include "pipeline/clips.h"
 #include "pipeline/output_png.h"
 #include "render/plan/render_params.h"
-#include "render/run/render_service.h"
 #include "render/plan/sheet_layout.h"
+#include "render/run/render_service.h"
 #include "scene/store/model_pins.h"
 
 namespace toond::pipeline {

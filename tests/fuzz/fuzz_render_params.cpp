@@ -9,8 +9,8 @@
 #include "http/render_params_wire.h"
 #include "http/request_limits.h"
 #include "param_schema.h"
-#include "presets.h"
 #include "pipeline/budget.h"
+#include "presets.h"
 #include "render/plan/render_params.h"
 #include "request_error.h"
 

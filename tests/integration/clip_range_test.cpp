@@ -94,7 +94,8 @@ class ClipRange : public SharedDaemonTest {
   static image::Image single_render(const std::string& model, const json& atlas, const json& frame, const json& range,
                                     double time) {
     auto c = client();
-    const json camera = {{"yaw", frame["yaw"]}, {"pitch", frame["pitch"]}, {"distance", atlas["meta"]["camera"]["distance"]}};
+    const json camera = {
+        {"yaw", frame["yaw"]}, {"pitch", frame["pitch"]}, {"distance", atlas["meta"]["camera"]["distance"]}};
     return render_ok(c, {{"model", model},
                          {"width", kTile},
                          {"height", kTile},
@@ -157,7 +158,8 @@ std::size_t mask_difference(const std::vector<bool>& a, const std::vector<bool>&
 // The tiles of a sheet in atlas order (frames "0", "1", …).
 std::vector<image::Image> sheet_tiles(const image::Image& sheet, const json& atlas) {
   std::vector<image::Image> tiles;
-  for (std::size_t i = 0; i < atlas["frames"].size(); ++i) tiles.push_back(tile_of(sheet, atlas["frames"][std::to_string(i)]["frame"]));
+  for (std::size_t i = 0; i < atlas["frames"].size(); ++i)
+    tiles.push_back(tile_of(sheet, atlas["frames"][std::to_string(i)]["frame"]));
   return tiles;
 }
 
@@ -202,8 +204,9 @@ TEST_F(ClipRange, MinetestsWalkSheetMovesFillsItsTilesAndPosesLikeBlendersGltf) 
   std::size_t least_apart = tiles[0].rgba.size();
   for (int d = 0; d < kDirections; ++d) {
     for (int k = 0; k < kFrames; ++k) {
-      const std::size_t apart = mask_difference(alpha_mask(tiles[static_cast<std::size_t>(d * kFrames + k)]),
-                                                alpha_mask(tiles[static_cast<std::size_t>(d * kFrames + (k + 1) % kFrames)]));
+      const std::size_t apart =
+          mask_difference(alpha_mask(tiles[static_cast<std::size_t>(d * kFrames + k)]),
+                          alpha_mask(tiles[static_cast<std::size_t>(d * kFrames + (k + 1) % kFrames)]));
       least_apart = std::min(least_apart, apart);
       EXPECT_GE(apart, 20u) << "direction " << d << ": frame " << k << " and the next are alike";
     }
@@ -232,14 +235,16 @@ TEST_F(ClipRange, MinetestsWalkSheetMovesFillsItsTilesAndPosesLikeBlendersGltf) 
     const std::size_t next = i - i % kFrames + (i + 1) % kFrames;
     most_a_frame_apart = std::max(most_a_frame_apart, silhouette_overlap(alpha_mask(tiles[i]), alpha_mask(twin[next])));
   }
-  EXPECT_EQ(below, 0) << "tiles whose silhouette overlaps the glTF's below " << kLeastOverlap << "; least " << least_overlap;
+  EXPECT_EQ(below, 0) << "tiles whose silhouette overlaps the glTF's below " << kLeastOverlap << "; least "
+                      << least_overlap;
   EXPECT_GT(least_overlap, most_a_frame_apart) << "the same frames overlap no better than neighbouring ones";
-  std::printf("walk sheet, %d tiles: least silhouette difference between neighbouring frames %zu px; "
-              "bounding box height least %.3f of the tile (whole timeline framed: at most %.3f; least gain %.2fx); "
-              "silhouette overlap with Blender's glTF least %.4f, %d tile(s) below %.2f, %zu pixels differ in all "
-              "(a frame apart: at most %.4f)\n",
-              static_cast<int>(tiles.size()), least_apart, least_height, most_whole, least_gain, least_overlap, below,
-              kLeastOverlap, pixels_off, most_a_frame_apart);
+  std::printf(
+      "walk sheet, %d tiles: least silhouette difference between neighbouring frames %zu px; "
+      "bounding box height least %.3f of the tile (whole timeline framed: at most %.3f; least gain %.2fx); "
+      "silhouette overlap with Blender's glTF least %.4f, %d tile(s) below %.2f, %zu pixels differ in all "
+      "(a frame apart: at most %.4f)\n",
+      static_cast<int>(tiles.size()), least_apart, least_height, most_whole, least_gain, least_overlap, below,
+      kLeastOverlap, pixels_off, most_a_frame_apart);
 }
 
 // `time` counts from the range's start and wraps inside it: a tile of the
@@ -302,10 +307,11 @@ TEST_F(ClipRange, AOneShotEndsOnTheRangesLastPose) {
       EXPECT_GT(mask_difference(alpha_mask(tiles[0]), alpha_mask(tiles[kFrames - 1])), 50u)
           << range << ": the quarter stride ends where it starts";
     }
-    std::printf("range [%.4f, %.4f] s: one-shot's last tile vs the range's end: %zu pixels over; first vs last "
-                "tile silhouettes %zu px apart\n",
-                range[0].get<double>(), range[1].get<double>(), end_diff.pixels_over,
-                mask_difference(alpha_mask(tiles[0]), alpha_mask(tiles[kFrames - 1])));
+    std::printf(
+        "range [%.4f, %.4f] s: one-shot's last tile vs the range's end: %zu pixels over; first vs last "
+        "tile silhouettes %zu px apart\n",
+        range[0].get<double>(), range[1].get<double>(), end_diff.pixels_over,
+        mask_difference(alpha_mask(tiles[0]), alpha_mask(tiles[kFrames - 1])));
   }
 }
 
@@ -410,11 +416,19 @@ TEST_F(ClipRange, TheCliTakesARangeInSecondsOrInFrames) {
   const json request = sheet_request(b3d.id, {{"clip", "anim"}, {"frames", 2}, {"range", range}, {"loop", false}});
   const image::Image expected = sheet_of(request);
   const auto render = [&](const std::string& range_text, const std::string& png) {
-    return run_process({TOON_BINARY, "render", "--model", b3d.id, "--set", "width=96", "--set", "height=96",
-                        "--set", "background=[0,0,0,0]", "--set", "sheet.frames=4", "--set", "sheet.yaw_start=0",
-                        "--set", "sheet.animation.clip=anim", "--set", "sheet.animation.frames=2", "--set",
-                        "sheet.animation.loop=false", "--set", "sheet.animation.range=" + range_text, "-o",
-                        (dir / png).string(), "--server", daemon().url()});
+    return run_process({TOON_BINARY, "render",
+                        "--model",   b3d.id,
+                        "--set",     "width=96",
+                        "--set",     "height=96",
+                        "--set",     "background=[0,0,0,0]",
+                        "--set",     "sheet.frames=4",
+                        "--set",     "sheet.yaw_start=0",
+                        "--set",     "sheet.animation.clip=anim",
+                        "--set",     "sheet.animation.frames=2",
+                        "--set",     "sheet.animation.loop=false",
+                        "--set",     "sheet.animation.range=" + range_text,
+                        "-o",        (dir / png).string(),
+                        "--server",  daemon().url()});
   };
   char seconds[64];
   std::snprintf(seconds, sizeof seconds, "%.17g,%.17g", range[0].get<double>(), range[1].get<double>());
@@ -426,9 +440,9 @@ TEST_F(ClipRange, TheCliTakesARangeInSecondsOrInFrames) {
   EXPECT_EQ(image::decode_png(read_file(dir / "frames.png")).rgba, expected.rgba);
   // glTF keys by seconds: no frames to count.
   ASSERT_FALSE(blender_twin().id.empty());
-  const auto gltf = run_process({TOON_BINARY, "render", "--model", blender_twin().id, "--set",
-                                 "animation.clip=0", "--set", "animation.range=168f,187f", "-o",
-                                 (dir / "gltf.png").string(), "--server", daemon().url()});
+  const auto gltf =
+      run_process({TOON_BINARY, "render", "--model", blender_twin().id, "--set", "animation.clip=0", "--set",
+                   "animation.range=168f,187f", "-o", (dir / "gltf.png").string(), "--server", daemon().url()});
   EXPECT_EQ(gltf.status, 2);
   EXPECT_NE(gltf.err.find("frame rate"), std::string::npos) << gltf.err;
 }

@@ -1,7 +1,7 @@
 #include "support/import_timing.h"
 
-#include <algorithm>
 #include <malloc.h>
+#include <algorithm>
 
 #include <ctime>
 #include <limits>

@@ -11,10 +11,10 @@ namespace toond::test {
 
 struct ScalingMeasure {
   int n = 0;
-  std::size_t bytes = 0;          // of the bundle at n
-  double seconds_n = 0.0;         // median import_bundle CPU time at n
-  double seconds_2n = 0.0;        // the same at 2n
-  std::size_t triangles_n = 0;    // of the imported model at n
+  std::size_t bytes = 0;        // of the bundle at n
+  double seconds_n = 0.0;       // median import_bundle CPU time at n
+  double seconds_2n = 0.0;      // the same at 2n
+  std::size_t triangles_n = 0;  // of the imported model at n
   std::size_t triangles_2n = 0;
   double ratio() const { return seconds_2n / seconds_n; }
 };

@@ -15,8 +15,8 @@
 #include "render/frame/gpu_model.h"
 #include "render/plan/render_params.h"
 #include "render/run/renderer.h"
-#include "scene/mesh/model.h"
 #include "scene/animation/pose.h"
+#include "scene/mesh/model.h"
 
 namespace toond::test {
 

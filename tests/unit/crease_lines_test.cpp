@@ -23,10 +23,10 @@
 #include "image/srgb.h"
 #include "model_checks.h"
 #include "render/plan/frame_plan.h"
+#include "scene/animation/pose.h"
 #include "scene/import/bundle_import.h"
 #include "scene/store/model_library.h"
 #include "scene/store/model_store.h"
-#include "scene/animation/pose.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"
 #include "support/shared_models.h"
@@ -102,9 +102,10 @@ TEST_F(CreaseLines, TheWindmillsLinesCoverMostOfWhatTheScreenSpacePassDrew) {
   }
   ASSERT_GT(screen_space_lines, 1000u);
   const double share = static_cast<double>(covered) / static_cast<double>(screen_space_lines);
-  std::printf("[creases] windmill: the screen-space pass darkened %zu inner pixels, the crease lines %.3f of them "
-              "(%zu line pixels in all, %zu crease edges and %zu seam segments drawn)\n",
-              screen_space_lines, share, edge_lines, by_edges.crease_edges_drawn, by_edges.intersection_segments_drawn);
+  std::printf(
+      "[creases] windmill: the screen-space pass darkened %zu inner pixels, the crease lines %.3f of them "
+      "(%zu line pixels in all, %zu crease edges and %zu seam segments drawn)\n",
+      screen_space_lines, share, edge_lines, by_edges.crease_edges_drawn, by_edges.intersection_segments_drawn);
   EXPECT_GE(share, kLeastShareOfScreenSpaceLines);
 }
 
@@ -237,9 +238,10 @@ TEST_F(CreaseLines, TheDemoSpheresSeamOnItsBoxIsDrawn) {
                      glm::dvec3(demo->mesh.origin));
   }
   const ContactLines c = contact_lines(*demo, circle, {{"width", 512}, {"height", 512}});
-  std::printf("[creases] demo: %zu screen-space line pixels along the seam that shows, the default frame darkens "
-              "%.3f of them, the crease edges alone %.3f (%zu seam segments drawn)\n",
-              c.contact, c.drawn, c.edges_alone, c.segments_drawn);
+  std::printf(
+      "[creases] demo: %zu screen-space line pixels along the seam that shows, the default frame darkens "
+      "%.3f of them, the crease edges alone %.3f (%zu seam segments drawn)\n",
+      c.contact, c.drawn, c.edges_alone, c.segments_drawn);
   EXPECT_EQ(c.plan, "main,hull_outline,creases,resolve,readback");
   ASSERT_GT(c.contact, 30u);
   EXPECT_GT(c.segments_drawn, 0u);
@@ -264,9 +266,10 @@ TEST_F(CreaseLines, TheKenneyDogsSeamsAreDrawn) {
   ASSERT_TRUE(lines.complete);
   ASSERT_GT(lines.size(), 0u);
   const ContactLines c = contact_lines(dog, points_along(lines, dog.mesh.bounds), {{"width", 512}, {"height", 512}});
-  std::printf("[creases] kenney dog: %zu screen-space line pixels along the seams that show, the default frame "
-              "darkens %.3f of them, the crease edges alone %.3f (%zu seam segments drawn)\n",
-              c.contact, c.drawn, c.edges_alone, c.segments_drawn);
+  std::printf(
+      "[creases] kenney dog: %zu screen-space line pixels along the seams that show, the default frame "
+      "darkens %.3f of them, the crease edges alone %.3f (%zu seam segments drawn)\n",
+      c.contact, c.drawn, c.edges_alone, c.segments_drawn);
   EXPECT_EQ(c.plan, "main,hull_outline,creases,resolve,readback");
   ASSERT_GT(c.contact, 100u);
   EXPECT_GT(c.segments_drawn, 0u);
@@ -305,9 +308,10 @@ TEST_F(CreaseLines, APosedModelsSeamsAreWhereItsPartsCrossInThePose) {
   ASSERT_GT(pose->intersections[0].size(), 0u);
   const ContactLines c = contact_lines(player, points_along(pose->intersections[0], framing.bounds),
                                        {{"width", 512}, {"height", 512}}, pose);
-  std::printf("[creases] minetest player walking: %zu screen-space line pixels along the seams that show, the "
-              "default frame darkens %.3f of them, the crease edges alone %.3f (%zu seam segments drawn)\n",
-              c.contact, c.drawn, c.edges_alone, c.segments_drawn);
+  std::printf(
+      "[creases] minetest player walking: %zu screen-space line pixels along the seams that show, the "
+      "default frame darkens %.3f of them, the crease edges alone %.3f (%zu seam segments drawn)\n",
+      c.contact, c.drawn, c.edges_alone, c.segments_drawn);
   EXPECT_EQ(c.plan, "main,hull_outline,creases,resolve,readback");
   ASSERT_GT(c.contact, 30u);
   EXPECT_GT(c.segments_drawn, 0u);
@@ -320,8 +324,8 @@ std::string flat_box_obj(glm::dvec3 half, glm::dvec3 centre, double yaw_deg, int
   const glm::dmat4 place = glm::rotate(glm::translate(glm::dmat4(1.0), centre), glm::radians(yaw_deg), {0, 1, 0});
   std::string obj;
   for (int i = 0; i < 8; ++i) {
-    const glm::dvec4 p = place * glm::dvec4((i & 1) ? half.x : -half.x, (i & 2) ? half.y : -half.y,
-                                            (i & 4) ? half.z : -half.z, 1.0);
+    const glm::dvec4 p =
+        place * glm::dvec4((i & 1) ? half.x : -half.x, (i & 2) ? half.y : -half.y, (i & 4) ? half.z : -half.z, 1.0);
     obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
   }
   // Corner (i, j, k) of x, y, z is vertex first + i + 2j + 4k; faces wound
@@ -436,7 +440,8 @@ std::string ridge_obj(double rise, int segments) {
     obj += "v " + std::to_string(x) + " 0.0173 " + std::to_string(rise) + "\n";
     obj += "v " + std::to_string(x) + " 1 0\n";
   }
-  const glm::dvec3 left = glm::normalize(glm::dvec3(0.0, -rise, 1.0173)), right = glm::normalize(glm::dvec3(0.0, rise, 0.9827));
+  const glm::dvec3 left = glm::normalize(glm::dvec3(0.0, -rise, 1.0173)),
+                   right = glm::normalize(glm::dvec3(0.0, rise, 0.9827));
   obj += "vn " + std::to_string(left.x) + " " + std::to_string(left.y) + " " + std::to_string(left.z) + "\n";
   obj += "vn " + std::to_string(right.x) + " " + std::to_string(right.y) + " " + std::to_string(right.z) + "\n";
   for (int i = 0; i < segments; ++i) {
@@ -509,9 +514,10 @@ TEST_F(CreaseLines, ALineIsItsWidthAlongItsLengthAndAtItsJoins) {
         ASSERT_GT(join_columns, 0);
         ASSERT_GT(between_columns, 0);
         const double at_joins = joins / join_columns, elsewhere = between / between_columns;
-        std::printf("[creases] ridge rise %+.1f msaa %d width %.1f: worst error %.3f px, %.3f px at joins, %.3f "
-                    "between\n",
-                    rise, msaa, width, worst, at_joins, elsewhere);
+        std::printf(
+            "[creases] ridge rise %+.1f msaa %d width %.1f: worst error %.3f px, %.3f px at joins, %.3f "
+            "between\n",
+            rise, msaa, width, worst, at_joins, elsewhere);
         EXPECT_LE(worst, 0.5) << "rise " << rise << " msaa " << msaa << " width " << width;
         EXPECT_NEAR(at_joins, elsewhere, 0.1) << "rise " << rise << " msaa " << msaa << " width " << width;
       }

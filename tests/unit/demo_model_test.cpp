@@ -4,9 +4,9 @@
 
 #include "image/png_codec.h"
 #include "scene/import/demo_model.h"
+#include "scene/import/obj_import.h"
 #include "scene/mesh/mesh_processing.h"
 #include "scene/store/model_store.h"
-#include "scene/import/obj_import.h"
 
 namespace toond::scene {
 namespace {

@@ -22,12 +22,12 @@
 #include "render/plan/frame_plan.h"
 #include "render/plan/intersections_known.h"
 #include "render/plan/render_params.h"
-#include "scene/import/bundle_import.h"
-#include "scene/mesh/crease_edges.h"
-#include "scene/import/demo_model.h"
-#include "scene/mesh/intersection_lines.h"
-#include "scene/import/obj_import.h"
 #include "scene/animation/pose.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/demo_model.h"
+#include "scene/import/obj_import.h"
+#include "scene/mesh/crease_edges.h"
+#include "scene/mesh/intersection_lines.h"
 #include "support/in_process_render.h"
 #include "support/shared_models.h"
 
@@ -102,7 +102,8 @@ struct Soup {
     const auto at = [&](int r, int s) { return first + static_cast<std::uint32_t>(r * (segments + 1) + s); };
     for (int r = 0; r < rings; ++r) {
       for (int s = 0; s < segments; ++s) {
-        indices.insert(indices.end(), {at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r, s), at(r + 1, s + 1), at(r + 1, s)});
+        indices.insert(indices.end(),
+                       {at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r, s), at(r + 1, s + 1), at(r + 1, s)});
       }
     }
   }
@@ -333,8 +334,8 @@ TEST(IntersectionLines, TheSearchGivesUpAtItsDeadline) {
 TEST(IntersectionLines, APosesSeamsLieOnTwoPartsInThatPose) {
   setenv("TOOND_ASSIMP_CONVERTER", TOOND_ASSIMP_CONVERTER_PATH, 1);
   const std::filesystem::path folder = std::filesystem::path(TOOND_EXPORTED_DIR) / "minetest";
-  const Model player = import_bundle(
-      test_checks::make_bundle({{"character.b3d", test::read_file(folder / "character.b3d")}}));
+  const Model player =
+      import_bundle(test_checks::make_bundle({{"character.b3d", test::read_file(folder / "character.b3d")}}));
   ASSERT_TRUE(player.rig);
   const Mesh& mesh = player.mesh;
   const Rig& rig = *player.rig;
@@ -383,9 +384,10 @@ TEST(IntersectionLines, APosesSeamsLieOnTwoPartsInThatPose) {
       apart += glm::distance(carried[0].second, carried[1].second) > 0.005 * diagonal;
     }
   }
-  std::printf("[seams] minetest player walking: %zu seam segments in the pose, %zu at rest; of %zu rest seam ends, "
-              "%zu land more than 0.5 %% of the model apart carried by either part\n",
-              now.size(), mesh.intersections.size(), ends, apart);
+  std::printf(
+      "[seams] minetest player walking: %zu seam segments in the pose, %zu at rest; of %zu rest seam ends, "
+      "%zu land more than 0.5 %% of the model apart carried by either part\n",
+      now.size(), mesh.intersections.size(), ends, apart);
   EXPECT_GT(ends, 0u);
   EXPECT_GT(apart, 0u);
 }

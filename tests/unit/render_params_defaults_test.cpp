@@ -26,8 +26,8 @@ struct Mismatch {
 };
 
 TEST(RenderParamsDefaults, EveryInitialValueIsTheSchemasDefault) {
-  const RenderParams schema =
-      http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(nlohmann::json::object()));
+  const RenderParams schema = http::render_params_from_wire(
+      proto::ParamSchema::render_params().validate_and_complete(nlohmann::json::object()));
   const RenderParams initial;
   Mismatch m;
   m.check("width", schema.width, initial.width);
@@ -124,8 +124,8 @@ TEST(RenderParamsDefaults, AClipEntrysInitialValuesAreTheSchemasDefaults) {
       EXPECT_EQ(clip.range.has_value(), initial_clip.range.has_value()) << "sheet.animation.range in " << animation;
     }
   }
-  const RenderParams schema = http::render_params_from_wire(
-      proto::ParamSchema::render_params().validate_and_complete({{"animation", entry}}));
+  const RenderParams schema =
+      http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete({{"animation", entry}}));
   ASSERT_TRUE(schema.animation);
   const AnimationParams initial;
   EXPECT_EQ(schema.animation->time, initial.time) << "animation.time";

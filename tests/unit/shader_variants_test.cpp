@@ -7,6 +7,7 @@
 // Stage files are expanded with the renderer's own #include expansion.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -14,7 +15,6 @@
 #include <memory>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "gpu/shader_includes.h"
 #include "support/variant_cover.h"

@@ -8,13 +8,13 @@
 #include <utility>
 #include <vector>
 
+#include "http/render_params_wire.h"
 #include "limit_error.h"
 #include "param_schema.h"
-#include "presets.h"
-#include "render/plan/camera.h"
 #include "pipeline/budget.h"
-#include "http/render_params_wire.h"
+#include "presets.h"
 #include "render/atlas/sheet_atlas.h"
+#include "render/plan/camera.h"
 #include "render/plan/sheet_layout.h"
 
 namespace toond::render {
@@ -309,8 +309,7 @@ TEST(SheetBudget, TheWholeSheetCountsAgainstTheLimits) {
     EXPECT_EQ(e.limit(), "--max-output-pixels");
     EXPECT_EQ(e.status(), 422);
   }
-  const RenderParams too_fine =
-      params_of({{"width", 64}, {"height", 64}, {"msaa", 8}, {"sheet", {{"frames", 8}}}});
+  const RenderParams too_fine = params_of({{"width", 64}, {"height", 64}, {"msaa", 8}, {"sheet", {{"frames", 8}}}});
   try {
     check_render_budget(too_fine, limits);
     ADD_FAILURE() << "8 frames × msaa 8 passed a sample limit of 8 × msaa 4";

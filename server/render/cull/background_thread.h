@@ -5,12 +5,12 @@
 // every time; this one keeps both. Jobs run one at a time, in order. No GL.
 #include <atomic>
 #include <condition_variable>
-#include <exception>
 #include <deque>
+#include <exception>
 #include <functional>
 #include <future>
-#include <mutex>
 #include <memory>
+#include <mutex>
 #include <thread>
 
 namespace toond::render {

@@ -69,8 +69,8 @@ void CoverLayers::add_row_crossings(const glm::dvec2& a, const glm::dvec2& b) {
     // The first cell whose centre lies past x.
     const double past = std::clamp(x * per_px_ - 0.5, -1.0, static_cast<double>(columns_));
     const int column = past < 0.0 ? 0 : std::min(columns_, static_cast<int>(past) + 1);
-    crossings_[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns_ + 1) + static_cast<std::size_t>(column)] +=
-        step;
+    crossings_[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns_ + 1) +
+               static_cast<std::size_t>(column)] += step;
   }
 }
 

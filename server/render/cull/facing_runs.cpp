@@ -126,7 +126,8 @@ void FacingRuns::ranges_facing(std::size_t k, const MeshViewer& viewer, std::vec
   }
 }
 
-std::optional<MeshViewer> viewer_in_mesh(const glm::dmat4& model, const Viewer& frame_viewer, double world_per_px_at_w1) {
+std::optional<MeshViewer> viewer_in_mesh(const glm::dmat4& model, const Viewer& frame_viewer,
+                                         double world_per_px_at_w1) {
   const glm::dmat3 linear(model);
   const double scale = glm::length(linear[0]);
   if (!(scale > 0.0) || !std::isfinite(scale)) return std::nullopt;

@@ -91,6 +91,7 @@ class FacingRuns {
 // The frame's viewer (and a pixel's size in frame units at w = 1) seen
 // from a mesh placed by `model` (mesh → frame coordinates); nullopt unless
 // `model` is a similarity, under which alone the test carries over.
-std::optional<MeshViewer> viewer_in_mesh(const glm::dmat4& model, const Viewer& frame_viewer, double world_per_px_at_w1);
+std::optional<MeshViewer> viewer_in_mesh(const glm::dmat4& model, const Viewer& frame_viewer,
+                                         double world_per_px_at_w1);
 
 }  // namespace toond::render

@@ -60,7 +60,8 @@ struct HalfEdge {
 
 // Pairs every edge walked once each way by two triangles; any other edge
 // (open, shared by three or more, or walked the same way twice) keeps -1.
-std::vector<std::int32_t> edge_neighbours(std::span<const std::uint32_t> indices, const std::vector<std::uint32_t>& weld) {
+std::vector<std::int32_t> edge_neighbours(std::span<const std::uint32_t> indices,
+                                          const std::vector<std::uint32_t>& weld) {
   std::vector<std::int32_t> neighbours(indices.size(), -1);
   std::vector<HalfEdge> edges;
   edges.reserve(indices.size());
@@ -71,9 +72,8 @@ std::vector<std::int32_t> edge_neighbours(std::span<const std::uint32_t> indices
     if (a == b) continue;
     edges.push_back({std::min(a, b), std::max(a, b), e, a < b});
   }
-  std::sort(edges.begin(), edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return std::tie(x.low, x.high) < std::tie(y.low, y.high);
-  });
+  std::sort(edges.begin(), edges.end(),
+            [](const HalfEdge& x, const HalfEdge& y) { return std::tie(x.low, x.high) < std::tie(y.low, y.high); });
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t end = i + 1;
     while (end < edges.size() && edges[end].low == edges[i].low && edges[end].high == edges[i].high) ++end;
@@ -168,7 +168,8 @@ class CellCounts {
   // The cells a box the viewport holds overlaps (its corners are not
   // negative, so truncating floors).
   CellRect overlapped_by(const Box& box) const {
-    return {static_cast<int>(box.min.x * per_px_f_), std::min(static_cast<int>(box.max.x * per_px_f_), columns_ - 1) + 1,
+    return {static_cast<int>(box.min.x * per_px_f_),
+            std::min(static_cast<int>(box.max.x * per_px_f_), columns_ - 1) + 1,
             static_cast<int>(box.min.y * per_px_f_), std::min(static_cast<int>(box.max.y * per_px_f_), rows_ - 1) + 1};
   }
   // Whether one of these cells was counted.
@@ -191,9 +192,7 @@ class CellCounts {
 
  private:
   // Clamped first, so truncating is flooring (and no call to floor).
-  int column(double x) const {
-    return std::min(static_cast<int>(std::clamp(x, 0.0, width_) * per_px_), columns_ - 1);
-  }
+  int column(double x) const { return std::min(static_cast<int>(std::clamp(x, 0.0, width_) * per_px_), columns_ - 1); }
   int row(double y) const { return std::min(static_cast<int>(std::clamp(y, 0.0, height_) * per_px_), rows_ - 1); }
   std::size_t at(int x, int y) const { return static_cast<std::size_t>(y * (columns_ + 1) + x); }
   // Counted cells in columns [x0, x1) and rows [y0, y1).
@@ -306,7 +305,8 @@ FaceTurn face_turn(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c
   const glm::dvec2 ab = b - a, ac = c - a, bc = c - b;
   const double area2 = (ab.x * ac.y - ab.y * ac.x) * drawn_sign;
   // std::abs, not glm::abs: glm's compares and branches.
-  const double sides = std::abs(ab.x) + std::abs(ab.y) + std::abs(ac.x) + std::abs(ac.y) + std::abs(bc.x) + std::abs(bc.y);
+  const double sides =
+      std::abs(ab.x) + std::abs(ab.y) + std::abs(ac.x) + std::abs(ac.y) + std::abs(bc.x) + std::abs(bc.y);
   const double doubt = 2.0 * kVertexSlackPx * sides + 4.0 * kVertexSlackPx * kVertexSlackPx;
   const int drawn = area2 > doubt;
   const int away = area2 < -doubt;
@@ -348,8 +348,7 @@ void give_along_loops(std::span<const OutlineEdge> outline, std::size_t position
 // longer than between the whole moves by at most its ends' stretches. In
 // float, about the first corner's whole move, where its rounding is far
 // below the slack.
-bool hull_face_surely_turns(const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c,
-                            float side) {
+bool hull_face_surely_turns(const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c, float side) {
   const auto cross = [](const glm::vec2& u, const glm::vec2& v) { return u.x * v.y - u.y * v.x; };
   // About a's whole move, a's half move is `a0` and its whole move 0.
   const glm::vec2 origin = a.whole_move;
@@ -379,9 +378,12 @@ bool hull_face_surely_turns(const ProjectedVertex& a, const ProjectedVertex& b, 
 // where it skips none.
 float skipped_side(HiddenFaces hidden) {
   switch (hidden) {
-    case HiddenFaces::Back: return -1.0f;
-    case HiddenFaces::Front: return 1.0f;
-    case HiddenFaces::None: break;
+    case HiddenFaces::Back:
+      return -1.0f;
+    case HiddenFaces::Front:
+      return 1.0f;
+    case HiddenFaces::None:
+      break;
   }
   return 0.0f;
 }
@@ -390,7 +392,9 @@ float skipped_side(HiddenFaces hidden) {
 
 HullCullMesh::HullCullMesh(Stream positions, Stream outline_offsets, std::span<const std::uint32_t> indices,
                            std::span<const scene::Submesh> submeshes)
-    : positions_(std::move(positions)), offsets_(std::move(outline_offsets)), indices_(indices.begin(), indices.end()),
+    : positions_(std::move(positions)),
+      offsets_(std::move(outline_offsets)),
+      indices_(indices.begin(), indices.end()),
       submeshes_(submeshes.begin(), submeshes.end()) {
   used_ = indices_;
   std::sort(used_.begin(), used_.end());
@@ -437,8 +441,8 @@ std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, con
   covered.reset(view.viewport_width, view.viewport_height, cell);
   if (view.count_layers) {
     const std::pair<glm::dvec2, glm::dvec2> bounds = window_bounds(mesh, vertices);
-    layers.reset({view.viewport_width, view.viewport_height, cell, bounds.first, bounds.second},
-                 !view.drawn_clockwise, kVertexSlackPx);
+    layers.reset({view.viewport_width, view.viewport_height, cell, bounds.first, bounds.second}, !view.drawn_clockwise,
+                 kVertexSlackPx);
   }
   std::vector<OutlineEdge>& outline = scratch.outline;
   outline.clear();

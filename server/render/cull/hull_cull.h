@@ -114,7 +114,7 @@ struct HullCullView {
 // surely turn to the side it culls.
 struct HullSubset {
   std::vector<std::uint32_t> indices;
-  std::vector<scene::Submesh> submeshes;   // ranges of `indices`, the level's materials in its order
+  std::vector<scene::Submesh> submeshes;    // ranges of `indices`, the level's materials in its order
   std::vector<scene::Submesh> turned_away;  // the same materials' faces set apart, after all of those
   std::size_t culled_triangles = 0;         // left out: they draw nothing either way
 

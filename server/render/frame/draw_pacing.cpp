@@ -59,7 +59,8 @@ void DrawPacing::draw_elements_in_chunks(GLenum mode, std::size_t index_count, s
 
 void DrawPacing::draw_in_bands(int width, int height, double texels_per_pixel, const std::function<void()>& draw) {
   const double band_pixels = static_cast<double>(band_texels_) / std::max(texels_per_pixel, 1.0);
-  const int rows = band_texels_ == 0 ? height : std::clamp(static_cast<int>(band_pixels / std::max(width, 1)), 1, height);
+  const int rows =
+      band_texels_ == 0 ? height : std::clamp(static_cast<int>(band_pixels / std::max(width, 1)), 1, height);
   if (rows >= height) {
     if (Clock::now() > deadline_) {
       expired_ = true;
@@ -101,9 +102,9 @@ void DrawPacing::wait_for_chunk() {
   const auto left = std::chrono::duration_cast<std::chrono::nanoseconds>(deadline_ - Clock::now());
   // The flush bit sends the chunk to the driver, so it draws while this
   // thread waits.
-  const GLenum status = left.count() > 0 ? glClientWaitSync(drawn.get(), GL_SYNC_FLUSH_COMMANDS_BIT,
-                                                             static_cast<GLuint64>(left.count()))
-                                         : GL_TIMEOUT_EXPIRED;
+  const GLenum status =
+      left.count() > 0 ? glClientWaitSync(drawn.get(), GL_SYNC_FLUSH_COMMANDS_BIT, static_cast<GLuint64>(left.count()))
+                       : GL_TIMEOUT_EXPIRED;
   if (status == GL_TIMEOUT_EXPIRED || status == GL_WAIT_FAILED || Clock::now() > deadline_) expired_ = true;
 }
 

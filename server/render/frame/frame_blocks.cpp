@@ -33,8 +33,8 @@ FrameBlocks::FrameBlocks(const FrameContext& frame, gpu::UniformArena& arena) : 
   const std::size_t shading = arena.add(shading_block_for(frame));
   const std::size_t outline = arena.add(outline_block_for(frame));
   for (std::size_t i = 0; i < frame.objects.size(); ++i) {
-    objects_.push_back(arena.add(
-        ObjectBlock::placing(frame.model_matrices[i], frame.normal_matrices[i], frame.objects[i].skinned)));
+    objects_.push_back(
+        arena.add(ObjectBlock::placing(frame.model_matrices[i], frame.normal_matrices[i], frame.objects[i].skinned)));
   }
   frame_placement_ = arena.add(ObjectBlock{});
   arena.upload();

@@ -20,9 +20,9 @@ std::vector<LodUse> choose_levels(const FrameContext& frame) {
     const double scale =
         std::max({glm::length(glm::dvec3(m[0])), glm::length(glm::dvec3(m[1])), glm::length(glm::dvec3(m[2]))});
     const glm::dvec3 centre = glm::dvec3(m * glm::dvec4(glm::dvec3(object.bounds().centre()), 1.0));
-    const double px_per_unit = object.pose_stretch() * scale *
-                               pixels_per_unit(frame.camera, frame.orthographic(), centre,
-                                               object.bounds().radius() * scale, params.height);
+    const double px_per_unit =
+        object.pose_stretch() * scale *
+        pixels_per_unit(frame.camera, frame.orthographic(), centre, object.bounds().radius() * scale, params.height);
     const std::vector<double> errors = object.lod_errors();
     LodUse use;
     use.levels = object.lod_count();

@@ -16,8 +16,8 @@
 #include "render/plan/pass_plan.h"
 #include "render/plan/render_params.h"
 #include "render/plan/shadow_fit.h"
-#include "scene/mesh/model.h"
 #include "scene/animation/pose.h"
+#include "scene/mesh/model.h"
 
 namespace toond::render {
 
@@ -78,16 +78,16 @@ struct FrameContext {
   const CameraSetup& camera;
   std::vector<glm::mat4> model_matrices{};   // per object, rounded to float from scene.matrices
   std::vector<glm::mat3> normal_matrices{};  // inverse-transpose of their upper 3×3
-  glm::dmat4 clip{1.0};               // projection × view, in double
-  glm::mat4 view_projection{1.0f};    // the same, rounded for the shaders
+  glm::dmat4 clip{1.0};                      // projection × view, in double
+  glm::mat4 view_projection{1.0f};           // the same, rounded for the shaders
   Viewer viewer{};
   // Supersampling draws everything `supersample` times larger, pixel sizes
   // included, then averages back down.
   int supersample = 1;
   int draw_width = 0;
   int draw_height = 0;
-  float outline_px = 0;  // every outline method draws this one width, in drawn pixels
-  std::vector<LodUse> lods{};  // one per object; every pass draws an object at its level
+  float outline_px = 0;                // every outline method draws this one width, in drawn pixels
+  std::vector<LodUse> lods{};          // one per object; every pass draws an object at its level
   std::vector<FaceSkip> main_faces{};  // per object: of the main pass and the edge prepass
   std::optional<ShadowFit> shadow{};
   ShadingLights lights{};

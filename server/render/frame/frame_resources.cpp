@@ -15,7 +15,9 @@ scene::Model make_floor(const scene::Bounds& bounds, const FloorParams& params,
   const float y = bounds.min.y - bounds.radius() * 1e-3f;
   scene::Model floor;
   scene::Mesh& m = floor.mesh;
-  m.positions = {{c.x - half, y, c.z - half}, {c.x + half, y, c.z - half}, {c.x + half, y, c.z + half},
+  m.positions = {{c.x - half, y, c.z - half},
+                 {c.x + half, y, c.z - half},
+                 {c.x + half, y, c.z + half},
                  {c.x - half, y, c.z + half}};
   m.normals.assign(4, glm::vec3(0, 1, 0));
   m.outline_normals.assign(4, glm::vec3(0, 1, 0));
@@ -99,7 +101,8 @@ const gpu::Buffer& FrameResources::hull_indices(const std::vector<std::span<cons
   glNamedBufferData(hull_indices_.id(), static_cast<GLsizeiptr>(bytes), nullptr, GL_STREAM_DRAW);
   std::size_t at = 0;
   for (const auto& part : parts) {
-    glNamedBufferSubData(hull_indices_.id(), static_cast<GLintptr>(at), static_cast<GLsizeiptr>(part.size_bytes()), part.data());
+    glNamedBufferSubData(hull_indices_.id(), static_cast<GLintptr>(at), static_cast<GLsizeiptr>(part.size_bytes()),
+                         part.data());
     at += part.size_bytes();
   }
   return hull_indices_;

@@ -6,8 +6,8 @@
 #include <new>
 #include <span>
 
-#include "render/frame/draw_pacing.h"
 #include "gpu/gpu_error.h"
+#include "render/frame/draw_pacing.h"
 #include "render/frame/vertex_attribute.h"
 
 namespace toond::render {
@@ -143,11 +143,10 @@ GpuModel::GpuModel(const scene::Model& model) {
   for (std::size_t i = 0; i < mesh.lods.size(); ++i) add_creases(levels_[i + 1], mesh.lods[i].crease_edges);
 
   vertices_ = gpu::Buffer::create();
-  glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
-                       vertices.data(), 0);
+  glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(), 0);
   indices_ = gpu::Buffer::create();
-  glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
-                       indices.data(), 0);
+  glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
+                       0);
   gpu_bytes_ = vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
   seams_ = GpuSeams(seams_of(mesh));
   gpu_bytes_ += seams_.gpu_bytes();
@@ -243,8 +242,7 @@ void GpuModel::draw(const scene::Submesh& submesh, DrawPacing* pacing) const {
   draw_triangles(pacing, submesh.index_count, submesh.first_index);
 }
 
-std::size_t GpuModel::draw_facing(std::size_t lod, std::size_t k, const MeshViewer& viewer,
-                                  DrawPacing* pacing) const {
+std::size_t GpuModel::draw_facing(std::size_t lod, std::size_t k, const MeshViewer& viewer, DrawPacing* pacing) const {
   const Level& level = levels_[lod];
   const scene::Submesh& sub = level.submeshes[k];
   if (posed_) {

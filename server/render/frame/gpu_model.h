@@ -18,24 +18,24 @@
 
 #include "gpu/gl_object.h"
 #include "gpu/uniform_arena.h"
-#include "render/frame/gpu_skin.h"
 #include "render/cull/background_thread.h"
-#include "render/frame/draw_pacing.h"
 #include "render/cull/facing_runs.h"
-#include "render/frame/gpu_seams.h"
 #include "render/cull/hull_cull.h"
+#include "render/frame/draw_pacing.h"
+#include "render/frame/gpu_seams.h"
+#include "render/frame/gpu_skin.h"
 #include "render/frame/uniform_blocks.h"
-#include "scene/mesh/model.h"
 #include "scene/animation/pose.h"
+#include "scene/mesh/model.h"
 
 namespace toond::render {
 
 // What the passes choose variants and textures by; the colours a shader
 // reads are in the material's uniform block (bind_material).
 struct GpuMaterial {
-  std::string name;  // as in the MTL, for per-material request parameters
-  int texture = -1;         // index into GpuModel::textures()
-  int normal_texture = -1;  // tangent-space normal map, linear
+  std::string name;            // as in the MTL, for per-material request parameters
+  int texture = -1;            // index into GpuModel::textures()
+  int normal_texture = -1;     // tangent-space normal map, linear
   float alpha_cutoff = -1.0f;  // scene::Material::alpha_cutoff; negative: opaque
   bool unlit = false;
 };
@@ -89,7 +89,7 @@ class GpuModel {
   // from it (render/cull/facing_runs.h; all of them while posed, since the runs
   // hold the rest pose). Returns how many edges it drew.
   std::size_t draw_creases(std::size_t lod, double degrees, const std::optional<MeshViewer>& viewer,
-                            DrawPacing* pacing) const;
+                           DrawPacing* pacing) const;
   // How many of a level's segments where parts cross turn by more than
   // `degrees` (scene/mesh/intersection_lines.h): the rest pose's, or the
   // applied pose's (scene::SkinPose::intersections; none where it has
@@ -134,9 +134,9 @@ class GpuModel {
   gpu::Buffer vertices_;
   std::unique_ptr<GpuSkin> skin_;  // a rigged model's
   bool posed_ = false;
-  bool skinned_ = false;        // posed by the vertex stages
+  bool skinned_ = false;                            // posed by the vertex stages
   std::shared_ptr<const scene::SkinPose> applied_;  // what the buffers hold now
-  gpu::Buffer posed_vertices_;  // made by the first pose posed on the CPU
+  gpu::Buffer posed_vertices_;                      // made by the first pose posed on the CPU
   gpu::Buffer indices_;
   std::vector<gpu::Texture> textures_;
   std::vector<GpuMaterial> materials_;
@@ -150,7 +150,7 @@ class GpuModel {
     std::size_t cap_index_count = 0;
     std::shared_ptr<HullCullSlot> hull_cull = std::make_shared<HullCullSlot>();
     FacingRuns facing_runs{};
-    std::size_t first_crease_index = 0;  // the crease edges' range of the index buffer, four an edge
+    std::size_t first_crease_index = 0;             // the crease edges' range of the index buffer, four an edge
     std::array<std::uint32_t, 181> creased_over{};  // scene::CreaseEdges::edges_over
     // The crease edges' two faces each, as runs of FacingRuns::kRunTriangles
     // faces: half as many edges a run, in the edges' order.

@@ -34,7 +34,7 @@ class GpuSeams {
 
  private:
   struct Level {
-    std::size_t first_index = 0;  // four a segment
+    std::size_t first_index = 0;            // four a segment
     std::array<std::uint32_t, 181> over{};  // scene::IntersectionLines::edges_over
   };
   std::vector<Level> levels_;

@@ -46,8 +46,8 @@ MotionTables motion_tables(const scene::Rig& rig) {
       tables.influences.push_back(
           {offsets[motion.binding] + influence.joint, std::bit_cast<std::uint32_t>(influence.weight)});
     }
-    tables.motions.push_back({first, motion.influence_count, static_cast<std::uint32_t>(motion.morph_set + 1),
-                              motion.morph_vertex});
+    tables.motions.push_back(
+        {first, motion.influence_count, static_cast<std::uint32_t>(motion.morph_set + 1), motion.morph_vertex});
   }
   return tables;
 }

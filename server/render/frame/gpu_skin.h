@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "gpu/gl_object.h"
-#include "scene/mesh/model.h"
 #include "scene/animation/pose.h"
+#include "scene/mesh/model.h"
 #include "scene/mesh/rig.h"
 
 namespace toond::render {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "gpu/gl_object.h"
-#include "render/plan/pass_plan.h"
 #include "render/frame/pass_timing.h"
+#include "render/plan/pass_plan.h"
 
 namespace toond::render {
 

@@ -16,7 +16,8 @@ std::vector<RampStop> ramp_from_image(const scene::Texture& image) {
     if (static_cast<int>(stops.size()) == max_ramp_bands) {
       int runs = static_cast<int>(stops.size());
       for (int j = i; j < image.width; ++j) {
-        if (std::memcmp(texels + static_cast<std::size_t>(j) * 4, texels + static_cast<std::size_t>(j - 1) * 4, 3) != 0) ++runs;
+        if (std::memcmp(texels + static_cast<std::size_t>(j) * 4, texels + static_cast<std::size_t>(j - 1) * 4, 3) != 0)
+          ++runs;
       }
       throw RampImageError("the ramp image has " + std::to_string(runs) + " runs of equal texels; at most " +
                            std::to_string(max_ramp_bands) + " bands fit a ramp");

@@ -8,15 +8,15 @@
 #include <glm/glm.hpp>
 
 #include "render/frame/gpu_model.h"
-#include "scene/mesh/model.h"
 #include "scene/animation/pose.h"
+#include "scene/mesh/model.h"
 
 namespace toond::render {
 
 struct RenderObject {
   const GpuModel& gpu;
   const scene::Model& model;
-  glm::dmat4 transform{1.0};  // model → scene coordinates; the identity for a lone model
+  glm::dmat4 transform{1.0};                      // model → scene coordinates; the identity for a lone model
   std::shared_ptr<const scene::SkinPose> pose{};  // null: as imported
 };
 

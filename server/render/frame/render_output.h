@@ -20,7 +20,7 @@ struct RenderOutput {
   // sheet is laid out: the animation holds them one by one).
   std::vector<image::Image> frames;
   std::vector<PassTiming> timings;
-  std::string plan;  // PassPlan::describe()
+  std::string plan;          // PassPlan::describe()
   std::vector<LodUse> lods;  // one per object, in order
   // Samples per pixel the target really has: `msaa` clamped to the
   // driver's GL_MAX_SAMPLES (llvmpipe: 4).

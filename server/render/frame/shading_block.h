@@ -42,12 +42,12 @@ struct ShadingBlock {
   float two_tone_threshold = 0;
   float two_tone_shadow = 0;
   float padding_0 = 0;
-  glm::vec4 light_vec[kLights] = {};       // .xyz
-  glm::vec4 light_color[kLights] = {};     // .xyz
+  glm::vec4 light_vec[kLights] = {};        // .xyz
+  glm::vec4 light_color[kLights] = {};      // .xyz
   glm::ivec4 light_is_point[kLights] = {};  // .x
-  glm::vec4 light_radius[kLights] = {};    // .x
-  glm::vec4 ramp_at[kRampStops] = {};      // .x
-  glm::vec4 ramp_color[kRampStops] = {};   // .xyz
+  glm::vec4 light_radius[kLights] = {};     // .x
+  glm::vec4 ramp_at[kRampStops] = {};       // .x
+  glm::vec4 ramp_color[kRampStops] = {};    // .xyz
   glm::mat4 shadow_matrix{1.0f};
   std::int32_t shadow_light = -1;
   float shadow_texel = 0;

@@ -1,5 +1,5 @@
-#include "render/passes/passes.h"
 #include "render/frame/texture_unit.h"
+#include "render/passes/passes.h"
 
 namespace toond::render {
 

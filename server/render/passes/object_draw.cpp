@@ -1,7 +1,7 @@
 #include "render/passes/object_draw.h"
 
-#include "render/passes/pass_context.h"
 #include "render/frame/texture_unit.h"
+#include "render/passes/pass_context.h"
 
 namespace toond::render {
 namespace {

@@ -9,11 +9,11 @@
 #include "gpu/program_cache.h"
 #include "gpu/render_target.h"
 #include "render/cull/background_thread.h"
+#include "render/cull/hull_cull.h"
 #include "render/frame/draw_pacing.h"
 #include "render/frame/frame_blocks.h"
 #include "render/frame/frame_context.h"
 #include "render/frame/frame_resources.h"
-#include "render/cull/hull_cull.h"
 #include "render/frame/render_object.h"
 
 namespace toond::render {

@@ -117,7 +117,8 @@ CameraSetup fit_camera(const CameraParams& params, const scene::Bounds& bounds, 
     double sized_at = params.distance;
     if (!(sized_at > 0.0)) {
       double half_h = 0.0;
-      for (const ViewAxes& view : views) half_h = std::max(half_h, fitted_half_height(points, centre, view, aspect, kFrameFill));
+      for (const ViewAxes& view : views)
+        half_h = std::max(half_h, fitted_half_height(points, centre, view, aspect, kFrameFill));
       half_h /= zoom;
       if (!(half_h > 0.0)) half_h = radius / zoom;
       sized_at = half_h / tan_half_y;

@@ -65,7 +65,7 @@ struct ScenePart {
 // point at the scene's middle, so that float maths on the GPU stays precise
 // however far the scene sits from its own origin.
 struct SceneFrame {
-  glm::dvec3 origin{0.0};           // in scene coordinates
+  glm::dvec3 origin{0.0};            // in scene coordinates
   std::vector<glm::dmat4> matrices;  // per part: mesh coordinates → frame
   scene::Bounds bounds;              // union of the parts' bounds, frame coordinates
   std::vector<glm::dvec3> outline;   // every part's extreme points, frame coordinates

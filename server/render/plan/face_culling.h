@@ -40,7 +40,7 @@ struct FaceSkip {
 
 // Where the camera is and which way it looks, in scene coordinates.
 struct Viewer {
-  glm::dvec3 eye{0.0};      // perspective views
+  glm::dvec3 eye{0.0};                 // perspective views
   glm::dvec3 forward{0.0, 0.0, -1.0};  // orthographic views: the direction of every ray
   bool orthographic = false;
 };

@@ -12,8 +12,8 @@
 #include "render/plan/pass_plan.h"
 #include "render/plan/render_cost.h"
 #include "render/plan/render_params.h"
-#include "scene/mesh/model.h"
 #include "scene/animation/pose.h"
+#include "scene/mesh/model.h"
 
 namespace toond::render {
 

@@ -4,8 +4,7 @@
 
 namespace toond::render {
 
-double outline_width_px(const OutlineParams& outline, const CameraSetup& camera, bool orthographic,
-                        int output_height) {
+double outline_width_px(const OutlineParams& outline, const CameraSetup& camera, bool orthographic, int output_height) {
   if (outline.units == OutlineUnits::Pixels) return std::min<double>(outline.width, kMaxOutlinePx);
   // projection[1][1] maps a view-space height to NDC (at depth 1 in
   // perspective), and NDC spans `output_height` pixels over 2 units.

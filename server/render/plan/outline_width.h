@@ -14,7 +14,6 @@ namespace toond::render {
 inline constexpr double kMaxOutlinePx = 64.0;
 
 // The outline's width in output pixels (before supersampling).
-double outline_width_px(const OutlineParams& outline, const CameraSetup& camera, bool orthographic,
-                        int output_height);
+double outline_width_px(const OutlineParams& outline, const CameraSetup& camera, bool orthographic, int output_height);
 
 }  // namespace toond::render

@@ -6,26 +6,37 @@ namespace toond::render {
 
 const char* pass_name(Pass pass) {
   switch (pass) {
-    case Pass::Shadow: return "shadow";
-    case Pass::Main: return "main";
-    case Pass::Floor: return "floor";
-    case Pass::HullOutline: return "hull_outline";
-    case Pass::Wireframe: return "wireframe";
-    case Pass::Creases: return "creases";
-    case Pass::EdgePrepass: return "edge_prepass";
-    case Pass::Edges: return "edges";
-    case Pass::Layer: return "layer";
-    case Pass::Resolve: return "resolve";
-    case Pass::Readback: return "readback";
-    case Pass::Unpremultiply: return "unpremultiply";
-    case Pass::Downsample: return "downsample";
+    case Pass::Shadow:
+      return "shadow";
+    case Pass::Main:
+      return "main";
+    case Pass::Floor:
+      return "floor";
+    case Pass::HullOutline:
+      return "hull_outline";
+    case Pass::Wireframe:
+      return "wireframe";
+    case Pass::Creases:
+      return "creases";
+    case Pass::EdgePrepass:
+      return "edge_prepass";
+    case Pass::Edges:
+      return "edges";
+    case Pass::Layer:
+      return "layer";
+    case Pass::Resolve:
+      return "resolve";
+    case Pass::Readback:
+      return "readback";
+    case Pass::Unpremultiply:
+      return "unpremultiply";
+    case Pass::Downsample:
+      return "downsample";
   }
   return "?";
 }
 
-bool PassPlan::has(Pass pass) const {
-  return std::find(passes.begin(), passes.end(), pass) != passes.end();
-}
+bool PassPlan::has(Pass pass) const { return std::find(passes.begin(), passes.end(), pass) != passes.end(); }
 
 std::string PassPlan::describe() const {
   std::string out;
@@ -108,8 +119,12 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
                                                               : ToonFeature::RoundCeil);
       }
       break;
-    case ShadingMode::Phong: plan.shading.set(ToonFeature::ModePhong); break;
-    case ShadingMode::Flat: plan.shading.set(ToonFeature::ModeFlat); break;
+    case ShadingMode::Phong:
+      plan.shading.set(ToonFeature::ModePhong);
+      break;
+    case ShadingMode::Flat:
+      plan.shading.set(ToonFeature::ModeFlat);
+      break;
   }
   // Lit modes loop over the lights with a compile-time bound (see toon.frag).
   if (params.mode != ShadingMode::Flat) {
@@ -138,10 +153,12 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
     plan.shading.set(ToonFeature::RimMaskShadow, params.rim.mask == RimMask::Shadow);
   }
   if (params.halftone.enabled && params.mode != ShadingMode::Flat) {
-    plan.shading.set(params.halftone.style == HalftoneStyle::Dots ? ToonFeature::HalftoneDots : ToonFeature::HalftoneChecker);
+    plan.shading.set(params.halftone.style == HalftoneStyle::Dots ? ToonFeature::HalftoneDots
+                                                                  : ToonFeature::HalftoneChecker);
   }
   if (params.contour.enabled) {
-    plan.shading.set(params.contour.style == ContourStyle::Even ? ToonFeature::ContourEven : ToonFeature::ContourFresnel);
+    plan.shading.set(params.contour.style == ContourStyle::Even ? ToonFeature::ContourEven
+                                                                : ToonFeature::ContourFresnel);
   }
 
   if (params.outline.any()) {
@@ -172,8 +189,11 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
     plan.alpha_tested_outlines = model.has_masked_materials;
     plan.outline.set(OutlineFeature::AlphaMask, plan.alpha_tested_outlines);
     switch (params.outline.color_mode) {
-      case OutlineColorMode::Fixed: break;
-      case OutlineColorMode::Material: plan.outline.set(OutlineFeature::Material); break;
+      case OutlineColorMode::Fixed:
+        break;
+      case OutlineColorMode::Material:
+        plan.outline.set(OutlineFeature::Material);
+        break;
       case OutlineColorMode::Texture:
         // Without textures the texture mode falls back to the material colour.
         plan.outline.set(plan.sample_textures ? OutlineFeature::Texture : OutlineFeature::Material);

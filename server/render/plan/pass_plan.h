@@ -12,18 +12,18 @@
 namespace toond::render {
 
 enum class Pass {
-  Shadow,       // depth from the shadow-casting light
-  Main,         // cel/phong/flat shading of the model; marks the stencil for the hull
-  Floor,        // the ground plane (no stencil mark: it gets no outline)
-  HullOutline,  // inverted hull outside the stencil mark
-  Wireframe,    // back-face edges widened into lines
-  Creases,      // crease lines along the model's crease edges (scene/mesh/crease_edges.h)
-  EdgePrepass,  // normals and eye distances for the edge pass
-  Edges,        // screen-space depth/normal discontinuities (or creases only)
-  Layer,        // a data layer (depth, normal or id) in place of the colour
-  Resolve,      // multisample resolve
-  Downsample,   // supersampled image averaged to the output size, on the GPU
-  Readback,     // pixels back to the CPU
+  Shadow,         // depth from the shadow-casting light
+  Main,           // cel/phong/flat shading of the model; marks the stencil for the hull
+  Floor,          // the ground plane (no stencil mark: it gets no outline)
+  HullOutline,    // inverted hull outside the stencil mark
+  Wireframe,      // back-face edges widened into lines
+  Creases,        // crease lines along the model's crease edges (scene/mesh/crease_edges.h)
+  EdgePrepass,    // normals and eye distances for the edge pass
+  Edges,          // screen-space depth/normal discontinuities (or creases only)
+  Layer,          // a data layer (depth, normal or id) in place of the colour
+  Resolve,        // multisample resolve
+  Downsample,     // supersampled image averaged to the output size, on the GPU
+  Readback,       // pixels back to the CPU
   Unpremultiply,  // the lines layer's colour divided by its alpha (on the CPU, without supersampling)
 };
 const char* pass_name(Pass pass);
@@ -33,7 +33,7 @@ struct ModelTraits {
   bool has_textures = false;
   bool has_normal_maps = false;
   bool has_vertex_colors = false;
-  bool hard_edged = false;  // creased at the requested crease angle (scene::CreaseProfile)
+  bool hard_edged = false;        // creased at the requested crease angle (scene::CreaseProfile)
   bool has_crease_edges = false;  // some edge turns by more than the crease angle (scene::CreaseEdges)
   // Some segment where parts cross turns by more than the crease angle
   // (scene/mesh/intersection_lines.h).

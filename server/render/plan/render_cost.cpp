@@ -21,8 +21,11 @@ int frame_geometry_passes(const PassPlan& plan) {
       case Pass::HullOutline:
       case Pass::Wireframe:
       case Pass::EdgePrepass:
-      case Pass::Layer: ++n; break;
-      default: break;
+      case Pass::Layer:
+        ++n;
+        break;
+      default:
+        break;
     }
   }
   return n;
@@ -36,8 +39,11 @@ int frame_wide_passes(const PassPlan& plan) {
       case Pass::Edges:
       case Pass::Resolve:
       case Pass::Downsample:
-      case Pass::Readback: ++n; break;
-      default: break;
+      case Pass::Readback:
+        ++n;
+        break;
+      default:
+        break;
     }
   }
   return n;
@@ -45,8 +51,8 @@ int frame_wide_passes(const PassPlan& plan) {
 
 // One pass over every mesh at `width` × `height` drawn pixels, seen along
 // `view` (none: from their densest direction).
-RenderCost pass_cost(std::span<const scene::Mesh* const> meshes, const std::optional<glm::dvec3>& view,
-                     double width, double height, double samples) {
+RenderCost pass_cost(std::span<const scene::Mesh* const> meshes, const std::optional<glm::dvec3>& view, double width,
+                     double height, double samples) {
   RenderCost cost;
   const double diagonal_tiles = std::hypot(width, height) / kTilePixels;
   for (const scene::Mesh* mesh : meshes) {

@@ -29,12 +29,8 @@ glm::dmat4 SceneObject::matrix() const {
   return m * s;
 }
 
-float srgb_to_linear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
-glm::vec3 srgb_to_linear(const glm::vec3& c) {
-  return {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)};
-}
+glm::vec3 srgb_to_linear(const glm::vec3& c) { return {srgb_to_linear(c.r), srgb_to_linear(c.g), srgb_to_linear(c.b)}; }
 
 }  // namespace toond::render

@@ -39,8 +39,8 @@ struct CameraParams {
   double yaw_deg = 30;
   double pitch_deg = 15;
   double fov_deg = 35;
-  double distance = 0;  // 0: fit to the model's bounds
-  double zoom = 1;      // divides the fitted distance or frame; ignored with distance set
+  double distance = 0;    // 0: fit to the model's bounds
+  double zoom = 1;        // divides the fitted distance or frame; ignored with distance set
   glm::dvec2 shift{0.0};  // eye and target moved along view right/up, in bounding radii
   // Not on the wire: more views, as (yaw, pitch) in degrees, that a fitted
   // distance or orthographic frame must also hold. A sprite sheet lists all
@@ -62,7 +62,7 @@ struct AnimationParams {
 // One clip of an animated sheet (`sheet.animation`): as asked, then, once
 // the pipeline has looked it up in the model, resolved.
 struct SheetClip {
-  std::string clip;  // by name; or
+  std::string clip;     // by name; or
   int clip_index = -1;  // by index (>= 0)
   std::optional<int> frames;
   std::optional<double> fps;
@@ -74,26 +74,26 @@ struct SheetClip {
   std::size_t index = 0;  // into the model's Rig::clips
   std::string name;
   scene::ClipRange span;  // what the row plays: `range`, or the whole clip
-  double duration = 0;  // span's length, seconds
-  int frame_count = 0;  // columns of its rows
+  double duration = 0;    // span's length, seconds
+  int frame_count = 0;    // columns of its rows
 };
 
 // A sprite sheet (the `sheet` block), with every absent field resolved:
 // frames at yaw_start + i × yaw_step, for each pitch in turn.
 struct SheetParams {
   int frames = 8;
-  int columns = 8;  // absent on the wire: `frames`, one row per pitch
-  double yaw_start_deg = 0;  // absent: the camera's yaw
-  double yaw_step_deg = 45;  // absent: 360 / frames
+  int columns = 8;                  // absent on the wire: `frames`, one row per pitch
+  double yaw_start_deg = 0;         // absent: the camera's yaw
+  double yaw_step_deg = 45;         // absent: 360 / frames
   std::vector<double> pitches_deg;  // absent: the camera's pitch alone
-  int padding = 0;  // pixels between neighbouring tiles
+  int padding = 0;                  // pixels between neighbouring tiles
   // Pixel art (`sheet.pixel_art`): tiles drawn at 1/scale, quantised to one
   // palette for the whole sheet, blown up by `scale`. Unset: tiles as drawn.
   struct PixelArt {
-    int scale = 4;      // width and height are multiples of it (checked by the pipeline, sheet_checks.h)
-    int colors = 16;    // size of the computed palette when `palette` is empty
+    int scale = 4;    // width and height are multiples of it (checked by the pipeline, sheet_checks.h)
+    int colors = 16;  // size of the computed palette when `palette` is empty
     std::vector<std::array<std::uint8_t, 3>> palette;  // sRGB; empty: computed over the sheet
-    bool dither = false;  // ordered 4×4 Bayer dithering
+    bool dither = false;                               // ordered 4×4 Bayer dithering
     // sprite: 1-art-pixel outline, only readable inner lines, no contour;
     // as_given: the request's line settings as they are.
     enum class Lines { Sprite, AsGiven } lines = Lines::Sprite;
@@ -172,8 +172,8 @@ struct ShadowParams {
 struct FloorParams {
   bool enabled = false;
   glm::vec3 color = srgb_to_linear(glm::vec3(0.85f, 0.85f, 0.82f));  // linear
-  float size = 4;         // half side, in bounding radii
-  std::string texture;    // bundle path; empty: plain colour
+  float size = 4;                                                    // half side, in bounding radii
+  std::string texture;                                               // bundle path; empty: plain colour
   float texture_repeat = 4;
   // The decoded `texture`, filled by the pipeline (which reads bundles)
   // before the job reaches the render thread; null for a plain floor.
@@ -240,7 +240,7 @@ struct SceneObject {
 };
 
 struct RenderParams {
-  std::string model;  // empty: the demo model (or the scene's objects)
+  std::string model;                 // empty: the demo model (or the scene's objects)
   std::vector<SceneObject> objects;  // empty: `model` alone, untransformed
   int width = 512;
   int height = 512;
@@ -269,10 +269,10 @@ struct RenderParams {
   OutlineParams outline;
   int msaa = 4;
   int supersample = 1;
-  bool lod_auto = true;       // false: `lod` "full", every triangle
-  double lod_error_px = 0.5;  // the most a level's error may project to, output pixels
-  int png_compression = 3;    // zlib level of the answer
-  std::optional<SheetParams> sheet;  // unset: one image
+  bool lod_auto = true;                      // false: `lod` "full", every triangle
+  double lod_error_px = 0.5;                 // the most a level's error may project to, output pixels
+  int png_compression = 3;                   // zlib level of the answer
+  std::optional<SheetParams> sheet;          // unset: one image
   std::optional<AnimationParams> animation;  // unset: the rest pose
   Output output = Output::Color;
 };

@@ -10,11 +10,12 @@ namespace {
 // enum's Count but given fewer names fills up with nulls: all_named keeps
 // the two in step.
 constexpr std::array<const char*, static_cast<std::size_t>(ToonFeature::Count)> kToonDefines = {
-    "MODE_CEL",         "MODE_PHONG",      "MODE_FLAT",     "ROUND_CEIL",   "ROUND_FLOOR",  "ROUND_ROUND",
-    "TWO_TONE",         "RAMP",            "BAND_AA",       "BASE_WHITE",   "HAS_TEXTURE",  "VERTEX_COLOR",
-    "NORMAL_MAP",       "SHADE_COLOR",     "COMBINE_SUM",   "HAS_POINT_LIGHTS", "SPECULAR", "RIM",
-    "RIM_MASK_LIT",     "RIM_MASK_SHADOW", "CONTOUR_EVEN",  "CONTOUR_FRESNEL", "HALFTONE_DOTS",
-    "HALFTONE_CHECKER", "SHADOWS",         "ALPHA_MASK",    "LINES_ONLY"};
+    "MODE_CEL",         "MODE_PHONG",      "MODE_FLAT",     "ROUND_CEIL",       "ROUND_FLOOR",
+    "ROUND_ROUND",      "TWO_TONE",        "RAMP",          "BAND_AA",          "BASE_WHITE",
+    "HAS_TEXTURE",      "VERTEX_COLOR",    "NORMAL_MAP",    "SHADE_COLOR",      "COMBINE_SUM",
+    "HAS_POINT_LIGHTS", "SPECULAR",        "RIM",           "RIM_MASK_LIT",     "RIM_MASK_SHADOW",
+    "CONTOUR_EVEN",     "CONTOUR_FRESNEL", "HALFTONE_DOTS", "HALFTONE_CHECKER", "SHADOWS",
+    "ALPHA_MASK",       "LINES_ONLY"};
 constexpr std::array<const char*, static_cast<std::size_t>(OutlineFeature::Count)> kOutlineDefines = {
     "OUTLINE_MATERIAL", "OUTLINE_TEXTURE", "LINE_SEGMENT", "ALPHA_MASK"};
 constexpr std::array<const char*, static_cast<std::size_t>(DepthFeature::Count)> kDepthDefines = {"ALPHA_MASK"};
@@ -69,6 +70,5 @@ std::vector<std::string> ToonVariant::defines() const {
   if (has(ToonFeature::Shadows) && shadow_pcf > 0) out.push_back("SHADOW_PCF " + std::to_string(shadow_pcf));
   return out;
 }
-
 
 }  // namespace toond::render

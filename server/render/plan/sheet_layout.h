@@ -9,10 +9,10 @@
 namespace toond::render {
 
 struct SheetFrame {
-  int index = 0;   // 0 .. frames × pitches − 1, row by row
-  int x = 0;       // the tile's top-left pixel in the sheet
+  int index = 0;  // 0 .. frames × pitches − 1, row by row
+  int x = 0;      // the tile's top-left pixel in the sheet
   int y = 0;
-  double yaw_deg = 0;    // in [0, 360)
+  double yaw_deg = 0;  // in [0, 360)
   double pitch_deg = 0;
   // An animated sheet's frame: which of SheetParams::clips, at which time
   // (seconds on the file's time base, inside the clip's span).

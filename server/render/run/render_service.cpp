@@ -152,8 +152,7 @@ void RenderService::short_render_done() {
 
 void RenderService::yield_to_short_renders() {
   std::unique_lock lock(mutex_);
-  short_idle_.wait_for(lock, kLongLaneYield,
-                       [&] { return stopping_ || (short_lane_.empty() && short_drawing_ == 0); });
+  short_idle_.wait_for(lock, kLongLaneYield, [&] { return stopping_ || (short_lane_.empty() && short_drawing_ == 0); });
 }
 
 std::size_t RenderService::gpu_models_loaded() const {
@@ -216,8 +215,8 @@ void RenderService::run(std::size_t worker, std::promise<void> started) {
         break;
       } catch (const std::exception& e) {
         std::cerr << "toond: cannot make a new GL context: " << e.what() << "; retrying in 1 s\n";
-        fail_queued(std::make_exception_ptr(gpu::GpuReset(
-            std::string("the GL context was lost and a new one could not be made yet: ") + e.what())));
+        fail_queued(std::make_exception_ptr(
+            gpu::GpuReset(std::string("the GL context was lost and a new one could not be made yet: ") + e.what())));
         std::unique_lock lock(mutex_);
         if (wake_.wait_for(lock, std::chrono::seconds(1), [&] { return stopping_; })) return;
       }
@@ -243,7 +242,9 @@ void RenderService::fail_queued(const std::exception_ptr& error) {
 // What one render thread draws with on its current context.
 struct RenderService::Worker {
   Worker(std::size_t thread_index, std::unique_ptr<gpu::ShaderSources> sources, const Options& options)
-      : index(thread_index), programs(std::move(sources)), models(options.gpu_model_capacity, options.gpu_model_bytes),
+      : index(thread_index),
+        programs(std::move(sources)),
+        models(options.gpu_model_capacity, options.gpu_model_bytes),
         renderer(programs) {
     renderer.set_frames_in_flight(options.frames_in_flight > 1);
   }
@@ -259,7 +260,7 @@ struct RenderService::Worker {
 struct RenderService::Started {
   Task task;
   std::unique_ptr<ShortTurn> turn;  // a short task counts as drawing until answered
-  std::size_t number = 0;  // the thread's renders when it started
+  std::size_t number = 0;           // the thread's renders when it started
   std::unique_ptr<PendingFrame> frame;
   std::exception_ptr failure;
   std::optional<PassTiming> posing;  // pose_vertices, where the CPU posed
@@ -270,8 +271,7 @@ void RenderService::record_cache_use(const Worker& worker) {
   cache_use_[worker.index] = {worker.models.size(), worker.models.bytes()};
 }
 
-bool RenderService::serve(std::size_t index, std::unique_ptr<gpu::ShaderSources> sources,
-                          std::promise<void>* started) {
+bool RenderService::serve(std::size_t index, std::unique_ptr<gpu::ShaderSources> sources, std::promise<void>* started) {
   Worker worker(index, std::move(sources), options_);
   if (started) started->set_value();
   // With frames in flight, the task whose pixels are on their way back.

@@ -23,13 +23,13 @@
 
 #include "gpu/egl_context.h"
 #include "gpu/shader_source.h"
-#include "render/run/fair_queue.h"
 #include "render/plan/frame_plan.h"
 #include "render/plan/render_params.h"
-#include "render/run/renderer.h"
 #include "render/plan/schedule.h"
-#include "scene/mesh/model.h"
+#include "render/run/fair_queue.h"
+#include "render/run/renderer.h"
 #include "scene/animation/pose.h"
+#include "scene/mesh/model.h"
 
 namespace toond::render {
 
@@ -81,7 +81,7 @@ class RenderService {
     // one more render thread (and context) of its own serves, and serves
     // only them. 0: one lane for all.
     double long_render_cost = 0;
-    std::size_t gpu_model_capacity = 8;  // models kept on the GPU
+    std::size_t gpu_model_capacity = 8;                  // models kept on the GPU
     std::size_t gpu_model_bytes = std::size_t{1} << 30;  // and their GPU memory at most
     // Empty: the shaders embedded at build time. Otherwise GLSL is read from
     // this folder and recompiled before a render when a file changed; a

@@ -39,7 +39,7 @@ std::vector<FrameObject> frame_objects(const std::vector<RenderObject>& objects)
 }  // namespace
 
 std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& objects, const RenderParams& params,
-                                             DrawPacing* pacing) {
+                                              DrawPacing* pacing) {
   std::vector<PlannedObject> planned;
   for (const RenderObject& o : objects) planned.push_back({o.model, o.transform, o.pose.get()});
   return start(objects, plan_frame(params, planned), pacing);
@@ -54,7 +54,7 @@ bool Renderer::real_gpu() {
 }
 
 std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& objects, const FramePlan& plan,
-                                             DrawPacing* pacing) {
+                                              DrawPacing* pacing) {
   if (objects.empty()) throw gpu::GpuError("a render needs at least one object");
   const FrameContext frame = build_frame_context(frame_objects(objects), plan, face_culling_);
   // GPU time only on a GPU: a CPU rasterizer's queries do not see its
@@ -68,10 +68,9 @@ std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& o
   const bool data_layer = frame.plan.has(Pass::Layer);
   // A data layer leaves the colour target as it is: a compositor asking for
   // colour and depth in turn would otherwise reallocate it every time.
-  gpu::RenderTarget* target =
-      data_layer ? nullptr
-                 : &resources_.target_for(frame.draw_width, frame.draw_height, frame.plan.samples,
-                                          frame.supersample, real_gpu());
+  gpu::RenderTarget* target = data_layer ? nullptr
+                                         : &resources_.target_for(frame.draw_width, frame.draw_height,
+                                                                  frame.plan.samples, frame.supersample, real_gpu());
   out.samples = target ? target->samples() : 1;
   const FrameBlocks blocks(frame, resources_.frame_uniforms());
   PassContext context{.frame = frame,

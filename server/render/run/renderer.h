@@ -10,12 +10,12 @@
 #include "render/cull/background_thread.h"
 #include "render/frame/draw_pacing.h"
 #include "render/frame/frame_context.h"
-#include "render/plan/frame_plan.h"
 #include "render/frame/frame_resources.h"
-#include "render/run/pending_frame.h"
 #include "render/frame/render_object.h"
 #include "render/frame/render_output.h"
+#include "render/plan/frame_plan.h"
 #include "render/plan/render_params.h"
+#include "render/run/pending_frame.h"
 
 namespace toond::render {
 

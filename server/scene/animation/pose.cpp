@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <bit>
+#include <cmath>
 #include <functional>
 #include <set>
 #include <unordered_map>
@@ -12,10 +12,10 @@
 
 #include "parallel/parallel_tasks.h"
 #include "scene/animation/clip_sampling.h"
+#include "scene/animation/motion_classes.h"
 #include "scene/mesh/extreme_points.h"
 #include "scene/mesh/intersection_lines.h"
 #include "scene/mesh/mesh_processing.h"
-#include "scene/animation/motion_classes.h"
 
 namespace toond::scene {
 namespace {
@@ -53,7 +53,7 @@ std::vector<std::vector<double>> morph_weights(const Rig& rig, const NodePose& p
   std::vector<std::vector<double>> weights;
   for (const MorphSet& set : rig.morph_sets) {
     const auto node = static_cast<std::size_t>(set.node);
-    std::vector<double> w = !pose.weights[node].empty()     ? pose.weights[node]
+    std::vector<double> w = !pose.weights[node].empty()        ? pose.weights[node]
                             : !rig.nodes[node].weights.empty() ? rig.nodes[node].weights
                                                                : set.default_weights;
     w.resize(set.targets(), 0.0);

@@ -127,7 +127,8 @@ Model import_assimp_bundle(const Bundle& bundle, const std::string& path, const 
   ChildRun run;
   run.program = assimp_converter_program().string();
   run.time_limit = time_left(limits);
-  run.arguments = {"--format", format, "--memory-mb", std::to_string(memory_mb_for(content->size())),
+  run.arguments = {"--format",      format,
+                   "--memory-mb",   std::to_string(memory_mb_for(content->size())),
                    "--cpu-seconds", std::to_string(helper_cpu_seconds(run.time_limit))};
   run.input = *content;
   run.max_output = answer_cap(content->size());
@@ -140,8 +141,8 @@ Model import_assimp_bundle(const Bundle& bundle, const std::string& path, const 
   if (!looks_like_gltf(result.output)) {
     throw ImportError(path, path + ": the " + upper(format) + " reader answered something other than glTF");
   }
-  Model model = import_gltf_bundle(with_converted_file(bundle, path, std::move(result.output)), path, limits,
-                                   choices, GltfOrigin::Converted);
+  Model model = import_gltf_bundle(with_converted_file(bundle, path, std::move(result.output)), path, limits, choices,
+                                   GltfOrigin::Converted);
   add_notes(result.errors, path, model.warnings);
   add_frame_rates(result.errors, model);
   return model;

@@ -5,20 +5,20 @@
 #include <vector>
 
 #include "bundle_paths/model_formats.h"
+#include "scene/animation/motion_classes.h"
 #include "scene/import/assimp_import.h"
-#include "scene/mesh/crease_edges.h"
-#include "scene/mesh/intersection_lines.h"
-#include "scene/mesh/enclosure.h"
 #include "scene/import/gltf_container.h"
 #include "scene/import/gltf_import.h"
 #include "scene/import/import_error.h"
 #include "scene/import/m_import.h"
-#include "scene/mesh/mesh_processing.h"
-#include "scene/mesh/mesh_lod.h"
-#include "scene/animation/motion_classes.h"
 #include "scene/import/obj_import.h"
 #include "scene/import/ply_import.h"
 #include "scene/import/stl_import.h"
+#include "scene/mesh/crease_edges.h"
+#include "scene/mesh/enclosure.h"
+#include "scene/mesh/intersection_lines.h"
+#include "scene/mesh/mesh_lod.h"
+#include "scene/mesh/mesh_processing.h"
 
 namespace toond::scene {
 namespace {
@@ -132,9 +132,9 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
   const ImportChoices choices = with_format_up(bundle, asked);
   ImportLimits limits = given_limits;
   if (limits.max_seconds > 0.0 && limits.deadline == std::chrono::steady_clock::time_point::max()) {
-    limits.deadline = std::chrono::steady_clock::now() +
-                      std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                          std::chrono::duration<double>(limits.max_seconds));
+    limits.deadline =
+        std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                               std::chrono::duration<double>(limits.max_seconds));
   }
   const ModelFile file = model_file(bundle);
   const std::string& path = file.path;

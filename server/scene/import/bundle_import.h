@@ -17,15 +17,12 @@ namespace toond::scene {
 // (ASCII case-insensitive) names: .obj (import_obj_bundle, obj_import.h),
 // .m (import_m_bundle, m_import.h), .gltf / .glb (import_gltf_bundle,
 // gltf_import.h), .stl and .ply (stl_import.h, ply_import.h), or one of
-// the formats read through assimp (import_assimp_bundle, assimp_import.h). A glTF file is also known by its content (gltf_container.h)
-// whatever its name, when it is the bundle's only model file. Throws
-// ImportError naming the files when the bundle holds no model file or more
-// than one, and whatever the importer throws. The mesh comes back with its levels of detail and in vertex-cache
-// order (prepare_levels_of_detail, mesh_lod.h).
-// `limits` bound what an upload may make (ImportLimitError beyond).
-// `choices.gltf_scene` picks a glTF file's scene (ImportError when the
-// model file is not glTF, or has no such scene); `choices.up` left to the
-// format is settled by with_format_up.
+// the formats read through assimp (import_assimp_bundle, assimp_import.h). A glTF file is also known by its content
+// (gltf_container.h) whatever its name, when it is the bundle's only model file. Throws ImportError naming the files
+// when the bundle holds no model file or more than one, and whatever the importer throws. The mesh comes back with its
+// levels of detail and in vertex-cache order (prepare_levels_of_detail, mesh_lod.h). `limits` bound what an upload may
+// make (ImportLimitError beyond). `choices.gltf_scene` picks a glTF file's scene (ImportError when the model file is
+// not glTF, or has no such scene); `choices.up` left to the format is settled by with_format_up.
 Model import_bundle(const Bundle& bundle, const ImportLimits& limits = {}, const ImportChoices& choices = {});
 
 // Whether the format of model file `path` is Z-up by its tools' convention:

@@ -213,8 +213,8 @@ ChildResult run_child(const ChildRun& run) {
     watch(err.ours, POLLIN);
     if (poll(polls, count, static_cast<int>(std::min<long long>(left, 1000))) < 0 && errno != EINTR) break;
     if (in.ours.open()) {
-      const ssize_t n = send(in.ours.get(), run.input.data() + written, run.input.size() - written,
-                             MSG_NOSIGNAL | MSG_DONTWAIT);
+      const ssize_t n =
+          send(in.ours.get(), run.input.data() + written, run.input.size() - written, MSG_NOSIGNAL | MSG_DONTWAIT);
       if (n > 0) written += static_cast<std::size_t>(n);
       // The child may stop reading early (it has what it needs, or it
       // died): the rest of the input is not its concern any more.

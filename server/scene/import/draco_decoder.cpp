@@ -20,8 +20,8 @@ std::uint64_t saturating_product(std::uint64_t a, std::uint64_t b) {
 // tables: a kilobyte per point is several times what real meshes need, and
 // the base covers the program and its libraries.
 std::uint64_t memory_mb_for(const DracoJob& job) {
-  const std::uint64_t bytes = (256ull << 20) + saturating_product(4, job.data.size()) +
-                              saturating_product(1024, job.max_points);
+  const std::uint64_t bytes =
+      (256ull << 20) + saturating_product(4, job.data.size()) + saturating_product(1024, job.max_points);
   return std::min<std::uint64_t>(bytes >> 20, 1ull << 40) + 1;
 }
 
@@ -49,9 +49,7 @@ void check_answer(const draco_wire::Mesh& mesh, const DracoJob& job) {
 
 }  // namespace
 
-std::filesystem::path draco_decoder_program() {
-  return helper_program("TOOND_DRACO_DECODER", "toond-draco-decode");
-}
+std::filesystem::path draco_decoder_program() { return helper_program("TOOND_DRACO_DECODER", "toond-draco-decode"); }
 
 draco_wire::Mesh decode_draco_mesh(const DracoJob& job) {
   ChildRun run;

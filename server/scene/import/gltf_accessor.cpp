@@ -11,26 +11,38 @@ namespace toond::scene {
 
 int gltf_component_count(int type) {
   switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
-    case TINYGLTF_TYPE_MAT2: return 4;
-    case TINYGLTF_TYPE_MAT3: return 9;
-    case TINYGLTF_TYPE_MAT4: return 16;
-    default: return 0;
+    case TINYGLTF_TYPE_SCALAR:
+      return 1;
+    case TINYGLTF_TYPE_VEC2:
+      return 2;
+    case TINYGLTF_TYPE_VEC3:
+      return 3;
+    case TINYGLTF_TYPE_VEC4:
+      return 4;
+    case TINYGLTF_TYPE_MAT2:
+      return 4;
+    case TINYGLTF_TYPE_MAT3:
+      return 9;
+    case TINYGLTF_TYPE_MAT4:
+      return 16;
+    default:
+      return 0;
   }
 }
 
 std::size_t gltf_component_size(int component_type) {
   switch (component_type) {
     case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return 1;
     case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return 2;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;  // INT and DOUBLE are not glTF 2.0 accessor types
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return 4;
+    default:
+      return 0;  // INT and DOUBLE are not glTF 2.0 accessor types
   }
 }
 
@@ -42,7 +54,8 @@ double component_at(const std::uint8_t* p, int component_type, bool normalized) 
       const auto v = static_cast<std::int8_t>(*p);
       return normalized ? std::max(v / 127.0, -1.0) : v;
     }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.0 : *p;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return normalized ? *p / 255.0 : *p;
     case TINYGLTF_COMPONENT_TYPE_SHORT: {
       std::int16_t v;
       std::memcpy(&v, p, 2);
@@ -68,7 +81,8 @@ double component_at(const std::uint8_t* p, int component_type, bool normalized) 
 
 std::uint32_t index_at(const std::uint8_t* p, int component_type) {
   switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return *p;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
       std::uint16_t v;
       std::memcpy(&v, p, 2);
@@ -96,16 +110,16 @@ GltfAccessorReader::GltfAccessorReader(const tinygltf::Model& model, std::string
 const tinygltf::Accessor& GltfAccessorReader::accessor(int index, const std::string& role) const {
   if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) {
     throw ImportError(file_, file_ + ": " + role + " refers to accessor " + std::to_string(index) +
-                                 ", which does not exist (the file has " +
-                                 std::to_string(model_.accessors.size()) + ")");
+                                 ", which does not exist (the file has " + std::to_string(model_.accessors.size()) +
+                                 ")");
   }
   return model_.accessors[static_cast<std::size_t>(index)];
 }
 
 std::span<const std::uint8_t> GltfAccessorReader::view(int view, const std::string& role) const {
   if (view < 0 || static_cast<std::size_t>(view) >= model_.bufferViews.size()) {
-    throw ImportError(file_, file_ + ": " + role + " refers to buffer view " + std::to_string(view) +
-                                 ", which does not exist");
+    throw ImportError(
+        file_, file_ + ": " + role + " refers to buffer view " + std::to_string(view) + ", which does not exist");
   }
   if (view_override_) {
     if (const auto bytes = view_override_(view)) return *bytes;
@@ -135,8 +149,9 @@ GltfAccessorReader::Layout GltfAccessorReader::layout_of(int index, const std::s
   if (!fits) {
     throw ImportError(file_, file_ + ": accessor " + std::to_string(index) + " (" + role + ", " +
                                  std::to_string(count) + " elements of " + std::to_string(element_size) +
-                                 " bytes from byte " + std::to_string(offset) + ") reaches past the end of buffer view " +
-                                 std::to_string(view) + " (" + std::to_string(bytes.size()) + " bytes)");
+                                 " bytes from byte " + std::to_string(offset) +
+                                 ") reaches past the end of buffer view " + std::to_string(view) + " (" +
+                                 std::to_string(bytes.size()) + " bytes)");
   }
   return {bytes.data() + offset, stride};
 }
@@ -168,7 +183,8 @@ std::vector<double> GltfAccessorReader::read(int index, const std::string& role,
   std::vector<double> out(a.count * width, 0.0);
   const auto take = static_cast<std::size_t>(std::min(have, components));
   const auto decode_into = [&](std::size_t i, const std::uint8_t* p) {
-    for (std::size_t c = 0; c < take; ++c) out[i * width + c] = component_at(p + c * size, a.componentType, a.normalized);
+    for (std::size_t c = 0; c < take; ++c)
+      out[i * width + c] = component_at(p + c * size, a.componentType, a.normalized);
   };
   for (std::size_t i = 0; i < a.count; ++i) {
     if (layout.first) decode_into(i, layout.first + i * layout.stride);
@@ -201,9 +217,8 @@ std::vector<double> GltfAccessorReader::read(int index, const std::string& role,
     for (std::size_t k = 0; k < n; ++k) {
       const std::uint32_t target = index_at(indices.first + k * index_size, s.indices.componentType);
       if (target >= a.count) {
-        throw ImportError(file_, file_ + ": accessor " + std::to_string(index) + " (" + role +
-                                     ") has a sparse index " + std::to_string(target) + " past its " +
-                                     std::to_string(a.count) + " elements");
+        throw ImportError(file_, file_ + ": accessor " + std::to_string(index) + " (" + role + ") has a sparse index " +
+                                     std::to_string(target) + " past its " + std::to_string(a.count) + " elements");
       }
       decode_into(target, values.first + k * element);
     }
@@ -214,9 +229,9 @@ std::vector<double> GltfAccessorReader::read(int index, const std::string& role,
 std::vector<std::uint32_t> GltfAccessorReader::read_indices(int index, const std::string& role) const {
   const tinygltf::Accessor& a = accessor(index, role);
   const int type = a.componentType;
-  if (a.type != TINYGLTF_TYPE_SCALAR || (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                                         type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                                         type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)) {
+  if (a.type != TINYGLTF_TYPE_SCALAR ||
+      (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+       type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)) {
     throw ImportError(file_, file_ + ": accessor " + std::to_string(index) + " (" + role +
                                  ") is not a list of unsigned integer indices");
   }

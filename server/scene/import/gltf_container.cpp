@@ -15,7 +15,8 @@ constexpr std::size_t kChunkHeaderSize = 8;
 
 std::uint32_t le32(std::string_view bytes, std::size_t at) {
   std::uint32_t v = 0;
-  for (std::size_t i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+  for (std::size_t i = 0; i < 4; ++i)
+    v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
   return v;
 }
 
@@ -25,7 +26,8 @@ bool looks_like_gltf(std::string_view content) {
   if (content.starts_with(kMagic)) return true;
   if (content.starts_with("\xEF\xBB\xBF")) content.remove_prefix(3);
   const auto first = content.find_first_not_of(" \t\r\n");
-  return first != std::string_view::npos && content[first] == '{' && content.find("\"asset\"") != std::string_view::npos;
+  return first != std::string_view::npos && content[first] == '{' &&
+         content.find("\"asset\"") != std::string_view::npos;
 }
 
 GltfContainer open_gltf_container(std::string_view content, const std::string& path) {
@@ -33,7 +35,9 @@ GltfContainer open_gltf_container(std::string_view content, const std::string& p
     if (content.starts_with("\xEF\xBB\xBF")) content.remove_prefix(3);
     return {content, std::nullopt};
   }
-  const auto fail = [&](const std::string& why) { throw ImportError(path, path + ": not a valid glTF binary: " + why); };
+  const auto fail = [&](const std::string& why) {
+    throw ImportError(path, path + ": not a valid glTF binary: " + why);
+  };
   if (content.size() < kHeaderSize + kChunkHeaderSize) fail("the file ends inside its header");
   if (le32(content, 4) != 2) fail("container version " + std::to_string(le32(content, 4)) + " (only 2 is read)");
   const std::uint64_t declared = le32(content, 8);

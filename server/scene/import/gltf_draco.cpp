@@ -51,8 +51,8 @@ int add_accessor(tinygltf::Model& gltf, const tinygltf::Accessor& accessor) {
 std::chrono::milliseconds time_for_decode(const ImportLimits& limits) {
   const auto now = std::chrono::steady_clock::now();
   if (limits.deadline == std::chrono::steady_clock::time_point::max()) return kDracoTimeLimit;
-  return std::clamp(std::chrono::ceil<std::chrono::milliseconds>(limits.deadline - now),
-                    std::chrono::milliseconds(1), kDracoTimeLimit);
+  return std::clamp(std::chrono::ceil<std::chrono::milliseconds>(limits.deadline - now), std::chrono::milliseconds(1),
+                    kDracoTimeLimit);
 }
 
 }  // namespace
@@ -103,8 +103,7 @@ void restore_draco_indices(const std::vector<DracoPrimitive>& primitives, tinygl
 void decode_draco_primitive(const DracoPrimitive& draco, tinygltf::Model& gltf, const GltfAccessorReader& reader,
                             std::map<int, std::vector<std::uint8_t>>& views, const ImportLimits& limits,
                             const std::string& file) {
-  tinygltf::Primitive& primitive =
-      gltf.meshes.at(static_cast<std::size_t>(draco.mesh)).primitives.at(draco.primitive);
+  tinygltf::Primitive& primitive = gltf.meshes.at(static_cast<std::size_t>(draco.mesh)).primitives.at(draco.primitive);
   if (!is_triangles(primitive.mode)) return;  // not drawn, so not decoded
   const std::string name = primitive_name(draco.mesh, draco.primitive);
   const auto fail = [&](const std::string& why) {

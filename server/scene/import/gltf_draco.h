@@ -49,8 +49,8 @@ void restore_draco_indices(const std::vector<DracoPrimitive>& primitives, tinygl
 // crashes or runs out of time, and a mesh that does not match, is an
 // ImportError naming the primitive; running past `limits.deadline` is an
 // ImportLimitError.
-void decode_draco_primitive(const DracoPrimitive& primitive, tinygltf::Model& gltf,
-                            const GltfAccessorReader& reader, std::map<int, std::vector<std::uint8_t>>& views,
-                            const ImportLimits& limits, const std::string& file);
+void decode_draco_primitive(const DracoPrimitive& primitive, tinygltf::Model& gltf, const GltfAccessorReader& reader,
+                            std::map<int, std::vector<std::uint8_t>>& views, const ImportLimits& limits,
+                            const std::string& file);
 
 }  // namespace toond::scene

@@ -39,8 +39,8 @@ using namespace gltf_json;
 // Extensions whose meaning the importer reads; a file that requires any
 // other is refused by name.
 constexpr std::array<std::string_view, 6> kReadExtensions = {
-    "KHR_mesh_quantization", "KHR_texture_transform", "EXT_texture_webp", "KHR_materials_unlit",
-    "EXT_meshopt_compression", "KHR_draco_mesh_compression",
+    "KHR_mesh_quantization", "KHR_texture_transform",   "EXT_texture_webp",
+    "KHR_materials_unlit",   "EXT_meshopt_compression", "KHR_draco_mesh_compression",
 };
 
 bool reads_extension(std::string_view name) {
@@ -192,8 +192,8 @@ class GltfImporter {
     const std::vector<MeshInstance> instances = collect_instances();
     check_counts(instances);
     decode_draco(instances);
-    rig_reader_ = std::make_unique<GltfRigReader>(gltf_, *reader_, path_, drawn_nodes_,
-                                                  up_axis_turn(choices_.z_up()), warnings_);
+    rig_reader_ =
+        std::make_unique<GltfRigReader>(gltf_, *reader_, path_, drawn_nodes_, up_axis_turn(choices_.z_up()), warnings_);
     MeshSource source = make_source(instances);
     source.limits = limits_;
     apply_import_choices(source, choices_);
@@ -319,7 +319,8 @@ class GltfImporter {
   bool uses_extension(std::string_view name) const {
     for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
       const json& names = member(doc_, list);
-      if (names.is_array() && std::find(names.begin(), names.end(), json(std::string(name))) != names.end()) return true;
+      if (names.is_array() && std::find(names.begin(), names.end(), json(std::string(name))) != names.end())
+        return true;
     }
     return false;
   }
@@ -422,8 +423,8 @@ class GltfImporter {
       int chosen = scene_.value_or(gltf_.defaultScene >= 0 ? gltf_.defaultScene : 0);
       if (chosen < 0 || static_cast<std::size_t>(chosen) >= scenes.size()) {
         if (scene_) {
-          fail("scene " + std::to_string(chosen) + " was asked for, but the file has " +
-               std::to_string(scenes.size()) + " scenes");
+          fail("scene " + std::to_string(chosen) + " was asked for, but the file has " + std::to_string(scenes.size()) +
+               " scenes");
         }
         warnings_.add(path_ + ": the default scene " + std::to_string(chosen) + " does not exist; scene 0 is drawn");
         chosen = 0;
@@ -440,7 +441,8 @@ class GltfImporter {
       std::vector<bool> is_child(gltf_.nodes.size(), false);
       for (const auto& node : gltf_.nodes) {
         for (const int child : node.children) {
-          if (child >= 0 && static_cast<std::size_t>(child) < is_child.size()) is_child[static_cast<std::size_t>(child)] = true;
+          if (child >= 0 && static_cast<std::size_t>(child) < is_child.size())
+            is_child[static_cast<std::size_t>(child)] = true;
         }
       }
       for (std::size_t i = 0; i < is_child.size(); ++i) {
@@ -461,7 +463,8 @@ class GltfImporter {
     while (!stack.empty()) {
       const auto [index, parent] = stack.back();
       stack.pop_back();
-      if (index < 0 || static_cast<std::size_t>(index) >= gltf_.nodes.size()) fail("a scene refers to node " + std::to_string(index) + ", which does not exist");
+      if (index < 0 || static_cast<std::size_t>(index) >= gltf_.nodes.size())
+        fail("a scene refers to node " + std::to_string(index) + ", which does not exist");
       if (visited[static_cast<std::size_t>(index)]) {
         reached_twice = true;
         continue;
@@ -472,7 +475,8 @@ class GltfImporter {
       const glm::dmat4 world = parent * local_transform(node);
       if (node.mesh >= 0) {
         if (static_cast<std::size_t>(node.mesh) >= gltf_.meshes.size()) {
-          fail("node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) + ", which does not exist");
+          fail("node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) +
+               ", which does not exist");
         }
         instances.push_back({node.mesh, world, index});
       }
@@ -485,12 +489,14 @@ class GltfImporter {
 
   static std::uint64_t triangles_of(int mode, std::uint64_t corners) {
     if (mode == TINYGLTF_MODE_TRIANGLES) return corners / 3;
-    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) return corners < 3 ? 0 : corners - 2;
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN)
+      return corners < 3 ? 0 : corners - 2;
     return 0;
   }
 
   static bool is_triangles(int mode) {
-    return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN;
+    return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+           mode == TINYGLTF_MODE_TRIANGLE_FAN;
   }
 
   std::string primitive_name(int mesh, std::size_t primitive) const {
@@ -518,12 +524,14 @@ class GltfImporter {
       }
     }
     if (vertices > limits_.max_vertices) {
-      throw ImportLimitError(path_, ImportLimit::Vertices, static_cast<double>(limits_.max_vertices),
-                             path_ + " has " + std::to_string(vertices) + " vertices in its drawn primitives, more than");
+      throw ImportLimitError(
+          path_, ImportLimit::Vertices, static_cast<double>(limits_.max_vertices),
+          path_ + " has " + std::to_string(vertices) + " vertices in its drawn primitives, more than");
     }
     if (triangles > limits_.max_triangles) {
-      throw ImportLimitError(path_, ImportLimit::Triangles, static_cast<double>(limits_.max_triangles),
-                             path_ + " has " + std::to_string(triangles) + " triangles in its drawn primitives, more than");
+      throw ImportLimitError(
+          path_, ImportLimit::Triangles, static_cast<double>(limits_.max_triangles),
+          path_ + " has " + std::to_string(triangles) + " triangles in its drawn primitives, more than");
     }
   }
 
@@ -607,8 +615,8 @@ class GltfImporter {
         // before.
         std::vector<std::uint32_t> position_of(count);
         for (std::size_t i = 0; i < count; ++i) {
-          const glm::dvec3 p3 = glm::dvec3(instance.transform * glm::dvec4(positions[3 * i], positions[3 * i + 1],
-                                                                             positions[3 * i + 2], 1.0));
+          const glm::dvec3 p3 = glm::dvec3(
+              instance.transform * glm::dvec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0));
           glm::dvec3 colour(1.0);
           if (!colours_in.empty()) {
             colour = {srgb_encoded(colours_in[4 * i]), srgb_encoded(colours_in[4 * i + 1]),
@@ -632,7 +640,8 @@ class GltfImporter {
           const std::vector<double> normals = reader_->read(attribute("NORMAL"), name + " NORMAL", 3);
           check_count(normals, 3, "normals");
           for (std::size_t i = 0; i < count; ++i) {
-            source.normals.push_back(normal_matrix * glm::dvec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]));
+            source.normals.push_back(normal_matrix *
+                                     glm::dvec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]));
           }
         }
         const bool has_normals = attribute("NORMAL") >= 0;
@@ -670,8 +679,7 @@ class GltfImporter {
           corners = reader_->read_indices(primitive.indices, name + " indices");
           for (const std::uint32_t c : corners) {
             if (c >= count) {
-              fail(name + " has the index " + std::to_string(c) + ", past its " + std::to_string(count) +
-                   " vertices");
+              fail(name + " has the index " + std::to_string(c) + ", past its " + std::to_string(count) + " vertices");
             }
           }
         } else {
@@ -769,8 +777,8 @@ class GltfImporter {
     if (const int plain = index_or(member(texture, "source"), -1); plain >= 0) candidates.push_back(plain);
     if (candidates.empty()) {
       const bool ktx = member(extensions, "KHR_texture_basisu").is_object();
-      warnings_.add(path_ + ": " + role + (ktx ? " exists only as a KTX2/Basis image, which toond cannot decode"
-                                                 : " has no image") +
+      warnings_.add(path_ + ": " + role +
+                    (ktx ? " exists only as a KTX2/Basis image, which toond cannot decode" : " has no image") +
                     "; the material is drawn without it");
       return -1;
     }
@@ -780,8 +788,8 @@ class GltfImporter {
       const auto bytes = image_bytes(image, role);
       if (!bytes) continue;
       try {
-        Texture decoded = decode_model_texture(bytes->second, bytes->first, limits_.max_texture_pixels,
-                                               texture_pixels_left_);
+        Texture decoded =
+            decode_model_texture(bytes->second, bytes->first, limits_.max_texture_pixels, texture_pixels_left_);
         decoded.color_space = space;
         model_.textures.push_back(std::move(decoded));
         const int slot = static_cast<int>(model_.textures.size()) - 1;
@@ -805,18 +813,20 @@ class GltfImporter {
     const json& pbr = member(m, "pbrMetallicRoughness");
     const json& factor = member(pbr, "baseColorFactor");
     glm::dvec3 base(1.0);
-    for (int c = 0; c < 3; ++c) base[c] = std::clamp(number_or(element(factor, static_cast<std::size_t>(c)), 1.0), 0.0, 1.0);
+    for (int c = 0; c < 3; ++c)
+      base[c] = std::clamp(number_or(element(factor, static_cast<std::size_t>(c)), 1.0), 0.0, 1.0);
     material.opacity = static_cast<float>(std::clamp(number_or(element(factor, 3), 1.0), 0.0, 1.0));
     const json& emissive = member(m, "emissiveFactor");
-    for (int c = 0; c < 3; ++c) base[c] = std::min(1.0, base[c] + std::max(0.0, number_or(element(emissive, static_cast<std::size_t>(c)), 0.0)));
+    for (int c = 0; c < 3; ++c)
+      base[c] = std::min(1.0, base[c] + std::max(0.0, number_or(element(emissive, static_cast<std::size_t>(c)), 0.0)));
     material.diffuse = glm::vec3(base);
     if (const json& info = member(pbr, "baseColorTexture"); info.is_object()) {
-      material.diffuse_texture = texture_for(index_or(member(info, "index"), -1), ColorSpace::Srgb,
-                                             label + "'s base colour texture");
+      material.diffuse_texture =
+          texture_for(index_or(member(info, "index"), -1), ColorSpace::Srgb, label + "'s base colour texture");
     }
     if (const json& info = member(m, "normalTexture"); info.is_object()) {
-      material.normal_texture = texture_for(index_or(member(info, "index"), -1), ColorSpace::Linear,
-                                            label + "'s normal map");
+      material.normal_texture =
+          texture_for(index_or(member(info, "index"), -1), ColorSpace::Linear, label + "'s normal map");
       if (number_or(member(info, "scale"), 1.0) != 1.0) ++ignored_["normal map scales"];
     }
     if (member(pbr, "metallicRoughnessTexture").is_object() || member(pbr, "metallicFactor").is_number() ||
@@ -871,8 +881,8 @@ class GltfImporter {
     const auto other = std::find_if(bundle_.files().begin(), bundle_.files().end(),
                                     [this](const auto& file) { return file.first != path_; });
     try {
-      Texture decoded = decode_model_texture(other->second, other->first, limits_.max_texture_pixels,
-                                             texture_pixels_left_);
+      Texture decoded =
+          decode_model_texture(other->second, other->first, limits_.max_texture_pixels, texture_pixels_left_);
       decoded.color_space = ColorSpace::Srgb;
       model_.textures.push_back(std::move(decoded));
     } catch (const ImportLimitError&) {

@@ -71,9 +71,9 @@ std::string stride_problem(const MeshoptStream& s) {
 void check_count_limit(const MeshoptStream& s, int view, const ImportLimits& limits, const std::string& file) {
   if (s.mode == MeshoptMode::Attributes) {
     if (s.count > limits.max_vertices) {
-      throw ImportLimitError(file, ImportLimit::Vertices, static_cast<double>(limits.max_vertices),
-                             file + ": " + view_name(view) + " decompresses to " + std::to_string(s.count) +
-                                 " vertices, more than");
+      throw ImportLimitError(
+          file, ImportLimit::Vertices, static_cast<double>(limits.max_vertices),
+          file + ": " + view_name(view) + " decompresses to " + std::to_string(s.count) + " vertices, more than");
     }
     return;
   }
@@ -83,19 +83,26 @@ void check_count_limit(const MeshoptStream& s, int view, const ImportLimits& lim
                                         ? std::numeric_limits<std::uint64_t>::max()
                                         : max_triangles * 3 + 2;
   if (s.count > max_corners) {
-    throw ImportLimitError(file, ImportLimit::Triangles, static_cast<double>(limits.max_triangles),
-                           file + ": " + view_name(view) + " decompresses to " + std::to_string(s.count) +
-                               " indices, more than",
-                           " allows");
+    throw ImportLimitError(
+        file, ImportLimit::Triangles, static_cast<double>(limits.max_triangles),
+        file + ": " + view_name(view) + " decompresses to " + std::to_string(s.count) + " indices, more than",
+        " allows");
   }
 }
 
 void apply_filter(MeshoptFilter filter, std::vector<std::uint8_t>& data, std::size_t count, std::size_t stride) {
   switch (filter) {
-    case MeshoptFilter::None: return;
-    case MeshoptFilter::Octahedral: meshopt_decodeFilterOct(data.data(), count, stride); return;
-    case MeshoptFilter::Quaternion: meshopt_decodeFilterQuat(data.data(), count, stride); return;
-    case MeshoptFilter::Exponential: meshopt_decodeFilterExp(data.data(), count, stride); return;
+    case MeshoptFilter::None:
+      return;
+    case MeshoptFilter::Octahedral:
+      meshopt_decodeFilterOct(data.data(), count, stride);
+      return;
+    case MeshoptFilter::Quaternion:
+      meshopt_decodeFilterQuat(data.data(), count, stride);
+      return;
+    case MeshoptFilter::Exponential:
+      meshopt_decodeFilterExp(data.data(), count, stride);
+      return;
   }
 }
 
@@ -165,9 +172,15 @@ std::vector<std::uint8_t> decode_meshopt_stream(const MeshoptStream& s, std::spa
   const auto length = static_cast<std::size_t>(s.byte_length);
   int status = 0;
   switch (s.mode) {
-    case MeshoptMode::Attributes: status = meshopt_decodeVertexBuffer(out.data(), count, stride, source, length); break;
-    case MeshoptMode::Triangles: status = meshopt_decodeIndexBuffer(out.data(), count, stride, source, length); break;
-    case MeshoptMode::Indices: status = meshopt_decodeIndexSequence(out.data(), count, stride, source, length); break;
+    case MeshoptMode::Attributes:
+      status = meshopt_decodeVertexBuffer(out.data(), count, stride, source, length);
+      break;
+    case MeshoptMode::Triangles:
+      status = meshopt_decodeIndexBuffer(out.data(), count, stride, source, length);
+      break;
+    case MeshoptMode::Indices:
+      status = meshopt_decodeIndexSequence(out.data(), count, stride, source, length);
+      break;
   }
   if (status != 0) {
     refuse(file, view,
@@ -191,7 +204,8 @@ MeshoptViews::MeshoptViews(const json& doc, const tinygltf::Model& gltf, std::se
 std::optional<std::span<const std::uint8_t>> MeshoptViews::bytes(int view) {
   if (const auto it = decoded_.find(view); it != decoded_.end()) return std::span<const std::uint8_t>(it->second);
   if (view < 0 || static_cast<std::size_t>(view) >= gltf_.bufferViews.size()) return std::nullopt;
-  const auto stream = parse_meshopt_stream(element(member(doc_, "bufferViews"), static_cast<std::size_t>(view)), view, file_);
+  const auto stream =
+      parse_meshopt_stream(element(member(doc_, "bufferViews"), static_cast<std::size_t>(view)), view, file_);
   if (!stream) {
     const int buffer = gltf_.bufferViews[static_cast<std::size_t>(view)].buffer;
     if (fallbacks_.contains(buffer)) {
@@ -205,8 +219,9 @@ std::optional<std::span<const std::uint8_t>> MeshoptViews::bytes(int view) {
     refuse(file_, view, "refers to buffer " + std::to_string(stream->buffer) + ", which does not exist");
   }
   if (fallbacks_.contains(stream->buffer)) {
-    refuse(file_, view, "takes its compressed bytes from buffer " + std::to_string(stream->buffer) +
-                            ", a fallback buffer that holds no data");
+    refuse(file_, view,
+           "takes its compressed bytes from buffer " + std::to_string(stream->buffer) +
+               ", a fallback buffer that holds no data");
   }
   const auto& source = gltf_.buffers[static_cast<std::size_t>(stream->buffer)].data;
   auto decoded = decode_meshopt_stream(*stream, source, view, limits_, file_);

@@ -11,8 +11,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scene/import/import_error.h"
 #include "scene/animation/pose.h"
+#include "scene/import/import_error.h"
 
 namespace toond::scene {
 namespace {
@@ -114,7 +114,8 @@ void GltfRigReader::read_nodes() {
   // Depth first from every root; a node not reached sits on a cycle.
   std::vector<std::vector<int>> children(count);
   for (std::size_t i = 0; i < count; ++i) {
-    if (rig_.nodes[i].parent >= 0) children[static_cast<std::size_t>(rig_.nodes[i].parent)].push_back(static_cast<int>(i));
+    if (rig_.nodes[i].parent >= 0)
+      children[static_cast<std::size_t>(rig_.nodes[i].parent)].push_back(static_cast<int>(i));
   }
   std::vector<int> stack;
   for (std::size_t i = count; i-- > 0;) {
@@ -124,7 +125,8 @@ void GltfRigReader::read_nodes() {
     const int n = stack.back();
     stack.pop_back();
     rig_.node_order.push_back(n);
-    for (auto it = children[static_cast<std::size_t>(n)].rbegin(); it != children[static_cast<std::size_t>(n)].rend(); ++it) {
+    for (auto it = children[static_cast<std::size_t>(n)].rbegin(); it != children[static_cast<std::size_t>(n)].rend();
+         ++it) {
       stack.push_back(*it);
     }
   }
@@ -186,10 +188,10 @@ std::uint32_t GltfRigReader::binding_of(int skin, int node) {
 
 // Every JOINTS_n / WEIGHTS_n pair, four influences each: `joints` gets the
 // joint indices, the result the weights, `sets` how many pairs there were.
-std::vector<double> GltfRigReader::read_weights_of(int node, const tinygltf::Primitive& primitive,
-                                                   std::size_t count, const std::string& name,
-                                                   std::vector<double>& joints, int& sets) {
-  const std::size_t joint_count = gltf_.skins[static_cast<std::size_t>(gltf_.nodes[static_cast<std::size_t>(node)].skin)].joints.size();
+std::vector<double> GltfRigReader::read_weights_of(int node, const tinygltf::Primitive& primitive, std::size_t count,
+                                                   const std::string& name, std::vector<double>& joints, int& sets) {
+  const std::size_t joint_count =
+      gltf_.skins[static_cast<std::size_t>(gltf_.nodes[static_cast<std::size_t>(node)].skin)].joints.size();
   std::vector<double> weights;
   for (sets = 0;; ++sets) {
     const auto j = primitive.attributes.find("JOINTS_" + std::to_string(sets));
@@ -204,12 +206,13 @@ std::vector<double> GltfRigReader::read_weights_of(int node, const tinygltf::Pri
     }
     for (const double joint : js) {
       if (!(joint >= 0.0) || joint >= static_cast<double>(joint_count)) {
-        fail(joints_role + " names joint " + joint_text(joint) + ", past the skin's " +
-             std::to_string(joint_count) + " joints");
+        fail(joints_role + " names joint " + joint_text(joint) + ", past the skin's " + std::to_string(joint_count) +
+             " joints");
       }
     }
     for (const double weight : ws) {
-      if (!std::isfinite(weight) || weight < 0.0) fail(name + " WEIGHTS_" + std::to_string(sets) + " holds a weight that is negative or not finite");
+      if (!std::isfinite(weight) || weight < 0.0)
+        fail(name + " WEIGHTS_" + std::to_string(sets) + " holds a weight that is negative or not finite");
     }
     joints.insert(joints.end(), js.begin(), js.end());
     weights.insert(weights.end(), ws.begin(), ws.end());
@@ -246,9 +249,11 @@ std::int32_t GltfRigReader::morph_set_of(int node, const tinygltf::Primitive& pr
       if (it == primitive.targets[t].end()) return;
       const std::string role = name + " target " + std::to_string(t) + " " + attribute;
       const std::vector<double> d = read_counted(it->second, role, 3, count);
-      if (d.size() != 3 * count) fail(role + " has " + std::to_string(d.size() / 3) + " deltas for " + std::to_string(count) + " positions");
+      if (d.size() != 3 * count)
+        fail(role + " has " + std::to_string(d.size() / 3) + " deltas for " + std::to_string(count) + " positions");
       if (!all_finite(d)) fail(role + " holds a number that is not finite");
-      for (std::size_t v = 0; v < count; ++v) into[t * count + v] = glm::vec3(by * glm::dvec3(d[3 * v], d[3 * v + 1], d[3 * v + 2]));
+      for (std::size_t v = 0; v < count; ++v)
+        into[t * count + v] = glm::vec3(by * glm::dvec3(d[3 * v], d[3 * v + 1], d[3 * v + 2]));
     };
     read("POSITION", set.position_deltas, linear);
     read("NORMAL", set.normal_deltas, normal_matrix);
@@ -262,8 +267,8 @@ std::int32_t GltfRigReader::morph_set_of(int node, const tinygltf::Primitive& pr
   return static_cast<std::int32_t>(rig_.morph_sets.size() - 1);
 }
 
-std::vector<std::uint32_t> GltfRigReader::motions_of(int node, const tinygltf::Primitive& primitive,
-                                                     std::size_t count, const std::string& name) {
+std::vector<std::uint32_t> GltfRigReader::motions_of(int node, const tinygltf::Primitive& primitive, std::size_t count,
+                                                     const std::string& name) {
   const int skin = gltf_.nodes[static_cast<std::size_t>(node)].skin;
   if (skin >= 0 && static_cast<std::size_t>(skin) >= gltf_.skins.size()) {
     fail("node " + std::to_string(node) + " refers to skin " + std::to_string(skin) + ", which does not exist");
@@ -271,7 +276,8 @@ std::vector<std::uint32_t> GltfRigReader::motions_of(int node, const tinygltf::P
   const std::uint32_t binding = binding_of(skin, node);
   std::vector<double> joints;
   int sets = 0;
-  const std::vector<double> weights = skin >= 0 ? read_weights_of(node, primitive, count, name, joints, sets) : std::vector<double>{};
+  const std::vector<double> weights =
+      skin >= 0 ? read_weights_of(node, primitive, count, name, joints, sets) : std::vector<double>{};
   const std::int32_t morph = morph_set_of(node, primitive, count, name);
   std::size_t unweighted = 0;
   std::vector<std::uint32_t> motions(count);
@@ -297,7 +303,8 @@ std::vector<std::uint32_t> GltfRigReader::motions_of(int node, const tinygltf::P
         sum = 1.0;
       }
       for (const auto& [joint, weight] : by_joint) {
-        influences.push_back(std::uint64_t{joint} << 32 | std::bit_cast<std::uint32_t>(static_cast<float>(weight / sum)));
+        influences.push_back(std::uint64_t{joint} << 32 |
+                             std::bit_cast<std::uint32_t>(static_cast<float>(weight / sum)));
       }
     }
     const MotionKey key{binding, influences, morph, morph >= 0 ? static_cast<std::uint32_t>(v) : 0u};
@@ -306,14 +313,16 @@ std::vector<std::uint32_t> GltfRigReader::motions_of(int node, const tinygltf::P
       VertexMotion motion{binding, static_cast<std::uint32_t>(rig_.influences.size()),
                           static_cast<std::uint32_t>(influences.size()), morph, std::get<3>(key)};
       for (const std::uint64_t packed : influences) {
-        rig_.influences.push_back({static_cast<std::uint32_t>(packed >> 32), std::bit_cast<float>(static_cast<std::uint32_t>(packed))});
+        rig_.influences.push_back(
+            {static_cast<std::uint32_t>(packed >> 32), std::bit_cast<float>(static_cast<std::uint32_t>(packed))});
       }
       rig_.motions.push_back(motion);
     }
     motions[v] = it->second;
   }
   if (unweighted > 0) {
-    warnings_.add(name + ": " + std::to_string(unweighted) + " vertices have no skin weight; they follow the skin's first joint");
+    warnings_.add(name + ": " + std::to_string(unweighted) +
+                  " vertices have no skin weight; they follow the skin's first joint");
   }
   return motions;
 }
@@ -355,9 +364,12 @@ Channel GltfRigReader::read_channel(std::size_t a, std::size_t c) {
   const std::size_t keys = out.times.size();
   if (out.path == ChannelPath::Weights) {
     const tinygltf::Node& node = gltf_.nodes[static_cast<std::size_t>(out.node)];
-    const std::size_t targets =
-        node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < gltf_.meshes.size() ? morph_targets_of(gltf_.meshes[static_cast<std::size_t>(node.mesh)]) : 0;
-    if (targets == 0) fail(name + " animates the morph weights of node " + std::to_string(out.node) + ", whose mesh has no morph targets");
+    const std::size_t targets = node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < gltf_.meshes.size()
+                                    ? morph_targets_of(gltf_.meshes[static_cast<std::size_t>(node.mesh)])
+                                    : 0;
+    if (targets == 0)
+      fail(name + " animates the morph weights of node " + std::to_string(out.node) +
+           ", whose mesh has no morph targets");
     out.width = static_cast<int>(targets);
   } else {
     out.width = out.path == ChannelPath::Rotation ? 4 : 3;

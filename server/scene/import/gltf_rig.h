@@ -51,8 +51,7 @@ class GltfRigReader {
   std::uint32_t binding_of(int skin, int node);
   std::vector<double> read_weights_of(int node, const tinygltf::Primitive& primitive, std::size_t count,
                                       const std::string& name, std::vector<double>& joints, int& sets);
-  std::int32_t morph_set_of(int node, const tinygltf::Primitive& primitive, std::size_t count,
-                            const std::string& name);
+  std::int32_t morph_set_of(int node, const tinygltf::Primitive& primitive, std::size_t count, const std::string& name);
   void read_clips();
   Channel read_channel(std::size_t animation, std::size_t index);
 

@@ -35,7 +35,8 @@ long long helper_cpu_seconds(std::chrono::milliseconds time_limit) {
 
 std::string helper_reason(const std::string& errors) {
   std::string line = errors.substr(0, errors.find('\n')).substr(0, 200);
-  std::replace_if(line.begin(), line.end(), [](char c) { return c < 0x20 || c > 0x7e; }, '?');
+  std::replace_if(
+      line.begin(), line.end(), [](char c) { return c < 0x20 || c > 0x7e; }, '?');
   return line.empty() ? "it gave no reason" : line;
 }
 

@@ -9,8 +9,7 @@ namespace toond::scene {
 // as the error's path.
 class ImportError : public std::runtime_error {
  public:
-  ImportError(std::string file, const std::string& message)
-      : std::runtime_error(message), file_(std::move(file)) {}
+  ImportError(std::string file, const std::string& message) : std::runtime_error(message), file_(std::move(file)) {}
   const std::string& file() const { return file_; }
 
  private:

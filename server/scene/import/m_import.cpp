@@ -62,9 +62,8 @@ class Parser {
       std::string_view attributes;
       if (brace != std::string_view::npos) {
         const std::size_t close = line.rfind('}');
-        attributes = line.substr(brace + 1, close == std::string_view::npos || close < brace
-                                                ? std::string_view::npos
-                                                : close - brace - 1);
+        attributes = line.substr(
+            brace + 1, close == std::string_view::npos || close < brace ? std::string_view::npos : close - brace - 1);
       }
       const auto tokens = split_blanks(plain);
       if (tokens.empty()) {
@@ -84,14 +83,13 @@ class Parser {
       }
       if (more_ignored_kinds_) kinds += ", ...";
       warnings_.add(path_ + ": " + std::to_string(ignored_lines_) + (ignored_lines_ == 1 ? " line" : " lines") +
-                    " other than Vertex and Face " + (ignored_lines_ == 1 ? "was" : "were") +
-                    " ignored, from line " + std::to_string(first_ignored_line_) + ": " + kinds);
+                    " other than Vertex and Face " + (ignored_lines_ == 1 ? "was" : "were") + " ignored, from line " +
+                    std::to_string(first_ignored_line_) + ": " + kinds);
     }
     if (bad_attributes_ > 0) {
       warnings_.add(path_ + ": " + std::to_string(bad_attributes_) + " vertex attribute" +
                     (bad_attributes_ == 1 ? " was" : "s were") + " malformed and ignored, from line " +
-                    std::to_string(first_bad_attribute_line_) +
-                    " (expected normal=(x y z), uv=(u v) or rgb=(r g b))");
+                    std::to_string(first_bad_attribute_line_) + " (expected normal=(x y z), uv=(u v) or rgb=(r g b))");
     }
   }
 

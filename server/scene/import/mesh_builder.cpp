@@ -1,16 +1,16 @@
 #include "scene/import/mesh_builder.h"
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 
 #include "scene/import/import_error.h"
+#include "scene/mesh/duplicate_triangles.h"
 #include "scene/mesh/extreme_points.h"
 #include "scene/mesh/flat_map.h"
 #include "scene/mesh/mesh_processing.h"
-#include "scene/mesh/duplicate_triangles.h"
 #include "scene/mesh/normals_by_angle.h"
 #include "scene/mesh/position_weld.h"
 
@@ -21,9 +21,11 @@ void ImportWarnings::add(std::string message) {
   // byte that would not make valid UTF-8 is shown as '?'.
   for (std::size_t i = 0; i < message.size();) {
     const auto c = static_cast<unsigned char>(message[i]);
-    std::size_t extra = c < 0x80 ? 0 : (c & 0xe0) == 0xc0 && c >= 0xc2 ? 1 : (c & 0xf0) == 0xe0 ? 2
-                                   : (c & 0xf8) == 0xf0 && c <= 0xf4  ? 3
-                                                                      : 99;
+    std::size_t extra = c < 0x80                          ? 0
+                        : (c & 0xe0) == 0xc0 && c >= 0xc2 ? 1
+                        : (c & 0xf0) == 0xe0              ? 2
+                        : (c & 0xf8) == 0xf0 && c <= 0xf4 ? 3
+                                                          : 99;
     bool ok = extra != 99 && i + extra < message.size();
     for (std::size_t k = 1; ok && k <= extra; ++k) ok = (static_cast<unsigned char>(message[i + k]) & 0xc0) == 0x80;
     if (c < 0x20 && c != '\t') ok = false;
@@ -42,8 +44,10 @@ void ImportWarnings::add(std::string message) {
   }
   const auto [it, inserted] = seen_.try_emplace(message, kDropped);
   if (!inserted) {
-    if (it->second != kDropped) ++counts_[it->second];
-    else ++dropped_;
+    if (it->second != kDropped)
+      ++counts_[it->second];
+    else
+      ++dropped_;
     return;
   }
   if (list_.size() < kMaxWarnings) {
@@ -90,9 +94,9 @@ struct VertexKey {
 struct VertexKeyHash {
   std::size_t operator()(const VertexKey& k) const noexcept {
     std::uint64_t h = 1469598103934665603ull;
-    for (const std::uint64_t part : {static_cast<std::uint64_t>(k.v), static_cast<std::uint64_t>(k.vn),
-                                     static_cast<std::uint64_t>(k.vt), static_cast<std::uint64_t>(k.tangent),
-                                     static_cast<std::uint64_t>(k.smoothing)}) {
+    for (const std::uint64_t part :
+         {static_cast<std::uint64_t>(k.v), static_cast<std::uint64_t>(k.vn), static_cast<std::uint64_t>(k.vt),
+          static_cast<std::uint64_t>(k.tangent), static_cast<std::uint64_t>(k.smoothing)}) {
       h = (h ^ part) * 1099511628211ull;
     }
     return static_cast<std::size_t>(h);
@@ -133,8 +137,9 @@ class Builder {
     recentre();
     drop_degenerate();
     if (src_.triangles.empty()) {
-      throw ImportError(src_.file, src_.file + " has no faces to render (it holds only points, lines or "
-                                               "degenerate faces, or nothing at all)");
+      throw ImportError(src_.file, src_.file +
+                                       " has no faces to render (it holds only points, lines or "
+                                       "degenerate faces, or nothing at all)");
     }
     assign_materials(src_.triangles);
     const auto by_material = [](const SourceTriangle& a, const SourceTriangle& b) { return a.material < b.material; };
@@ -155,9 +160,9 @@ class Builder {
 
   void check_limits() const {
     if (src_.positions.size() > src_.limits.max_vertices) {
-      throw ImportLimitError(src_.file, ImportLimit::Vertices, static_cast<double>(src_.limits.max_vertices),
-                             src_.file + " has " + std::to_string(src_.positions.size()) +
-                                 " vertex positions, more than");
+      throw ImportLimitError(
+          src_.file, ImportLimit::Vertices, static_cast<double>(src_.limits.max_vertices),
+          src_.file + " has " + std::to_string(src_.positions.size()) + " vertex positions, more than");
     }
     if (src_.triangles.size() > src_.limits.max_triangles) {
       throw ImportLimitError(src_.file, ImportLimit::Triangles, static_cast<double>(src_.limits.max_triangles),
@@ -178,8 +183,8 @@ class Builder {
     for (std::size_t i = 0; i < src_.positions.size(); ++i) {
       const glm::dvec3& p = src_.positions[i];
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-        throw ImportError(src_.file, src_.file + ": " + describe_position(i) +
-                                         " has a coordinate that is not a finite number");
+        throw ImportError(src_.file,
+                          src_.file + ": " + describe_position(i) + " has a coordinate that is not a finite number");
       }
     }
   }
@@ -255,7 +260,8 @@ class Builder {
       }
     }
     if (not_finite > 0) {
-      warnings_.add(src_.file + ": " + plural(not_finite, "vertex colour component was", "vertex colour components were") +
+      warnings_.add(src_.file + ": " +
+                    plural(not_finite, "vertex colour component was", "vertex colour components were") +
                     " not a finite number and became 1");
     }
     if (highest > 1.0 && highest <= 255.0 && all_whole && lowest >= 0.0) {
@@ -312,8 +318,10 @@ class Builder {
     }
     src_.triangles.resize(kept);
     if (degenerate > 0) {
-      warnings_.add_summary(src_.file + ": " + plural(degenerate, "degenerate (zero-area) triangle was", "degenerate (zero-area) triangles were") +
-                    " dropped");
+      warnings_.add_summary(
+          src_.file + ": " +
+          plural(degenerate, "degenerate (zero-area) triangle was", "degenerate (zero-area) triangles were") +
+          " dropped");
     }
   }
 
@@ -333,10 +341,9 @@ class Builder {
     const std::size_t repeated = src_.triangles.size() - kept;
     src_.triangles.resize(kept);
     if (repeated > 0) {
-      warnings_.add_summary(src_.file + ": " +
-                    plural(repeated, "triangle repeated", "triangles repeated") +
-                    " the corners of another and " + (repeated == 1 ? "was" : "were") +
-                    " dropped (of each face the one drawn last is kept)");
+      warnings_.add_summary(src_.file + ": " + plural(repeated, "triangle repeated", "triangles repeated") +
+                            " the corners of another and " + (repeated == 1 ? "was" : "were") +
+                            " dropped (of each face the one drawn last is kept)");
     }
   }
 
@@ -363,8 +370,7 @@ class Builder {
   // whose faces meet at a sharp edge around it get a vertex each, a copy of
   // the first; returns per vertex (copies included) its corner group, which
   // its normal is averaged over.
-  std::vector<std::uint32_t> split_by_angle(std::vector<std::uint32_t>& position_class,
-                                            std::vector<bool>& needs_normal,
+  std::vector<std::uint32_t> split_by_angle(std::vector<std::uint32_t>& position_class, std::vector<bool>& needs_normal,
                                             std::vector<std::int64_t>& smoothing_of_vertex,
                                             std::vector<std::int64_t>& file_tangents) {
     Mesh& mesh = mesh_;
@@ -381,8 +387,8 @@ class Builder {
       const std::uint32_t g = corner_group[c];
       if (group_of_vertex[v] == kNone) group_of_vertex[v] = g;
       if (group_of_vertex[v] == g) continue;
-      const auto [copy, inserted] =
-          copies.try_emplace((static_cast<std::uint64_t>(v) << 32) | g, static_cast<std::uint32_t>(mesh.positions.size()));
+      const auto [copy, inserted] = copies.try_emplace((static_cast<std::uint64_t>(v) << 32) | g,
+                                                       static_cast<std::uint32_t>(mesh.positions.size()));
       if (inserted) {
         mesh.positions.push_back(mesh.positions[v]);
         mesh.normals.push_back(mesh.normals[v]);
@@ -490,7 +496,8 @@ class Builder {
       for (std::size_t v = 0; v < groups.size(); ++v) {
         // A vertex that brought its own normal forms a group of its own
         // (its computed normal is discarded anyway).
-        const GroupKey key = !needs_normal[v] ? GroupKey{static_cast<std::uint32_t>(v), std::numeric_limits<std::int64_t>::min()}
+        const GroupKey key = !needs_normal[v]
+                                 ? GroupKey{static_cast<std::uint32_t>(v), std::numeric_limits<std::int64_t>::min()}
                              : !angle_group.empty() ? GroupKey{angle_group[v], kAngleGroup}
                                                     : GroupKey{position_class[v], smoothing_of_vertex[v]};
         groups[v] = group_ids.try_emplace(key, static_cast<std::uint32_t>(group_ids.size())).first;

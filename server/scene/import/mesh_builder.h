@@ -14,8 +14,8 @@
 
 #include "scene/import/import_choices.h"
 #include "scene/import/import_limits.h"
-#include "scene/mesh/normals_by_angle.h"
 #include "scene/mesh/model.h"
+#include "scene/mesh/normals_by_angle.h"
 
 namespace toond::scene {
 
@@ -72,12 +72,12 @@ struct SourceTriangle {
 struct MeshSource {
   std::string file;  // the bundle path: named in messages and ImportError::file
   std::vector<glm::dvec3> positions;
-  std::vector<glm::dvec3> normals;    // need not be unit length, may be unusable
+  std::vector<glm::dvec3> normals;  // need not be unit length, may be unusable
   std::vector<glm::dvec2> texcoords;
   // The file's own tangents (glTF TANGENT): xyz along the texture's u, w the
   // bitangent's handedness (±1); need not be unit length, may be unusable.
   std::vector<glm::dvec4> tangents;
-  std::vector<glm::dvec3> colors;     // empty, or one per position (0..1 expected)
+  std::vector<glm::dvec3> colors;  // empty, or one per position (0..1 expected)
   // Empty, or one per position: how it moves (Rig::motions); carried to
   // every vertex made from the position as Mesh::motion.
   std::vector<std::uint32_t> motions;

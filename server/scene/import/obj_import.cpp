@@ -109,13 +109,13 @@ class BundleMaterialReader : public tinyobj::MaterialReader {
   // apart from values written in the file.
   GivenStatements given(int id) const {
     return id >= 0 && static_cast<std::size_t>(id) < given_.size() ? given_[static_cast<std::size_t>(id)]
-                                                                    : GivenStatements{};
+                                                                   : GivenStatements{};
   }
 
   // The MTL that defined material `id` (the OBJ itself when unknown).
   const std::string& source_of(int id) const {
     return id >= 0 && static_cast<std::size_t>(id) < sources_.size() ? sources_[static_cast<std::size_t>(id)]
-                                                                      : obj_path_;
+                                                                     : obj_path_;
   }
 
  private:
@@ -285,10 +285,10 @@ class Importer {
           for (int c = 0; c < 3; ++c) {
             const auto& idx = shape.mesh.indices[picks[c]];
             if (idx.vertex_index < 0 || idx.vertex_index >= position_count) {
-              throw ImportError(obj_path_,
-                                obj_path_ + ": a face" + (shape.name.empty() ? "" : " in " + quoted(shape.name)) +
-                                    " refers to a vertex position that does not exist (the file defines " +
-                                    std::to_string(position_count) + ")");
+              throw ImportError(obj_path_, obj_path_ + ": a face" +
+                                               (shape.name.empty() ? "" : " in " + quoted(shape.name)) +
+                                               " refers to a vertex position that does not exist (the file defines " +
+                                               std::to_string(position_count) + ")");
             }
             SourceCorner& corner = tri.corner[c];
             corner.position = static_cast<std::uint32_t>(idx.vertex_index);
@@ -335,8 +335,8 @@ class Importer {
     if (const auto it = texture_slots_.find(key); it != texture_slots_.end()) return it->second;
     int slot = -1;
     try {
-      Texture texture = decode_model_texture(*bundle_.find(*path), *path, limits_.max_texture_pixels,
-                                             texture_pixels_left_);
+      Texture texture =
+          decode_model_texture(*bundle_.find(*path), *path, limits_.max_texture_pixels, texture_pixels_left_);
       texture.color_space = space;
       if (!colour_map && is_greyscale(texture)) {
         warnings_.add(*path + ": the bump map of material " + quoted(material_name) +

@@ -40,13 +40,17 @@ std::optional<Type> type_named(std::string_view name) {
 std::size_t size_of(Type t) {
   switch (t) {
     case Type::Int8:
-    case Type::Uint8: return 1;
+    case Type::Uint8:
+      return 1;
     case Type::Int16:
-    case Type::Uint16: return 2;
+    case Type::Uint16:
+      return 2;
     case Type::Int32:
     case Type::Uint32:
-    case Type::Float32: return 4;
-    case Type::Float64: return 8;
+    case Type::Float32:
+      return 4;
+    case Type::Float64:
+      return 8;
   }
   return 1;
 }
@@ -99,10 +103,14 @@ Header read_header(std::string_view bytes, const Failure& fail) {
       magic = true;
     } else if (t[0] == "format") {
       if (t.size() < 2) fail("a format line without a format");
-      if (t[1] == "ascii") header.format = Format::Ascii;
-      else if (t[1] == "binary_little_endian") header.format = Format::BinaryLittle;
-      else if (t[1] == "binary_big_endian") header.format = Format::BinaryBig;
-      else fail("unknown format \"" + std::string(t[1].substr(0, 40)) + "\"");
+      if (t[1] == "ascii")
+        header.format = Format::Ascii;
+      else if (t[1] == "binary_little_endian")
+        header.format = Format::BinaryLittle;
+      else if (t[1] == "binary_big_endian")
+        header.format = Format::BinaryBig;
+      else
+        fail("unknown format \"" + std::string(t[1].substr(0, 40)) + "\"");
       format = true;
     } else if (t[0] == "element") {
       const auto count = t.size() == 3 ? parse_integer(t[2]) : std::nullopt;
@@ -150,7 +158,8 @@ class ValueReader {
     while (pos_ < data_.size() && !std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
     if (pos_ == start) fail_("the data ends before the header's counts are read");
     const auto value = parse_real(data_.substr(start, pos_ - start));
-    if (!value) fail_("\"" + std::string(data_.substr(start, std::min<std::size_t>(pos_ - start, 40))) + "\" is not a number");
+    if (!value)
+      fail_("\"" + std::string(data_.substr(start, std::min<std::size_t>(pos_ - start, 40))) + "\" is not a number");
     return *value;
   }
 
@@ -164,12 +173,18 @@ class ValueReader {
     std::uint64_t bits = 0;
     for (std::size_t i = 0; i < n; ++i) bits |= static_cast<std::uint64_t>(b[little ? i : n - 1 - i]) << (8 * i);
     switch (type) {
-      case Type::Int8: return static_cast<std::int8_t>(bits);
-      case Type::Uint8: return static_cast<std::uint8_t>(bits);
-      case Type::Int16: return static_cast<std::int16_t>(bits);
-      case Type::Uint16: return static_cast<std::uint16_t>(bits);
-      case Type::Int32: return static_cast<std::int32_t>(bits);
-      case Type::Uint32: return static_cast<std::uint32_t>(bits);
+      case Type::Int8:
+        return static_cast<std::int8_t>(bits);
+      case Type::Uint8:
+        return static_cast<std::uint8_t>(bits);
+      case Type::Int16:
+        return static_cast<std::int16_t>(bits);
+      case Type::Uint16:
+        return static_cast<std::uint16_t>(bits);
+      case Type::Int32:
+        return static_cast<std::int32_t>(bits);
+      case Type::Uint32:
+        return static_cast<std::uint32_t>(bits);
       case Type::Float32: {
         const auto u = static_cast<std::uint32_t>(bits);
         float f = 0;
@@ -203,17 +218,28 @@ VertexLayout vertex_layout(const Element& e) {
   for (std::size_t i = 0; i < e.properties.size(); ++i) {
     const std::string& n = e.properties[i].name;
     if (e.properties[i].list_count) continue;
-    if (n == "x") l.x = i;
-    else if (n == "y") l.y = i;
-    else if (n == "z") l.z = i;
-    else if (n == "nx") l.nx = i;
-    else if (n == "ny") l.ny = i;
-    else if (n == "nz") l.nz = i;
-    else if (n == "s" || n == "u" || n == "texture_u" || n == "texture_s") l.u = i;
-    else if (n == "t" || n == "v" || n == "texture_v" || n == "texture_t") l.v = i;
-    else if (n == "red" || n == "diffuse_red") l.red = i;
-    else if (n == "green" || n == "diffuse_green") l.green = i;
-    else if (n == "blue" || n == "diffuse_blue") l.blue = i;
+    if (n == "x")
+      l.x = i;
+    else if (n == "y")
+      l.y = i;
+    else if (n == "z")
+      l.z = i;
+    else if (n == "nx")
+      l.nx = i;
+    else if (n == "ny")
+      l.ny = i;
+    else if (n == "nz")
+      l.nz = i;
+    else if (n == "s" || n == "u" || n == "texture_u" || n == "texture_s")
+      l.u = i;
+    else if (n == "t" || n == "v" || n == "texture_v" || n == "texture_t")
+      l.v = i;
+    else if (n == "red" || n == "diffuse_red")
+      l.red = i;
+    else if (n == "green" || n == "diffuse_green")
+      l.green = i;
+    else if (n == "blue" || n == "diffuse_blue")
+      l.blue = i;
   }
   if (l.red) {
     const Type t = e.properties[*l.red].type;
@@ -235,9 +261,12 @@ class PlyReader {
     source.file = path_;
     source.limits = limits_;
     for (const Element& e : header.elements) {
-      if (e.name == "vertex") read_vertices(e, values, source);
-      else if (e.name == "face") read_faces(e, values, source);
-      else skip(e, values);
+      if (e.name == "vertex")
+        read_vertices(e, values, source);
+      else if (e.name == "face")
+        read_faces(e, values, source);
+      else
+        skip(e, values);
     }
     if (!colours_.empty()) source.colors = std::move(colours_);
     return source;

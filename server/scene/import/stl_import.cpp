@@ -88,8 +88,8 @@ bool binary_size_matches(std::string_view bytes) {
 constexpr std::string_view kAsciiWords[] = {"facet", "loop", "vertex", "endsolid"};
 bool starts_as_ascii(std::string_view bytes) {
   const std::string_view head = text::trim(bytes.substr(0, 1024));
-  const bool solid = head.starts_with("solid") && (head.size() == 5 || head[5] == ' ' || head[5] == '\t' ||
-                                                   head[5] == '\r' || head[5] == '\n');
+  const bool solid = head.starts_with("solid") &&
+                     (head.size() == 5 || head[5] == ' ' || head[5] == '\t' || head[5] == '\r' || head[5] == '\n');
   return solid && std::any_of(std::begin(kAsciiWords), std::end(kAsciiWords),
                               [&](std::string_view w) { return head.find(w) != std::string_view::npos; });
 }
@@ -105,8 +105,7 @@ void read_binary(const std::string& path, std::string_view bytes, const ImportLi
     const unsigned char* facet = data + kHeaderBytes + 4 + static_cast<std::size_t>(t) * kTriangleBytes;
     for (int c = 0; c < 3; ++c) {
       const unsigned char* v = facet + 12 + 12 * c;  // after the facet's normal
-      corners[static_cast<std::size_t>(c)] =
-          positions.add({little_float(v), little_float(v + 4), little_float(v + 8)});
+      corners[static_cast<std::size_t>(c)] = positions.add({little_float(v), little_float(v + 4), little_float(v + 8)});
     }
     add_polygon(source, corners);
     if (t % 65536 == 65535) check_import_time(limits, "reading " + path);
@@ -172,8 +171,9 @@ Model import_stl_bundle(const Bundle& bundle, const ImportLimits& limits, const 
   } else if (bytes.size() >= kHeaderBytes + 4) {
     const std::uint64_t count = little_u32(reinterpret_cast<const unsigned char*>(bytes.data()) + kHeaderBytes);
     throw ImportError(path, path + ": a binary STL of " + std::to_string(count) + " triangles is " +
-                                std::to_string(kHeaderBytes + 4 + count * kTriangleBytes) + " bytes, but the file has " +
-                                std::to_string(bytes.size()) + " (cut short, or the count is wrong)");
+                                std::to_string(kHeaderBytes + 4 + count * kTriangleBytes) +
+                                " bytes, but the file has " + std::to_string(bytes.size()) +
+                                " (cut short, or the count is wrong)");
   } else {
     throw ImportError(path, path + ": " + std::to_string(bytes.size()) +
                                 " bytes are too few for a binary STL (84 at least) and it is not ASCII STL");

@@ -27,9 +27,9 @@ std::optional<double> parse_real(std::string_view s) {
   if (error == std::errc::result_out_of_range) {
     const bool negative = s.front() == '-';
     const auto e = s.find_first_of("eE");
-    const bool tiny = e != std::string_view::npos ? (e + 1 < s.size() && s[e + 1] == '-')
-                                                  : s.substr(negative ? 1 : 0).starts_with("0") ||
-                                                        s.substr(negative ? 1 : 0).starts_with(".");
+    const bool tiny = e != std::string_view::npos
+                          ? (e + 1 < s.size() && s[e + 1] == '-')
+                          : s.substr(negative ? 1 : 0).starts_with("0") || s.substr(negative ? 1 : 0).starts_with(".");
     if (tiny) return negative ? -0.0 : 0.0;
     return negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
   }

@@ -1,12 +1,12 @@
 #include "scene/import/texture_decode.h"
 
+#include <algorithm>
 #include <climits>
 #include <cstring>
-#include <algorithm>
 #include <memory>
 #include <optional>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 
 #include <stb_image.h>
 #include <webp/decode.h>
@@ -21,9 +21,10 @@ void check_limits(std::uint64_t width, std::uint64_t height, const TextureLimits
   if (width > side || height > side || width * height > limits.max_pixels) {
     const auto w = static_cast<int>(std::min<std::uint64_t>(width, INT_MAX));
     const auto h = static_cast<int>(std::min<std::uint64_t>(height, INT_MAX));
-    throw TextureTooLarge(w, h, "the image is " + std::to_string(width) + "x" + std::to_string(height) +
-                                    ", larger than the limit of " + std::to_string(limits.max_dimension) +
-                                    " per side and " + std::to_string(limits.max_pixels) + " pixels");
+    throw TextureTooLarge(w, h,
+                          "the image is " + std::to_string(width) + "x" + std::to_string(height) +
+                              ", larger than the limit of " + std::to_string(limits.max_dimension) + " per side and " +
+                              std::to_string(limits.max_pixels) + " pixels");
   }
 }
 

@@ -157,7 +157,8 @@ CreaseEdges find_in(std::span<const glm::vec3> positions, std::span<const glm::v
   CreaseEdges edges;
   static_cast<TurnTally&>(edges) = tally_turns(turns, lengths, groups.diagonal);
   edges.indices.reserve(found.size() * 4);
-  for (const Found& edge : found) edges.indices.insert(edges.indices.end(), std::begin(edge.vertices), std::end(edge.vertices));
+  for (const Found& edge : found)
+    edges.indices.insert(edges.indices.end(), std::begin(edge.vertices), std::end(edge.vertices));
   return edges;
 }
 

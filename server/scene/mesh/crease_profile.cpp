@@ -1,8 +1,8 @@
 #include "scene/mesh/crease_profile.h"
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "scene/mesh/flat_map.h"
@@ -58,7 +58,11 @@ struct CreasedEdge {
 class CreaseLines {
  public:
   CreaseLines(std::size_t groups, std::span<const double> areas, double line_length)
-      : parent_(groups), length_(groups, 0.0), beside_(groups), areas_(areas), counted_(areas.size(), false),
+      : parent_(groups),
+        length_(groups, 0.0),
+        beside_(groups),
+        areas_(areas),
+        counted_(areas.size(), false),
         line_length_(line_length) {
     for (std::size_t g = 0; g < groups; ++g) parent_[g] = static_cast<std::uint32_t>(g);
   }
@@ -163,7 +167,8 @@ CreaseProfile measure_creases(std::span<const glm::vec3> positions, std::span<co
   }
   // From the sharpest creases down: at angle d every edge turning by more
   // than d is creased, and lines only grow as d falls.
-  std::sort(creased.begin(), creased.end(), [](const CreasedEdge& x, const CreasedEdge& y) { return x.degree > y.degree; });
+  std::sort(creased.begin(), creased.end(),
+            [](const CreasedEdge& x, const CreasedEdge& y) { return x.degree > y.degree; });
   const std::size_t groups = group.empty() ? 0 : *std::max_element(group.begin(), group.end()) + std::size_t{1};
   CreaseLines lines(groups, areas, kCreaseLineLength * bounding_diagonal(positions));
   std::size_t next = 0;

@@ -14,7 +14,6 @@
 namespace toond::scene {
 namespace {
 
-
 // Per edge between two groups (smaller id in the high half): how many more
 // times the triangles cross it from the smaller id to the larger than back.
 EdgeTable edge_balance(std::span<const std::uint32_t> group, std::span<const std::uint32_t> indices) {
@@ -204,8 +203,8 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
   std::unordered_map<std::uint32_t, Part> parts;
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     parts[components.root(position_group[indices[t]])].add(point[position_group[indices[t]]],
-                                                          point[position_group[indices[t + 1]]],
-                                                          point[position_group[indices[t + 2]]]);
+                                                           point[position_group[indices[t + 1]]],
+                                                           point[position_group[indices[t + 2]]]);
   }
   // Each hole closed by a triangulation of its rim, run against the rim so
   // the cap continues the mesh's winding.
@@ -231,9 +230,12 @@ Enclosure classify_enclosure(std::span<const glm::vec3> positions, std::span<con
     // large one; what stays under this is a flat or two-sided sheet.
     const double size = glm::length(part.max - part.min);
     const double least = 1e-7 * size * size * size;
-    if (part.volume > least) ++outward;
-    else if (part.volume < -least) ++inward;
-    else outward = inward = 1;  // no side to skip
+    if (part.volume > least)
+      ++outward;
+    else if (part.volume < -least)
+      ++inward;
+    else
+      outward = inward = 1;  // no side to skip
   }
   if (inward == 0 && outward > 0) return Enclosure::Outward;
   if (outward == 0 && inward > 0) return Enclosure::Inward;

@@ -186,8 +186,9 @@ std::optional<FoundSeam> crossing(const Triangle& t1, const Triangle& t2, double
   // segment's length): a piece of a seam cut short by a triangle edge
   // still gives the shader planes it can tell apart in float.
   const auto off = [&](const Triangle& t) {
-    const double reach = std::max({length, glm::distance(t.corners[0], t.corners[1]),
-                                   glm::distance(t.corners[1], t.corners[2]), glm::distance(t.corners[2], t.corners[0])});
+    const double reach =
+        std::max({length, glm::distance(t.corners[0], t.corners[1]), glm::distance(t.corners[1], t.corners[2]),
+                  glm::distance(t.corners[2], t.corners[0])});
     return glm::vec3(middle + glm::normalize(glm::cross(t.normal, along)) * reach);
   };
   found.points[0] = off(t1);
@@ -211,10 +212,11 @@ class Search {
         indices_(indices),
         tolerance_(tolerance),
         options_(options),
-        budget_(std::max(kLeastIntersectionWork, static_cast<std::size_t>(options.work_per_triangle *
-                                                               static_cast<double>(triangles_.size())))),
-        most_segments_(std::max(kLeastIntersectionSegments, static_cast<std::size_t>(options.segments_per_triangle *
-                                                                      static_cast<double>(triangles_.size())))) {
+        budget_(std::max(kLeastIntersectionWork,
+                         static_cast<std::size_t>(options.work_per_triangle * static_cast<double>(triangles_.size())))),
+        most_segments_(std::max(
+            kLeastIntersectionSegments,
+            static_cast<std::size_t>(options.segments_per_triangle * static_cast<double>(triangles_.size())))) {
     order_.resize(triangles_.size());
     std::iota(order_.begin(), order_.end(), 0u);
     if (!triangles_.empty()) build(0, static_cast<std::uint32_t>(triangles_.size()));
@@ -316,10 +318,9 @@ class Search {
     std::optional<FoundSeam> found = crossing(t1, t2, tolerance_);
     if (!found) return;
     const glm::dvec3 a(found->points[1]), b(found->points[2]);
-    const double turn = std::max(turn_deg(shading_normal_at(a, t1, normals_, indices_),
-                                          shading_normal_at(a, t2, normals_, indices_)),
-                                 turn_deg(shading_normal_at(b, t1, normals_, indices_),
-                                          shading_normal_at(b, t2, normals_, indices_)));
+    const double turn =
+        std::max(turn_deg(shading_normal_at(a, t1, normals_, indices_), shading_normal_at(a, t2, normals_, indices_)),
+                 turn_deg(shading_normal_at(b, t1, normals_, indices_), shading_normal_at(b, t2, normals_, indices_)));
     found->turn = static_cast<int>(std::min(std::ceil(turn), 180.0));
     if (found->turn <= kLeastTurnDeg) return;
     found_.push_back(*found);

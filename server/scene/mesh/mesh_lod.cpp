@@ -3,10 +3,10 @@
 #include <meshoptimizer.h>
 
 #include <algorithm>
-#include <functional>
-#include <optional>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <optional>
 
 #include "scene/mesh/edge_table.h"
 #include "scene/mesh/flat_map.h"
@@ -104,7 +104,8 @@ std::vector<std::uint32_t> groups_moving_alike(std::span<const std::uint32_t> po
 
 bool corners_move_alike(const std::vector<std::uint32_t>& motion_class, const std::uint32_t* triangle) {
   if (motion_class.empty()) return true;
-  return motion_class[triangle[0]] == motion_class[triangle[1]] && motion_class[triangle[1]] == motion_class[triangle[2]];
+  return motion_class[triangle[0]] == motion_class[triangle[1]] &&
+         motion_class[triangle[1]] == motion_class[triangle[2]];
 }
 
 // One submesh's triangles sorted for simplification: those at a hub, and
@@ -128,7 +129,8 @@ SubmeshSplit split_submesh(const Mesh& mesh, const std::vector<std::uint32_t>& p
     if (dropped[i / 3]) continue;
     const std::uint32_t* tri = &source[i];
     const auto g = corner_groups(position_group, tri);
-    const bool at_hub = std::any_of(g.begin(), g.end(), [&](std::uint32_t p) { return valence[p] > kMaxSimplifiedValence; });
+    const bool at_hub =
+        std::any_of(g.begin(), g.end(), [&](std::uint32_t p) { return valence[p] > kMaxSimplifiedValence; });
     if (at_hub || !corners_move_alike(motion_class, tri)) {
       split.pinned.insert(split.pinned.end(), tri, tri + 3);
       continue;
@@ -265,7 +267,8 @@ std::vector<MeshLod> build_lod_chain(const Mesh& mesh, std::span<const std::uint
     for (const Submesh& sub : source_subs) {
       Submesh out{static_cast<std::uint32_t>(lod.indices.size()), 0, sub.material};
       if (sub.index_count > 0) {
-        const double error = simplify_submesh(mesh, position_group, source, sub, dropped, valence, options, lod.indices);
+        const double error =
+            simplify_submesh(mesh, position_group, source, sub, dropped, valence, options, lod.indices);
         out.index_count = static_cast<std::uint32_t>(lod.indices.size() - out.first_index);
         step_error = std::max(step_error, error);
       }

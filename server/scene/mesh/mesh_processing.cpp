@@ -16,7 +16,6 @@ constexpr std::uint32_t kNoGroup = ~0u;
 // Longest outline offset, in units of the outline width.
 constexpr double kMaxMitre = 3.0;
 
-
 // Relative to the squared longest edge: below this the cross product is
 // rounding noise and the face normal would point anywhere.
 constexpr double kDegenerateRatio = 1e-10;
@@ -78,8 +77,7 @@ namespace {
 // Calls fn(corner indices, corner positions, unit normal, corner angles) for
 // every triangle with an area; degenerate ones have no normal to give.
 template <class Fn>
-void for_each_shaded_triangle(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
-                              Fn&& fn) {
+void for_each_shaded_triangle(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices, Fn&& fn) {
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     const std::uint32_t i[3] = {indices[t], indices[t + 1], indices[t + 2]};
     const glm::dvec3 p[3] = {positions[i[0]], positions[i[1]], positions[i[2]]};
@@ -101,10 +99,11 @@ std::vector<ShadedTriangle> shaded_triangles(std::span<const glm::vec3> position
                                              std::span<const std::uint32_t> indices) {
   std::vector<ShadedTriangle> shaded;
   shaded.reserve(indices.size() / 3);
-  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&)[3],
-                                                   const glm::dvec3& n, const glm::dvec3& angles) {
-    shaded.push_back({{i[0], i[1], i[2]}, n, angles});
-  });
+  for_each_shaded_triangle(
+      positions, indices,
+      [&](const std::uint32_t(&i)[3], const glm::dvec3(&)[3], const glm::dvec3& n, const glm::dvec3& angles) {
+        shaded.push_back({{i[0], i[1], i[2]}, n, angles});
+      });
   return shaded;
 }
 
@@ -145,13 +144,14 @@ std::vector<glm::vec3> compute_grouped_normals(std::span<const glm::vec3> positi
   std::vector<glm::dvec3> sums(group_count, glm::dvec3(0.0));
   std::vector<glm::dvec3> first_face(positions.size(), glm::dvec3(0.0));
 
-  for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3(&)[3],
-                                                   const glm::dvec3& n, const glm::dvec3& angles) {
-    for (int k = 0; k < 3; ++k) {
-      sums[group_of_vertex[i[k]]] += n * angles[k];
-      if (first_face[i[k]] == glm::dvec3(0.0)) first_face[i[k]] = n;
-    }
-  });
+  for_each_shaded_triangle(
+      positions, indices,
+      [&](const std::uint32_t(&i)[3], const glm::dvec3(&)[3], const glm::dvec3& n, const glm::dvec3& angles) {
+        for (int k = 0; k < 3; ++k) {
+          sums[group_of_vertex[i[k]]] += n * angles[k];
+          if (first_face[i[k]] == glm::dvec3(0.0)) first_face[i[k]] = n;
+        }
+      });
 
   std::vector<glm::vec3> normals(positions.size());
   for (std::size_t v = 0; v < positions.size(); ++v) {
@@ -194,7 +194,8 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
   auto edge_key = [&](std::uint32_t a, std::uint32_t b) { return EdgeTable::key(groups[a], groups[b]); };
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     for (int k = 0; k < 3; ++k) {
-      ++edge_use[edge_key(indices[t + static_cast<std::size_t>(k)], indices[t + static_cast<std::size_t>((k + 1) % 3)])];
+      ++edge_use[edge_key(indices[t + static_cast<std::size_t>(k)],
+                          indices[t + static_cast<std::size_t>((k + 1) % 3)])];
     }
   }
   // Every triangle with an area, its normal and corner angles found once:
@@ -218,13 +219,16 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
     for (const std::uint32_t corner : shaded[s].corner) {
       const std::uint32_t g = groups[corner];
       const auto dirs = directions_of(g);
-      const bool known = std::any_of(dirs.begin(), dirs.end(), [&](std::uint32_t d) { return glm::dot(shaded[d].normal, n) > 0.999; });
-      if (!known && directions_known[g] < kDirectionsKept) face_directions[g * kDirectionsKept + directions_known[g]++] = s;
+      const bool known =
+          std::any_of(dirs.begin(), dirs.end(), [&](std::uint32_t d) { return glm::dot(shaded[d].normal, n) > 0.999; });
+      if (!known && directions_known[g] < kDirectionsKept)
+        face_directions[g * kDirectionsKept + directions_known[g]++] = s;
     }
   }
   auto faces_push_that_way = [&](std::uint32_t group, const glm::dvec3& direction) {
     const auto dirs = directions_of(group);
-    return std::any_of(dirs.begin(), dirs.end(), [&](std::uint32_t d) { return glm::dot(shaded[d].normal, direction) > 0.7; });
+    return std::any_of(dirs.begin(), dirs.end(),
+                       [&](std::uint32_t d) { return glm::dot(shaded[d].normal, direction) > 0.7; });
   };
   // The pushes across open rims, found once for both visits.
   struct RimPush {
@@ -299,32 +303,32 @@ glm::vec3 any_perpendicular(const glm::vec3& n_in) {
 }
 
 std::vector<glm::vec4> compute_tangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                        std::span<const glm::vec2> texcoords,
-                                        std::span<const std::uint32_t> indices) {
+                                        std::span<const glm::vec2> texcoords, std::span<const std::uint32_t> indices) {
   std::vector<glm::dvec3> tangent_sum(positions.size(), glm::dvec3(0.0));
   std::vector<glm::dvec3> bitangent_sum(positions.size(), glm::dvec3(0.0));
   if (texcoords.size() >= positions.size()) {
-    for_each_shaded_triangle(positions, indices, [&](const std::uint32_t (&i)[3], const glm::dvec3 (&p)[3],
-                                                     const glm::dvec3&, const glm::dvec3& angles) {
-      const glm::dvec2 uv[3] = {texcoords[i[0]], texcoords[i[1]], texcoords[i[2]]};
-      const glm::dvec2 d1 = uv[1] - uv[0];
-      const glm::dvec2 d2 = uv[2] - uv[0];
-      const glm::dvec2 d3 = uv[2] - uv[1];
-      // Twice the signed UV area; against the longest UV edge, as for
-      // positions, so the test does not depend on the texture's scale.
-      const double r = d1.x * d2.y - d2.x * d1.y;
-      const double longest = std::max({glm::dot(d1, d1), glm::dot(d2, d2), glm::dot(d3, d3)});
-      if (!(std::abs(r) > kDegenerateRatio * longest) || !std::isfinite(r)) return;
-      const glm::dvec3 e1 = p[1] - p[0];
-      const glm::dvec3 e2 = p[2] - p[0];
-      const glm::dvec3 t = glm::dvec3(to_unit_float((e1 * d2.y - e2 * d1.y) / r));
-      const glm::dvec3 b = glm::dvec3(to_unit_float((e2 * d1.x - e1 * d2.x) / r));
-      if (t == glm::dvec3(0.0) || b == glm::dvec3(0.0)) return;
-      for (int k = 0; k < 3; ++k) {
-        tangent_sum[i[k]] += t * angles[k];
-        bitangent_sum[i[k]] += b * angles[k];
-      }
-    });
+    for_each_shaded_triangle(
+        positions, indices,
+        [&](const std::uint32_t(&i)[3], const glm::dvec3(&p)[3], const glm::dvec3&, const glm::dvec3& angles) {
+          const glm::dvec2 uv[3] = {texcoords[i[0]], texcoords[i[1]], texcoords[i[2]]};
+          const glm::dvec2 d1 = uv[1] - uv[0];
+          const glm::dvec2 d2 = uv[2] - uv[0];
+          const glm::dvec2 d3 = uv[2] - uv[1];
+          // Twice the signed UV area; against the longest UV edge, as for
+          // positions, so the test does not depend on the texture's scale.
+          const double r = d1.x * d2.y - d2.x * d1.y;
+          const double longest = std::max({glm::dot(d1, d1), glm::dot(d2, d2), glm::dot(d3, d3)});
+          if (!(std::abs(r) > kDegenerateRatio * longest) || !std::isfinite(r)) return;
+          const glm::dvec3 e1 = p[1] - p[0];
+          const glm::dvec3 e2 = p[2] - p[0];
+          const glm::dvec3 t = glm::dvec3(to_unit_float((e1 * d2.y - e2 * d1.y) / r));
+          const glm::dvec3 b = glm::dvec3(to_unit_float((e2 * d1.x - e1 * d2.x) / r));
+          if (t == glm::dvec3(0.0) || b == glm::dvec3(0.0)) return;
+          for (int k = 0; k < 3; ++k) {
+            tangent_sum[i[k]] += t * angles[k];
+            bitangent_sum[i[k]] += b * angles[k];
+          }
+        });
   }
 
   std::vector<glm::vec4> tangents(positions.size());

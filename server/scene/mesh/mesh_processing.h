@@ -70,8 +70,7 @@ glm::vec3 any_perpendicular(const glm::vec3& n);
 // degenerate, or dP/dU along the normal) get any_perpendicular(normal),
 // w = +1. `normals` and `texcoords` are per vertex like `positions`.
 std::vector<glm::vec4> compute_tangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                        std::span<const glm::vec2> texcoords,
-                                        std::span<const std::uint32_t> indices);
+                                        std::span<const glm::vec2> texcoords, std::span<const std::uint32_t> indices);
 
 Bounds compute_bounds(std::span<const glm::vec3> positions);
 

@@ -35,8 +35,8 @@ struct Texture {
 
 struct Material {
   std::string name;
-  glm::vec3 diffuse{0.8f};     // Kd, linear (MTL values are taken as linear)
-  int diffuse_texture = -1;    // index into Model::textures, -1 = none
+  glm::vec3 diffuse{0.8f};   // Kd, linear (MTL values are taken as linear)
+  int diffuse_texture = -1;  // index into Model::textures, -1 = none
   // Tangent-space normal map (MTL map_Bump / bump / norm; Blender writes its
   // normal maps as map_Bump), index into Model::textures, -1 = none. Always
   // a ColorSpace::Linear texture. Convention: OpenGL / Blender, i.e. RGB =
@@ -74,9 +74,7 @@ struct Bounds {
   // Radius of the sphere around centre() that holds the box.
   float radius() const { return glm::length(max - min) * 0.5f; }
   // Corner i (0..7) of the box: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
-  glm::dvec3 corner(int i) const {
-    return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
-  }
+  glm::dvec3 corner(int i) const { return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z}; }
 };
 
 // Whether triangles close around a volume (scene/mesh/enclosure.h), once the
@@ -99,10 +97,10 @@ struct MeshLod {
   std::vector<Submesh> submeshes;      // ranges of `indices`, one per Mesh::submeshes entry, same materials
   double error = 0;                    // how far the surface may stray from the full mesh, mesh units
   Enclosure enclosure = Enclosure::Open;
-  std::vector<glm::vec3> caps;  // see Mesh::caps
+  std::vector<glm::vec3> caps;             // see Mesh::caps
   std::vector<std::uint32_t> cap_indices;  // see Mesh::cap_indices
-  CreaseEdges crease_edges;  // see Mesh::crease_edges
-  IntersectionLines intersections;  // see Mesh::intersections
+  CreaseEdges crease_edges;                // see Mesh::crease_edges
+  IntersectionLines intersections;         // see Mesh::intersections
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
@@ -132,9 +130,9 @@ struct Mesh {
   // Per vertex, how it moves (an index into Rig::motions) when its model
   // has a rig; empty when not.
   std::vector<std::uint32_t> motion;
-  std::vector<std::uint32_t> indices;      // triangles
+  std::vector<std::uint32_t> indices;  // triangles
   std::vector<Submesh> submeshes;
-  std::vector<MeshLod> lods;  // coarser levels, finest first; empty: full detail only
+  std::vector<MeshLod> lods;              // coarser levels, finest first; empty: full detail only
   Enclosure enclosure = Enclosure::Open;  // of `indices`, the full mesh
   // Triangles (three points each) that close the holes of an Outward or
   // Inward mesh, wound like it; empty when it has none. Through a hole one

@@ -10,7 +10,6 @@
 namespace toond::scene {
 namespace {
 
-
 // One side of an edge: the edge by its two position classes (smaller
 // first), and the triangle's corners at those two positions.
 struct EdgeSide {

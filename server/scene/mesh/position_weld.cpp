@@ -15,7 +15,8 @@ using Cell = std::uint64_t;
 Cell pack(std::int64_t x, std::int64_t y, std::int64_t z) {
   constexpr std::uint64_t kMask = (1u << 21) - 1;
   return ((static_cast<std::uint64_t>(x + 1) & kMask) << 42 | (static_cast<std::uint64_t>(y + 1) & kMask) << 21 |
-          (static_cast<std::uint64_t>(z + 1) & kMask)) + 1;
+          (static_cast<std::uint64_t>(z + 1) & kMask)) +
+         1;
 }
 
 // Cell → the last position kept in it. Open addressing in one flat array
@@ -91,14 +92,14 @@ WeldReport weld_positions(std::span<glm::vec3> positions) {
     const std::int64_t hx = static_cast<std::int64_t>(floor.x), hy = static_cast<std::int64_t>(floor.y),
                        hz = static_cast<std::int64_t>(floor.z);
     // Toward the nearer neighbour on each axis.
-    const glm::dvec3 side = glm::mix(glm::dvec3(-1.0), glm::dvec3(1.0), glm::greaterThanEqual(scaled - floor, glm::dvec3(0.5)));
+    const glm::dvec3 side =
+        glm::mix(glm::dvec3(-1.0), glm::dvec3(1.0), glm::greaterThanEqual(scaled - floor, glm::dvec3(0.5)));
     const glm::vec3* nearest = nullptr;
     double nearest_sq = tolerance_sq;
     for (const std::int64_t dx : {std::int64_t{0}, static_cast<std::int64_t>(side.x)}) {
       for (const std::int64_t dy : {std::int64_t{0}, static_cast<std::int64_t>(side.y)}) {
         for (const std::int64_t dz : {std::int64_t{0}, static_cast<std::int64_t>(side.z)}) {
-          for (std::uint32_t k = last_kept.get(pack(hx + dx, hy + dy, hz + dz)); k != kNone;
-               k = next_kept[k]) {
+          for (std::uint32_t k = last_kept.get(pack(hx + dx, hy + dy, hz + dz)); k != kNone; k = next_kept[k]) {
             const glm::dvec3 d = glm::dvec3(positions[k]) - p;
             const double dist_sq = glm::dot(d, d);
             if (dist_sq <= nearest_sq) {

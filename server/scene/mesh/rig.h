@@ -58,8 +58,8 @@ struct Clip {
 // a mesh without a skin is bound to its own node alone (joint = node,
 // inverse bind = identity), which is how rigid node animation moves it.
 struct Binding {
-  int node = -1;  // the node whose mesh this is
-  std::vector<int> joints;  // node indices
+  int node = -1;                          // the node whose mesh this is
+  std::vector<int> joints;                // node indices
   std::vector<glm::dmat4> inverse_binds;  // one per joint
   // From the mesh's space to the mesh's own coordinates: the import baked
   // the node's rest transform (and the upload's turn and recentring) into
@@ -106,7 +106,7 @@ struct Rig {
   // From the file's world space to the mesh's (turned up, recentred):
   // where posed positions are drawn.
   glm::dmat4 file_to_mesh{1.0};
-  std::size_t joint_count = 0;  // distinct nodes used as joints by skins
+  std::size_t joint_count = 0;         // distinct nodes used as joints by skins
   std::size_t morph_target_count = 0;  // over every mesh with targets
 
   // The clip named `name` as the file names it, or by the part after the

@@ -12,9 +12,9 @@
 #include <cerrno>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <random>
 #include <sstream>
-#include <optional>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -149,10 +149,15 @@ ImportChoices::Up stored_up(const nlohmann::json& j, const std::vector<std::stri
 }  // namespace
 
 nlohmann::json ModelInfo::to_json() const {
-  nlohmann::json j = {{"id", id},       {"triangles", triangles}, {"materials", materials}, {"textures", textures},
-          {"bytes", bytes}, {"files", files},         {"warnings", warnings},
-          {"weld", {{"tolerance", weld.tolerance}, {"positions", weld.positions}}},
-          {"cost", {{"layers", cost.layers}, {"edge_span", cost.edge_span}}}};
+  nlohmann::json j = {{"id", id},
+                      {"triangles", triangles},
+                      {"materials", materials},
+                      {"textures", textures},
+                      {"bytes", bytes},
+                      {"files", files},
+                      {"warnings", warnings},
+                      {"weld", {{"tolerance", weld.tolerance}, {"positions", weld.positions}}},
+                      {"cost", {{"layers", cost.layers}, {"edge_span", cost.edge_span}}}};
   if (animation.any()) {
     nlohmann::json clips = nlohmann::json::array();
     for (const ClipInfo& c : animation.clips) {
@@ -190,7 +195,8 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
   if (const auto animation = j.find("animation"); animation != j.end() && animation->is_object()) {
     for (const nlohmann::json& c : animation->value("clips", nlohmann::json::array())) {
       ClipInfo clip{c.value("name", std::string()), c.value("duration", 0.0), c.value("channels", std::size_t{0}), {}};
-      if (const auto rate = c.find("frame_rate"); rate != c.end() && rate->is_number()) clip.frame_rate = rate->get<double>();
+      if (const auto rate = c.find("frame_rate"); rate != c.end() && rate->is_number())
+        clip.frame_rate = rate->get<double>();
       info.animation.clips.push_back(std::move(clip));
     }
     info.animation.joints = animation->value("joints", std::size_t{0});
@@ -262,8 +268,7 @@ ModelStore::ModelStore(fs::path data_dir, StoreOptions options)
   fsync_dir(root_);
 }
 
-ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& limits,
-                                      const ImportChoices& asked) {
+ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& limits, const ImportChoices& asked) {
   // The id holds the up axis used, whether asked for or the format's.
   const ImportChoices choices = with_format_up(bundle, asked);
   const std::string id = bundle_id(bundle, choices);

@@ -32,9 +32,8 @@ std::optional<std::uint64_t> folder_bytes(const fs::path& dir) {
 }  // namespace
 
 bool is_model_id(std::string_view name) {
-  return name.size() == kModelIdLength && std::all_of(name.begin(), name.end(), [](char c) {
-           return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
-         });
+  return name.size() == kModelIdLength &&
+         std::all_of(name.begin(), name.end(), [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
 }
 
 void sort_least_recently_used(std::vector<StoredModel>& models) {

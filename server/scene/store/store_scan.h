@@ -19,8 +19,8 @@ bool is_model_id(std::string_view name);
 
 struct StoredModel {
   std::string id;
-  std::uint64_t bytes = 0;     // its files and info.json, as their sizes say
-  std::timespec last_use{};    // its folder's modification time (scene/store/model_use.h)
+  std::uint64_t bytes = 0;   // its files and info.json, as their sizes say
+  std::timespec last_use{};  // its folder's modification time (scene/store/model_use.h)
 };
 
 // Least recently used first; models used in the same nanosecond by id.
