@@ -524,9 +524,10 @@ ModelStore::Letting ModelStore::evict(const std::string& id) {
 ModelStore::Room ModelStore::make_room(std::uint64_t incoming, const std::string& spare, bool refuse_when_held) {
   const std::vector<StoredModel> models = sizes_.scan(root_);
   std::uint64_t kept = add_up(models).bytes;
-  for (const auto& [id, reservation] : reserved_) {
+  for (const auto& held : reserved_) {
+    const std::string& id = held.first;
     const bool in_place = std::any_of(models.begin(), models.end(), [&](const StoredModel& m) { return m.id == id; });
-    if (!in_place) kept += reservation.second;
+    if (!in_place) kept += held.second.second;
   }
   const std::uint64_t max = options_.max_bytes;
   Room room;
