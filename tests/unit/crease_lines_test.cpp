@@ -255,7 +255,7 @@ TEST_F(CreaseLines, TheDemoSpheresSeamOnItsBoxIsDrawn) {
 // The shared Kenney dog: its ears, eyes and snout are parts pushed into
 // its head, its legs into its body. Along the seams that show (those
 // import found, scene/intersection_lines.h, sampled every hundredth of
-// the model), the lines come back. Measured: 0.95 of 813 pixels, 0.03
+// the model), the lines come back. Measured: 0.94 of 772 pixels, 0.03
 // with the crease edges alone.
 TEST_F(CreaseLines, TheKenneyDogsSeamsAreDrawn) {
   TOOND_REQUIRE_SHARED_MODELS();
