@@ -19,8 +19,8 @@ std::string read_all(const std::filesystem::path& path) {
 std::string upload(httplib::Client& client, const httplib::MultipartFormDataItems& items) {
   auto res = client.Post("/models", items);
   if (!res || (res->status != 200 && res->status != 201)) {
-    throw std::runtime_error("upload failed: " + (res ? std::to_string(res->status) + " " + res->body
-                                                      : httplib::to_string(res.error())));
+    throw std::runtime_error("upload failed: " +
+                             (res ? std::to_string(res->status) + " " + res->body : httplib::to_string(res.error())));
   }
   return nlohmann::json::parse(res->body).at("id").get<std::string>();
 }

@@ -18,8 +18,8 @@ struct TimedRender {
   double png_ms = 0;     // the encode alone
   double queue_ms = 0;
   std::size_t png_bytes = 0;
-  std::string lod;       // X-Toond-Lod
-  std::string png;       // the answer, still encoded
+  std::string lod;  // X-Toond-Lod
+  std::string png;  // the answer, still encoded
 };
 
 // POSTs /render and times it; throws std::runtime_error on anything but 200.

@@ -33,12 +33,9 @@ json with_and_without_creases(httplib::Client& client, const json& adding, int r
     creased.push_back(render_timed(client, request).server_ms);
     bare.push_back(render_timed(client, never).server_ms);
   }
-  return {{"default_ms", median(creased)},
-          {"never_ms", median(bare)},
-          {"ratio", median(creased) / median(bare)},
-          {"default_p90_ms", percentile(creased, 0.9)},
-          {"never_p90_ms", percentile(bare, 0.9)},
-          {"repeats", repeats}};
+  return {{"default_ms", median(creased)},           {"never_ms", median(bare)},
+          {"ratio", median(creased) / median(bare)}, {"default_p90_ms", percentile(creased, 0.9)},
+          {"never_p90_ms", percentile(bare, 0.9)},   {"repeats", repeats}};
 }
 
 }  // namespace
@@ -61,9 +58,8 @@ json run_crease_ratios(httplib::Client& client, const std::filesystem::path& mod
   json out;
   for (const auto& [name, adding] : requests) {
     const json r = with_and_without_creases(client, adding, repeats);
-    std::fprintf(stderr, "  %-24s default %7.2f ms, creases never %7.2f ms, ratio %.3f (medians of %d)\n",
-                 name.c_str(), r["default_ms"].get<double>(), r["never_ms"].get<double>(), r["ratio"].get<double>(),
-                 repeats);
+    std::fprintf(stderr, "  %-24s default %7.2f ms, creases never %7.2f ms, ratio %.3f (medians of %d)\n", name.c_str(),
+                 r["default_ms"].get<double>(), r["never_ms"].get<double>(), r["ratio"].get<double>(), repeats);
     out[name] = r;
   }
   return out;

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <vector>
 #include <cstdlib>
 #include <stdexcept>
+#include <vector>
 
 #include "support/edge_measure.h"
 #include "support/sphere_oracle.h"
@@ -28,8 +28,8 @@ std::size_t largest_blob(std::vector<std::uint8_t> off, int width, int height) {
       stack.pop_back();
       ++size;
       const int x = p % width, y = p / width;
-      for (const int q : {x > 0 ? p - 1 : -1, x + 1 < width ? p + 1 : -1, y > 0 ? p - width : -1,
-                          y + 1 < height ? p + width : -1}) {
+      for (const int q :
+           {x > 0 ? p - 1 : -1, x + 1 < width ? p + 1 : -1, y > 0 ? p - width : -1, y + 1 < height ? p + width : -1}) {
         if (q < 0 || !off[static_cast<std::size_t>(q)]) continue;
         off[static_cast<std::size_t>(q)] = 0;
         stack.push_back(q);

@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include "scene/bundle.h"
-#include "scene/bundle_import.h"
-#include "scene/gltf_import.h"
-#include "scene/obj_import.h"
+#include "scene/import/bundle.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/gltf_import.h"
+#include "scene/import/obj_import.h"
 #include "stats.h"
 #include "support/generated_models.h"
 #include "support/gltf_twin.h"
@@ -73,16 +73,21 @@ Options parse(int argc, char** argv) {
       std::fputs(kUsage, stdout);
       std::exit(0);
     }
-    if (i + 1 >= argc) usage_error(flag == "--segments" || flag == "--obj" || flag == "--repeats" ||
-                                           flag == "--write"
-                                       ? flag + " wants a value"
-                                       : "unknown option " + flag);
+    if (i + 1 >= argc)
+      usage_error(flag == "--segments" || flag == "--obj" || flag == "--repeats" || flag == "--write"
+                      ? flag + " wants a value"
+                      : "unknown option " + flag);
     const char* value = argv[++i];
-    if (flag == "--segments") o.segments = positive(flag, value);
-    else if (flag == "--repeats") o.repeats = positive(flag, value);
-    else if (flag == "--obj") o.obj_file = value;
-    else if (flag == "--write") o.write_dir = value;
-    else usage_error("unknown option " + flag);
+    if (flag == "--segments")
+      o.segments = positive(flag, value);
+    else if (flag == "--repeats")
+      o.repeats = positive(flag, value);
+    else if (flag == "--obj")
+      o.obj_file = value;
+    else if (flag == "--write")
+      o.write_dir = value;
+    else
+      usage_error("unknown option " + flag);
   }
   if (o.segments < 4) usage_error("--segments wants at least 4");
   return o;

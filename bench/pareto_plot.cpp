@@ -18,10 +18,14 @@ std::string fmt(const char* pattern, double v) {
 std::string escape(const std::string& s) {
   std::string out;
   for (char c : s) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else out += c;
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else
+      out += c;
   }
   return out;
 }
@@ -101,8 +105,8 @@ std::string svg_time_vs_error(const std::vector<PlotPanel>& panels, const std::s
     for (double e = 0; e <= ymax + 1e-12; e += ystep) {
       const double y = Y(e);
       svg << "<line x1=\"" << ox + kLeft << "\" y1=\"" << y << "\" x2=\"" << ox + kLeft + pw << "\" y2=\"" << y
-          << "\" stroke=\"#ddd\"/>\n<text x=\"" << ox + kLeft - 4 << "\" y=\"" << y + 4
-          << "\" text-anchor=\"end\">" << fmt("%g", e) << "</text>\n";
+          << "\" stroke=\"#ddd\"/>\n<text x=\"" << ox + kLeft - 4 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">"
+          << fmt("%g", e) << "</text>\n";
     }
     svg << "<text x=\"" << ox + kLeft + pw / 2 << "\" y=\"" << oy + kTop + ph + 32
         << "\" text-anchor=\"middle\">server time per render, ms (log)</text>\n";
@@ -119,9 +123,9 @@ std::string svg_time_vs_error(const std::vector<PlotPanel>& panels, const std::s
     }
     for (const PlotPoint& p : panel.points) {
       svg << "<circle cx=\"" << X(p.time_ms) << "\" cy=\"" << Y(p.error) << "\" r=\"" << (p.on_front ? 4.5 : 3)
-          << "\" fill=\"" << colour_of(p.family) << "\" fill-opacity=\"" << (p.on_front ? 1.0 : 0.45)
-          << "\"><title>" << escape(p.label) << ": " << fmt("%.2f ms", p.time_ms) << ", error "
-          << fmt("%.4g", p.error) << (p.on_front ? " (front)" : "") << "</title></circle>\n";
+          << "\" fill=\"" << colour_of(p.family) << "\" fill-opacity=\"" << (p.on_front ? 1.0 : 0.45) << "\"><title>"
+          << escape(p.label) << ": " << fmt("%.2f ms", p.time_ms) << ", error " << fmt("%.4g", p.error)
+          << (p.on_front ? " (front)" : "") << "</title></circle>\n";
       if (p.is_default) {
         svg << "<circle cx=\"" << X(p.time_ms) << "\" cy=\"" << Y(p.error)
             << "\" r=\"8\" fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"/>\n";

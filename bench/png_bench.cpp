@@ -11,8 +11,8 @@
 // libdeflate at the same level (deflate_compare.h).
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -67,8 +67,9 @@ Options parse_options(int argc, char** argv) {
     } else if (!arg.empty() && arg[0] != '-') {
       options.inputs.emplace_back(arg);
     } else {
-      throw std::runtime_error("usage: toond_png_bench [--repeats N] [--save DIR] [--level L] [--threads T] [--libdeflate] "
-                               "[FRAME.png ...]");
+      throw std::runtime_error(
+          "usage: toond_png_bench [--repeats N] [--save DIR] [--level L] [--threads T] [--libdeflate] "
+          "[FRAME.png ...]");
     }
   }
   return options;
@@ -98,8 +99,8 @@ std::vector<Frame> render_frames(const std::filesystem::path& models) {
     nlohmann::json params = {{"width", size}, {"height", size}, {"camera", {{"yaw", yaw}}}};
     if (!model_id.empty()) params["model"] = model_id;
     const auto answer = toond::bench::render_timed(client, params);
-    frames.push_back({name + "-" + std::to_string(size) + "-yaw" + std::to_string(yaw),
-                      toond::image::decode_png(answer.png)});
+    frames.push_back(
+        {name + "-" + std::to_string(size) + "-yaw" + std::to_string(yaw), toond::image::decode_png(answer.png)});
   };
   const std::string bunny = toond::bench::upload_folder(client, models / "stanford-bunny");
   render("bunny", bunny, 512, 0);
@@ -131,12 +132,18 @@ int distinct_colours(const Image& image) {
 
 const char* colour_type_name(unsigned char type) {
   switch (type) {
-    case 0: return "grey";
-    case 2: return "rgb";
-    case 3: return "palette";
-    case 4: return "grey+alpha";
-    case 6: return "rgba";
-    default: return "?";
+    case 0:
+      return "grey";
+    case 2:
+      return "rgb";
+    case 3:
+      return "palette";
+    case 4:
+      return "grey+alpha";
+    case 6:
+      return "rgba";
+    default:
+      return "?";
   }
 }
 
@@ -159,9 +166,9 @@ void bench_frame(const Frame& frame, const Options& options) {
   const double cpu_ms = (process_cpu_ms() - cpu_start) / std::max(options.repeats, 1);
   const int colours = distinct_colours(frame.image);
   std::printf("%-30s %4dx%-4d colours %6d%s  median %6.3f ms  p90 %6.3f ms  cpu/encode %6.3f ms  %8zu bytes  %s\n",
-              frame.name.c_str(), frame.image.width, frame.image.height, colours, colours <= 256 ? " (fits)" : "       ",
-              toond::bench::median(ms), toond::bench::percentile(ms, 0.9), cpu_ms, png.size(),
-              colour_type_name(static_cast<unsigned char>(png.at(25))));
+              frame.name.c_str(), frame.image.width, frame.image.height, colours,
+              colours <= 256 ? " (fits)" : "       ", toond::bench::median(ms), toond::bench::percentile(ms, 0.9),
+              cpu_ms, png.size(), colour_type_name(static_cast<unsigned char>(png.at(25))));
   if (!options.save_dir.empty()) {
     std::ofstream(options.save_dir / (frame.name + ".png"), std::ios::binary) << png;
   }

@@ -78,8 +78,8 @@ std::vector<Knob> knobs_for(const Scene& scene, const SweepOptions& o) {
   const std::vector<int> ss = o.quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 3, 4};
   for (int s : ss)
     for (int m : msaa)
-      knobs.push_back({"msaa×ss", "msaa " + std::to_string(m) + " ss " + std::to_string(s),
-                       {{"msaa", m}, {"supersample", s}}});
+      knobs.push_back(
+          {"msaa×ss", "msaa " + std::to_string(m) + " ss " + std::to_string(s), {{"msaa", m}, {"supersample", s}}});
   knobs.push_back({"lod", "lod full", {{"lod", "full"}}});
   const std::vector<double> budgets =
       o.quick ? std::vector<double>{0.5, 2} : std::vector<double>{0.125, 0.25, 0.5, 1, 2, 4};
@@ -90,8 +90,7 @@ std::vector<Knob> knobs_for(const Scene& scene, const SweepOptions& o) {
   }
   if (scene.shadow_knob) {
     const std::vector<int> maps = o.quick ? std::vector<int>{512, 2048} : std::vector<int>{512, 1024, 2048, 4096};
-    for (int m : maps)
-      knobs.push_back({"shadow map", "map " + std::to_string(m), {{"shadows", {{"map_size", m}}}}});
+    for (int m : maps) knobs.push_back({"shadow map", "map " + std::to_string(m), {{"shadows", {{"map_size", m}}}}});
   }
   if (scene.png_knob) {
     const std::vector<int> levels = o.quick ? std::vector<int>{1, 3, 9} : std::vector<int>{0, 1, 2, 3, 6, 9};
@@ -149,7 +148,9 @@ std::vector<Scene> make_scenes(httplib::Client& client, const SweepOptions& o) {
                      {"lights", {{{"type", "directional"}, {"direction", {-0.5, -1, -0.4}}}}},
                      {"shadows", {{"enabled", true}}},
                      {"floor", {{"enabled", true}}}},
-                    false, true, false});
+                    false,
+                    true,
+                    false});
   return scenes;
 }
 
@@ -256,14 +257,14 @@ void write_sweep_csv(const SweepResult& result, const std::filesystem::path& pat
   for (const SweepPoint& p : result.points) {
     const json& s = p.settings;
     char line[512];
-    std::snprintf(line, sizeof line,
-                  "\"%s\",%s,\"%s\",%d,%d,%s,%g,%d,%d,\"%s\",%.3f,%.3f,%.3f,%.3f,%.3f,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%zu,%d,%d\n",
-                  p.scene.c_str(), p.family.c_str(), p.label.c_str(), s["msaa"].get<int>(),
-                  s["supersample"].get<int>(), s["lod"].get<std::string>().c_str(), s["lod_error_px"].get<double>(),
-                  s["map_size"].get<int>(), s["png_compression"].get<int>(), p.lod_header.c_str(), p.server_ms,
-                  p.server_p25_ms, p.server_p75_ms, p.wall_ms, p.png_ms, p.png_bytes, p.mean_abs, p.pct_off,
-                  p.band_edge_px, p.band_edge_max_px,
-                  p.lod_vs_full_pct_off, p.lod_vs_full_blob, p.is_default ? 1 : 0, p.on_front ? 1 : 0);
+    std::snprintf(
+        line, sizeof line,
+        "\"%s\",%s,\"%s\",%d,%d,%s,%g,%d,%d,\"%s\",%.3f,%.3f,%.3f,%.3f,%.3f,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%zu,%d,%d\n",
+        p.scene.c_str(), p.family.c_str(), p.label.c_str(), s["msaa"].get<int>(), s["supersample"].get<int>(),
+        s["lod"].get<std::string>().c_str(), s["lod_error_px"].get<double>(), s["map_size"].get<int>(),
+        s["png_compression"].get<int>(), p.lod_header.c_str(), p.server_ms, p.server_p25_ms, p.server_p75_ms, p.wall_ms,
+        p.png_ms, p.png_bytes, p.mean_abs, p.pct_off, p.band_edge_px, p.band_edge_max_px, p.lod_vs_full_pct_off,
+        p.lod_vs_full_blob, p.is_default ? 1 : 0, p.on_front ? 1 : 0);
     out << line;
   }
 }

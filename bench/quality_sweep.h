@@ -36,7 +36,7 @@ struct SweepPoint {
   double pct_off = 0;
   double band_edge_px = -1;  // sphere only
   double band_edge_max_px = -1;
-  double lod_vs_full_pct_off = -1;  // lod family: against lod full at the same settings
+  double lod_vs_full_pct_off = -1;   // lod family: against lod full at the same settings
   std::size_t lod_vs_full_blob = 0;  // and its largest connected group of off pixels
   bool is_default = false;
   bool on_front = false;

@@ -116,10 +116,10 @@ ScalingResult run_scaling(httplib::Client& client, const ScalingOptions& o) {
   // The exponent over the upper half, where the triangles dominate a fixed
   // per-render cost.
   const std::size_t half = tri_x.size() / 2;
-  result.triangle_exponent_full = growth_exponent({tri_x.begin() + half, tri_x.end()},
-                                                  {tri_full.begin() + half, tri_full.end()});
-  result.triangle_exponent_auto = growth_exponent({tri_x.begin() + half, tri_x.end()},
-                                                  {tri_auto.begin() + half, tri_auto.end()});
+  result.triangle_exponent_full =
+      growth_exponent({tri_x.begin() + half, tri_x.end()}, {tri_full.begin() + half, tri_full.end()});
+  result.triangle_exponent_auto =
+      growth_exponent({tri_x.begin() + half, tri_x.end()}, {tri_auto.begin() + half, tri_auto.end()});
 
   std::cerr << "bench: scaling with pixels\n";
   const bool have_bunny = !o.models.empty() && std::filesystem::is_directory(o.models / "stanford-bunny");
@@ -130,8 +130,8 @@ ScalingResult run_scaling(httplib::Client& client, const ScalingOptions& o) {
   std::vector<double> px_x, px_full, px_auto;
   for (int s : sizes) {
     const std::string label = std::to_string(s) + "²" + (have_bunny ? " bunny" : " sphere");
-    ScalingRow row = measure_row(client, "pixels", double(s) * s, label, {{"model", model}, {"width", s}, {"height", s}},
-                                 o.repeats);
+    ScalingRow row =
+        measure_row(client, "pixels", double(s) * s, label, {{"model", model}, {"width", s}, {"height", s}}, o.repeats);
     px_x.push_back(double(s) * s);
     px_full.push_back(row.server_ms_full);
     px_auto.push_back(row.server_ms_auto);

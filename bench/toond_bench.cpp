@@ -11,12 +11,12 @@
 
 #include "bench_http.h"
 #include "crease_ratios.h"
+#include "floor_ratios.h"
 #include "pareto_plot.h"
 #include "quality_sweep.h"
 #include "scaling.h"
 #include "support/daemon.h"
 #include "throughput.h"
-#include "floor_ratios.h"
 #include "versus.h"
 
 namespace {
@@ -63,7 +63,7 @@ struct Args {
   int repeats = 0;
   fs::path out = "bench/results";
   fs::path models = TOOND_SHARED_MODELS;
-  std::string render_threads;  // empty: the daemon's default
+  std::string render_threads;    // empty: the daemon's default
   std::string frames_in_flight;  // empty: the daemon's default
   std::set<std::string> parts;
 };
@@ -76,23 +76,33 @@ Args parse(int argc, char** argv) {
       if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
       return argv[++i];
     };
-    if (arg == "--quick") a.quick = true;
-    else if (arg == "--smoke") a.smoke = true;
-    else if (arg == "--repeats") a.repeats = std::stoi(value());
-    else if (arg == "--out") a.out = value();
-    else if (arg == "--models") a.models = value();
-    else if (arg == "--render-threads") a.render_threads = value();
-    else if (arg == "--frames-in-flight") a.frames_in_flight = value();
-    else if (arg == "--toond") value();
+    if (arg == "--quick")
+      a.quick = true;
+    else if (arg == "--smoke")
+      a.smoke = true;
+    else if (arg == "--repeats")
+      a.repeats = std::stoi(value());
+    else if (arg == "--out")
+      a.out = value();
+    else if (arg == "--models")
+      a.models = value();
+    else if (arg == "--render-threads")
+      a.render_threads = value();
+    else if (arg == "--frames-in-flight")
+      a.frames_in_flight = value();
+    else if (arg == "--toond")
+      value();
     else if (arg == "-h" || arg == "--help") {
       std::cout << kUsage;
       std::exit(0);
     } else if (arg == "sweep" || arg == "scaling" || arg == "load" || arg == "versus" || arg == "floor" ||
                arg == "creases") {
       a.parts.insert(arg);
-    } else throw std::invalid_argument("unknown argument " + arg);
+    } else
+      throw std::invalid_argument("unknown argument " + arg);
   }
-  if (a.parts.empty()) a.parts = a.smoke ? std::set<std::string>{"sweep"} : std::set<std::string>{"sweep", "scaling", "load"};
+  if (a.parts.empty())
+    a.parts = a.smoke ? std::set<std::string>{"sweep"} : std::set<std::string>{"sweep", "scaling", "load"};
   if (a.repeats <= 0) a.repeats = a.smoke ? 1 : a.quick ? 2 : 5;
   return a;
 }
@@ -120,7 +130,9 @@ int main(int argc, char** argv) {
     httplib::Client client(daemon.url());
     client.set_read_timeout(300);
     client.set_write_timeout(300);
-    json summary = {{"quick", args.quick}, {"repeats", args.repeats}, {"render_threads", args.render_threads},
+    json summary = {{"quick", args.quick},
+                    {"repeats", args.repeats},
+                    {"render_threads", args.render_threads},
                     {"frames_in_flight", args.frames_in_flight}};
     if (auto health = client.Get("/healthz"); health && health->status == 200) {
       summary["gl"] = json::parse(health->body)["gl"];
@@ -131,20 +143,22 @@ int main(int argc, char** argv) {
       const SweepResult sweep = run_quality_sweep(client, o);
       write_sweep_csv(sweep, args.out / "sweep.csv");
       write_text(args.out / "sweep.json", sweep_json(sweep).dump(1));
-      write_text(args.out / "time_vs_error.svg",
-                 svg_time_vs_error(sweep.panels, std::string("toond_bench") + (args.quick ? " --quick" : "") +
-                                                     ", median of " + std::to_string(args.repeats) +
-                                                     " renders per point, 512x512, " +
-                                                     summary.value("/gl/renderer"_json_pointer, std::string("?"))));
+      write_text(
+          args.out / "time_vs_error.svg",
+          svg_time_vs_error(sweep.panels, std::string("toond_bench") + (args.quick ? " --quick" : "") + ", median of " +
+                                              std::to_string(args.repeats) + " renders per point, 512x512, " +
+                                              summary.value("/gl/renderer"_json_pointer, std::string("?"))));
     }
     if (args.parts.count("scaling")) {
-      const ScalingResult scaling = run_scaling(client, {args.quick, args.repeats, have_models ? args.models : fs::path()});
+      const ScalingResult scaling =
+          run_scaling(client, {args.quick, args.repeats, have_models ? args.models : fs::path()});
       write_scaling_csv(scaling, args.out / "scaling.csv");
       write_text(args.out / "scaling.json", scaling_json(scaling).dump(1));
     }
     if (args.parts.count("load") && have_models) {
       std::cerr << "bench: load (bunny 512², default settings)\n";
-      const json params = {{"model", upload_folder(client, args.models / "stanford-bunny")}, {"width", 512}, {"height", 512}};
+      const json params = {
+          {"model", upload_folder(client, args.models / "stanford-bunny")}, {"width", 512}, {"height", 512}};
       const auto levels = run_throughput(daemon.url(), params, {1, 4, 16}, args.quick ? 2.0 : 6.0);
       write_text(args.out / "load.json", throughput_json(levels).dump(1));
     }
@@ -153,8 +167,8 @@ int main(int argc, char** argv) {
       write_text(args.out / "versus.json", versus.dump(1));
     }
     if (args.parts.count("floor") && have_models) {
-      const json floor = run_floor_ratios(client, daemon.url(), daemon_args, args.models, args.repeats * 4,
-                                          args.quick ? 2.0 : 6.0);
+      const json floor =
+          run_floor_ratios(client, daemon.url(), daemon_args, args.models, args.repeats * 4, args.quick ? 2.0 : 6.0);
       write_text(args.out / "floor.json", floor.dump(1));
     }
     if (args.parts.count("creases") && have_models) {

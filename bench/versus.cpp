@@ -116,15 +116,14 @@ json run_versus(httplib::Client& client, const std::string& url, const std::file
       c["floor"] = floor_of(img, msaa, 3, repeats);
       c["server_over_floor"] = c["server_ms"].get<double>() / c["floor"]["total_ms"].get<double>();
       c["geometry_floor"] = geometry_floor_of(client, params, repeats);
-      c["server_over_geometry_floor"] =
-          c["server_ms"].get<double>() / c["geometry_floor"]["server_ms"].get<double>();
+      c["server_over_geometry_floor"] = c["server_ms"].get<double>() / c["geometry_floor"]["server_ms"].get<double>();
       std::fprintf(stderr,
                    "  msaa %d lod %-4s: request-to-PNG %7.2f ms (%.2f without the outline), server %7.2f ms (floor "
                    "%.2f ms; geometry floor %.2f ms, ratio %.2f)  [%s]\n",
                    msaa, lod, c["wall_ms"].get<double>(), c["without_outline_wall_ms"].get<double>(),
-                   c["server_ms"].get<double>(),
-                   c["floor"]["total_ms"].get<double>(), c["geometry_floor"]["server_ms"].get<double>(),
-                   c["server_over_geometry_floor"].get<double>(), last.lod.c_str());
+                   c["server_ms"].get<double>(), c["floor"]["total_ms"].get<double>(),
+                   c["geometry_floor"]["server_ms"].get<double>(), c["server_over_geometry_floor"].get<double>(),
+                   last.lod.c_str());
       configs.push_back(c);
     }
   }

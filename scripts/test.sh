@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's second command, and the whole of CI: installs what is
-# missing, builds with -Werror, runs every test, builds and checks the
-# container image (scripts/container-test.sh), then builds again with
+# missing, checks the code's format (scripts/check-format.sh), builds
+# with -Werror, runs every test, builds and checks the container image (scripts/container-test.sh), then builds again with
 # AddressSanitizer + UndefinedBehaviorSanitizer and runs every test there,
 # and fuzzes.
 set -euo pipefail
@@ -11,6 +11,8 @@ scripts/install-deps.sh
 jobs=$(nproc)
 # Each stage says how long it took: CI's whole run must stay within its hour.
 stage() { echo "== $* (at ${SECONDS} s)"; }
+stage "format (.clang-format)"
+scripts/check-format.sh
 stage "build (warnings are errors)"
 scripts/build.sh build -DTOOND_WERROR=ON -DTOOND_TESTS=ON
 stage "tests"

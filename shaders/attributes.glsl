@@ -1,4 +1,4 @@
-// Every vertex stage's inputs, at the locations render/vertex_attribute.h
+// Every vertex stage's inputs, at the locations render/frame/vertex_attribute.h
 // gives GpuModel's buffers. A stage reads what it needs; the rest stay
 // inactive.
 layout(location = 0) in vec3 a_position;

@@ -1,5 +1,5 @@
 #version 430 core
-// Crease lines along the model's crease edges (scene/crease_edges.h): each
+// Crease lines along the model's crease edges (scene/mesh/crease_edges.h): each
 // edge becomes a quad of the outline's width centred on it, reaching half
 // a width past its ends so lines meeting at a corner join (the fragment
 // stage keeps only what lies within half the width of the segment itself:
@@ -17,7 +17,7 @@
 // (a, b, c1) in its winding). An edge whose faces fold over one another on
 // screen draws nothing: it is a silhouette, which the hull or wireframe
 // draws, or it lies behind its own faces.
-// A seam where two parts cross (u_seams, scene/intersection_lines.h) comes
+// A seam where two parts cross (u_seams, scene/mesh/intersection_lines.h) comes
 // as p1, a, b, p2, a point of each face's plane off the segment; both
 // planes go on past the segment to either side. The half of each that
 // shows is the nearer on its side of the line on screen: the eye looks

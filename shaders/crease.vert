@@ -4,7 +4,7 @@
 // and placed exactly as the main pass places them (toon.vert), so the
 // geometry stage's face planes are the ones whose depths the main pass
 // left. The points of seams where parts cross (u_seams) come posed
-// already (render/gpu_seams.h): only placed.
+// already (render/frame/gpu_seams.h): only placed.
 #include "attributes.glsl"
 #include "view.glsl"
 #include "object.glsl"

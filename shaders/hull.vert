@@ -6,7 +6,7 @@
 // every face plane moves out by the full width.
 //
 // The distance is `u_width` pixels at the vertex's own depth (a width in
-// world units arrives converted to pixels, render/outline_width.h):
+// world units arrives converted to pixels, render/plan/outline_width.h):
 // `u_world_per_px_at_w1` (view.glsl) gives a pixel's size at each depth. A
 // silhouette point's normal lies in the image plane, so there the ring is
 // exactly that many pixels wide, at any distance from the camera.

@@ -1,6 +1,6 @@
 // The material a submesh is drawn with: bound per submesh from its model's
-// uniform buffer (MaterialBlock in render/uniform_blocks.h), and its
-// textures at fixed units (render/texture_unit.h).
+// uniform buffer (MaterialBlock in render/frame/uniform_blocks.h), and its
+// textures at fixed units (render/frame/texture_unit.h).
 layout(std140, binding = 3) uniform Material {
   vec3 u_base_color;  // linear
   float u_opacity;    // the base colour's alpha

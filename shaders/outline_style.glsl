@@ -1,5 +1,5 @@
 // The outline's look, the same for every object of a frame (OutlineBlock in
-// render/uniform_blocks.h).
+// render/frame/uniform_blocks.h).
 layout(std140, binding = 4) uniform OutlineStyle {
   vec3 u_outline_color;  // linear
   float u_darken;        // per-material colours: the share taken off them

@@ -2,7 +2,7 @@
 // stage: each vertex's morph targets, then its joints' blended matrix. The
 // model's motions, influences and morph deltas are uploaded once with the
 // model; a pose uploads only its joint matrices and its morph weights
-// (render/gpu_skin.h lays the blocks out). An object that is not posed
+// (render/frame/gpu_skin.h lays the blocks out). An object that is not posed
 // (u_skinned 0, object.glsl) draws its attributes as they are.
 // Include after attributes.glsl and object.glsl.
 

@@ -1,5 +1,5 @@
 // The camera, the same for every pass of a frame; uploaded once per frame
-// (ViewBlock in render/uniform_blocks.h mirrors its std140 layout).
+// (ViewBlock in render/frame/uniform_blocks.h mirrors its std140 layout).
 layout(std140, binding = 1) uniform FrameView {
   mat4 u_view_projection;
   vec3 u_eye;  // camera position, frame coordinates

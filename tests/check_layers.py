@@ -24,9 +24,17 @@ ROOMS = [
     "server/bundle_paths",    # how the files of an upload name each other
     "server/draco_decode",    # the Draco helper and its answer's wire format
     "server/assimp_convert",  # the assimp helper program
-    "server/scene",           # bundles, importers, meshes, rigs and poses, the store
+    "server/scene/mesh",      # a model as imported: meshes, rigs, creases, levels of detail
+    "server/scene/animation", # clips sampled, poses, what moves alike
+    "server/scene/import",    # bundles and the importers of every format
+    "server/scene/store",     # the model store, its bound, the models kept in memory
     "server/gpu",             # EGL and the RAII GL objects
-    "server/render",          # plans, frames, passes, the render threads
+    "server/render/plan",     # parameters, a frame's plan and price, camera, levels, sheets' layout
+    "server/render/cull",     # what is left out before drawing: facing runs, the hull cull
+    "server/render/frame",    # a frame's GPU side: models, blocks, resources, pacing
+    "server/render/passes",   # one file per pass, and the object loop they share
+    "server/render/run",      # the renderer running a plan, the render threads, the fair queue
+    "server/render/atlas",    # a sheet's atlas (Aseprite JSON)
     "server/pipeline",        # a request's way from parameters to the answer's bytes
     "server/http",            # parse, call the pipeline, answer
     "server/app",             # toond's main and its flags

@@ -114,8 +114,7 @@ class Scanner {
     }
     const std::string obj_name = obj_path_.filename().string();
     if (!header_safe(obj_name)) {
-      throw UsageError("cannot send " + obj_path_.string() +
-                       ": its name holds a quote or control character");
+      throw UsageError("cannot send " + obj_path_.string() + ": its name holds a quote or control character");
     }
     add(obj_name, obj_path_, *obj_text);
     if (is_gltf_name(obj_name)) {
@@ -204,13 +203,18 @@ class Scanner {
     return include_lookup(from, keyword, ref, lookup(from, ref));
   }
 
-  std::optional<std::size_t> include_lookup(const std::string& from, std::string_view keyword,
-                                            const std::string& ref, const Lookup& l) {
+  std::optional<std::size_t> include_lookup(const std::string& from, std::string_view keyword, const std::string& ref,
+                                            const Lookup& l) {
     const std::string what = from + ": " + std::string(keyword) + " " + in_quotes(ref);
     switch (l.kind) {
-      case Lookup::missing: warn(what + " not found; not sent"); return std::nullopt;
-      case Lookup::refused: warn(what + " refused: " + l.why + "; not sent"); return std::nullopt;
-      case Lookup::found: break;
+      case Lookup::missing:
+        warn(what + " not found; not sent");
+        return std::nullopt;
+      case Lookup::refused:
+        warn(what + " refused: " + l.why + "; not sent");
+        return std::nullopt;
+      case Lookup::found:
+        break;
     }
     if (sent_.count(l.name)) return std::nullopt;
     std::optional<std::string> content = read_file(root_ / fs::path(l.name));
@@ -239,11 +243,16 @@ class Scanner {
   Lookup lookup(const std::string& from, const std::string& ref) const {
     const bundle_paths::Reading reading = bundle_paths::resolve_reference(from, ref);
     switch (reading.refusal) {
-      case bundle_paths::Refusal::none: break;
-      case bundle_paths::Refusal::empty: return {Lookup::missing, {}, {}};
-      case bundle_paths::Refusal::absolute: return {Lookup::refused, {}, "absolute path"};
-      case bundle_paths::Refusal::outside: return {Lookup::refused, {}, "outside the OBJ's folder"};
-      case bundle_paths::Refusal::malformed: return {Lookup::refused, {}, "a NUL byte or a name too long to store"};
+      case bundle_paths::Refusal::none:
+        break;
+      case bundle_paths::Refusal::empty:
+        return {Lookup::missing, {}, {}};
+      case bundle_paths::Refusal::absolute:
+        return {Lookup::refused, {}, "absolute path"};
+      case bundle_paths::Refusal::outside:
+        return {Lookup::refused, {}, "outside the OBJ's folder"};
+      case bundle_paths::Refusal::malformed:
+        return {Lookup::refused, {}, "a NUL byte or a name too long to store"};
     }
     const std::optional<std::string> name = file_named(reading.path);
     if (!name) return {Lookup::missing, {}, {}};
@@ -281,7 +290,8 @@ class Scanner {
       for (const std::string& prefix : spellings) {
         for (fs::directory_iterator it(root_ / fs::path(prefix), ec), end; !ec && it != end; it.increment(ec)) {
           const std::string entry = it->path().filename().string();
-          if (bundle_paths::case_folded(entry) == wanted) longer.push_back(prefix.empty() ? entry : prefix + '/' + entry);
+          if (bundle_paths::case_folded(entry) == wanted)
+            longer.push_back(prefix.empty() ? entry : prefix + '/' + entry);
         }
         ec.clear();
       }
@@ -296,9 +306,8 @@ class Scanner {
 
   // The name travels in a Content-Disposition header as filename="...".
   static bool header_safe(const std::string& name) {
-    return std::none_of(name.begin(), name.end(), [](char c) {
-      return c == '"' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
-    });
+    return std::none_of(name.begin(), name.end(),
+                        [](char c) { return c == '"' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
   }
 
   fs::path obj_path_;
@@ -320,8 +329,8 @@ fs::path model_file_in(const fs::path& folder) {
     }
   }
   if (found.size() != 1) {
-    throw UsageError(folder.string() + " holds " + std::to_string(found.size()) +
-                     " model files (" + std::string(bundle_paths::kModelFormatsText) + "); name the one to upload");
+    throw UsageError(folder.string() + " holds " + std::to_string(found.size()) + " model files (" +
+                     std::string(bundle_paths::kModelFormatsText) + "); name the one to upload");
   }
   return found.front();
 }

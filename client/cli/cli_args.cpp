@@ -21,8 +21,7 @@ using nlohmann::json;
 bool iequals(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (std::tolower(static_cast<unsigned char>(a[i])) !=
-        std::tolower(static_cast<unsigned char>(b[i]))) {
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) {
       return false;
     }
   }
@@ -74,8 +73,7 @@ Verb verb_from_name(std::string_view name) {
   for (const VerbInfo& v : verbs()) {
     if (v.name == name) return v.verb;
   }
-  throw UsageError("unknown command '" + std::string(name) + "' (commands: " + verb_names(", ") +
-                   "; see toon --help)");
+  throw UsageError("unknown command '" + std::string(name) + "' (commands: " + verb_names(", ") + "; see toon --help)");
 }
 
 // The row that the current argument names, its value read into `value`:
@@ -93,9 +91,8 @@ const Flag* take_flag(ArgCursor& c, std::string& value) {
 
 // Whether any row of the flag called `name` belongs to `verb`.
 bool flag_allowed(std::string_view name, Verb verb) {
-  return std::any_of(flags().begin(), flags().end(), [&](const Flag& flag) {
-    return flag.help.name == name && (flag.verbs & verb_set(verb)) != 0;
-  });
+  return std::any_of(flags().begin(), flags().end(),
+                     [&](const Flag& flag) { return flag.help.name == name && (flag.verbs & verb_set(verb)) != 0; });
 }
 
 std::string read_params_text(const std::string& file) {
@@ -179,8 +176,7 @@ std::optional<std::string> server_from_environment() {
   return std::string(value);
 }
 
-Options parse_args(const std::vector<std::string>& args,
-                   const std::optional<std::string>& env_server) {
+Options parse_args(const std::vector<std::string>& args, const std::optional<std::string>& env_server) {
   Options o;
   FlagTarget target{o, std::nullopt};
   std::vector<std::string> positionals;
@@ -282,12 +278,14 @@ Options parse_args(const std::vector<std::string>& args,
       if (o.output == "-") throw UsageError("gallery writes a folder; -o - is not possible");
       if (o.all_models && !o.only.empty()) throw UsageError("give either --all or --only, not both");
       break;
-    case Verb::none: break;
+    case Verb::none:
+      break;
   }
   return o;
 }
 
-nlohmann::json build_render_params(const Options& options, const proto::ParamSchema& schema) {
+nlohmann::json build_render_params(const Options& options, const proto::ParamSchema& schema,
+                                   const ClipsOfModel& clips_of) {
   json params = json::object();
   if (!options.params_file.empty()) {
     const std::string where = options.params_file == "-" ? "standard input" : options.params_file;
@@ -301,26 +299,38 @@ nlohmann::json build_render_params(const Options& options, const proto::ParamSch
     }
   }
 
-  for (const auto& [key, text] : options.sets) {
+  const auto set = [&](const std::string& key, const std::string& text, const std::string& value) {
     try {
-      schema.set_from_text(params, key, text);
+      schema.set_from_text(params, key, value);
     } catch (const RequestError& e) {
       // The schema's message may already start with "key=value: ".
       const std::string message = e.what();
-      const std::string assignment = key + "=" + text;
-      throw UsageError("--set " +
-                       (message.rfind(assignment, 0) == 0 ? message : assignment + ": " + message));
+      const std::string assignment = key + "=" + value;
+      throw UsageError("--set " + key + "=" + text + ": " +
+                       (message.rfind(assignment, 0) == 0 ? message.substr(assignment.size() + 2) : message));
     } catch (const json::exception& e) {
       // A --set that walks into a scalar the params file already holds
       // ("--set outline.width.x=1" after "outline": 3).
       throw UsageError("--set " + key + "=" + text + ": " + plain_json_error(e.what()));
     }
+  };
+  // Ranges in frames wait for the clip and the model they need.
+  std::vector<std::pair<std::string, std::string>> in_frames;
+  for (const auto& [key, text] : options.sets) {
+    if (frame_range_of(key, text)) {
+      in_frames.emplace_back(key, text);
+    } else {
+      set(key, text, text);
+    }
   }
 
   if (!options.model_id.empty()) params["model"] = options.model_id;
+  for (const auto& [key, text] : in_frames) {
+    set(key, text, range_in_seconds(params, key, text, *frame_range_of(key, text), clips_of));
+  }
   if (!options.obj_path.empty() && params.contains("model")) {
-    throw UsageError("the parameters name model " + params["model"].dump() + " but " +
-                     options.obj_path + " is uploaded with the request; drop one");
+    throw UsageError("the parameters name model " + params["model"].dump() + " but " + options.obj_path +
+                     " is uploaded with the request; drop one");
   }
 
   try {

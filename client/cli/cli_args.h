@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "frame_ranges.h"
+
 namespace toond::proto {
 class ParamSchema;
 }
@@ -39,7 +41,7 @@ struct Options {
   std::string obj_path;
   // upload
   bool quiet = false;
-  std::string scene;  // a glTF scene's index (POST /models?scene=N); empty: the file's default
+  std::string scene;         // a glTF scene's index (POST /models?scene=N); empty: the file's default
   std::string smooth_angle;  // POST /models?smooth_angle=D; empty: the daemon's default (30)
   std::string up;            // POST /models?up=y|z; empty: y
   // render, info
@@ -59,16 +61,18 @@ struct Options {
 // parameter so tests need not touch the process environment. Throws
 // UsageError. With help or version set, the verb's own requirements (a
 // path, -o) are not enforced.
-Options parse_args(const std::vector<std::string>& args,
-                   const std::optional<std::string>& env_server);
+Options parse_args(const std::vector<std::string>& args, const std::optional<std::string>& env_server);
 
 // TOOND_URL from the environment; an empty value counts as unset.
 std::optional<std::string> server_from_environment();
 
 // The render request the options describe: the --params file, then each
-// --set in order, then --model; validated against the schema. Throws
+// --set in order, then --model, then each clip range given in frames
+// (168f,187f: frame_ranges.h), turned into seconds with the frame rates
+// `clips_of` reads from the daemon; validated against the schema. Throws
 // UsageError naming the file or key at fault.
-nlohmann::json build_render_params(const Options& options, const proto::ParamSchema& schema);
+nlohmann::json build_render_params(const Options& options, const proto::ParamSchema& schema,
+                                   const ClipsOfModel& clips_of = {});
 
 // Usage text for one verb, or the overview for Verb::none.
 std::string usage_text(Verb verb);

@@ -57,22 +57,31 @@ constexpr VerbSet kRender = verb_set(Verb::render);
 constexpr VerbSet kGallery = verb_set(Verb::gallery);
 
 const Flag kFlags[] = {
-    {{"", "--server", "URL", "toond's address (default: $TOOND_URL, else\nhttp://127.0.0.1:8080)"}, kGlobal, false,
+    {{"", "--server", "URL", "toond's address (default: $TOOND_URL, else\nhttp://127.0.0.1:8080)"},
+     kGlobal,
+     false,
      [](FlagTarget& t, Value v) { t.server = v; }},
     {{"-h", "--help", "", "show this help"}, kGlobal, true, [](FlagTarget& t, Value) { t.options.help = true; }},
-    {{"", "--version", "", "print toon's version"}, kGlobal, true,
+    {{"", "--version", "", "print toon's version"},
+     kGlobal,
+     true,
      [](FlagTarget& t, Value) { t.options.version = true; }},
 
-    {{"-q", "--quiet", "", "print only the model id"}, kUpload, true,
+    {{"-q", "--quiet", "", "print only the model id"},
+     kUpload,
+     true,
      [](FlagTarget& t, Value) { t.options.quiet = true; }},
-    {{"", "--scene", "N", "glTF: draw scene N instead of the file's default"}, kUpload, false,
+    {{"", "--scene", "N", "glTF: draw scene N instead of the file's default"},
+     kUpload,
+     false,
      [](FlagTarget& t, Value v) {
        if (!is_index(v) || v.size() > 9) throw UsageError("--scene '" + v + "': expected a scene's index, 0 or more");
        t.options.scene = v;
      }},
     {{"", "--smooth-angle", "D",
       "for files without normals: faces meeting at more than D\ndegrees keep their own normals (0..180, default 30)"},
-     kUpload, false,
+     kUpload,
+     false,
      [](FlagTarget& t, Value v) {
        char* end = nullptr;
        const double d = std::strtod(v.c_str(), &end);
@@ -81,15 +90,21 @@ const Flag kFlags[] = {
        }
        t.options.smooth_angle = v;
      }},
-    {{"", "--up", "y|z", "the file's up axis (default: the format's, z for STL, PLY, 3MF, AMF)"}, kUpload, false,
+    {{"", "--up", "y|z", "the file's up axis (default: the format's, z for STL, PLY, 3MF, AMF)"},
+     kUpload,
+     false,
      [](FlagTarget& t, Value v) {
        if (v != "y" && v != "z") throw UsageError("--up '" + v + "': expected y or z");
        t.options.up = v;
      }},
 
-    {{"", "--model", "ID", "render a model stored earlier with `toon upload`"}, kRender, false,
+    {{"", "--model", "ID", "render a model stored earlier with `toon upload`"},
+     kRender,
+     false,
      [](FlagTarget& t, Value v) { t.options.model_id = required(v, "--model needs a model id"); }},
-    {{"", "--params", "FILE.json", "start from this JSON of render parameters (- reads stdin)"}, kRender, false,
+    {{"", "--params", "FILE.json", "start from this JSON of render parameters (- reads stdin)"},
+     kRender,
+     false,
      [](FlagTarget& t, Value v) { t.options.params_file = required(v, "--params needs a file name"); }},
     {{"", "--set", "key.sub=value",
       "set one parameter, checked against the schema before\n"
@@ -98,7 +113,8 @@ const Flag kFlags[] = {
       "  --set outline.width=3 --set shading.steps=4\n"
       "  --set background=1,1,1 --set lights.0.intensity=1.5\n"
       "  --set outline.method=hull,edges --set sheet.animation.clip=walk"},
-     kRender, true,
+     kRender,
+     true,
      [](FlagTarget& t, Value v) {
        const std::size_t eq = v.find('=');
        if (eq == std::string::npos || eq == 0) {
@@ -109,25 +125,36 @@ const Flag kFlags[] = {
     {{"", "--output", "LAYER",
       "the layer to render: color (default), lines, depth,\n"
       "normal or id; the same as --set output=LAYER"},
-     kRender, false, set_output_layer},
+     kRender,
+     false,
+     set_output_layer},
     {{"-o", "--out", "FILE",
       "where to write the answer: a PNG, or an animated WebP\n"
       "for sheet.animate (required; - for standard output)"},
-     kRender, false,
+     kRender,
+     false,
      set_output},
 
-    {{"", "--models", "DIR", "the folder of model folders (default: ../shared/models)"}, kGallery, false,
+    {{"", "--models", "DIR", "the folder of model folders (default: ../shared/models)"},
+     kGallery,
+     false,
      [](FlagTarget& t, Value v) { t.options.models_dir = required(v, "--models needs a folder"); }},
     {{"", "--all", "",
       "every model folder in DIR, then bob.glb (default:\n"
       "spot, kenney-cube-pet-dog, kenney-space-craft,\n"
       "windmill, stanford-bunny, utah-teapot, bob.glb)"},
-     kGallery, true, [](FlagTarget& t, Value) { t.options.all_models = true; }},
-    {{"", "--only", "NAME[,NAME]", "just these model folders, in this order; may be repeated"}, kGallery, true,
+     kGallery,
+     true,
+     [](FlagTarget& t, Value) { t.options.all_models = true; }},
+    {{"", "--only", "NAME[,NAME]", "just these model folders, in this order; may be repeated"},
+     kGallery,
+     true,
      [](FlagTarget& t, Value v) {
        for (std::string& name : split_names(v)) t.options.only.push_back(std::move(name));
      }},
-    {{"", "--size", "N", "width and height of each render in pixels (default 256)"}, kGallery, false,
+    {{"", "--size", "N", "width and height of each render in pixels (default 256)"},
+     kGallery,
+     false,
      [](FlagTarget& t, Value v) { t.options.size = parse_size(v); }},
     {{"-o", "--out", "DIR", "the folder to write (created if missing; required)"}, kGallery, false, set_output},
 };
@@ -170,7 +197,8 @@ materials, textures, files, the import's warnings and, for a model that
 moves, its animation clips (name, duration in seconds, channels, and frame_rate
 where the format keys by frame) with its
 joint and morph-target counts. A clip is rendered with
---set animation.clip=NAME --set animation.time=SECONDS.
+--set animation.clip=NAME --set animation.time=SECONDS, a part of it
+with --set animation.range=START,END (see toon render --help).
 )"},
     {Verb::render, "render",
      "[PATH.obj|PATH.m | --model ID] [--params FILE.json]\n[--set key.sub=value ...] -o OUT.png|OUT.webp",
@@ -179,6 +207,10 @@ joint and morph-target counts. A clip is rendered with
 for sheet.animate. With PATH.obj (or a .m, .gltf or .glb model) the model and
 its MTL files and textures are uploaded with the request; with --model a stored model is used;
 with neither the daemon's built-in demo model renders.
+A clip's range (animation.range, sheet.animation.range) is two numbers,
+seconds on the file's time base (--set sheet.animation.range=5.6,6.23),
+or frames where the clip has a frame rate (toon info lists it): with
+--model ID, --set sheet.animation.range=168f,187f is frames 168 to 187.
 )"},
     {Verb::gallery, "gallery", "[--models DIR] [--all | --only NAME[,NAME...]]\n[--size N] -o OUTDIR",
      "render every preset and effect on a folder of models into PNGs,\na contact sheet and an HTML index",
@@ -200,9 +232,7 @@ the exit status is then 1.
 
 }  // namespace
 
-bool is_index(std::string_view s) {
-  return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
-}
+bool is_index(std::string_view s) { return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos; }
 
 std::span<const Flag> flags() { return kFlags; }
 

@@ -53,15 +53,14 @@ int upload(const Options& options) {
 
   const json body = json::parse(result->body, nullptr, false);
   if (!body.is_object() || !body.contains("id")) {
-    std::cerr << "toon: unexpected answer from toond (status " << result->status
-              << ", no model id)\n";
+    std::cerr << "toon: unexpected answer from toond (status " << result->status << ", no model id)\n";
     return 1;
   }
   if (options.quiet) {
     if (body.contains("warnings") && body["warnings"].is_array()) {
       for (const json& warning : body["warnings"]) {
-        std::cerr << "toon: server warning: "
-                  << (warning.is_string() ? warning.get<std::string>() : warning.dump()) << "\n";
+        std::cerr << "toon: server warning: " << (warning.is_string() ? warning.get<std::string>() : warning.dump())
+                  << "\n";
       }
     }
     const json& id = body["id"];
@@ -100,8 +99,7 @@ class OutputFile {
     }
     temporary_ = destination_ + ".part-" + std::to_string(::getpid());
     out_.open(temporary_, std::ios::binary | std::ios::trunc);
-    if (!out_)
-      throw UsageError("-o " + destination_ + ": cannot write there: " + std::strerror(errno));
+    if (!out_) throw UsageError("-o " + destination_ + ": cannot write there: " + std::strerror(errno));
   }
   ~OutputFile() {
     if (!temporary_.empty() && !committed_) {
@@ -145,14 +143,32 @@ std::string render_route(const json& params) {
   const auto model = params.find("model");
   if (model == params.end() || !model->is_string()) return "/render";
   const std::string& id = model->get_ref<const std::string&>();
-  const bool id_shaped = id.size() >= 16 && id.size() <= 64 &&
-                         id.find_first_not_of("0123456789abcdef") == std::string::npos;
+  const bool id_shaped =
+      id.size() >= 16 && id.size() <= 64 && id.find_first_not_of("0123456789abcdef") == std::string::npos;
   return id_shaped ? "/models/" + id + "/render" : "/render";
 }
 
+// The clips of a stored model, as the daemon lists them: what turns a
+// range given in frames into seconds.
+json clips_of_model(const Options& options, const std::string& model_id) {
+  Connection conn(options.server);
+  const httplib::Result result = conn.get("/models/" + model_id);
+  if (!result) throw std::runtime_error(conn.describe_failure(result));
+  const json body = json::parse(result->body, nullptr, false);
+  if (result->status != 200) {
+    const json* message = body.is_object() && body.contains("error") ? &body["error"]["message"] : nullptr;
+    throw UsageError("model " + model_id + ": " +
+                     (message && message->is_string() ? message->get<std::string>() : result->body));
+  }
+  return body.is_object() && body.contains("animation") ? body["animation"].value("clips", json::array())
+                                                        : json::array();
+}
+
 int render(const Options& options) {
-  // Everything that can be checked locally is, before a byte is sent.
-  const json params = build_render_params(options, proto::ParamSchema::render_params());
+  // Everything that can be checked locally is, before a byte is sent (a
+  // range in frames asks for the model's clips first).
+  const json params = build_render_params(options, proto::ParamSchema::render_params(),
+                                          [&](const std::string& id) { return clips_of_model(options, id); });
   BundleScan scan;
   if (!options.obj_path.empty()) {
     scan = scan_obj_bundle(options.obj_path);
@@ -207,12 +223,18 @@ int render(const Options& options) {
 int run_command(const Options& options) {
   try {
     switch (options.verb) {
-      case Verb::health: return health(options);
-      case Verb::upload: return upload(options);
-      case Verb::info: return info(options);
-      case Verb::render: return render(options);
-      case Verb::gallery: return run_gallery(options);
-      case Verb::none: break;
+      case Verb::health:
+        return health(options);
+      case Verb::upload:
+        return upload(options);
+      case Verb::info:
+        return info(options);
+      case Verb::render:
+        return render(options);
+      case Verb::gallery:
+        return run_gallery(options);
+      case Verb::none:
+        break;
     }
     std::cerr << usage_text(Verb::none);
     return 2;

@@ -21,8 +21,7 @@ httplib::Result Connection::post_json(const std::string& path, const nlohmann::j
   return client_.Post(url_.base_path + path, body.dump(), "application/json");
 }
 
-httplib::Result Connection::post_multipart(const std::string& path,
-                                           const httplib::MultipartFormDataItems& items) {
+httplib::Result Connection::post_multipart(const std::string& path, const httplib::MultipartFormDataItems& items) {
   return client_.Post(url_.base_path + path, items);
 }
 
@@ -32,14 +31,14 @@ std::string Connection::describe_failure(const httplib::Result& result) const {
     case httplib::Error::Connection:
       return "cannot reach toond at " + server_ + " (connection failed; is the daemon running?)";
     case httplib::Error::ConnectionTimeout:
-      return "cannot reach toond at " + server_ + " (no connection within " +
-             std::to_string(kConnectTimeoutS) + " s)";
+      return "cannot reach toond at " + server_ + " (no connection within " + std::to_string(kConnectTimeoutS) + " s)";
     case httplib::Error::Read:
       return "no answer from toond at " + server_ + " (connection closed, or nothing within " +
              std::to_string(kReadTimeoutS) + " s)";
     case httplib::Error::Write:
       return "cannot reach toond at " + server_ + " (the connection broke while sending)";
-    default: break;
+    default:
+      break;
   }
   return "cannot reach toond at " + server_ + " (" + httplib::to_string(e) + ")";
 }
@@ -51,9 +50,7 @@ int Connection::network_failure(const httplib::Result& result) const {
 
 int error_reply(const httplib::Response& response) {
   std::cerr << "toon: "
-            << describe_error_reply(response.status, response.body,
-                                    response.get_header_value("Retry-After"))
-            << "\n";
+            << describe_error_reply(response.status, response.body, response.get_header_value("Retry-After")) << "\n";
   return 1;
 }
 
@@ -76,8 +73,8 @@ std::string bundle_summary(const BundleScan& scan) {
     bytes += f.content.size();
     names += " " + f.name;
   }
-  return std::to_string(scan.files.size()) + (scan.files.size() == 1 ? " file" : " files") + " (" +
-         human_bytes(bytes) + "):" + names;
+  return std::to_string(scan.files.size()) + (scan.files.size() == 1 ? " file" : " files") + " (" + human_bytes(bytes) +
+         "):" + names;
 }
 
 }  // namespace toond::cli

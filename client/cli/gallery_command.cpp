@@ -24,8 +24,8 @@ namespace toond::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
 using gallery::Look;
+using nlohmann::json;
 
 // Written beside the destination and renamed into place, so an interrupted
 // run never leaves a truncated file under the final name. Returns "" or
@@ -76,8 +76,8 @@ std::string upload_model(Connection& conn, const gallery::ModelFolder& model, co
   }
   if (body.contains("warnings") && body["warnings"].is_array()) {
     for (const json& w : body["warnings"]) {
-      std::cerr << "toon: " << model.name
-                << ": server warning: " << (w.is_string() ? w.get<std::string>() : w.dump()) << "\n";
+      std::cerr << "toon: " << model.name << ": server warning: " << (w.is_string() ? w.get<std::string>() : w.dump())
+                << "\n";
     }
   }
   return body["id"].get<std::string>();
@@ -87,8 +87,8 @@ std::string gl_renderer(Connection& conn) {
   httplib::Result result = conn.get("/healthz");
   if (!result || result->status != 200) return {};
   const json body = json::parse(result->body, nullptr, false);
-  if (body.is_object() && body.contains("gl") && body["gl"].is_object() &&
-      body["gl"].contains("renderer") && body["gl"]["renderer"].is_string()) {
+  if (body.is_object() && body.contains("gl") && body["gl"].is_object() && body["gl"].contains("renderer") &&
+      body["gl"]["renderer"].is_string()) {
     return body["gl"]["renderer"].get<std::string>();
   }
   return {};
@@ -145,8 +145,8 @@ int run_gallery(const Options& options) {
   const std::size_t total = selection.models.size() * looks.size();
   std::cerr << "toon: rendering " << looks.size() << " looks (" << preset_count << " presets, "
             << looks.size() - preset_count << " effects) on " << selection.models.size()
-            << (selection.models.size() == 1 ? " model" : " models") << " at " << options.size << "×"
-            << options.size << ": " << total << " renders\n";
+            << (selection.models.size() == 1 ? " model" : " models") << " at " << options.size << "×" << options.size
+            << ": " << total << " renders\n";
 
   const int factor = gallery::thumbnail_factor(options.size);
   const int thumb_size = options.size / factor;
@@ -174,8 +174,8 @@ int run_gallery(const Options& options) {
         BundleFile glb{fs::path(model_text_path).filename().string(), model_text_path, glb_from_obj(scan)};
         std::error_code ec;
         fs::create_directories(model_dir, ec);
-        page_model.error = ec ? "cannot create " + model_dir.string() + ": " + ec.message()
-                              : write_file(glb.disk_path, glb.content);
+        page_model.error =
+            ec ? "cannot create " + model_dir.string() + ": " + ec.message() : write_file(glb.disk_path, glb.content);
         scan.files = {std::move(glb)};
       }
       if (page_model.error.empty()) model_id = upload_model(conn, model, scan, page_model.error);
@@ -186,11 +186,11 @@ int run_gallery(const Options& options) {
       // One line for the model rather than one per look.
       done += looks.size();
       failures += looks.size();
-      std::cerr << "[" << done << "/" << total << "] " << model.name << ": " << page_model.error
-                << "; its " << looks.size() << " renders are skipped\n";
+      std::cerr << "[" << done << "/" << total << "] " << model.name << ": " << page_model.error << "; its "
+                << looks.size() << " renders are skipped\n";
       for (const Look& look : looks) {
-        page_model.renders.push_back(gallery::PageRender{look.name, look.description, {}, look.params, {},
-                                                         "not rendered: " + page_model.error});
+        page_model.renders.push_back(
+            gallery::PageRender{look.name, look.description, {}, look.params, {}, "not rendered: " + page_model.error});
       }
       page.push_back(std::move(page_model));
       continue;
@@ -203,15 +203,14 @@ int run_gallery(const Options& options) {
     for (std::size_t li = 0; li < looks.size(); ++li) {
       const Look& look = looks[li];
       std::cerr << "[" << ++done << "/" << total << "] " << model.name << "/" << look.name << "\n";
-      const json preset_params = look.is_preset && presets.contains(look.name) &&
-                                         presets[look.name].is_object() && presets[look.name].contains("params")
+      const json preset_params = look.is_preset && presets.contains(look.name) && presets[look.name].is_object() &&
+                                         presets[look.name].contains("params")
                                      ? presets[look.name]["params"]
                                      : json();
-      const json params =
-          gallery::render_params(look, preset_params, view, frame, options.size, model_id, schema);
+      const json params = gallery::render_params(look, preset_params, view, frame, options.size, model_id, schema);
       const std::string file_name = look.name + ".png";
-      gallery::PageRender render{look.name, look.description, {}, params,
-                                 gallery::render_command(model_text_path, params, file_name), {}};
+      gallery::PageRender render{
+          look.name, look.description, {}, params, gallery::render_command(model_text_path, params, file_name), {}};
 
       std::string error = look_problem[li];
       if (error.empty() && mkdir_ec) error = "cannot create " + model_dir.string() + ": " + mkdir_ec.message();
@@ -292,8 +291,7 @@ int run_gallery(const Options& options) {
     std::cerr << "toon: ";
   }
   std::cerr << "wrote " << total - failures << (total - failures == 1 ? " image" : " images")
-            << (written_ok ? ", contact-sheet.png and index.html" : "") << " in " << out_dir.string()
-            << "\n";
+            << (written_ok ? ", contact-sheet.png and index.html" : "") << " in " << out_dir.string() << "\n";
   return failures || !written_ok ? 1 : 0;
 }
 

@@ -35,8 +35,7 @@ struct LookEntry {
 };
 
 constexpr LookEntry kEffectTable[] = {
-    {"default", "The schema's defaults: three cel bands, hard specular, 2 px hull outline, MSAA 4.",
-     R"({})"},
+    {"default", "The schema's defaults: three cel bands, hard specular, 2 px hull outline, MSAA 4.", R"({})"},
     {"specular_off", "No specular highlight: only the cel bands.", R"({"specular": {"enabled": false}})"},
     {"specular_broad", "Specular on with a broad, hard-edged highlight.",
      R"({"specular": {"enabled": true, "shininess": 16, "threshold": 0.3, "strength": 0.9}})"},
@@ -66,8 +65,7 @@ constexpr LookEntry kEffectTable[] = {
      R"({"outline": {"width": 3, "color_mode": "texture"}})"},
     {"outline_material", "A 3 px outline in the material colour, darkened.",
      R"({"outline": {"width": 3, "color_mode": "material"}})"},
-    {"supersample_2", "Rendered at twice the size and averaged down (with MSAA 4 on top).",
-     R"({"supersample": 2})"},
+    {"supersample_2", "Rendered at twice the size and averaged down (with MSAA 4 on top).", R"({"supersample": 2})"},
     {"msaa_1", "No antialiasing: compare the edges with msaa_8.", R"({"msaa": 1})"},
     {"msaa_8", "8× multisampling.", R"({"msaa": 8})"},
     {"lights_sum", "Two coloured lights added up: a warm key from the upper left, a cool fill from the right.",
@@ -107,9 +105,8 @@ constexpr ViewEntry kViewTable[] = {
 // The space craft is the hard-edged one: its default look shows crease
 // lines. Bob comes as glTF: textured, with normals and UVs, it takes the
 // glTF path through the daemon's importer the way a downloaded .glb does.
-const std::vector<std::string> kDefaultModels = {"spot",           "kenney-cube-pet-dog", "kenney-space-craft",
-                                                 "windmill",       "stanford-bunny",      "utah-teapot",
-                                                 "bob.glb"};
+const std::vector<std::string> kDefaultModels = {
+    "spot", "kenney-cube-pet-dog", "kenney-space-craft", "windmill", "stanford-bunny", "utah-teapot", "bob.glb"};
 
 constexpr std::string_view kGlbSuffix = ".glb";
 
@@ -125,8 +122,7 @@ double schema_default(const proto::ParamSchema& schema, const char* field, doubl
 
 json default_lights(const proto::ParamSchema& schema) {
   const json& d = schema.document();
-  if (d.contains("properties") && d["properties"].contains("lights") &&
-      d["properties"]["lights"].contains("default")) {
+  if (d.contains("properties") && d["properties"].contains("lights") && d["properties"]["lights"].contains("default")) {
     return d["properties"]["lights"]["default"];
   }
   return json::array({{{"type", "directional"}, {"direction", {-0.4, -0.5, -1}}}});
@@ -179,8 +175,7 @@ json place_lights(const json& lights, double yaw_delta, const ModelFrame& frame,
         for (int i = 0; i < 3; ++i) p[i] -= frame.center[i];
       }
       turn(p[0], p[2], yaw_delta);
-      light["position"] = {tidy_to(p[0] + frame.center[0], frame.radius),
-                           tidy_to(p[1] + frame.center[1], frame.radius),
+      light["position"] = {tidy_to(p[0] + frame.center[0], frame.radius), tidy_to(p[1] + frame.center[1], frame.radius),
                            tidy_to(p[2] + frame.center[2], frame.radius)};
       if (relative_points && light.contains("radius") && light["radius"].is_number()) {
         light["radius"] = tidy_to(light["radius"].get<double>() * frame.radius, frame.radius);
@@ -192,8 +187,7 @@ json place_lights(const json& lights, double yaw_delta, const ModelFrame& frame,
 }
 
 // --set pairs for `value` at `dotted`: objects by their leaves, the rest as text.
-void flatten_into(std::vector<std::pair<std::string, std::string>>& out, const std::string& dotted,
-                  const json& value) {
+void flatten_into(std::vector<std::pair<std::string, std::string>>& out, const std::string& dotted, const json& value) {
   if (value.is_object() && !value.empty()) {
     for (const auto& [key, child] : value.items()) flatten_into(out, dotted + "." + key, child);
   } else if (value.is_string()) {
@@ -271,8 +265,7 @@ const std::vector<Look>& effect_looks() {
 std::vector<Look> preset_looks(const json& presets, const proto::ParamSchema& schema) {
   std::vector<std::string> order;
   const json& d = schema.document();
-  if (d.contains("properties") && d["properties"].contains("preset") &&
-      d["properties"]["preset"].contains("enum")) {
+  if (d.contains("properties") && d["properties"].contains("preset") && d["properties"]["preset"].contains("enum")) {
     for (const json& name : d["properties"]["preset"]["enum"]) order.push_back(name.get<std::string>());
   }
   std::vector<Look> looks;
@@ -356,9 +349,8 @@ ModelFrame frame_from_obj(std::string_view text) {
   return frame;
 }
 
-json render_params(const Look& look, const json& preset_params, const ModelView& view,
-                   const ModelFrame& frame, int size, const std::string& model_id,
-                   const proto::ParamSchema& schema) {
+json render_params(const Look& look, const json& preset_params, const ModelView& view, const ModelFrame& frame,
+                   int size, const std::string& model_id, const proto::ParamSchema& schema) {
   json params = look.params;
   params["width"] = size;
   params["height"] = size;
@@ -395,8 +387,8 @@ json render_params(const Look& look, const json& preset_params, const ModelView&
 
 std::string shell_quote(std::string_view text) {
   const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || std::string_view("_.,/:=+@%-").find(c) !=
-                                                              std::string_view::npos;
+    return std::isalnum(static_cast<unsigned char>(c)) ||
+           std::string_view("_.,/:=+@%-").find(c) != std::string_view::npos;
   });
   if (plain) return std::string(text);
   std::string out = "'";

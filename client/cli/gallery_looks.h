@@ -65,14 +65,13 @@ ModelFrame frame_from_obj(std::string_view obj_text);
 // effect table's point lights are scaled to the model. `preset_params` is
 // the preset's own parameters (null for an effect look). `model_id` empty
 // leaves "model" out.
-nlohmann::json render_params(const Look& look, const nlohmann::json& preset_params,
-                             const ModelView& view, const ModelFrame& frame, int size,
-                             const std::string& model_id, const proto::ParamSchema& schema);
+nlohmann::json render_params(const Look& look, const nlohmann::json& preset_params, const ModelView& view,
+                             const ModelFrame& frame, int size, const std::string& model_id,
+                             const proto::ParamSchema& schema);
 
 // `toon render OBJ --set key=value ... -o OUT` reproducing `params` (without
 // its "model"), with shell quoting where a value needs it.
-std::string render_command(const std::string& obj_path, const nlohmann::json& params,
-                           const std::string& output);
+std::string render_command(const std::string& obj_path, const nlohmann::json& params, const std::string& output);
 // The --set pairs of render_command, in order; objects become dotted keys,
 // arrays and numbers their JSON text, strings their text.
 std::vector<std::pair<std::string, std::string>> set_arguments(const nlohmann::json& params);
@@ -102,7 +101,6 @@ const std::vector<std::string>& default_model_names();
 // FOLDER.glb names whose folder is there; the rest are noted. Neither: the
 // default names that are present. Throws UsageError when `dir` is not a
 // folder or nothing is left to render.
-ModelSelection select_models(const std::filesystem::path& dir, bool all,
-                             const std::vector<std::string>& only);
+ModelSelection select_models(const std::filesystem::path& dir, bool all, const std::vector<std::string>& only);
 
 }  // namespace toond::cli::gallery

@@ -54,8 +54,7 @@ std::string one_line(const nlohmann::json& v) {
   return v.dump();
 }
 
-void pretty_into(std::string& out, const nlohmann::json& v, std::size_t indent, std::size_t lead,
-                 std::size_t width) {
+void pretty_into(std::string& out, const nlohmann::json& v, std::size_t indent, std::size_t lead, std::size_t width) {
   const std::string flat = one_line(v);
   if (!(v.is_object() || v.is_array()) || v.empty() || lead + flat.size() <= width) {
     out += flat;
@@ -81,9 +80,8 @@ void pretty_into(std::string& out, const nlohmann::json& v, std::size_t indent, 
 void append_render(std::string& out, const std::string& model, const PageRender& r) {
   out += "<figure id=\"" + html_escape(url_path(model + "--" + r.look)) + "\">\n";
   if (r.error.empty() && !r.image.empty()) {
-    out += "<a href=\"" + html_escape(url_path(r.image)) + "\"><img src=\"" +
-           html_escape(url_path(r.image)) + "\" alt=\"" + html_escape(r.look) +
-           "\" loading=\"lazy\"></a>\n";
+    out += "<a href=\"" + html_escape(url_path(r.image)) + "\"><img src=\"" + html_escape(url_path(r.image)) +
+           "\" alt=\"" + html_escape(r.look) + "\" loading=\"lazy\"></a>\n";
   } else {
     out += "<div class=\"failed\">failed: " + html_escape(r.error) + "</div>\n";
   }
@@ -91,8 +89,7 @@ void append_render(std::string& out, const std::string& model, const PageRender&
   if (r.params.is_object() && r.params.contains("preset")) out += "<span class=\"kind\">preset</span>";
   if (!r.description.empty()) out += "<span class=\"desc\">" + html_escape(r.description) + "</span>";
   out += "</figcaption>\n";
-  out += "<details><summary>parameters</summary><pre>" + html_escape(pretty_json(r.params)) +
-         "</pre></details>\n";
+  out += "<details><summary>parameters</summary><pre>" + html_escape(pretty_json(r.params)) + "</pre></details>\n";
   if (!r.command.empty()) {
     out += "<details><summary>toon render</summary><pre>" + html_escape(r.command) + "</pre></details>\n";
   }
@@ -106,12 +103,24 @@ std::string html_escape(std::string_view text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c; break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
+        break;
     }
   }
   return out;
@@ -142,8 +151,8 @@ std::string gallery_page(const PageInfo& info, const std::vector<PageModel>& mod
   std::string out;
   out += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   out += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-  out += "<title>" + html_escape(info.title) + "</title>\n<style>" + std::string(kStyle) +
-         "</style>\n</head>\n<body>\n";
+  out +=
+      "<title>" + html_escape(info.title) + "</title>\n<style>" + std::string(kStyle) + "</style>\n</head>\n<body>\n";
   out += "<h1>" + html_escape(info.title) + "</h1>\n<p class=\"meta\">";
   std::size_t renders = 0, failed = 0;
   for (const PageModel& m : models) {
@@ -165,10 +174,11 @@ std::string gallery_page(const PageInfo& info, const std::vector<PageModel>& mod
   out += "</nav>\n";
 
   if (!info.contact_sheet.empty()) {
-    out += "<h2>Contact sheet</h2>\n<p class=\"meta\">Rows are models, columns are looks, in the "
-           "order below.</p>\n<p class=\"sheet\"><a href=\"" +
-           html_escape(url_path(info.contact_sheet)) + "\"><img src=\"" +
-           html_escape(url_path(info.contact_sheet)) + "\" alt=\"contact sheet\"></a></p>\n";
+    out +=
+        "<h2>Contact sheet</h2>\n<p class=\"meta\">Rows are models, columns are looks, in the "
+        "order below.</p>\n<p class=\"sheet\"><a href=\"" +
+        html_escape(url_path(info.contact_sheet)) + "\"><img src=\"" + html_escape(url_path(info.contact_sheet)) +
+        "\" alt=\"contact sheet\"></a></p>\n";
   }
 
   for (const PageModel& m : models) {

@@ -40,8 +40,8 @@ image::Image make_thumbnail(const image::Image& source, int factor) {
   return image::downsample_box(cropped, factor);
 }
 
-image::Image assemble_contact_sheet(const std::vector<std::vector<const image::Image*>>& rows,
-                                    int cell_width, int cell_height, int gap) {
+image::Image assemble_contact_sheet(const std::vector<std::vector<const image::Image*>>& rows, int cell_width,
+                                    int cell_height, int gap) {
   if (cell_width < 1 || cell_height < 1 || gap < 0) {
     throw std::invalid_argument("assemble_contact_sheet: bad cell size or gap");
   }

@@ -27,8 +27,8 @@ image::Image make_thumbnail(const image::Image& source, int factor);
 //   columns × cell_width + (columns + 1) × gap  wide and
 //   rows × cell_height + (rows + 1) × gap  high,
 // where `columns` is the longest row.
-image::Image assemble_contact_sheet(const std::vector<std::vector<const image::Image*>>& rows,
-                                    int cell_width, int cell_height, int gap = kSheetGap);
+image::Image assemble_contact_sheet(const std::vector<std::vector<const image::Image*>>& rows, int cell_width,
+                                    int cell_height, int gap = kSheetGap);
 
 // The colours assemble_contact_sheet uses (RGBA), exposed for tests.
 inline constexpr unsigned char kSheetBackground[4] = {44, 44, 48, 255};

@@ -25,7 +25,7 @@ namespace {
 using nlohmann::json;
 
 // toond's colour for an MTL material without Kd and no texture, and for
-// faces without a material (server/scene/obj_import.cpp).
+// faces without a material (server/scene/import/obj_import.cpp).
 constexpr float kPlainGrey = 0.8f;
 
 std::string lower(std::string_view s) {
@@ -208,7 +208,8 @@ std::string glb_from_obj(const BundleScan& scan) {
         const bool has_texcoord = in_range(i.texcoord_index, attrib.texcoords.size(), 2);
         const std::array<int, 3> key{i.vertex_index, has_texcoord ? i.texcoord_index : -1,
                                      has_normal ? i.normal_index : -1};
-        const auto [it, added] = p.vertex_of_corner.try_emplace(key, static_cast<std::uint32_t>(p.vertex_of_corner.size()));
+        const auto [it, added] =
+            p.vertex_of_corner.try_emplace(key, static_cast<std::uint32_t>(p.vertex_of_corner.size()));
         if (added) {
           const auto v = static_cast<std::size_t>(i.vertex_index);
           const auto n = static_cast<std::size_t>(i.normal_index);
@@ -258,10 +259,9 @@ std::string glb_from_obj(const BundleScan& scan) {
     if (material_id >= 0) {
       const auto m = static_cast<std::size_t>(material_id);
       const tinyobj::material_t& source = materials[m];
-      const BundleFile* texture =
-          source.diffuse_texname.empty()
-              ? nullptr
-              : materials_reader.find(materials_reader.folders[m] + source.diffuse_texname);
+      const BundleFile* texture = source.diffuse_texname.empty()
+                                      ? nullptr
+                                      : materials_reader.find(materials_reader.folders[m] + source.diffuse_texname);
       if (texture) pbr["baseColorTexture"] = {{"index", texture_for(*texture)}};
       if (materials_reader.kd_given[m]) {
         for (std::size_t k = 0; k < 3; ++k) factor[k] = static_cast<float>(source.diffuse[k]);
@@ -287,9 +287,8 @@ std::string glb_from_obj(const BundleScan& scan) {
     if (p.every_normal) attributes["NORMAL"] = buffer.accessor(p.normals, 3, kFloat, "VEC3", kArrayBuffer);
     if (p.every_texcoord) attributes["TEXCOORD_0"] = buffer.accessor(p.texcoords, 2, kFloat, "VEC2", kArrayBuffer);
     const int indices = buffer.accessor(p.indices, 1, kUnsignedInt, "SCALAR", kElementArrayBuffer);
-    mesh_primitives.push_back({{"attributes", attributes},
-                               {"indices", indices},
-                               {"material", document["materials"].size() - 1}});
+    mesh_primitives.push_back(
+        {{"attributes", attributes}, {"indices", indices}, {"material", document["materials"].size() - 1}});
   }
   document["meshes"] = json::array({{{"primitives", mesh_primitives}}});
   document["buffers"] = json::array({{{"byteLength", buffer.bin.size()}}});

@@ -11,8 +11,7 @@ int main(int argc, char** argv) {
   using namespace toond::cli;
   Options options;
   try {
-    options =
-        parse_args(std::vector<std::string>(argv + 1, argv + argc), server_from_environment());
+    options = parse_args(std::vector<std::string>(argv + 1, argv + argc), server_from_environment());
   } catch (const UsageError& e) {
     std::cerr << "toon: " << e.what() << "\nTry 'toon --help'.\n";
     return 2;

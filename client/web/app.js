@@ -461,9 +461,10 @@ function sheetBody() {
 }
 
 // The animation section's "Sheet of this clip": the sheet on, each of its
-// directions a row of the clip's frames.
-function sheetOfClip(clip) {
-  studio.params.sheet = { ...(studio.params.sheet ?? {}), animation: { clip, frames: 8 } };
+// directions a row of the clip's frames (over the part of it shown).
+function sheetOfClip(clip, range) {
+  const animation = range ? { clip, frames: 8, range } : { clip, frames: 8 };
+  studio.params.sheet = { ...(studio.params.sheet ?? {}), animation };
   sync();
   studio.sheet.schedule(0);
 }

@@ -1,9 +1,12 @@
 // The control for a list of the model's clips (the schema's
 // x-control "clips": sheet.animation): a row per clip with a choice of the
 // model's clips, its frame count (or frames per second, when the request
-// gives fps) and a remove button, then an add button. One clip is sent as
-// one entry, several as a list, none as nothing. Hidden while the model has
-// no clips.
+// gives fps), the part of the clip it plays (from / to, in frames where the
+// clip has a frame rate, else seconds; empty: the whole clip), whether it
+// plays once (loop false: its last pose drawn) and a remove button, then an
+// add button. One clip is sent as one entry, several as a list, none as
+// nothing. Hidden while the model has no clips.
+import { rangeBoxes } from './clip_range.js';
 
 // Each entry of the value as a list (the wire takes an entry or a list).
 function entriesOf(value) {
@@ -24,7 +27,7 @@ function entrySchemaOf(schema) {
 // `make(tag, attrs, ...children)` builds an element (controls.js's el);
 // `field(pointer, schema, ...children)` wraps a row with its error slot;
 // `send(pointer, value, final)` changes the request; `clips()` lists the
-// model's clips ({name, duration}). Returns the element appended to `parent`
+// model's clips ({name, duration, frame_rate}). Returns the element appended to `parent`
 // and an updater for the panel's list.
 export function buildClipList(parent, name, schema, pointer, { make, send, clips }) {
   const entrySchema = entrySchemaOf(schema);
@@ -72,10 +75,29 @@ export function buildClipList(parent, name, schema, pointer, { make, send, clips
       const key = byFps ? 'fps' : 'frames';
       commit(entries.map((e, k) => (k === i ? { ...e, [key]: number } : e)));
     });
+    const clip = clips().find((c) => c.name === current);
+    const range = rangeBoxes({
+      clip, range: entry.range, label: `range of clip ${i + 1}`, pointer: `${at}/range`,
+      onRange: (next) => commit(entries.map((e, k) => {
+        if (k !== i) return e;
+        const { range: _, ...rest } = e;
+        return next ? { ...rest, range: next } : rest;
+      })),
+    });
+    const once = make('input', { type: 'checkbox', class: 'once', 'aria-label': `clip ${i + 1} plays once`,
+      'data-path': `${at}/loop` });
+    once.checked = entry.loop === false;
+    once.addEventListener('change', () => commit(entries.map((e, k) => {
+      if (k !== i) return e;
+      const { loop: _, ...rest } = e;
+      return once.checked ? { ...rest, loop: false } : rest;
+    })));
+    const onceLabel = make('label', { class: 'once', title: 'A one-shot (an attack, a death): frames reach its last pose, and its tags play once' },
+      once, 'once');
     const remove = make('button', { type: 'button', class: 'remove', text: `Remove clip ${i + 1}` });
     remove.addEventListener('click', () => commit(entries.filter((_, k) => k !== i)));
     return make('div', { class: 'clip-row', 'data-path': at }, select,
-      make('label', { text: byFps ? 'fps' : 'frames' }), count, remove);
+      make('label', { text: byFps ? 'fps' : 'frames' }), count, ...range.nodes, onceLabel, remove);
   };
 
   const update = (effective) => {

@@ -22,9 +22,12 @@ using nlohmann::json;
 std::string escape_segment(const std::string& s) {
   std::string out;
   for (char c : s) {
-    if (c == '~') out += "~0";
-    else if (c == '/') out += "~1";
-    else out += c;
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
   }
   return out;
 }
@@ -129,8 +132,8 @@ std::optional<json> value_from_text(const json& schema, const std::string& raw) 
     } else if (type != "array" && !list_text) {
       // Text that reads as JSON of another alternative's type (3 for a clip
       // given by index) is taken as that type, not as a name.
-      const bool json_of_other_type = type == "string" && choices.size() > 1 && !parsed.is_discarded() &&
-                                      !parsed.is_string();
+      const bool json_of_other_type =
+          type == "string" && choices.size() > 1 && !parsed.is_discarded() && !parsed.is_string();
       if (json_of_other_type) continue;
       if (const auto scalar = scalar_from_text(type, raw)) return scalar;
     }
@@ -174,8 +177,7 @@ void check_known_fields(const json& schema, const json& value, std::vector<std::
       path.push_back(key);
       const json* child = child_schema(schema, key);
       if (!child && schema.value("additionalProperties", true) == false) {
-        throw RequestError(400, "unknown_parameter", "unknown parameter '" + key + "'",
-                           json_pointer(path));
+        throw RequestError(400, "unknown_parameter", "unknown parameter '" + key + "'", json_pointer(path));
       }
       if (child) check_known_fields(*child, sub, path);
       path.pop_back();
@@ -191,7 +193,20 @@ void check_known_fields(const json& schema, const json& value, std::vector<std::
   }
 }
 
-void fill_defaults(const json& schema, json& value) {
+// The alternative of a validated value's field that describes it: the one
+// of its kind (an object or a list: sheet.animation is either), or the
+// field's own schema.
+const json& schema_of_kind(const json& schema, const json& value) {
+  for (const json* alternative : alternatives(schema)) {
+    const auto type = alternative->find("type");
+    if (type == alternative->end() || !type->is_string()) continue;
+    if ((value.is_object() && *type == "object") || (value.is_array() && *type == "array")) return *alternative;
+  }
+  return schema;
+}
+
+void fill_defaults(const json& field_schema, json& value) {
+  const json& schema = schema_of_kind(field_schema, value);
   if (value.is_object()) {
     if (auto props = schema.find("properties"); props != schema.end()) {
       for (const auto& [key, sub] : props->items()) {
@@ -260,8 +275,7 @@ ParamSchema::ParamSchema(const nlohmann::json& document)
 ParamSchema::~ParamSchema() = default;
 
 const ParamSchema& ParamSchema::render_params() {
-  static const ParamSchema schema(
-      json::parse(toond::proto_files::find("render-params.schema.json")));
+  static const ParamSchema schema(json::parse(toond::proto_files::find("render-params.schema.json")));
   return schema;
 }
 
@@ -294,8 +308,7 @@ void ParamSchema::validate(const nlohmann::json& request) const {
   std::string field = segments.empty() ? std::string("request") : json_pointer(segments);
   std::string limits;
   if (const json* s = schema_at(document_, segments)) limits = describe_limits(*s);
-  throw RequestError(400, "invalid_parameter",
-                     field + ": " + deepest.description + limits, json_pointer(segments));
+  throw RequestError(400, "invalid_parameter", field + ": " + deepest.description + limits, json_pointer(segments));
 }
 
 nlohmann::json ParamSchema::validate_and_complete(const nlohmann::json& request) const {
@@ -305,8 +318,7 @@ nlohmann::json ParamSchema::validate_and_complete(const nlohmann::json& request)
   return completed;
 }
 
-void ParamSchema::set_from_text(nlohmann::json& params, std::string_view dotted,
-                                std::string_view text) const {
+void ParamSchema::set_from_text(nlohmann::json& params, std::string_view dotted, std::string_view text) const {
   std::vector<std::string> segments;
   std::string key(dotted);
   for (std::size_t start = 0; start <= key.size();) {
@@ -320,8 +332,7 @@ void ParamSchema::set_from_text(nlohmann::json& params, std::string_view dotted,
   for (const auto& seg : segments) {
     const json* next = segment_schema(*schema, seg);
     if (!next) {
-      throw RequestError(400, "unknown_parameter",
-                         "unknown parameter '" + key + "' (see GET /schema or proto/)",
+      throw RequestError(400, "unknown_parameter", "unknown parameter '" + key + "' (see GET /schema or proto/)",
                          json_pointer(segments));
     }
     schema = next;
@@ -330,8 +341,7 @@ void ParamSchema::set_from_text(nlohmann::json& params, std::string_view dotted,
 
   const std::string raw(text);
   auto fail = [&](const std::string& why) {
-    throw RequestError(400, "invalid_parameter", key + "=" + raw + ": " + why,
-                       json_pointer(segments));
+    throw RequestError(400, "invalid_parameter", key + "=" + raw + ": " + why, json_pointer(segments));
   };
   const std::optional<json> converted = value_from_text(*schema, raw);
   if (!converted) fail("expected " + expected_text(*schema));

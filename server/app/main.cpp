@@ -20,9 +20,9 @@
 #include "http/access_control.h"
 #include "http/listen_backlog.h"
 #include "http/routes.h"
-#include "scene/model_library.h"
-#include "render/render_service.h"
-#include "scene/model_store.h"
+#include "render/run/render_service.h"
+#include "scene/store/model_library.h"
+#include "scene/store/model_store.h"
 
 namespace {
 
@@ -51,8 +51,7 @@ class SignalStopper {
           int signal = 0;
           sigwait(&set, &signal);
           if (done_) return;
-          std::cerr << "toond: " << (signal == SIGINT ? "SIGINT" : "SIGTERM")
-                    << ", finishing the requests in flight\n";
+          std::cerr << "toond: " << (signal == SIGINT ? "SIGINT" : "SIGTERM") << ", finishing the requests in flight\n";
           // A signal that comes before listen() has started must still stop it.
           while (!done_ && !server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
           server.stop();
@@ -91,8 +90,8 @@ int run(const toond::app::Options& options) {
   store_options.max_bytes = options.max_store_bytes.value_or(0);
   // A lease outlives the longest a request holds a model: its wait for the
   // render, with room for the import and posing before it.
-  store_options.lease_expiry = std::max(std::chrono::seconds(600),
-                                        std::chrono::seconds(static_cast<long long>(2 * options.render_timeout_s)));
+  store_options.lease_expiry =
+      std::max(std::chrono::seconds(600), std::chrono::seconds(static_cast<long long>(2 * options.render_timeout_s)));
   toond::scene::ModelStore store(options.data_dir, store_options);
   toond::render::RenderService::Options render_options;
   render_options.gpu_index = options.gpu;
@@ -117,8 +116,8 @@ int run(const toond::app::Options& options) {
   // on every request of a kept-alive connection (a browser's); the test
   // ResultCache.KeptAliveConnectionsGetAnswersWithoutWaitingForAcks times it.
   server.set_tcp_nodelay(true);
-  toond::http::ServiceContext context{store, library, renderer,
-                                      std::chrono::milliseconds(static_cast<long long>(options.render_timeout_s * 1000))};
+  toond::http::ServiceContext context{
+      store, library, renderer, std::chrono::milliseconds(static_cast<long long>(options.render_timeout_s * 1000))};
   context.limits = options.limits;
   context.limits.max_upload_bytes = options.max_upload_bytes;
   // Edited shaders change the image of the same parameters: no cache then.
@@ -137,9 +136,10 @@ int run(const toond::app::Options& options) {
   if (toond::http::widen_listen_backlog(port, kListenBacklog) == 0) {
     std::cerr << "toond: could not widen the listen queue; clients reconnecting together may wait\n";
   }
-  std::cerr << "toond: GL " << renderer.gl_info().version << " on " << renderer.gl_info().renderer
-            << " (" << renderer.gl_info().platform
-            << (renderer.gl_info().robust ? ", robust context" : ", no reset notification") << "), data in " << options.data_dir
+  std::cerr << "toond: GL " << renderer.gl_info().version << " on " << renderer.gl_info().renderer << " ("
+            << renderer.gl_info().platform
+            << (renderer.gl_info().robust ? ", robust context" : ", no reset notification") << "), data in "
+            << options.data_dir
             << (store_options.max_bytes
                     ? ", at most " + std::to_string(store_options.max_bytes >> 20) + " MiB of models"
                     : "")
@@ -176,8 +176,7 @@ int main(int argc, char** argv) {
     std::error_code ec;
     if (!std::filesystem::is_directory(options.shader_dir, ec)) {
       std::cerr << "toond: --shader-dir " << options.shader_dir << ": "
-                << (std::filesystem::exists(options.shader_dir, ec) ? "not a directory" : "no such directory")
-                << "\n";
+                << (std::filesystem::exists(options.shader_dir, ec) ? "not a directory" : "no such directory") << "\n";
       return 2;
     }
   }

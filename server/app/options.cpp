@@ -124,10 +124,14 @@ const Flag kGeneralFlags[] = {
       "on a GPU, cpu on a software rasterizer such as llvmpipe,\n"
       "whose vertex stage runs on the CPU again for every pass"},
      [](Options& o, Value flag, Value v) {
-       if (v == "gpu") o.skinning = Options::Skinning::Gpu;
-       else if (v == "cpu") o.skinning = Options::Skinning::Cpu;
-       else if (v == "auto") o.skinning = Options::Skinning::Auto;
-       else throw std::invalid_argument(flag + " expects gpu, cpu or auto, got '" + v + "'");
+       if (v == "gpu")
+         o.skinning = Options::Skinning::Gpu;
+       else if (v == "cpu")
+         o.skinning = Options::Skinning::Cpu;
+       else if (v == "auto")
+         o.skinning = Options::Skinning::Auto;
+       else
+         throw std::invalid_argument(flag + " expects gpu, cpu or auto, got '" + v + "'");
      }},
     {{"", "--version", "", "print the version and exit"}, [](Options& o, Value, Value) { o.version = true; }},
     {{"-h", "--help", "", "this text"}, [](Options& o, Value, Value) { o.help = true; }},

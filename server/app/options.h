@@ -19,7 +19,7 @@ struct Options {
   std::optional<int> gpu;
   std::size_t queue = 32;
   std::size_t render_threads = 1;  // each with its own GL context
-  // Msamples (render/render_cost.h) from which a render waits in the long
+  // Msamples (render/plan/render_cost.h) from which a render waits in the long
   // lane, served by a render thread of its own; 0: one lane.
   double long_render_cost = 300;
   std::size_t max_upload_bytes = 256u << 20;

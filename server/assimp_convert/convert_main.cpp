@@ -1,5 +1,5 @@
 // toond-assimp-convert: reads one model file of a format assimp knows (FBX,
-// COLLADA, 3DS, 3MF, OFF and the others listed by scene/assimp_import.h) for
+// COLLADA, 3DS, 3MF, OFF and the others listed by scene/import/assimp_import.h) for
 // the daemon, in a process of its own, and answers it as a binary glTF
 // that the daemon reads with its own glTF importer, checks included.
 //   toond-assimp-convert --format EXT --memory-mb N --cpu-seconds S < file

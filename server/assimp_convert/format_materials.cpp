@@ -7,13 +7,10 @@
 namespace toond::assimp_convert {
 namespace {
 
-float srgb_to_linear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
 bool has_colour_texture(const aiMaterial& material) {
-  return material.GetTextureCount(aiTextureType_DIFFUSE) > 0 ||
-         material.GetTextureCount(aiTextureType_BASE_COLOR) > 0;
+  return material.GetTextureCount(aiTextureType_DIFFUSE) > 0 || material.GetTextureCount(aiTextureType_BASE_COLOR) > 0;
 }
 
 // Sets both keys the glTF writer may read the base colour from.

@@ -120,8 +120,7 @@ void add_channel(GlbAppender& append, json& animation, std::size_t node, std::si
 
 }  // namespace
 
-std::string with_morph_weight_channels(const std::string& glb, const aiScene& scene,
-                                       std::vector<std::string>& notes) {
+std::string with_morph_weight_channels(const std::string& glb, const aiScene& scene, std::vector<std::string>& notes) {
   if (!has_morph_channels(scene)) return glb;
   const auto chunks = glb::glb_chunks(glb);
   if (!chunks) throw std::runtime_error("assimp's glTF answer is not a well-formed container");

@@ -17,7 +17,6 @@ namespace toond::assimp_convert {
 // targets of different counts, nodes the writer renamed) is left out with a
 // sentence in `notes`. Throws std::runtime_error when `glb` is not a
 // well-formed container.
-std::string with_morph_weight_channels(const std::string& glb, const aiScene& scene,
-                                       std::vector<std::string>& notes);
+std::string with_morph_weight_channels(const std::string& glb, const aiScene& scene, std::vector<std::string>& notes);
 
 }  // namespace toond::assimp_convert

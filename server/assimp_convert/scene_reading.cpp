@@ -2,11 +2,11 @@
 
 #include <map>
 #include <new>
-#include <string>
 #include <stdexcept>
+#include <string>
 
-#include <assimp/IOSystem.hpp>
 #include <assimp/postprocess.h>
+#include <assimp/IOSystem.hpp>
 
 #include "assimp_convert/animation_timing.h"
 
@@ -65,7 +65,8 @@ const aiScene& read_scene(Assimp::Importer& importer, std::string_view bytes, co
   // Refused for a clip's timing alone: everything the validation checks
   // before the clips (nodes, meshes) passed. Read again unvalidated, mend
   // the clips, and validate then.
-  if (!importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, format.c_str())) throw_reason(importer.GetErrorString());
+  if (!importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, format.c_str()))
+    throw_reason(importer.GetErrorString());
   // The importer keeps its scene const to its callers; it is its own,
   // made by this read, and is mended before anything else reads it.
   for (std::string& note : lengthen_clips_to_their_keys(const_cast<aiScene&>(*importer.GetScene()))) {

@@ -8,8 +8,8 @@
 #include <string_view>
 #include <vector>
 
-#include <assimp/Importer.hpp>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 namespace toond::assimp_convert {
 

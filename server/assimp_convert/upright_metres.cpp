@@ -49,7 +49,8 @@ std::optional<aiMatrix4x4> axis_turn(const aiScene& scene, std::string& said) {
   aiMatrix4x4 turn;  // identity
   const Axis rows[3] = {*right, *up, *front};
   for (int row = 0; row < 3; ++row) {
-    for (int column = 0; column < 3; ++column) turn[row][column] = column == rows[row].index ? float(rows[row].sign) : 0.0f;
+    for (int column = 0; column < 3; ++column)
+      turn[row][column] = column == rows[row].index ? float(rows[row].sign) : 0.0f;
   }
   if (turn.IsIdentity()) return std::nullopt;
   said = std::string("turned from ") + axis_name(*up) + " up to +Y up";

@@ -7,7 +7,7 @@
 // clips all move together. Formats that carry neither (3DS, OFF, and 3MF
 // and AMF, Z-up by their specifications) are left as they are: the
 // daemon turns a Z-up file by the upload's `up`, whose default is the
-// format's convention (scene/bundle_import.h).
+// format's convention (scene/import/bundle_import.h).
 #include <string>
 #include <vector>
 

@@ -19,7 +19,7 @@ enum class Refusal {
 };
 
 struct Reading {
-  std::string path;                 // the bundle path; empty unless refusal is none
+  std::string path;  // the bundle path; empty unless refusal is none
   Refusal refusal = Refusal::none;
 };
 

@@ -10,10 +10,10 @@ namespace {
 constexpr std::array<std::string_view, 6> kOwn = {".obj", ".m", ".gltf", ".glb", ".stl", ".ply"};
 
 constexpr std::array<std::string_view, 41> kAssimp = {
-    ".fbx", ".dae",  ".zae", ".3ds", ".3mf", ".off",     ".x",      ".x3d", ".x3db", ".ase", ".ask",
-    ".ac",  ".ac3d", ".acc", ".amf", ".b3d", ".cob",     ".dxf",    ".hmp", ".ifc",  ".ifczip",
-    ".iqm", ".irrmesh", ".lwo", ".lxo", ".md2", ".md3", ".md5mesh", ".mdc", ".mdl", ".ms3d", ".ndo",
-    ".nff", ".enff", ".ogex", ".pmx", ".q3o", ".q3s", ".sib", ".smd", ".xgl"};
+    ".fbx",     ".dae",  ".zae", ".3ds", ".3mf", ".off",     ".x",   ".x3d", ".x3db", ".ase",    ".ask",
+    ".ac",      ".ac3d", ".acc", ".amf", ".b3d", ".cob",     ".dxf", ".hmp", ".ifc",  ".ifczip", ".iqm",
+    ".irrmesh", ".lwo",  ".lxo", ".md2", ".md3", ".md5mesh", ".mdc", ".mdl", ".ms3d", ".ndo",    ".nff",
+    ".enff",    ".ogex", ".pmx", ".q3o", ".q3s", ".sib",     ".smd", ".xgl"};
 
 }  // namespace
 
@@ -22,16 +22,13 @@ std::span<const std::string_view> assimp_model_extensions() { return kAssimp; }
 
 bool has_any_extension(std::string_view path, std::span<const std::string_view> extensions) {
   for (const std::string_view extension : extensions) {
-    if (path.size() >= extension.size() &&
-        same_ignoring_case(path.substr(path.size() - extension.size()), extension)) {
+    if (path.size() >= extension.size() && same_ignoring_case(path.substr(path.size() - extension.size()), extension)) {
       return true;
     }
   }
   return false;
 }
 
-bool is_model_file(std::string_view path) {
-  return has_any_extension(path, kOwn) || has_any_extension(path, kAssimp);
-}
+bool is_model_file(std::string_view path) { return has_any_extension(path, kOwn) || has_any_extension(path, kAssimp); }
 
 }  // namespace toond::bundle_paths

@@ -63,9 +63,8 @@ bool is_number(const std::string& s) {
 // which take one to three numbers; 0 when `word` is no option at all.
 int option_arity(std::string_view word) {
   static constexpr std::pair<std::string_view, int> kOptions[] = {
-      {"-blendu", 1}, {"-blendv", 1},  {"-bm", 1},     {"-boost", 1}, {"-cc", 1},
-      {"-clamp", 1},  {"-imfchan", 1}, {"-texres", 1}, {"-type", 1},  {"-colorspace", 1},
-      {"-mm", 2},     {"-o", -1},      {"-s", -1},     {"-t", -1}};
+      {"-blendu", 1}, {"-blendv", 1}, {"-bm", 1},         {"-boost", 1}, {"-cc", 1}, {"-clamp", 1}, {"-imfchan", 1},
+      {"-texres", 1}, {"-type", 1},   {"-colorspace", 1}, {"-mm", 2},    {"-o", -1}, {"-s", -1},    {"-t", -1}};
   for (const auto& [name, arity] : kOptions) {
     if (same_ignoring_case(word, name)) return arity;
   }

@@ -1,5 +1,5 @@
 // toond-draco-decode: decodes one Draco mesh for the daemon
-// (scene/draco_decoder.h) in a process of its own, so that a decoder crash
+// (scene/import/draco_decoder.h) in a process of its own, so that a decoder crash
 // or runaway on a hostile file ends this process and never toond.
 //   toond-draco-decode --memory-mb N --cpu-seconds S [--attribute ID]...
 // Standard input: the Draco bytes. Standard output: the mesh
@@ -58,13 +58,20 @@ int fail(const std::string& why) {
 // must be converted to float.
 int gltf_type_of(draco::DataType type) {
   switch (type) {
-    case draco::DT_INT8: return draco_wire::kByte;
-    case draco::DT_UINT8: return draco_wire::kUnsignedByte;
-    case draco::DT_INT16: return draco_wire::kShort;
-    case draco::DT_UINT16: return draco_wire::kUnsignedShort;
-    case draco::DT_UINT32: return draco_wire::kUnsignedInt;
-    case draco::DT_FLOAT32: return draco_wire::kFloat;
-    default: return 0;
+    case draco::DT_INT8:
+      return draco_wire::kByte;
+    case draco::DT_UINT8:
+      return draco_wire::kUnsignedByte;
+    case draco::DT_INT16:
+      return draco_wire::kShort;
+    case draco::DT_UINT16:
+      return draco_wire::kUnsignedShort;
+    case draco::DT_UINT32:
+      return draco_wire::kUnsignedInt;
+    case draco::DT_FLOAT32:
+      return draco_wire::kFloat;
+    default:
+      return 0;
   }
 }
 

@@ -19,7 +19,8 @@ class Cursor {
   std::uint32_t u32(const char* what) {
     const std::string_view b = take(4, what);
     std::uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(b[static_cast<std::size_t>(i)])) << (8 * i);
+    for (int i = 0; i < 4; ++i)
+      v |= static_cast<std::uint32_t>(static_cast<unsigned char>(b[static_cast<std::size_t>(i)])) << (8 * i);
     return v;
   }
 
@@ -42,12 +43,16 @@ class Cursor {
 std::size_t component_size(int component_type) {
   switch (component_type) {
     case kByte:
-    case kUnsignedByte: return 1;
+    case kUnsignedByte:
+      return 1;
     case kShort:
-    case kUnsignedShort: return 2;
+    case kUnsignedShort:
+      return 2;
     case kUnsignedInt:
-    case kFloat: return 4;
-    default: return 0;
+    case kFloat:
+      return 4;
+    default:
+      return 0;
   }
 }
 
@@ -68,12 +73,14 @@ std::string write_mesh(const Mesh& mesh) {
 
 Mesh read_mesh(std::string_view bytes) {
   Cursor in(bytes);
-  if (in.take(kMagic.size(), "its header") != kMagic) throw WireError("the answer does not start with " + std::string(kMagic));
+  if (in.take(kMagic.size(), "its header") != kMagic)
+    throw WireError("the answer does not start with " + std::string(kMagic));
   Mesh mesh;
   mesh.points = in.u32("its header");
   const std::uint32_t index_count = in.u32("its header");
   const std::uint32_t attribute_count = in.u32("its header");
-  if (index_count % 3 != 0) throw WireError("the answer has " + std::to_string(index_count) + " indices, not whole triangles");
+  if (index_count % 3 != 0)
+    throw WireError("the answer has " + std::to_string(index_count) + " indices, not whole triangles");
   if (index_count > in.left() / 4) throw WireError("the answer ends inside its indices");
   mesh.indices.resize(index_count);
   for (std::uint32_t& i : mesh.indices) {

@@ -2,7 +2,7 @@
 // glTF's binary container (.glb): a 12-byte header, a JSON chunk and at
 // most one binary chunk. Written by `toon` (an OBJ bundle as one .glb) and
 // by toond-assimp-convert (assimp's answer with what it leaves out added);
-// the daemon reads uploads with scene/gltf_container.h, which says in
+// the daemon reads uploads with scene/import/gltf_container.h, which says in
 // detail what is wrong with a broken one.
 #include <optional>
 #include <string>

@@ -44,23 +44,43 @@ class GlObject {
 
 namespace traits {
 struct Buffer {
-  static GLuint create() { GLuint id = 0; glCreateBuffers(1, &id); return id; }
+  static GLuint create() {
+    GLuint id = 0;
+    glCreateBuffers(1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteBuffers(1, &id); }
 };
 struct VertexArray {
-  static GLuint create() { GLuint id = 0; glCreateVertexArrays(1, &id); return id; }
+  static GLuint create() {
+    GLuint id = 0;
+    glCreateVertexArrays(1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteVertexArrays(1, &id); }
 };
 struct Texture {
-  static GLuint create(GLenum target) { GLuint id = 0; glCreateTextures(target, 1, &id); return id; }
+  static GLuint create(GLenum target) {
+    GLuint id = 0;
+    glCreateTextures(target, 1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteTextures(1, &id); }
 };
 struct Renderbuffer {
-  static GLuint create() { GLuint id = 0; glCreateRenderbuffers(1, &id); return id; }
+  static GLuint create() {
+    GLuint id = 0;
+    glCreateRenderbuffers(1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteRenderbuffers(1, &id); }
 };
 struct Framebuffer {
-  static GLuint create() { GLuint id = 0; glCreateFramebuffers(1, &id); return id; }
+  static GLuint create() {
+    GLuint id = 0;
+    glCreateFramebuffers(1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteFramebuffers(1, &id); }
 };
 struct Shader {
@@ -72,7 +92,11 @@ struct Program {
   static void destroy(GLuint id) { glDeleteProgram(id); }
 };
 struct Query {
-  static GLuint create(GLenum target) { GLuint id = 0; glCreateQueries(target, 1, &id); return id; }
+  static GLuint create(GLenum target) {
+    GLuint id = 0;
+    glCreateQueries(target, 1, &id);
+    return id;
+  }
   static void destroy(GLuint id) { glDeleteQueries(1, &id); }
 };
 }  // namespace traits

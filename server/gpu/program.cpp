@@ -64,8 +64,7 @@ std::string with_defines(std::string_view source, const std::vector<std::string>
   return out;
 }
 
-Program::Program(const ShaderSource& vertex, const ShaderSource& fragment,
-                 const std::vector<std::string>& defines)
+Program::Program(const ShaderSource& vertex, const ShaderSource& fragment, const std::vector<std::string>& defines)
     : Program(std::vector<ShaderSource>{vertex, fragment}, defines) {}
 
 Program::Program(const std::vector<ShaderSource>& stages, const std::vector<std::string>& defines) {

@@ -27,8 +27,7 @@ class Program {
   Program() = default;
   // Compiles and links. Throws ShaderCompileError with the file name and the
   // driver's log when a stage does not compile or the program does not link.
-  Program(const ShaderSource& vertex, const ShaderSource& fragment,
-          const std::vector<std::string>& defines);
+  Program(const ShaderSource& vertex, const ShaderSource& fragment, const std::vector<std::string>& defines);
   // Any set of stages; each stage is named by its file's extension (.vert,
   // .geom, .frag).
   Program(const std::vector<ShaderSource>& stages, const std::vector<std::string>& defines);

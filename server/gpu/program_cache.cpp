@@ -8,8 +8,7 @@
 
 namespace toond::gpu {
 
-ProgramCache::ProgramCache(SourceLookup lookup)
-    : sources_(std::make_unique<FixedShaderSources>(std::move(lookup))) {}
+ProgramCache::ProgramCache(SourceLookup lookup) : sources_(std::make_unique<FixedShaderSources>(std::move(lookup))) {}
 
 ProgramCache::ProgramCache(std::unique_ptr<ShaderSources> sources) : sources_(std::move(sources)) {}
 
@@ -21,8 +20,7 @@ const std::string& ProgramCache::text(const std::string& name) {
   return live_.emplace(name, std::move(source)).first->second;
 }
 
-Program& ProgramCache::get(const std::string& vertex, const std::string& fragment,
-                           std::vector<std::string> defines) {
+Program& ProgramCache::get(const std::string& vertex, const std::string& fragment, std::vector<std::string> defines) {
   return get(std::vector<std::string>{vertex, fragment}, std::move(defines));
 }
 
@@ -38,8 +36,8 @@ Program& ProgramCache::get(const std::vector<std::string>& stages, std::vector<s
   return *programs_.emplace(key, std::move(entry)).first->second.program;
 }
 
-ProgramCache::Built ProgramCache::build(const std::vector<std::string>& stages,
-                                        const std::vector<std::string>& defines, const ShaderTextReader& read) {
+ProgramCache::Built ProgramCache::build(const std::vector<std::string>& stages, const std::vector<std::string>& defines,
+                                        const ShaderTextReader& read) {
   Built built;
   std::vector<ShaderSource> sources;
   for (const auto& file : stages) {

@@ -29,8 +29,7 @@ class ProgramCache {
   explicit ProgramCache(std::unique_ptr<ShaderSources> sources);
 
   // Throws ShaderCompileError (a GpuError) when the variant does not build.
-  Program& get(const std::string& vertex, const std::string& fragment,
-               std::vector<std::string> defines);
+  Program& get(const std::string& vertex, const std::string& fragment, std::vector<std::string> defines);
   // The same for any set of stage files (e.g. with a geometry shader).
   Program& get(const std::vector<std::string>& stages, std::vector<std::string> defines);
 

@@ -5,7 +5,7 @@
 // out of the mapping bottom row last, so the image comes out top row first
 // in one pass over the pixels. read() waits for the pack at once; start()
 // and finish() let the render thread record the next frame in between
-// (frames in flight, render/pending_frame.h). Used where a GPU packs
+// (frames in flight, render/run/pending_frame.h). Used where a GPU packs
 // (render_target.h says when), and for every frame kept in flight.
 #include <cstddef>
 #include <optional>
@@ -40,7 +40,7 @@ class ReadbackBuffer {
   std::size_t bytes_;
   Buffer buffer_;
   const std::uint8_t* mapped_ = nullptr;  // valid while buffer_ lives
-  std::optional<Fence> packed_;  // set by start(), cleared by finish()
+  std::optional<Fence> packed_;           // set by start(), cleared by finish()
 };
 
 }  // namespace toond::gpu

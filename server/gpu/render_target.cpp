@@ -38,11 +38,7 @@ Texture single_sample_texture(int width, int height) {
 }  // namespace
 
 RenderTarget::RenderTarget(int width, int height, int samples, ReadbackPath readback, int shrink)
-    : width_(width),
-      height_(height),
-      requested_samples_(samples),
-      samples_(samples),
-      shrink_(shrink) {
+    : width_(width), height_(height), requested_samples_(samples), samples_(samples), shrink_(shrink) {
   if (shrink_ < 1 || width % shrink_ != 0 || height % shrink_ != 0) {
     throw GpuError("RenderTarget: " + std::to_string(width) + "x" + std::to_string(height) +
                    " is not a multiple of the shrink factor " + std::to_string(shrink_));
@@ -76,8 +72,7 @@ void RenderTarget::make_drawing_framebuffer() {
     samples_ = std::max(samples_, static_cast<int>(given));
   }
   depth_stencil_ = make_storage(GL_DEPTH24_STENCIL8, width_, height_, samples_);
-  glNamedFramebufferRenderbuffer(draw_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                                 depth_stencil_.id());
+  glNamedFramebufferRenderbuffer(draw_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_.id());
   check_complete(draw_fbo_.id(), "draw");
 }
 
@@ -122,8 +117,7 @@ void RenderTarget::make_resolve_framebuffer() {
     glNamedFramebufferTexture(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, single_color_.id(), 0);
   } else {
     resolved_color_ = make_storage(GL_SRGB8_ALPHA8, width_, height_, 1);
-    glNamedFramebufferRenderbuffer(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                                   resolved_color_.id());
+    glNamedFramebufferRenderbuffer(resolve_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolved_color_.id());
   }
   check_complete(resolve_fbo_.id(), "resolve");
 }

@@ -23,8 +23,7 @@ enum class ReadbackPath { PixelBuffer, ClientMemory };
 
 class RenderTarget {
  public:
-  RenderTarget(int width, int height, int samples, ReadbackPath readback = ReadbackPath::PixelBuffer,
-               int shrink = 1);
+  RenderTarget(int width, int height, int samples, ReadbackPath readback = ReadbackPath::PixelBuffer, int shrink = 1);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -83,18 +82,18 @@ class RenderTarget {
   int requested_samples_;
   int samples_;
   int shrink_;
-  Renderbuffer color_;            // multisampled, or without shrinking
+  Renderbuffer color_;  // multisampled, or without shrinking
   Renderbuffer depth_stencil_;
   Framebuffer draw_fbo_;
-  Renderbuffer resolved_color_;   // only with samples > 1, without shrinking
-  Framebuffer resolve_fbo_;       // only with samples > 1
-  Texture line_coverage_;         // bind_line_coverage's, made on first use
+  Renderbuffer resolved_color_;  // only with samples > 1, without shrinking
+  Framebuffer resolve_fbo_;      // only with samples > 1
+  Texture line_coverage_;        // bind_line_coverage's, made on first use
   Framebuffer line_coverage_fbo_;
-  Texture depth_copy_;            // copy_depth's, made on first use
+  Texture depth_copy_;  // copy_depth's, made on first use
   Framebuffer depth_copy_fbo_;
-  Texture single_color_;          // shrinking only: the resolve's target, or the drawn colour
-  Renderbuffer shrunk_color_;     // shrinking only
-  Framebuffer shrunk_fbo_;        // shrinking only
+  Texture single_color_;                        // shrinking only: the resolve's target, or the drawn colour
+  Renderbuffer shrunk_color_;                   // shrinking only
+  Framebuffer shrunk_fbo_;                      // shrinking only
   std::optional<ReadbackBuffer> pixel_buffer_;  // only for ReadbackPath::PixelBuffer
 };
 

@@ -10,9 +10,7 @@ namespace toond::gpu {
 class ShaderCompileError : public GpuError {
  public:
   ShaderCompileError(std::string file, std::string log)
-      : GpuError("shader " + file + " failed to compile:\n" + log),
-        file_(std::move(file)),
-        log_(std::move(log)) {}
+      : GpuError("shader " + file + " failed to compile:\n" + log), file_(std::move(file)), log_(std::move(log)) {}
   const std::string& file() const { return file_; }
   const std::string& log() const { return log_; }
 

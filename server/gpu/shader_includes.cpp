@@ -31,8 +31,8 @@ std::optional<std::string> included_name(std::string_view line, const std::strin
   rest = strip(rest.substr(1));
   if (!rest.starts_with("include")) return std::nullopt;
   rest = strip(rest.substr(7));
-  const bool quoted = rest.size() >= 3 && rest.front() == '"' && rest.back() == '"' &&
-                      rest.find('"', 1) == rest.size() - 1;
+  const bool quoted =
+      rest.size() >= 3 && rest.front() == '"' && rest.back() == '"' && rest.find('"', 1) == rest.size() - 1;
   if (!quoted) throw ShaderCompileError(file, located_error(line_number, "#include takes one quoted file name"));
   return std::string(rest.substr(1, rest.size() - 2));
 }

@@ -16,8 +16,8 @@ namespace toond::gpu {
 
 struct ShaderLogError {
   std::optional<int> source;  // source-string number, when the log gives one
-  std::optional<int> line;  // 1-based line in the shader file, when the log gives one
-  std::string text;         // the message, without the location prefix ("syntax error, …")
+  std::optional<int> line;    // 1-based line in the shader file, when the log gives one
+  std::string text;           // the message, without the location prefix ("syntax error, …")
 };
 
 // The first error of `log` (a warning only when the log holds no error; the

@@ -1,11 +1,11 @@
 #include "gpu/shader_source.h"
 
+#include <sys/stat.h>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <sys/stat.h>
 
 #include "gpu/shader_compile_error.h"
 
@@ -48,8 +48,7 @@ std::optional<std::string> read_file(const std::filesystem::path& path, std::str
 bool ShaderDirectory::Stamp::operator==(const Stamp& o) const {
   if (exists != o.exists) return false;
   if (!exists) return true;
-  return dev == o.dev && ino == o.ino && size == o.size && same_time(mtime, o.mtime) &&
-         same_time(ctime, o.ctime);
+  return dev == o.dev && ino == o.ino && size == o.size && same_time(mtime, o.mtime) && same_time(ctime, o.ctime);
 }
 
 ShaderDirectory::ShaderDirectory(std::filesystem::path dir) : dir_(std::move(dir)) {

@@ -2,13 +2,13 @@
 // Where GLSL text comes from. The daemon normally compiles the sources
 // embedded at build time, which never change; with --shader-dir it reads
 // them from a folder and notices edits, for look development.
+#include <sys/types.h>
 #include <ctime>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <optional>
 #include <string>
-#include <sys/types.h>
 #include <vector>
 
 namespace toond::gpu {

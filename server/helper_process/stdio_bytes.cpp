@@ -1,7 +1,7 @@
 #include "helper_process/stdio_bytes.h"
 
-#include <cerrno>
 #include <unistd.h>
+#include <cerrno>
 
 namespace toond::helper_process {
 

@@ -8,7 +8,8 @@ namespace toond::http {
 namespace {
 
 constexpr const char* kAllowedHeaders = "Authorization, Content-Type";
-constexpr const char* kExposedHeaders = "Server-Timing, X-Toond-Passes, X-Toond-Lod, X-Toond-Samples, X-Toond-Cost, Retry-After, ETag";
+constexpr const char* kExposedHeaders =
+    "Server-Timing, X-Toond-Passes, X-Toond-Lod, X-Toond-Samples, X-Toond-Cost, Retry-After, ETag";
 
 bool is_preflight(const httplib::Request& req) {
   return req.method == "OPTIONS" && req.has_header("Access-Control-Request-Method");
@@ -67,8 +68,7 @@ void install_access_control(httplib::Server& server, const AccessOptions& access
     return httplib::Server::HandlerResponse::Handled;
   });
   if (access.cors_origins.empty()) return;
-  server.set_post_routing_handler([origins = access.cors_origins](const httplib::Request& req,
-                                                                   httplib::Response& res) {
+  server.set_post_routing_handler([origins = access.cors_origins](const httplib::Request& req, httplib::Response& res) {
     const std::string origin = allowed_origin(req, origins);
     if (origins.size() > 1 || origin != "*") res.set_header("Vary", "Origin");
     if (origin.empty()) return;

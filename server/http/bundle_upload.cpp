@@ -2,21 +2,19 @@
 
 #include "limit_error.h"
 #include "request_error.h"
-#include "scene/import_error.h"
+#include "scene/import/import_error.h"
 
 namespace toond::http {
 
-scene::Bundle bundle_from_multipart(const httplib::Request& req, const std::string& skip,
-                                    const RequestLimits& limits) {
+scene::Bundle bundle_from_multipart(const httplib::Request& req, const std::string& skip, const RequestLimits& limits) {
   if (!req.is_multipart_form_data()) {
-    throw RequestError(415, "not_multipart",
-                       "expected multipart/form-data with one part per bundle file");
+    throw RequestError(415, "not_multipart", "expected multipart/form-data with one part per bundle file");
   }
   const std::size_t files = req.files.size() - (skip.empty() ? 0 : req.files.count(skip));
   if (files > limits.max_bundle_files) {
     throw LimitError(413, "--max-bundle-files",
-                     "the upload holds " + std::to_string(files) + " files, more than the limit --max-bundle-files = " +
-                         std::to_string(limits.max_bundle_files));
+                     "the upload holds " + std::to_string(files) +
+                         " files, more than the limit --max-bundle-files = " + std::to_string(limits.max_bundle_files));
   }
   scene::Bundle bundle;
   for (const auto& [name, part] : req.files) {

@@ -2,7 +2,7 @@
 #include <httplib.h>
 
 #include "http/request_limits.h"
-#include "scene/bundle.h"
+#include "scene/import/bundle.h"
 
 namespace toond::http {
 

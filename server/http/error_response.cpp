@@ -9,17 +9,17 @@
 #include "gpu/shader_compile_error.h"
 #include "gpu/shader_log.h"
 #include "http/import_limit_flag.h"
-#include "render/render_service.h"
 #include "limit_error.h"
+#include "render/run/render_service.h"
 #include "request_error.h"
-#include "scene/import_error.h"
-#include "scene/import_limits.h"
-#include "scene/store_error.h"
+#include "scene/import/import_error.h"
+#include "scene/import/import_limits.h"
+#include "scene/store/store_error.h"
 
 namespace toond::http {
 
-void write_error(httplib::Response& res, int status, const std::string& code,
-                 const std::string& message, const std::string& path) {
+void write_error(httplib::Response& res, int status, const std::string& code, const std::string& message,
+                 const std::string& path) {
   res.status = status;
   nlohmann::json body = {{"error", {{"code", code}, {"message", message}, {"path", path}}}};
   res.set_content(dump_for_client(body), "application/json");

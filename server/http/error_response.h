@@ -11,8 +11,8 @@
 
 namespace toond::http {
 
-void write_error(httplib::Response& res, int status, const std::string& code,
-                 const std::string& message, const std::string& path = {});
+void write_error(httplib::Response& res, int status, const std::string& code, const std::string& message,
+                 const std::string& path = {});
 
 // An error over one of the daemon's limits: `limit` names the flag.
 void write_limit_error(httplib::Response& res, int status, const std::string& code, const std::string& limit,

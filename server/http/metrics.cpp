@@ -27,10 +27,14 @@ std::string format_labels(const std::vector<std::string>& names, const LabelValu
     if (i) out += ',';
     out += names[i] + "=\"";
     for (char c : values[i]) {
-      if (c == '\\') out += "\\\\";
-      else if (c == '"') out += "\\\"";
-      else if (c == '\n') out += "\\n";
-      else out += c;
+      if (c == '\\')
+        out += "\\\\";
+      else if (c == '"')
+        out += "\\\"";
+      else if (c == '\n')
+        out += "\\n";
+      else
+        out += c;
     }
     out += '"';
   }
@@ -73,10 +77,7 @@ void CounterFamily::write(std::string& out) const {
 
 HistogramFamily::HistogramFamily(std::string name, std::string help, std::vector<std::string> label_names,
                                  std::vector<double> bounds)
-    : name_(std::move(name)),
-      help_(std::move(help)),
-      label_names_(std::move(label_names)),
-      bounds_(std::move(bounds)) {
+    : name_(std::move(name)), help_(std::move(help)), label_names_(std::move(label_names)), bounds_(std::move(bounds)) {
   // A family without labels has its one series, all zero, from the start:
   // a scraper sees it before the first event, as it sees an unlabelled
   // counter, and rates and alerts on it need no special case for "absent".

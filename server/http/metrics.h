@@ -34,8 +34,7 @@ class CounterFamily {
 class HistogramFamily {
  public:
   // `bounds`: the buckets' upper bounds, ascending; +Inf is added.
-  HistogramFamily(std::string name, std::string help, std::vector<std::string> label_names,
-                  std::vector<double> bounds);
+  HistogramFamily(std::string name, std::string help, std::vector<std::string> label_names, std::vector<double> bounds);
   void observe(const LabelValues& labels, double value);
   void write(std::string& out) const;
 

@@ -15,7 +15,6 @@ namespace toond::http {
 namespace {
 constexpr const char* kIdPattern = "/models/([0-9a-f]{16,64})";
 
-
 // `?scene=N`: the glTF scene the upload asks for.
 std::optional<int> gltf_scene(const httplib::Request& req) {
   if (!req.has_param("scene")) return std::nullopt;

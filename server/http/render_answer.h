@@ -17,7 +17,6 @@ void answer_render(const httplib::Request& req, httplib::Response& res, const Ca
 
 // A cached render for `key`, answered (with `Server-Timing: cache`), or
 // false when the cache is off or does not hold it.
-bool answer_from_cache(ResultCache* cache, const std::string& key, const httplib::Request& req,
-                       httplib::Response& res);
+bool answer_from_cache(ResultCache* cache, const std::string& key, const httplib::Request& req, httplib::Response& res);
 
 }  // namespace toond::http

@@ -13,13 +13,9 @@ namespace {
 
 using nlohmann::json;
 
-glm::vec3 vec3_of(const json& a) {
-  return {a.at(0).get<float>(), a.at(1).get<float>(), a.at(2).get<float>()};
-}
+glm::vec3 vec3_of(const json& a) { return {a.at(0).get<float>(), a.at(1).get<float>(), a.at(2).get<float>()}; }
 
-glm::dvec3 dvec3_of(const json& a) {
-  return {a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>()};
-}
+glm::dvec3 dvec3_of(const json& a) { return {a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>()}; }
 
 // `sheet.pixel_art`; the schema has checked each palette entry is #rrggbb.
 SheetParams::PixelArt pixel_art_of(const json& a) {
@@ -30,8 +26,8 @@ SheetParams::PixelArt pixel_art_of(const json& a) {
     for (const json& entry : a.at("palette")) {
       const std::string hex = entry.get<std::string>();
       const unsigned long rgb = std::stoul(hex.substr(1), nullptr, 16);
-      art.palette.push_back({static_cast<std::uint8_t>(rgb >> 16), static_cast<std::uint8_t>(rgb >> 8),
-                             static_cast<std::uint8_t>(rgb)});
+      art.palette.push_back(
+          {static_cast<std::uint8_t>(rgb >> 16), static_cast<std::uint8_t>(rgb >> 8), static_cast<std::uint8_t>(rgb)});
     }
   }
   art.dither = a.at("dither").get<bool>();
@@ -49,10 +45,19 @@ void read_clip(const json& clip, std::string& name, int& index) {
   }
 }
 
+// A `range` field, [start, end] in seconds; the pipeline holds it to the
+// clip (pipeline/clips.h).
+std::optional<scene::ClipRange> range_of(const json& a) {
+  if (!a.contains("range")) return std::nullopt;
+  const json& range = a.at("range");
+  return scene::ClipRange{range.at(0).get<double>(), range.at(1).get<double>()};
+}
+
 AnimationParams animation_of(const json& a) {
   AnimationParams animation;
   read_clip(a.at("clip"), animation.clip, animation.clip_index);
   animation.time = a.at("time").get<double>();
+  animation.range = range_of(a);
   return animation;
 }
 
@@ -61,6 +66,8 @@ SheetClip sheet_clip_of(const json& a) {
   read_clip(a.at("clip"), clip.clip, clip.clip_index);
   if (a.contains("frames")) clip.frames = a.at("frames").get<int>();
   if (a.contains("fps")) clip.fps = a.at("fps").get<double>();
+  clip.range = range_of(a);
+  clip.loop = a.at("loop").get<bool>();
   return clip;
 }
 
@@ -120,8 +127,7 @@ void read_scene(const json& j, RenderParams& p) {
 
 void read_camera(const json& j, RenderParams& p) {
   const json& cam = j.at("camera");
-  p.camera.projection = cam.at("projection") == "orthographic" ? Projection::Orthographic
-                                                               : Projection::Perspective;
+  p.camera.projection = cam.at("projection") == "orthographic" ? Projection::Orthographic : Projection::Perspective;
   p.camera.yaw_deg = cam.at("yaw").get<double>();
   p.camera.pitch_deg = cam.at("pitch").get<double>();
   p.camera.fov_deg = cam.at("fov").get<double>();
@@ -167,8 +173,8 @@ void read_shading(const json& j, RenderParams& p) {
     r.at = stop.at("at").get<float>();
     // A grey value is a level of light, linear already; a colour is sRGB
     // like every colour on the wire.
-    r.color = stop.contains("color") ? srgb_to_linear(vec3_of(stop.at("color")))
-                                     : glm::vec3(stop.at("value").get<float>());
+    r.color =
+        stop.contains("color") ? srgb_to_linear(vec3_of(stop.at("color"))) : glm::vec3(stop.at("value").get<float>());
     p.ramp.push_back(r);
   }
   p.ramp_image = shading.at("ramp_image").get<std::string>();
@@ -176,9 +182,7 @@ void read_shading(const json& j, RenderParams& p) {
     p.shade_colors[name] = srgb_to_linear(vec3_of(colour));
   }
   std::stable_sort(p.ramp.begin(), p.ramp.end(), [](const RampStop& a, const RampStop& b) { return a.at < b.at; });
-  p.rounding = rounding == "floor" ? Rounding::Floor
-               : rounding == "round" ? Rounding::Round
-                                     : Rounding::Ceil;
+  p.rounding = rounding == "floor" ? Rounding::Floor : rounding == "round" ? Rounding::Round : Rounding::Ceil;
 }
 
 // The effects the main pass adds: specular, rim, halftone, contour.
@@ -245,7 +249,7 @@ void read_outline(const json& j, RenderParams& p) {
     p.outline.edges |= m == "edges";
   }
   const std::string creases = outline.at("creases");
-  p.outline.creases = creases == "always" ? OutlineCreases::Always
+  p.outline.creases = creases == "always"  ? OutlineCreases::Always
                       : creases == "never" ? OutlineCreases::Never
                                            : OutlineCreases::Auto;
   p.outline.crease_angle_deg = outline.at("crease_angle").get<float>();

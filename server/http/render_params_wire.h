@@ -4,7 +4,7 @@
 // RenderParams, never the request text.
 #include <nlohmann/json.hpp>
 
-#include "render/render_params.h"
+#include "render/plan/render_params.h"
 
 namespace toond::http {
 

@@ -81,8 +81,8 @@ std::string cost_header(const pipeline::RenderPrice& price) {
 void apply_path_model(nlohmann::json& request, const std::string& id) {
   if (!request.is_object()) return;  // validation reports the body's type
   if (request.contains("model") && request["model"] != id) {
-    throw RequestError(400, "model_mismatch",
-                       "/model: the body names a different model than the path (" + id + ")", "/model");
+    throw RequestError(400, "model_mismatch", "/model: the body names a different model than the path (" + id + ")",
+                       "/model");
   }
   request["model"] = id;
 }
@@ -93,8 +93,8 @@ nlohmann::json read_request(const httplib::Request& req, ServiceContext& context
   nlohmann::json request;
   if (req.is_multipart_form_data()) {
     const auto params_part = req.files.find("params");
-    request = parse_limited_json(params_part == req.files.end() ? "" : params_part->second.content,
-                                 context.limits, "the params part");
+    request = parse_limited_json(params_part == req.files.end() ? "" : params_part->second.content, context.limits,
+                                 "the params part");
     const scene::Bundle bundle = bundle_from_multipart(req, "params", context.limits);
     request["model"] = store_upload(context, bundle).info.id;
   } else {
@@ -124,8 +124,7 @@ nlohmann::json complete_request(const nlohmann::json& request, const RequestLimi
 bool wants_atlas_only(const httplib::Request& req, const render::RenderParams& params) {
   if (!req.has_param("atlas")) return false;
   if (req.get_param_value("atlas") != "json") {
-    throw RequestError(400, "invalid_parameter", "?atlas: the only value is json (the sheet's atlas alone)",
-                       "?atlas");
+    throw RequestError(400, "invalid_parameter", "?atlas: the only value is json (the sheet's atlas alone)", "?atlas");
   }
   if (!params.sheet) {
     throw RequestError(400, "invalid_parameter", "?atlas=json needs a `sheet` in the parameters", "/sheet");

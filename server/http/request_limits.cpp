@@ -37,8 +37,8 @@ void check_request_counts(const nlohmann::json& request, const RequestLimits& li
     const auto it = request.find(field);
     if (it == request.end() || !it->is_array() || it->size() <= most) return;
     throw LimitError(422, flag,
-                     std::string("/") + field + " has " + std::to_string(it->size()) + " entries, more than the limit " +
-                         flag + " = " + std::to_string(most),
+                     std::string("/") + field + " has " + std::to_string(it->size()) +
+                         " entries, more than the limit " + flag + " = " + std::to_string(most),
                      std::string("/") + field);
   };
   check("lights", limits.render.max_lights, "--max-lights");
@@ -66,10 +66,10 @@ nlohmann::json limits_document(const RequestLimits& limits) {
 nlohmann::json parse_limited_json(std::string_view text, const RequestLimits& limits, std::string_view where) {
   if (text.empty()) return nlohmann::json::object();
   if (text.size() > limits.max_json_bytes) {
-    throw LimitError(413, "--max-json-bytes",
-                     std::string(where) + " is " + std::to_string(text.size()) +
-                         " bytes of JSON, more than the limit --max-json-bytes = " +
-                         std::to_string(limits.max_json_bytes));
+    throw LimitError(
+        413, "--max-json-bytes",
+        std::string(where) + " is " + std::to_string(text.size()) +
+            " bytes of JSON, more than the limit --max-json-bytes = " + std::to_string(limits.max_json_bytes));
   }
   if (json_nesting_depth(text, limits.max_json_depth) > limits.max_json_depth) {
     throw LimitError(422, "--max-json-depth",

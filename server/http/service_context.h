@@ -5,12 +5,12 @@
 #include <memory>
 
 #include "http/request_limits.h"
+#include "http/result_cache.h"
 #include "http/service_metrics.h"
 #include "pipeline/pose.h"
-#include "scene/model_library.h"
-#include "render/render_service.h"
-#include "http/result_cache.h"
-#include "scene/model_store.h"
+#include "render/run/render_service.h"
+#include "scene/store/model_library.h"
+#include "scene/store/model_store.h"
 
 namespace toond::http {
 

@@ -22,16 +22,17 @@ const std::vector<double> kCostBounds = {1, 3, 10, 30, 100, 300, 1000, 3000, 100
 ServiceMetrics::ServiceMetrics()
     : requests_(registry_.counter("toond_http_requests_total", "HTTP requests answered, by method, route and status.",
                                   {"method", "route", "status"})),
-      render_seconds_(registry_.histogram("toond_render_seconds",
-                                          "Render requests from parsing to the encoded PNG, in seconds.", {},
-                                          kRenderBounds)),
-      pass_seconds_(registry_.histogram("toond_render_pass_seconds",
-                                        "Time of each render stage as in Server-Timing (queue wait, each GPU pass, png), "
-                                        "in seconds.", {"pass"},
-                                        kPassBounds)),
+      render_seconds_(registry_.histogram(
+          "toond_render_seconds", "Render requests from parsing to the encoded PNG, in seconds.", {}, kRenderBounds)),
+      pass_seconds_(
+          registry_.histogram("toond_render_pass_seconds",
+                              "Time of each render stage as in Server-Timing (queue wait, each GPU pass, png), "
+                              "in seconds.",
+                              {"pass"}, kPassBounds)),
       predicted_cost_(registry_.histogram("toond_render_predicted_cost_msamples",
                                           "Predicted cost of each admitted render request (all its frames), in "
-                                          "Msamples, by queue lane.", {"lane"}, kCostBounds)),
+                                          "Msamples, by queue lane.",
+                                          {"lane"}, kCostBounds)),
       predicted_total_(registry_.counter("toond_render_predicted_msamples_total",
                                          "Predicted cost of the renders that finished, in Msamples.")),
       render_thread_seconds_(registry_.counter("toond_render_thread_seconds_total",
@@ -43,7 +44,8 @@ ServiceMetrics::ServiceMetrics()
                                 "render_aborted).")),
       import_seconds_(registry_.histogram("toond_import_seconds",
                                           "Uploads imported as new models, from the bundle to the stored model, in "
-                                          "seconds.", {}, kImportBounds)),
+                                          "seconds.",
+                                          {}, kImportBounds)),
       import_bytes_(registry_.histogram("toond_import_bytes", "Sizes of the bundles imported as new models, in bytes.",
                                         {}, kImportByteBounds)),
       store_refusals_(registry_.counter("toond_store_refusals_total",

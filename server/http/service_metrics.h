@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "http/metrics.h"
-#include "render/pass_timing.h"
+#include "render/frame/pass_timing.h"
 
 namespace toond::http {
 
@@ -23,9 +23,9 @@ class ServiceMetrics {
   // One finished render: whole request (parse to PNG), and the stages of
   // its Server-Timing header: queue wait, each pass, encoding (stage
   // `encode_stage`: "png", or "webp" for an animated sheet).
-  void observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms,
-                      double encode_ms, const std::string& encode_stage);
-  // A render request's price (render/render_cost.h) as it was admitted, its
+  void observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms, double encode_ms,
+                      const std::string& encode_stage);
+  // A render request's price (render/plan/render_cost.h) as it was admitted, its
   // lane, and the render threads' time its frames took: the two counters'
   // ratio is the seconds one Msample costs on this machine.
   void observe_cost(double predicted_msamples, bool long_lane, double render_thread_seconds);

@@ -4,8 +4,8 @@
 // timed and sized for /metrics, the store's refusals counted, and the models
 // it let go for its bound forgotten by this replica.
 #include "http/service_context.h"
-#include "scene/bundle.h"
-#include "scene/model_store.h"
+#include "scene/import/bundle.h"
+#include "scene/store/model_store.h"
 
 namespace toond::http {
 

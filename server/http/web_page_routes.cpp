@@ -45,10 +45,9 @@ void register_web_page_routes(httplib::Server& server) {
   server.Get("/", [](const httplib::Request&, httplib::Response& res) { serve_embedded("index.html", res); });
   // Only names with a known extension, so this never shadows an API route
   // (/models, /schema, /presets, /healthz have none).
-  server.Get(R"(/((?:[A-Za-z0-9_-]+/)*[A-Za-z0-9_.-]+\.(?:html|js|css|svg|png|ico|json)))",
-             [](const httplib::Request& req, httplib::Response& res) {
-               serve_embedded(std::string(req.matches[1]), res);
-             });
+  server.Get(
+      R"(/((?:[A-Za-z0-9_-]+/)*[A-Za-z0-9_.-]+\.(?:html|js|css|svg|png|ico|json)))",
+      [](const httplib::Request& req, httplib::Response& res) { serve_embedded(std::string(req.matches[1]), res); });
 }
 
 }  // namespace toond::http

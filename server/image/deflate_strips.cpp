@@ -7,8 +7,8 @@
 #include <climits>
 #include <stdexcept>
 
-#include "parallel/parallel_tasks.h"
 #include "image/run_deflate.h"
+#include "parallel/parallel_tasks.h"
 
 namespace toond::image {
 namespace {
@@ -120,7 +120,8 @@ DeflatedStrip deflate_strip(Deflater& deflater, int first, int end, int rows_per
 std::string deflate_scanlines(int row_count, std::size_t scanline_bytes, const ScanlineSource& source,
                               const DeflateSettings& settings) {
   const int strips = std::clamp(settings.strips, 1, std::max(row_count, 1));
-  const int rows_per_chunk = static_cast<int>(std::max<std::size_t>(1, kChunkBytes / std::max<std::size_t>(scanline_bytes, 1)));
+  const int rows_per_chunk =
+      static_cast<int>(std::max<std::size_t>(1, kChunkBytes / std::max<std::size_t>(scanline_bytes, 1)));
   std::vector<DeflatedStrip> deflated(static_cast<std::size_t>(strips));
   parallel::run_tasks(strips, settings.threads, [&](int s) {
     const int first = static_cast<int>(static_cast<long long>(row_count) * s / strips);

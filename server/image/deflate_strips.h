@@ -24,10 +24,10 @@ enum class DeflateMethod { Runs, Zlib };
 
 struct DeflateSettings {
   DeflateMethod method = DeflateMethod::Runs;
-  int level = 1;                   // zlib's level 0..9 (0: stored blocks)
-  int strategy = 0;                // zlib's Z_DEFAULT_STRATEGY, Z_RLE, ...
-  int strips = 1;                  // how many independent strips, >= 1
-  int threads = 1;                 // how many of them run at once, >= 1
+  int level = 1;     // zlib's level 0..9 (0: stored blocks)
+  int strategy = 0;  // zlib's Z_DEFAULT_STRATEGY, Z_RLE, ...
+  int strips = 1;    // how many independent strips, >= 1
+  int threads = 1;   // how many of them run at once, >= 1
 };
 
 // The scanlines of rows [first_row, first_row + row_count), each already

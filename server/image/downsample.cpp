@@ -1,7 +1,7 @@
 #include "image/downsample.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 

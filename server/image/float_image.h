@@ -14,9 +14,7 @@ struct FloatImage {
   std::vector<float> values;  // width * height * 4
 
   float* pixel(int x, int y) { return values.data() + (static_cast<std::size_t>(y) * width + x) * 4; }
-  const float* pixel(int x, int y) const {
-    return values.data() + (static_cast<std::size_t>(y) * width + x) * 4;
-  }
+  const float* pixel(int x, int y) const { return values.data() + (static_cast<std::size_t>(y) * width + x) * 4; }
   bool covered(int x, int y) const { return pixel(x, y)[3] > 0.0f; }
 };
 

@@ -56,12 +56,24 @@ png_color id_colour(int id) {
   const double x = chroma * (1.0 - std::abs(std::fmod(hue, 2.0) - 1.0));
   double r = 0, g = 0, b = 0;
   switch (static_cast<int>(hue)) {
-    case 0: r = chroma, g = x; break;
-    case 1: r = x, g = chroma; break;
-    case 2: g = chroma, b = x; break;
-    case 3: g = x, b = chroma; break;
-    case 4: r = x, b = chroma; break;
-    default: r = chroma, b = x; break;
+    case 0:
+      r = chroma, g = x;
+      break;
+    case 1:
+      r = x, g = chroma;
+      break;
+    case 2:
+      g = chroma, b = x;
+      break;
+    case 3:
+      g = x, b = chroma;
+      break;
+    case 4:
+      r = x, b = chroma;
+      break;
+    default:
+      r = chroma, b = x;
+      break;
   }
   const double m = lightness - chroma / 2.0;
   const auto byte = [&](double c) { return static_cast<png_byte>(std::lround(std::clamp(c + m, 0.0, 1.0) * 255.0)); };

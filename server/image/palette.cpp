@@ -28,8 +28,7 @@ bool block_is(const std::uint8_t* in, std::uint32_t colour) {
 // frames are long runs of one colour, so a pixel equal to its left neighbour
 // costs one compare. Gives up, setting `too_many`, once the band alone has
 // too many colours, and as soon as another band has set it.
-void collect_colours(const Image& image, int first_row, int end_row, ColourTable& table,
-                     std::atomic<bool>& too_many) {
+void collect_colours(const Image& image, int first_row, int end_row, ColourTable& table, std::atomic<bool>& too_many) {
   std::uint32_t previous = load_rgba(image.pixel(0, first_row));
   if (table.index_of(previous) < 0) return;
   for (int y = first_row; y < end_row; ++y) {

@@ -72,7 +72,8 @@ Box measure(const std::vector<ColourCount>& counts, std::size_t begin, std::size
 Rgb8 mean_colour(const std::vector<ColourCount>& counts, const Box& box) {
   std::array<std::uint64_t, 3> sum{};
   for (std::size_t i = box.begin; i < box.end; ++i) {
-    for (int ch = 0; ch < 3; ++ch) sum[ch] += static_cast<std::uint64_t>(channel(counts[i].colour, ch)) * counts[i].pixels;
+    for (int ch = 0; ch < 3; ++ch)
+      sum[ch] += static_cast<std::uint64_t>(channel(counts[i].colour, ch)) * counts[i].pixels;
   }
   auto mean = [&](int ch) { return static_cast<std::uint8_t>((sum[ch] + box.pixels / 2) / box.pixels); };
   return {mean(0), mean(1), mean(2)};
@@ -120,15 +121,15 @@ std::vector<Rgb8> median_cut_palette(std::span<const Image* const> images, int c
     // The box that most needs splitting: many pixels over a wide range of
     // colour. Ties go to the earlier box, so the result is reproducible.
     auto score = [](const Box& b) { return b.end - b.begin < 2 ? 0.0 : static_cast<double>(b.pixels) * b.range; };
-    const auto target = std::max_element(boxes.begin(), boxes.end(),
-                                         [&](const Box& a, const Box& b) { return score(a) < score(b); });
+    const auto target =
+        std::max_element(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) { return score(a) < score(b); });
     if (score(*target) == 0) break;  // every box is one colour
     const Box box = *target;
     const int ch = box.widest_channel;
     // Order the box's colours along its widest channel (colour order
     // breaks ties) and cut where half its pixels lie on either side.
-    std::sort(counts.begin() + static_cast<std::ptrdiff_t>(box.begin), counts.begin() + static_cast<std::ptrdiff_t>(box.end),
-              [ch](const ColourCount& a, const ColourCount& b) {
+    std::sort(counts.begin() + static_cast<std::ptrdiff_t>(box.begin),
+              counts.begin() + static_cast<std::ptrdiff_t>(box.end), [ch](const ColourCount& a, const ColourCount& b) {
                 const int ca = channel(a.colour, ch), cb = channel(b.colour, ch);
                 return ca != cb ? ca < cb : a.colour < b.colour;
               });

@@ -9,9 +9,9 @@
 
 #include "image/deflate_strips.h"
 #include "image/palette.h"
-#include "parallel/parallel_tasks.h"
 #include "image/png_writer.h"
 #include "image/sub_filter.h"
+#include "parallel/parallel_tasks.h"
 
 namespace toond::image {
 namespace {
@@ -81,8 +81,8 @@ std::string write_png(const Image& image, int colour_type, const Palette* palett
   PngWriter writer;
   writer.bytes().reserve(idat.size() + 256 + (palette ? 4 * palette->colours().size() : 0));
   png_set_IHDR(writer.png(), writer.info(), static_cast<png_uint_32>(image.width),
-               static_cast<png_uint_32>(image.height), 8, colour_type, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+               static_cast<png_uint_32>(image.height), 8, colour_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
   if (palette) set_palette(writer.png(), writer.info(), *palette);
   png_set_sRGB_gAMA_and_cHRM(writer.png(), writer.info(), PNG_sRGB_INTENT_PERCEPTUAL);
   writer.set_text(text);
@@ -106,17 +106,18 @@ std::string encode_png(const Image& image, const PngOptions& options) {
       return palette->index_rows(image, first_row, row_count, scratch);
     };
     const std::size_t scanline_bytes = static_cast<std::size_t>(image.width) + 1;
-    const std::string idat = deflate_scanlines(image.height, scanline_bytes, rows,
-                                               deflate_settings(options, scanline_bytes * image.height));
+    const std::string idat =
+        deflate_scanlines(image.height, scanline_bytes, rows, deflate_settings(options, scanline_bytes * image.height));
     return write_png(image, PNG_COLOR_TYPE_PALETTE, &*palette, idat, options.text);
   }
-  const TruecolourLayout layout = is_opaque(image, strip_count(image.rgba.size()), threads) ? TruecolourLayout::Rgb : TruecolourLayout::Rgba;
+  const TruecolourLayout layout =
+      is_opaque(image, strip_count(image.rgba.size()), threads) ? TruecolourLayout::Rgb : TruecolourLayout::Rgba;
   const ScanlineSource rows = [&](int first_row, int row_count, std::vector<std::uint8_t>& scratch) {
     return sub_filtered_rows(image, layout, first_row, row_count, scratch);
   };
   const std::size_t scanline_bytes = static_cast<std::size_t>(image.width) * bytes_per_pixel(layout) + 1;
-  const std::string idat = deflate_scanlines(image.height, scanline_bytes, rows,
-                                             deflate_settings(options, scanline_bytes * image.height));
+  const std::string idat =
+      deflate_scanlines(image.height, scanline_bytes, rows, deflate_settings(options, scanline_bytes * image.height));
   return write_png(image, layout == TruecolourLayout::Rgb ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, nullptr, idat,
                    options.text);
 }
@@ -125,8 +126,7 @@ Image decode_png(std::string_view bytes) {
   if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0) {
     throw std::runtime_error("png: not a PNG file");
   }
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, throw_png_error,
-                                           ignore_png_warning);
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, throw_png_error, ignore_png_warning);
   if (!png) throw std::runtime_error("png: cannot create read struct");
   png_infop info = png_create_info_struct(png);
   Image image;

@@ -12,9 +12,7 @@ void append_to_string(png_structp png, png_bytep data, png_size_t length) {
 
 }  // namespace
 
-void throw_png_error(png_structp, png_const_charp message) {
-  throw std::runtime_error(std::string("png: ") + message);
-}
+void throw_png_error(png_structp, png_const_charp message) { throw std::runtime_error(std::string("png: ") + message); }
 
 void ignore_png_warning(png_structp, png_const_charp) {}
 

@@ -97,7 +97,8 @@ std::size_t run_of(const std::uint8_t* p, std::size_t n, std::uint8_t b) {
     for (; i + 8 <= n; i += 8) {
       std::uint64_t word;
       std::memcpy(&word, p + i, 8);
-      if (const std::uint64_t differ = word ^ pattern) return i + static_cast<std::size_t>(std::countr_zero(differ) / 8);
+      if (const std::uint64_t differ = word ^ pattern)
+        return i + static_cast<std::size_t>(std::countr_zero(differ) / 8);
     }
   }
   while (i < n && p[i] == b) ++i;
@@ -249,7 +250,8 @@ class BitWriter {
 
  private:
   void store(int bytes) {
-    for (int b = 0; b < bytes; ++b) out_[written_ + static_cast<std::size_t>(b)] = static_cast<std::uint8_t>(pending_ >> (8 * b));
+    for (int b = 0; b < bytes; ++b)
+      out_[written_ + static_cast<std::size_t>(b)] = static_cast<std::uint8_t>(pending_ >> (8 * b));
     written_ += static_cast<std::size_t>(bytes);
   }
 
@@ -297,10 +299,14 @@ std::vector<LengthToken> fold_lengths(std::span<const std::uint8_t> lengths) {
 
 int extra_bits_of(std::uint8_t length_symbol) {
   switch (length_symbol) {
-    case 16: return 2;
-    case 17: return 3;
-    case 18: return 7;
-    default: return 0;
+    case 16:
+      return 2;
+    case 17:
+      return 3;
+    case 18:
+      return 7;
+    default:
+      return 0;
   }
 }
 
@@ -328,7 +334,8 @@ class BlockHeader {
 
   std::size_t bits() const {
     std::size_t bits = 5 + 5 + 4 + 3 * static_cast<std::size_t>(order_count_);
-    for (const LengthToken& t : tokens_) bits += code_.lengths[t.symbol] + static_cast<std::size_t>(extra_bits_of(t.symbol));
+    for (const LengthToken& t : tokens_)
+      bits += code_.lengths[t.symbol] + static_cast<std::size_t>(extra_bits_of(t.symbol));
     return bits;
   }
 
@@ -387,7 +394,8 @@ constexpr std::size_t kMaxSpareTokens = std::size_t{4} << 20;
 
 }  // namespace
 
-RunDeflater::RunDeflater(std::size_t row_bytes) : row_bytes_(row_bytes >= kMinCopy && row_bytes <= kWindow ? row_bytes : 0) {
+RunDeflater::RunDeflater(std::size_t row_bytes)
+    : row_bytes_(row_bytes >= kMinCopy && row_bytes <= kWindow ? row_bytes : 0) {
   tokens_.swap(spare_tokens);
   tokens_.clear();
   // Both codes need two used symbols to be complete; the end of block is one.

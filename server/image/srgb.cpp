@@ -22,7 +22,7 @@ std::uint8_t encode_by_formula(float linear) {
 constexpr int kBuckets = 4096;  // finer than the steepest part of the curve (~3295 bytes per unit)
 
 struct Encoder {
-  std::array<float, 255> rise{};  // rise[b]: the least linear value that encodes to b + 1
+  std::array<float, 255> rise{};               // rise[b]: the least linear value that encodes to b + 1
   std::array<std::uint8_t, kBuckets> first{};  // the byte at each bucket's low end
 
   Encoder() {

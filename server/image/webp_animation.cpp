@@ -59,9 +59,9 @@ std::string encode_webp_animation(std::span<const Image> frames, const WebpAnima
 
   WebPAnimEncoderOptions anim_options;
   if (!WebPAnimEncoderOptionsInit(&anim_options)) throw std::runtime_error("libwebp: mux version mismatch");
-  anim_options.anim_params.loop_count = 0;  // forever
-  anim_options.anim_params.bgcolor = 0;     // transparent, like the sheet's empty pixels
-  anim_options.allow_mixed = 0;             // never lossy
+  anim_options.anim_params.loop_count = options.loop_count;
+  anim_options.anim_params.bgcolor = 0;  // transparent, like the sheet's empty pixels
+  anim_options.allow_mixed = 0;          // never lossy
   AnimEncoder encoder(WebPAnimEncoderNew(width, height, &anim_options));
   if (!encoder) throw std::runtime_error("libwebp: cannot create the animation encoder");
 

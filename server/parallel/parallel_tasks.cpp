@@ -23,8 +23,8 @@ struct Job {
   std::atomic<int> helper_slots;
   std::mutex mutex;
   std::condition_variable all_done;
-  int finished = 0;              // guarded by mutex
-  std::exception_ptr error;      // the first one; guarded by mutex
+  int finished = 0;          // guarded by mutex
+  std::exception_ptr error;  // the first one; guarded by mutex
 };
 
 // Runs the job's next task, if one is left. Once every index is taken this

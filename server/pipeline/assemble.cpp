@@ -6,7 +6,7 @@
 
 #include "image/block_upscale.h"
 #include "image/palette_quantise.h"
-#include "render/pass_plan.h"
+#include "render/plan/pass_plan.h"
 
 namespace toond::pipeline {
 namespace {

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "image/image.h"
-#include "render/render_output.h"
-#include "render/render_params.h"
-#include "render/sheet_layout.h"
+#include "render/frame/render_output.h"
+#include "render/plan/render_params.h"
+#include "render/plan/sheet_layout.h"
 
 namespace toond::pipeline {
 

@@ -1,6 +1,6 @@
 #include "pipeline/atlas.h"
 
-#include "render/sheet_atlas.h"
+#include "render/atlas/sheet_atlas.h"
 
 namespace toond::pipeline {
 

@@ -1,11 +1,11 @@
 #pragma once
-// A sheet's atlas (render/sheet_atlas.h), written from its layout and the
+// A sheet's atlas (render/atlas/sheet_atlas.h), written from its layout and the
 // framing its frames share, without rendering: the answer of ?atlas=json,
 // and the tEXt chunk of a sheet's PNG.
 #include <nlohmann/json.hpp>
 
 #include "pipeline/request.h"
-#include "render/camera.h"
+#include "render/plan/camera.h"
 
 namespace toond::pipeline {
 

@@ -3,9 +3,9 @@
 #include <string>
 
 #include "limit_error.h"
-#include "render/pass_plan.h"
-#include "render/pixel_art_frame.h"
-#include "render/sheet_layout.h"
+#include "render/plan/pass_plan.h"
+#include "render/plan/pixel_art_frame.h"
+#include "render/plan/sheet_layout.h"
 
 namespace toond::pipeline {
 
@@ -37,15 +37,15 @@ void check_sheet_budget(const RenderParams& p, const RenderParams& drawn, const 
                          "; lower sheet.frames, the pitches, or width and height",
                      "/sheet/frames");
   }
-  const double samples = static_cast<double>(layout.frames.size()) * drawn.width * drawn.supersample *
-                         drawn.height * drawn.supersample * drawn.msaa;
+  const double samples = static_cast<double>(layout.frames.size()) * drawn.width * drawn.supersample * drawn.height *
+                         drawn.supersample * drawn.msaa;
   if (samples > static_cast<double>(limits.max_samples)) {
-    throw LimitError(422, "--max-samples",
-                     std::to_string(layout.frames.size()) + " frames × width × height × supersample² × msaa = " +
-                         count(samples) + " samples, more than the limit --max-samples = " +
-                         count(static_cast<double>(limits.max_samples)) +
-                         "; lower sheet.frames, the pitches, msaa or supersample",
-                     "/sheet/frames");
+    throw LimitError(
+        422, "--max-samples",
+        std::to_string(layout.frames.size()) + " frames × width × height × supersample² × msaa = " + count(samples) +
+            " samples, more than the limit --max-samples = " + count(static_cast<double>(limits.max_samples)) +
+            "; lower sheet.frames, the pitches, msaa or supersample",
+        "/sheet/frames");
   }
 }
 
@@ -61,14 +61,14 @@ void check_drawn_render(const RenderParams& p, const RenderLimits& limits) {
   }
   if (p.lights.size() > limits.max_lights) {
     throw LimitError(422, "--max-lights",
-                     std::to_string(p.lights.size()) + " lights, more than the limit --max-lights = " +
-                         std::to_string(limits.max_lights),
+                     std::to_string(p.lights.size()) +
+                         " lights, more than the limit --max-lights = " + std::to_string(limits.max_lights),
                      "/lights");
   }
   if (p.objects.size() > limits.max_objects) {
     throw LimitError(422, "--max-objects",
-                     std::to_string(p.objects.size()) + " objects, more than the limit --max-objects = " +
-                         std::to_string(limits.max_objects),
+                     std::to_string(p.objects.size()) +
+                         " objects, more than the limit --max-objects = " + std::to_string(limits.max_objects),
                      "/objects");
   }
   const double side_w = static_cast<double>(p.width) * p.supersample;

@@ -2,7 +2,7 @@
 // Admission of a render request's size against the daemon's --max-*
 // limits, before anything is posed or priced; its errors name the flags.
 #include "pipeline/render_limits.h"
-#include "render/render_params.h"
+#include "render/plan/render_params.h"
 
 namespace toond::pipeline {
 

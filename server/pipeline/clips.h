@@ -5,8 +5,8 @@
 // a clip that does not exist is the request's error, named at its field.
 #include <cstddef>
 
-#include "render/render_params.h"
-#include "scene/model.h"
+#include "render/plan/render_params.h"
+#include "scene/mesh/model.h"
 
 namespace toond::pipeline {
 
@@ -15,15 +15,24 @@ namespace toond::pipeline {
 inline constexpr std::size_t kMaxAnimatedSheetFrames = 1024;
 
 // Looks each clip of an animated sheet up in `model` and sets its index,
-// name, duration and frame count. RequestError 422 `unknown_clip` at
-// /sheet/animation[/N]/clip when the model has no such clip; 400 for a
-// scene of objects (`scene_of_objects`), for a top-level `animation` beside
-// it, for frames and fps together, and beyond kMaxAnimatedSheetFrames.
+// name, span (its range, or the whole clip), duration and frame count.
+// RequestError 422 `unknown_clip` at /sheet/animation[/N]/clip when the
+// model has no such clip, 422 `bad_range` at /sheet/animation[/N]/range for
+// a range outside the clip, one whose end is not after its start, or a
+// range on a model without clips; 400 for a scene of objects
+// (`scene_of_objects`), for a top-level `animation` beside it, for frames
+// and fps together, and beyond kMaxAnimatedSheetFrames.
 void resolve_sheet_clips(render::RenderParams& params, const scene::Model& model);
 
-// The index of `animation`'s clip in `model`. RequestError 400 when the
-// request is a scene of objects, 422 (path /animation/clip) when the model
-// has no such clip.
-std::size_t resolve_animation_clip(const render::RenderParams& params, const scene::Model& model);
+// `animation`'s clip in `model` and the part of it that plays.
+struct AnimationClip {
+  std::size_t index = 0;
+  scene::ClipRange span;  // animation.range, or the whole clip
+};
+
+// RequestError 400 when the request is a scene of objects, 422 (path
+// /animation/clip) when the model has no such clip, 422 `bad_range` at
+// /animation/range as for a sheet's clip.
+AnimationClip resolve_animation_clip(const render::RenderParams& params, const scene::Model& model);
 
 }  // namespace toond::pipeline

@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pipeline/request.h"
-#include "render/render_output.h"
+#include "render/frame/render_output.h"
 
 namespace toond::pipeline {
 
@@ -25,6 +25,7 @@ struct Encoded {
 
 // `atlas`: a sheet's (atlas.h), written into its PNG; an animation's goes
 // out with ?atlas=json alone.
-Encoded encode(const render::RenderOutput& out, const Request& request, const std::optional<nlohmann::ordered_json>& atlas);
+Encoded encode(const render::RenderOutput& out, const Request& request,
+               const std::optional<nlohmann::ordered_json>& atlas);
 
 }  // namespace toond::pipeline

@@ -1,7 +1,7 @@
 #include "pipeline/frames.h"
 
-#include "render/pixel_art_frame.h"
-#include "render/sheet_layout.h"
+#include "render/plan/pixel_art_frame.h"
+#include "render/plan/sheet_layout.h"
 
 namespace toond::pipeline {
 

@@ -5,7 +5,7 @@
 // (render::pixel_art_frame_params). Priced, queued and assembled alike.
 #include <vector>
 
-#include "render/render_params.h"
+#include "render/plan/render_params.h"
 
 namespace toond::pipeline {
 

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "image/layer_png.h"
-#include "render/pass_plan.h"
+#include "render/plan/pass_plan.h"
 #include "request_error.h"
 
 namespace toond::pipeline {
@@ -13,9 +13,7 @@ namespace {
 
 using Objects = std::vector<render::JobObject>;
 
-bool ids_by_object(const render::RenderParams& params) {
-  return render::id_source(params) == render::IdSource::Object;
-}
+bool ids_by_object(const render::RenderParams& params) { return render::id_source(params) == render::IdSource::Object; }
 
 int id_count(const render::RenderParams& params, const Objects& objects) {
   if (ids_by_object(params)) return static_cast<int>(objects.size());
@@ -45,8 +43,11 @@ std::string depth_range_header(const image::DepthRange& range) {
 }
 
 nlohmann::json depth_description(const image::DepthRange& range) {
-  return {{"near", range.near_depth}, {"far", range.far_depth}, {"units", "scene"},
-          {"encoding", "linear: near 0, far 65534"}, {"background", 65535}};
+  return {{"near", range.near_depth},
+          {"far", range.far_depth},
+          {"units", "scene"},
+          {"encoding", "linear: near 0, far 65534"},
+          {"background", 65535}};
 }
 
 }  // namespace
@@ -72,7 +73,8 @@ OutputPng encode_output(const render::RenderOutput& out, const OutputDescription
   image::TextChunks text = options.text;
   switch (output.output) {
     case render::Output::Color:
-    case render::Output::Lines: return {image::encode_png(out.image, options), {}};
+    case render::Output::Lines:
+      return {image::encode_png(out.image, options), {}};
     case render::Output::Depth: {
       const image::DepthRange range = image::visible_depth_range(out.layer);
       text.emplace_back("toond:depth", depth_description(range).dump());

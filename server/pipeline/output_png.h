@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "image/png_codec.h"
-#include "render/render_service.h"
+#include "render/run/render_service.h"
 
 namespace toond::pipeline {
 

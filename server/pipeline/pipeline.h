@@ -22,8 +22,8 @@
 #include "pipeline/render_limits.h"
 #include "pipeline/request.h"
 #include "pipeline/resolve.h"
-#include "render/render_service.h"
-#include "scene/model_library.h"
+#include "render/run/render_service.h"
+#include "scene/store/model_library.h"
 
 namespace toond::pipeline {
 

@@ -1,12 +1,12 @@
 #pragma once
-// The pipeline's planning stage: each frame's plan (render/frame_plan.h),
+// The pipeline's planning stage: each frame's plan (render/plan/frame_plan.h),
 // made once, after posing and before pricing: the price is the plans'
 // costs, and the render threads draw what the plans say.
 #include <vector>
 
 #include "pipeline/pose.h"
 #include "pipeline/request.h"
-#include "render/frame_plan.h"
+#include "render/plan/frame_plan.h"
 
 namespace toond::pipeline {
 

@@ -1,11 +1,13 @@
 #include "pipeline/pose.h"
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <map>
 
 #include "request_error.h"
-#include "scene/clip_sampling.h"
+#include "scene/animation/clip_sampling.h"
 
 namespace toond::pipeline {
 namespace {
@@ -15,7 +17,8 @@ namespace {
 // times of it, so a clip that throws vertices out of range shows there.
 void check_finite(const scene::SkinPose& pose, const scene::Bounds& framing, const std::string& pointer) {
   bool finite = pose.finite();
-  for (int axis = 0; axis < 3; ++axis) finite = finite && std::isfinite(framing.min[axis]) && std::isfinite(framing.max[axis]);
+  for (int axis = 0; axis < 3; ++axis)
+    finite = finite && std::isfinite(framing.min[axis]) && std::isfinite(framing.max[axis]);
   if (!finite) {
     throw RequestError(422, "bad_pose", pointer + ": the clip moves vertices beyond the range of numbers drawn",
                        pointer);
@@ -27,9 +30,11 @@ scene::ClipFraming framing_of_all(ClipFramings& framings, const render::JobObjec
                                   const std::vector<render::SheetClip>& clips) {
   scene::ClipFraming all;
   for (std::size_t c = 0; c < clips.size(); ++c) {
-    const std::shared_ptr<const scene::ClipFraming> one = framings.get(object.model_key, *object.model, clips[c].index);
-    all.bounds = c == 0 ? one->bounds
-                        : scene::Bounds{glm::min(all.bounds.min, one->bounds.min), glm::max(all.bounds.max, one->bounds.max)};
+    const std::shared_ptr<const scene::ClipFraming> one =
+        framings.get(object.model_key, *object.model, clips[c].index, clips[c].span);
+    all.bounds =
+        c == 0 ? one->bounds
+               : scene::Bounds{glm::min(all.bounds.min, one->bounds.min), glm::max(all.bounds.max, one->bounds.max)};
     all.extremes.insert(all.extremes.end(), one->extremes.begin(), one->extremes.end());
   }
   return all;
@@ -41,8 +46,8 @@ std::shared_ptr<const scene::SkinPose> posed_at(const scene::Model& model, const
                                                 const scene::ClipFraming& framing, const std::string& pointer,
                                                 scene::Skinning where) {
   const scene::Rig& rig = *model.rig;
-  auto posed = std::make_shared<scene::SkinPose>(
-      scene::skin_pose(model.mesh, rig, scene::pose_nodes(rig, clip, time), where));
+  auto posed =
+      std::make_shared<scene::SkinPose>(scene::skin_pose(model.mesh, rig, scene::pose_nodes(rig, clip, time), where));
   check_finite(*posed, framing.bounds, pointer);
   posed->bounds = framing.bounds;
   posed->extremes = framing.extremes;
@@ -63,14 +68,16 @@ ObjectPoses rest_poses(const Request& request, ClipFramings& framings, scene::Sk
   return poses;
 }
 
-// The request's one object at `animation`'s time of its clip.
+// The request's one object at `animation`'s time, counted from the start
+// of the clip's span and looped inside it.
 ObjectPoses animation_pose(const Request& request, ClipFramings& framings, scene::Skinning where) {
   const render::JobObject& object = request.objects.front();
   const scene::Model& model = *object.model;
-  const scene::Clip& clip = model.rig->clips[*request.clip];
-  const double time = scene::clip_time(clip, request.params.animation->time);
-  return {posed_at(model, &clip, time, *framings.get(object.model_key, model, *request.clip), "/animation/clip",
-                   where)};
+  const AnimationClip& resolved = *request.clip;
+  const scene::Clip& clip = model.rig->clips[resolved.index];
+  const double time = scene::range_time(resolved.span, request.params.animation->time);
+  return {posed_at(model, &clip, time, *framings.get(object.model_key, model, resolved.index, resolved.span),
+                   "/animation/clip", where)};
 }
 
 // An animated sheet's pose of each frame; every direction of one time
@@ -115,9 +122,15 @@ std::shared_ptr<const scene::ClipFraming> ClipFramings::cached(const std::string
 }
 
 std::shared_ptr<const scene::ClipFraming> ClipFramings::get(const std::string& model_id, const scene::Model& model,
-                                                            std::size_t clip) {
-  return cached(model_id + "/" + std::to_string(clip),
-                [&] { return scene::frame_clip(model.mesh, *model.rig, clip); });
+                                                            std::size_t clip, scene::ClipRange range) {
+  // The range's exact doubles (shortest round-trip text): two ranges that
+  // differ at all are framed apart.
+  std::array<char, 64> ends{};
+  char* end = std::to_chars(ends.data(), ends.data() + ends.size(), range.start).ptr;
+  *end++ = ':';
+  end = std::to_chars(end, ends.data() + ends.size(), range.end).ptr;
+  return cached(model_id + "/" + std::to_string(clip) + "/" + std::string(ends.data(), end),
+                [&] { return scene::frame_clip(model.mesh, *model.rig, clip, range); });
 }
 
 std::shared_ptr<const scene::ClipFraming> ClipFramings::rest(const std::string& model_id, const scene::Model& model) {

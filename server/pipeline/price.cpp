@@ -106,8 +106,9 @@ void check_render_cost(const Request& request, const RenderPrice& p, const Rende
              fmt(deepest_layers(request)) + " layers deep";
   const std::vector<std::string> ways = ways_under(request, limit);
   if (ways.empty()) {
-    message += "; no single change of size, msaa, supersample or outline brings it under: the model itself is too "
-               "costly to draw (upload it with fewer overlapping faces)";
+    message +=
+        "; no single change of size, msaa, supersample or outline brings it under: the model itself is too "
+        "costly to draw (upload it with fewer overlapping faces)";
   } else {
     message += "; any of these would bring it under: ";
     for (std::size_t i = 0; i < ways.size(); ++i) message += (i ? ", " : "") + ways[i];

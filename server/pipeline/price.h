@@ -1,18 +1,18 @@
 #pragma once
 // The price of a render request, worked out before it is queued
-// (render/render_cost.h): a sheet costs all its frames. Over the daemon's
+// (render/plan/render_cost.h): a sheet costs all its frames. Over the daemon's
 // --max-render-cost the request is refused with the figures and what would
 // bring it under; under it, the price picks the queue lane and whether the
-// draws are paced (render/draw_pacing.h).
+// draws are paced (render/frame/draw_pacing.h).
 #include <cstddef>
 #include <vector>
 
 #include "limit_error.h"
 #include "pipeline/render_limits.h"
 #include "pipeline/request.h"
-#include "render/frame_plan.h"
-#include "render/render_cost.h"
-#include "render/schedule.h"
+#include "render/plan/frame_plan.h"
+#include "render/plan/render_cost.h"
+#include "render/plan/schedule.h"
 
 namespace toond::pipeline {
 
@@ -51,7 +51,7 @@ inline constexpr double kPacedChunkCost = 25;
 // own); 0: not paced.
 std::size_t paced_chunk_triangles(const render::RenderCost& frame);
 // Texels of the edge pass per band for a frame of this price, a chunk's
-// worth (render/draw_pacing.h); 0: not paced.
+// worth (render/frame/draw_pacing.h); 0: not paced.
 std::size_t paced_band_texels(const render::RenderCost& frame);
 // Both, for every frame of a request of this price.
 render::Pacing pacing_of(const RenderPrice& price);

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "pipeline/assemble.h"
-#include "render/render_service.h"
+#include "render/run/render_service.h"
 
 namespace toond::pipeline {
 

@@ -13,9 +13,9 @@ struct RenderLimits {
   // framebuffer near 1 GiB; the schema's extremes multiplied out (4096² ×
   // 16 × 8) would need 17 GiB.
   std::uint64_t max_samples = 4096ull * 4096ull * 8ull;
-  std::size_t max_lights = 8;   // the schema's (and the shader's) most
+  std::size_t max_lights = 8;    // the schema's (and the shader's) most
   std::size_t max_objects = 16;  // the schema's most
-  // The predicted cost of a request (render/render_cost.h), in Msamples;
+  // The predicted cost of a request (render/plan/render_cost.h), in Msamples;
   // 0: no limit. The default is about 9 s of llvmpipe on 2 cores (under the
   // default --render-timeout) and 5× the dearest shared model at 4096²,
   // msaa 8, with any preset.

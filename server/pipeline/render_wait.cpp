@@ -14,9 +14,9 @@ std::chrono::steady_clock::time_point wait_limit(const render::RenderJob& job) {
 render::RenderOutput await_render(std::future<render::RenderOutput>& future,
                                   std::chrono::steady_clock::time_point deadline, std::chrono::milliseconds limit) {
   if (future.wait_until(deadline) != std::future_status::ready) {
-    throw RequestError(503, "deadline_exceeded",
-                       "the render did not finish within the limit --render-timeout = " +
-                           std::to_string(limit.count()) + " ms");
+    throw RequestError(
+        503, "deadline_exceeded",
+        "the render did not finish within the limit --render-timeout = " + std::to_string(limit.count()) + " ms");
   }
   return future.get();
 }

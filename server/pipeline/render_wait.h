@@ -3,8 +3,8 @@
 #include <chrono>
 #include <future>
 
-#include "render/render_service.h"
-#include "render/renderer.h"
+#include "render/run/render_service.h"
+#include "render/run/renderer.h"
 
 namespace toond::pipeline {
 

@@ -5,11 +5,12 @@
 #include <optional>
 #include <vector>
 
+#include "pipeline/clips.h"
 #include "pipeline/output_png.h"
-#include "render/render_params.h"
-#include "render/render_service.h"
-#include "render/sheet_layout.h"
-#include "scene/model_pins.h"
+#include "render/plan/render_params.h"
+#include "render/plan/sheet_layout.h"
+#include "render/run/render_service.h"
+#include "scene/store/model_pins.h"
 
 namespace toond::pipeline {
 
@@ -22,8 +23,9 @@ struct Request {
   // A sheet's tiles and each frame's view; none for a single image, which
   // is drawn as one frame of the request's own parameters.
   std::optional<render::SheetLayout> layout;
-  // `animation`'s clip, looked up in the model (clips.h).
-  std::optional<std::size_t> clip;
+  // `animation`'s clip and the part of it that plays, looked up in the
+  // model (clips.h).
+  std::optional<AnimationClip> clip;
   OutputDescription output;
   // Where the models are pinned (resolve.h); leased when the frames are
   // queued, so that every replica sees them in use.

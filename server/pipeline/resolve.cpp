@@ -5,7 +5,7 @@
 #include "pipeline/budget.h"
 #include "pipeline/clips.h"
 #include "pipeline/sheet_checks.h"
-#include "render/ramp_image.h"
+#include "render/frame/ramp_image.h"
 #include "request_error.h"
 
 namespace toond::pipeline {

@@ -4,9 +4,9 @@
 // before anything is posed, priced or drawn.
 #include "pipeline/render_limits.h"
 #include "pipeline/request.h"
-#include "render/render_params.h"
-#include "scene/model_library.h"
-#include "scene/model_pins.h"
+#include "render/plan/render_params.h"
+#include "scene/store/model_library.h"
+#include "scene/store/model_pins.h"
 
 namespace toond::pipeline {
 
@@ -17,7 +17,7 @@ namespace toond::pipeline {
 // (output_png.h), the bundle images the parameters name (422 missing_file
 // or bad_image at /shading/ramp_image, /floor/texture), the sheet's layout,
 // and `animation`'s clip.
-// The models are pinned in `pins` (scene/model_pins.h), which the caller
+// The models are pinned in `pins` (scene/store/model_pins.h), which the caller
 // keeps until the answer is sent; the request leases them when queued.
 Request resolve(render::RenderParams params, scene::ModelLibrary& library, scene::ModelPins& pins,
                 const RenderLimits& limits);

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "render/pass_plan.h"
+#include "render/plan/pass_plan.h"
 #include "request_error.h"
 
 namespace toond::pipeline {

@@ -2,7 +2,7 @@
 // What the schema cannot say about a `sheet` on its own because it ties
 // fields together: checked once the request is parsed, before anything is
 // laid out or rendered.
-#include "render/render_params.h"
+#include "render/plan/render_params.h"
 
 namespace toond::pipeline {
 

@@ -1,8 +1,11 @@
 // The page's animation section in a real browser (Debian's chromium through
 // playwright-core, a real toond on 127.0.0.1:0): hidden for a model without
 // clips, shown with a clip selector for Blender's rigged bar, the time
-// slider and the play button posing the render through `animation`, and
-// gone again (with the state's `animation`) for a model without clips.
+// slider and the play button posing the render through `animation`, a
+// range of the clip in seconds (glTF keys by seconds) and, for Minetest's
+// player (a B3D, 60 frames a second), in frames, into the render and into a
+// sheet whose clip row takes a range and plays once; and gone again (with
+// the state's `animation`) for a model without clips.
 //   node animation.test.mjs --toond PATH --exported DIR --artifacts DIR
 // Exit 0: every check passed; 1: a check failed. Screenshots go to --artifacts.
 import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -23,15 +26,17 @@ mkdirSync(artifacts, { recursive: true });
 
 const { check, failed } = checker();
 
-async function uploadRiggedBar(url) {
+async function uploadFiles(url, folder, names) {
   const form = new FormData();
-  for (const name of ['rigged.gltf', 'rigged.bin']) {
-    form.append('file', new Blob([readFileSync(path.join(exported, 'blender', name))]), name);
+  for (const name of names) {
+    form.append('file', new Blob([readFileSync(path.join(exported, folder, name))]), name);
   }
   const res = await fetch(`${url}/models`, { method: 'POST', body: form });
   if (!res.ok) throw new Error(`upload failed: ${res.status} ${await res.text()}`);
   return (await res.json()).id;
 }
+
+const uploadRiggedBar = (url) => uploadFiles(url, 'blender', ['rigged.gltf', 'rigged.bin']);
 
 // The body of the last single render asked for.
 function lastRender(requests) {
@@ -45,6 +50,7 @@ const started = Date.now();
 try {
   daemon = await startDaemon(toondBinary, '127.0.0.1:0', dataDir, STEP_TIMEOUT_MS);
   const id = await uploadRiggedBar(daemon.url);
+  const player = await uploadFiles(daemon.url, 'minetest', ['character.b3d', 'character.png']);
   browser = await launchChromium(chromium);
   const { page, pageErrors } = await openPage(browser, { width: 1280, height: 900 });
   const requests = [];
@@ -104,9 +110,9 @@ try {
   check(await clipsBox.isVisible(), 'the sheet shows its clips as a list');
   check(await page.locator('#sheet-controls [data-path="/sheet/animation"] input.json').count() === 0
         && await clipsBox.getAttribute('data-path') === '/sheet/animation', 'sheet.animation is not a JSON box');
-  check(await clipsBox.locator('select').inputValue() === 'Bend'
-        && await clipsBox.locator('input[type=number]').inputValue() === '8',
-  'the clip row shows the clip and its frames');
+  const frameCount = (row = 0) => clipsBox.locator('input[data-path$="/frames"]').nth(row);
+  check(await clipsBox.locator('select').inputValue() === 'Bend' && await frameCount().inputValue() === '8',
+    'the clip row shows the clip and its frames');
   // Waits for a sheet newer than the one shown when the step began.
   const sheetsShown = () => page.evaluate(() => Number(document.getElementById('sheet-view').dataset.sheets || 0));
   const sheetShown = async (frames, before) => page.waitForFunction(([n, seen]) => {
@@ -116,8 +122,8 @@ try {
   }, [frames, before], { timeout: STEP_TIMEOUT_MS });
   const lastSheet = () => requests.filter((r) => r.body.sheet).at(-1)?.body.sheet.animation;
   let before = await sheetsShown();
-  await clipsBox.locator('input[type=number]').fill('4');
-  await clipsBox.locator('input[type=number]').press('Tab');
+  await frameCount().fill('4');
+  await frameCount().press('Tab');
   await sheetShown(32, before);
   check(JSON.stringify(lastSheet()) === JSON.stringify({ clip: 'Bend', frames: 4 }), 'the frame count asks for 4 frames',
     JSON.stringify(lastSheet()));
@@ -152,6 +158,68 @@ try {
   await page.click('#clip-play');
   const times = timesAsked();
   check(times.length >= 3, 'playing steps the time and renders each step it can', times.join(', '));
+
+  // A part of the clip, in seconds: glTF keys by seconds.
+  const rangeBox = page.locator('#clip-range');
+  check(await rangeBox.isVisible() && (await rangeBox.locator('.range-unit').textContent()) === 's',
+    'the clip\'s range is typed in seconds for a glTF clip');
+  // Types a range into the bar's boxes and waits for a render that asks
+  // for what `asked(range)` accepts, shown.
+  const typeRange = async (from, to, asked) => {
+    const before = await rendersShown(page);
+    await rangeBox.locator('input.range-from').fill(from);
+    await rangeBox.locator('input.range-to').fill(to);
+    await rangeBox.locator('input.range-to').press('Tab');
+    const deadline = Date.now() + STEP_TIMEOUT_MS;
+    while (!asked(lastRender(requests)?.animation?.range) && Date.now() < deadline) await page.waitForTimeout(50);
+    await waitForFullRender(page, before, STEP_TIMEOUT_MS);
+  };
+  await typeRange('0.25', '0.75', (range) => JSON.stringify(range) === '[0.25,0.75]');
+  const ranged = lastRender(requests)?.animation;
+  check(JSON.stringify(ranged?.range) === '[0.25,0.75]' && ranged?.time === 0,
+    'the range goes into the render, its time from the range\'s start', JSON.stringify(ranged));
+  check(await page.locator('#clip-time').getAttribute('max') === '0.5', 'the time slider runs over the range',
+    await page.locator('#clip-time').getAttribute('max'));
+  await typeRange('', '', (range) => range === undefined);
+  check(!decodeURIComponent(page.url()).includes('"range"') && lastRender(requests)?.animation?.clip === 'Bend',
+    'emptied, the range is the whole clip again', JSON.stringify(lastRender(requests)?.animation));
+
+  // Minetest's player: its B3D counts frames, 60 a second; its walk is
+  // frames 168-187 of its one timeline.
+  rendered = await rendersShown(page);
+  await page.selectOption('#model-select', player);
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  rendered = await rendersShown(page);
+  await page.selectOption('#clip-select', 'anim');
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  check((await rangeBox.locator('.range-unit').textContent()) === 'frames',
+    'a clip with a frame rate takes its range in frames');
+  const atWalk = (range) => Math.abs((range?.[0] ?? 0) - 168 / 60) < 1e-9 && Math.abs((range?.[1] ?? 0) - 187 / 60) < 1e-9;
+  await typeRange('168', '187', atWalk);
+  const walk = lastRender(requests)?.animation?.range ?? [];
+  check(atWalk(walk),
+    'frames 168 to 187 go out as seconds at the clip\'s 60 frames a second', JSON.stringify(walk));
+  check(/frame 168\b/.test(await page.textContent('#clip-time-label')), 'the label names the frame shown',
+    await page.textContent('#clip-time-label'));
+  await page.screenshot({ path: path.join(artifacts, '24-animation-range.png'), fullPage: true });
+
+  // The sheet of that part: the clip row shows the range in frames and
+  // plays it once when asked.
+  requests.length = 0;
+  await page.click('#clip-sheet');
+  await page.waitForFunction(() => document.getElementById('sheet-view').dataset.frames === '64'
+    && !document.getElementById('sheet').classList.contains('busy'), null, { timeout: STEP_TIMEOUT_MS });
+  check(JSON.stringify(lastSheet()?.range) === JSON.stringify(walk), 'the sheet of the clip plays its range',
+    JSON.stringify(lastSheet()));
+  check(await clipsBox.locator('input.range-from').inputValue() === '168'
+        && await clipsBox.locator('input.range-to').inputValue() === '187',
+  'the sheet\'s clip row shows the range in frames');
+  before = await sheetsShown();
+  await clipsBox.locator('input.once').check();
+  await sheetShown(64, before);
+  check(lastSheet()?.loop === false, 'the clip row plays the clip once', JSON.stringify(lastSheet()));
+  await page.screenshot({ path: path.join(artifacts, '25-animation-sheet-once.png'), fullPage: true });
+  await page.uncheck('#sheet-toggle');
 
   rendered = await rendersShown(page);
   await page.selectOption('#model-select', '');

@@ -6,7 +6,10 @@
 //   PixiJS: new Spritesheet(texture, atlas).parse().
 // The atlas is also checked against the JSON Aseprite itself writes
 // (aseprite_format.mjs). A turntable sheet (two pitches) goes through both
-// engines too.
+// engines too, and a one-shot (the walk with loop: false, whose tags say
+// Aseprite's "repeat": "1"): Phaser plays it once and stops on its last
+// frame; PixiJS reads no tags at all, so a game gives its AnimatedSprite
+// loop = false from the tag itself.
 //   node engines.test.mjs --toond PATH --exported DIR --artifacts DIR
 // Exit 0: every check passed; 1: a check failed.
 import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -74,6 +77,30 @@ async function enginePage(browser, sheets) {
   await page.goto(`${ORIGIN}/`);
   await page.addScriptTag({ url: `${ORIGIN}/phaser.min.js` });
   await page.addScriptTag({ url: `${ORIGIN}/pixi.min.js` });
+  await page.evaluate(() => {
+    // A Phaser game that loads sheet `key` with its Aseprite loader and
+    // calls `create` as its scene's create.
+    window.phaserGame = (key, create) => {
+      const parent = document.createElement('div');
+      parent.id = `phaser-${key}-${document.body.children.length}`;
+      document.body.append(parent);
+      return new Phaser.Game({
+        type: Phaser.CANVAS, width: 320, height: 240, parent, banner: false, transparent: true,
+        audio: { noAudio: true },
+        scene: { preload() { this.load.aseprite(key, `${key}.png`, `${key}.json`); }, create },
+      });
+    };
+    // PixiJS's Spritesheet of sheet `key`, and the atlas it was made from.
+    window.pixiSheet = async (key) => {
+      const image = new Image();
+      image.src = `${key}.png`;
+      await image.decode();
+      const atlas = await (await fetch(`${key}.json`)).json();
+      const sheet = new PIXI.Spritesheet(PIXI.Texture.from(image), atlas);
+      await sheet.parse();
+      return { atlas, sheet };
+    };
+  });
   return { page, pageErrors };
 }
 
@@ -82,14 +109,7 @@ async function enginePage(browser, sheets) {
 function phaserLoads(page, name) {
   return page.evaluate(([key, stepTimeout]) => new Promise((resolve, reject) => {
     const timer = setTimeout(() => reject(new Error('Phaser did not finish')), stepTimeout);
-    const parent = document.createElement('div');
-    parent.id = `phaser-${key}`;
-    document.body.append(parent);
-    let game = null;
-    function preload() {
-      this.load.aseprite(key, `${key}.png`, `${key}.json`);
-    }
-    function create() {
+    const game = window.phaserGame(key, function create() {
       const made = this.anims.createFromAseprite(key);
       const texture = this.textures.get(key);
       const animations = made.map((anim) => ({
@@ -113,7 +133,7 @@ function phaserLoads(page, name) {
       const startFrame = sprite.anims.currentFrame?.textureFrame ?? null;
       const finish = () => {
         clearTimeout(timer);
-        const result = { animations, pivot, shown: [...shown], startFrame, error,
+        const result = { animations, pivot, shown: [...shown], startFrame, error, repeats: made.map((a) => a.repeat),
           origin: { x: sprite.originX, y: sprite.originY }, renderer: game.renderer.type };
         game.destroy(true);
         resolve(result);
@@ -125,10 +145,6 @@ function phaserLoads(page, name) {
           finish();
         }
       }, 50);
-    }
-    game = new Phaser.Game({
-      type: Phaser.CANVAS, width: 320, height: 240, parent, banner: false, transparent: true,
-      audio: { noAudio: true }, scene: { preload, create },
     });
   }), [name, STEP_TIMEOUT_MS]);
 }
@@ -139,12 +155,7 @@ function phaserLoads(page, name) {
 // each step half a millisecond past the frame's time.
 function pixiLoads(page, name) {
   return page.evaluate(async (key) => {
-    const image = new Image();
-    image.src = `${key}.png`;
-    await image.decode();
-    const atlas = await (await fetch(`${key}.json`)).json();
-    const sheet = new PIXI.Spritesheet(PIXI.Texture.from(image), atlas);
-    await sheet.parse();
+    const { atlas, sheet } = await window.pixiSheet(key);
     const anchor = (t) => ({ x: t.defaultAnchor?.x, y: t.defaultAnchor?.y });
     const animations = Object.fromEntries(Object.entries(sheet.animations).map(([anim, textures]) => [anim,
       textures.map((t) => t && { label: t.label, x: t.frame.x, y: t.frame.y, w: t.frame.width, h: t.frame.height,
@@ -173,6 +184,82 @@ function pixiLoads(page, name) {
     const viaAssets = Object.fromEntries(Object.entries(loaded.animations ?? {}).map(([n, t]) => [n, t.length]));
     return { textures, animations, seen, timedSeen, viaAssets, anchor: { x: sprite.anchor.x, y: sprite.anchor.y } };
   }, name);
+}
+
+// Phaser plays a one-shot's first tag as a game plays an attack: as
+// createFromAseprite made it, with no repeat of its own given. Answers the
+// frames shown, whether it completed, the frame it rests on a while after,
+// and each animation's repeat as Phaser holds it.
+function phaserPlaysOnce(page, name) {
+  return page.evaluate(([key, stepTimeout]) => new Promise((resolve, reject) => {
+    const timer = setTimeout(() => reject(new Error('Phaser did not finish the one-shot')), stepTimeout);
+    const game = window.phaserGame(key, function create() {
+      const made = this.anims.createFromAseprite(key);
+      const sprite = this.add.sprite(160, 120, key);
+      const shown = [];
+      let completed = 0;
+      sprite.on('animationupdate', (anim, frame) => shown.push(frame.textureFrame));
+      sprite.on('animationcomplete', () => {
+        completed += 1;
+        // Rest a whole play more: a one-shot shows nothing further.
+        setTimeout(() => {
+          clearTimeout(timer);
+          const result = { shown: [...shown], completed, rests: sprite.anims.currentFrame?.textureFrame ?? null,
+            playing: sprite.anims.isPlaying, repeats: made.map((a) => a.repeat), first: made[0]?.frames.map((f) => f.textureFrame) };
+          game.destroy(true);
+          resolve(result);
+        }, made[0].duration + 200);
+      });
+      sprite.play(made[0].key);
+    });
+  }), [name, STEP_TIMEOUT_MS]);
+}
+
+// PixiJS on a one-shot: its Spritesheet keeps the tag-less `animations`
+// only, so an AnimatedSprite loops unless the game says otherwise; here
+// stepped past its end as it comes (loop true) and with loop = false taken
+// from the tag's "repeat" as a game would.
+function pixiPlaysOnce(page, name) {
+  return page.evaluate(async (key) => {
+    const { atlas, sheet } = await window.pixiSheet(key);
+    const tag = atlas.meta.frameTags[0];
+    const textures = sheet.animations[tag.name];
+    const play = (loop) => {
+      const sprite = new PIXI.AnimatedSprite({ textures, autoUpdate: false, loop });
+      let completed = 0;
+      sprite.onComplete = () => { completed += 1; };
+      sprite.play();
+      const seen = [sprite.currentFrame];
+      for (let i = 0; i < textures.length + 2; i++) {
+        sprite.update({ deltaTime: 1 / sprite.animationSpeed, deltaMS: 1000 / 60 });
+        seen.push(sprite.currentFrame);
+      }
+      return { seen, completed, playing: sprite.playing };
+    };
+    return { tag, frames: textures.length, asItComes: play(true), fromTag: play(tag.repeat === undefined) };
+  }, name);
+}
+
+function checkOneShot(phaser, pixi, atlas, phaserWalk) {
+  const tags = atlas.meta.frameTags;
+  check(tags.length === 2 && tags.every((t) => t.repeat === '1'), 'the one-shot\'s tags say "repeat": "1"',
+    JSON.stringify(tags.map((t) => t.repeat)));
+  const names = phaser.first ?? [];
+  check(phaser.completed === 1 && phaser.shown.join() === names.slice(1).join() && phaser.rests === names.at(-1)
+        && !phaser.playing,
+  'Phaser: the one-shot plays its frames once and rests on the last',
+  `shown ${phaser.shown.join(', ')}; completed ${phaser.completed}; rests on ${phaser.rests}; tag ${names.join(', ')}`);
+  check(phaser.repeats.every((r) => r === 0) && phaserWalk.repeats.length > 0 && phaserWalk.repeats.every((r) => r === 0),
+    'Phaser: createFromAseprite ignores "repeat": every tag is made to play once (repeat 0), the walk\'s looping tags too',
+    `one-shot ${phaser.repeats.join(', ')}; walk ${phaserWalk.repeats.join(', ')}`);
+  const last = pixi.frames - 1;
+  check(pixi.asItComes.seen.includes(0, 1) && pixi.asItComes.completed === 0,
+    'PixiJS: the Spritesheet ignores "repeat": as it comes, the AnimatedSprite loops round',
+    pixi.asItComes.seen.join());
+  check(pixi.fromTag.completed === 1 && pixi.fromTag.seen.at(-1) === last && !pixi.fromTag.playing
+        && pixi.fromTag.seen.join() === [...Array.from({ length: pixi.frames }, (_, k) => k), last, last, last].join(),
+  'PixiJS: with loop = false from the tag, the AnimatedSprite plays once and stops on the last frame',
+  pixi.fromTag.seen.join());
 }
 
 const sum = (values) => values.reduce((a, b) => a + b, 0);
@@ -258,19 +345,23 @@ try {
   const base = { model: walker.id, width: 64, height: 64, background: [0, 0, 0, 0], camera: { preset: 'dimetric' } };
   const walk = await sheetOf(daemon.url, { ...base, sheet: { frames: 4, yaw_start: 0, animation: { clip: 'Walk', frames: 6 } } });
   const turn = await sheetOf(daemon.url, { ...base, sheet: { frames: 8, pitches: [10, 40], frame_ms: 80 } });
+  const once = await sheetOf(daemon.url,
+    { ...base, sheet: { frames: 2, yaw_start: 0, animation: { clip: 'Walk', frames: 5, loop: false } } });
   writeFileSync(path.join(artifacts, 'engines-walk.png'), walk.png);
   writeFileSync(path.join(artifacts, 'engines-walk.json'), walk.json);
   checkAtlas('walk', walk.atlas);
   checkAtlas('turntable', turn.atlas);
+  checkAtlas('one-shot', once.atlas);
 
   browser = await launchChromium(chromium);
-  const { page, pageErrors } = await enginePage(browser, { walk, turn });
+  const { page, pageErrors } = await enginePage(browser, { walk, turn, once });
   check(await page.evaluate(() => Phaser.VERSION) === versionOf('phaser') && await page.evaluate(() => PIXI.VERSION) === versionOf('pixi.js'),
     'the page runs the installed Phaser and PixiJS', await page.evaluate(() => `${Phaser.VERSION}, ${PIXI.VERSION}`));
   const phaserWalk = await phaserLoads(page, 'walk');
   checkPhaserWalk(phaserWalk, walk.atlas, clipMs);
   checkPixiWalk(await pixiLoads(page, 'walk'), walk.atlas);
   checkTurntable(await phaserLoads(page, 'turn'), await pixiLoads(page, 'turn'), turn.atlas);
+  checkOneShot(await phaserPlaysOnce(page, 'once'), await pixiPlaysOnce(page, 'once'), once.atlas, phaserWalk);
   check(pageErrors.length === 0, 'no uncaught errors in the page', pageErrors.join('; '));
 } catch (e) {
   check(false, 'the engine test ran to its end', e.stack || String(e));

@@ -1,6 +1,6 @@
 // toond's half of the rig conformance suite (tests/conformance/): imports a
 // model through toond's own import path (scene::import_bundle, which runs
-// the assimp helper for FBX and COLLADA), poses it with scene/pose.h as
+// the assimp helper for FBX and COLLADA), poses it with scene/animation/pose.h as
 // the daemon does (clip_time, pose_nodes, pose_vertices) at the times
 // given, and writes JSON: every vertex at rest and in each pose, in the
 // file's world space, and for each pose how far each level of detail's
@@ -26,10 +26,10 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "scene/bundle_import.h"
-#include "scene/clip_sampling.h"
-#include "scene/import_error.h"
-#include "scene/pose.h"
+#include "scene/animation/clip_sampling.h"
+#include "scene/animation/pose.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/import_error.h"
 #include "support/surface_distance.h"
 
 namespace toond::conformance {
@@ -106,7 +106,8 @@ double stretch_of(const glm::mat4& joint) {
   const glm::dmat3 a = glm::transpose(m) * m;
   const double p1 = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
   const double q = (a[0][0] + a[1][1] + a[2][2]) / 3.0;
-  const double p2 = (a[0][0] - q) * (a[0][0] - q) + (a[1][1] - q) * (a[1][1] - q) + (a[2][2] - q) * (a[2][2] - q) + 2 * p1;
+  const double p2 =
+      (a[0][0] - q) * (a[0][0] - q) + (a[1][1] - q) * (a[1][1] - q) + (a[2][2] - q) * (a[2][2] - q) + 2 * p1;
   if (!(p2 > 1e-300)) return std::sqrt(std::max(q, 0.0));
   const double p = std::sqrt(p2 / 6.0);
   const double r = std::clamp(glm::determinant((a - q * glm::dmat3(1.0)) / p) / 2.0, -1.0, 1.0);
@@ -192,7 +193,8 @@ int run(const Options& options) {
   out["vertices"] = mesh.positions.size();
   out["triangles"] = mesh.triangle_count();
   for (std::size_t l = 0; l < mesh.lods.size(); ++l) {
-    out["levels"].push_back({{"level", l + 1}, {"triangles", mesh.lods[l].triangle_count()}, {"error", mesh.lods[l].error}});
+    out["levels"].push_back(
+        {{"level", l + 1}, {"triangles", mesh.lods[l].triangle_count()}, {"error", mesh.lods[l].error}});
   }
   out["rest"] = flat(in_file(mesh.positions));
   out["poses"] = nlohmann::json::array();

@@ -34,8 +34,8 @@ void check_strips_round_trip(std::span<const std::uint8_t> bytes, int width, int
   const toond::image::ScanlineSource source = [&](int first, int count, std::vector<std::uint8_t>&) {
     return bytes.subspan(static_cast<std::size_t>(first) * width, static_cast<std::size_t>(count) * width);
   };
-  const std::string stream = toond::image::deflate_scanlines(
-      rows, static_cast<std::size_t>(width), source, {toond::image::DeflateMethod::Runs, 1, 0, strips, 2});
+  const std::string stream = toond::image::deflate_scanlines(rows, static_cast<std::size_t>(width), source,
+                                                             {toond::image::DeflateMethod::Runs, 1, 0, strips, 2});
   std::vector<std::uint8_t> out(static_cast<std::size_t>(rows) * width + 1);
   uLongf size = static_cast<uLongf>(out.size());
   if (uncompress(out.data(), &size, reinterpret_cast<const Bytef*>(stream.data()), static_cast<uLong>(stream.size())) !=

@@ -9,9 +9,9 @@
 #include "http/render_params_wire.h"
 #include "http/request_limits.h"
 #include "param_schema.h"
-#include "presets.h"
 #include "pipeline/budget.h"
-#include "render/render_params.h"
+#include "presets.h"
+#include "render/plan/render_params.h"
 #include "request_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -74,9 +74,8 @@ int main(int argc, char** argv) {
   save("features.gltf", write_gltf(doc, GltfForm::DataUris)[0].second);
 
   GltfParts parts = build_gltf(doc);
-  parts.json["accessors"][0]["sparse"] = {{"count", 1},
-                                          {"indices", {{"bufferView", 3}, {"componentType", 5125}}},
-                                          {"values", {{"bufferView", 0}}}};
+  parts.json["accessors"][0]["sparse"] = {
+      {"count", 1}, {"indices", {{"bufferView", 3}, {"componentType", 5125}}}, {"values", {{"bufferView", 0}}}};
   parts.json["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {
       {"KHR_texture_transform", {{"offset", {0.5, 0}}, {"rotation", 0.3}, {"scale", {2, 2}}}}};
   parts.json["extensionsRequired"] = {"KHR_texture_transform"};
@@ -142,10 +141,11 @@ int main(int argc, char** argv) {
   rig.json["meshes"][0]["primitives"][0]["targets"] = {
       {{"POSITION", append_float_accessor(rig, std::vector<float>(36, 0.25f), "VEC3")}}};
   rig.json["meshes"][0]["weights"] = {0.5};
-  rig.json["skins"] = {{{"joints", {1, 2}},
-                        {"inverseBindMatrices", append_float_accessor(rig, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
-                                                                            1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1},
-                                                                      "MAT4")}}};
+  rig.json["skins"] = {
+      {{"joints", {1, 2}},
+       {"inverseBindMatrices", append_float_accessor(rig, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0,  0, 1,
+                                                           1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1},
+                                                     "MAT4")}}};
   rig.json["nodes"][0]["skin"] = 0;
   const int times = append_float_accessor(rig, {0.0f, 0.5f, 1.25f}, "SCALAR");
   const int turns = append_float_accessor(rig, {0, 0, 0, 1, 0, 0, 0.7071f, 0.7071f, 0, 0, 1, 0}, "VEC4");
@@ -153,12 +153,14 @@ int main(int argc, char** argv) {
   // CUBICSPLINE: in-tangent, value, out-tangent per key.
   const int morphs = append_float_accessor(rig, {0, 0, 1, 1, 1, 0, 0, 0.5f, 0}, "SCALAR");
   rig.json["animations"] = {{{"name", "Armature|Bend"},
-                             {"samplers", {{{"input", times}, {"output", turns}},
-                                           {{"input", times}, {"output", moves}, {"interpolation", "STEP"}},
-                                           {{"input", times}, {"output", morphs}, {"interpolation", "CUBICSPLINE"}}}},
-                             {"channels", {{{"sampler", 0}, {"target", {{"node", 2}, {"path", "rotation"}}}},
-                                           {{"sampler", 1}, {"target", {{"node", 1}, {"path", "translation"}}}},
-                                           {{"sampler", 2}, {"target", {{"node", 0}, {"path", "weights"}}}}}}}};
+                             {"samplers",
+                              {{{"input", times}, {"output", turns}},
+                               {{"input", times}, {"output", moves}, {"interpolation", "STEP"}},
+                               {{"input", times}, {"output", morphs}, {"interpolation", "CUBICSPLINE"}}}},
+                             {"channels",
+                              {{{"sampler", 0}, {"target", {{"node", 2}, {"path", "rotation"}}}},
+                               {{"sampler", 1}, {"target", {{"node", 1}, {"path", "translation"}}}},
+                               {{"sampler", 2}, {"target", {{"node", 0}, {"path", "weights"}}}}}}}};
   save("rigged.glb", pack_gltf(rig, GltfForm::Glb)[0].second);
   return 0;
 }

@@ -99,7 +99,8 @@ class BadInputs : public ::testing::TestWithParam<json> {
   static void SetUpTestSuite() {
     // Files a confined importer must never read: if a bundle could reach
     // them, the material would turn up as "outside" without a warning.
-    std::ofstream("/tmp/toond-bad-inputs-outside.mtl") << "newmtl outside\nKd 1 0 0\nmap_Kd toond-bad-inputs-outside.png\n";
+    std::ofstream("/tmp/toond-bad-inputs-outside.mtl")
+        << "newmtl outside\nKd 1 0 0\nmap_Kd toond-bad-inputs-outside.png\n";
     std::ofstream("/tmp/toond-bad-inputs-outside.png") << "not even a png";
     daemon_ = std::make_unique<Daemon>(std::filesystem::path{}, catalogue().daemon_args);
   }
@@ -181,8 +182,8 @@ TEST_P(BadInputs, GetsTheCataloguedAnswer) {
     }
     for (const char* count : {"materials", "textures", "triangles"}) {
       if (expect.contains(count)) {
-      EXPECT_EQ(answer[count], expect[count]) << count << " in " << body;
-    }
+        EXPECT_EQ(answer[count], expect[count]) << count << " in " << body;
+      }
     }
     if (expect.contains("files")) {
       EXPECT_EQ(answer["files"], expect["files"]) << body;
@@ -207,7 +208,9 @@ TEST_P(BadInputs, GetsTheCataloguedAnswer) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, BadInputs, ::testing::ValuesIn(catalogue().rows),
-                         [](const ::testing::TestParamInfo<json>& row) { return row.param["name"].get<std::string>(); });
+                         [](const ::testing::TestParamInfo<json>& row) {
+                           return row.param["name"].get<std::string>();
+                         });
 
 TEST(BadInputCatalogue, CoversEveryRoute) {
   std::set<std::string> routes;

@@ -268,8 +268,8 @@ TEST(HeavyRender, EveryHeavyImportAlsoRendersClearly) {
     ASSERT_TRUE(res);
     const double upload_s = std::chrono::duration<double>(uploaded - started).count();
     const double render_s = std::chrono::duration<double>(Clock::now() - uploaded).count();
-    std::cout << input.name << ": upload " << upload_s << " s, render " << res->status << " in " << render_s
-              << " s, " << res->get_header_value("X-Toond-Cost") << "\n";
+    std::cout << input.name << ": upload " << upload_s << " s, render " << res->status << " in " << render_s << " s, "
+              << res->get_header_value("X-Toond-Cost") << "\n";
     if (res->status != 200) {
       const std::string code = error_of(res).value("code", "");
       EXPECT_TRUE((res->status == 422 && code == "limit_exceeded") || (res->status == 503 && code == "render_aborted"))

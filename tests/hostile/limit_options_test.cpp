@@ -29,23 +29,48 @@ TEST(LimitOptions, DefaultsAreTheDocumentedOnes) {
   EXPECT_TRUE(o.access.token.empty());
   EXPECT_TRUE(o.access.cors_origins.empty());
   // --help states each default as parsed above.
-  for (const char* text : {"--max-bundle-files N   files in one upload (default 256)",
-                           "(default 10000000)", "(default 67108864", "(default 16777216", "(default 134217728",
-                           "(default 8)", "(default 16)", "(default 1048576)", "(default 32)", "--token T",
-                           "--max-import-seconds S", "nothing is stored (default 30)",
-                           "--cors-origin O", "TOOND_TOKEN", "--max-render-cost M", "(default 5000",
-                           "--long-render-cost M", "(default 300; 0: one lane)", "(default 10;"}) {
+  for (const char* text :
+       {"--max-bundle-files N   files in one upload (default 256)", "(default 10000000)", "(default 67108864",
+        "(default 16777216", "(default 134217728", "(default 8)", "(default 16)", "(default 1048576)", "(default 32)",
+        "--token T", "--max-import-seconds S", "nothing is stored (default 30)", "--cors-origin O", "TOOND_TOKEN",
+        "--max-render-cost M", "(default 5000", "--long-render-cost M", "(default 300; 0: one lane)", "(default 10;"}) {
     EXPECT_NE(usage().find(text), std::string::npos) << text;
   }
 }
 
 TEST(LimitOptions, EachFlagSetsItsLimit) {
-  const Options o = parse_options({"--max-bundle-files", "3", "--max-vertices", "100", "--max-triangles", "50",
-                                   "--max-texture-pixels", "4096", "--max-output-pixels", "65536", "--max-samples",
-                                   "100000", "--max-lights", "2", "--max-objects", "4", "--max-json-bytes", "2000",
-                                   "--max-json-depth", "8", "--token", "abc", "--cors-origin", "*",
-                                   "--render-timeout", "0.25", "--max-import-seconds", "2.5", "--max-render-cost",
-                                   "300", "--long-render-cost", "0"});
+  const Options o = parse_options({"--max-bundle-files",
+                                   "3",
+                                   "--max-vertices",
+                                   "100",
+                                   "--max-triangles",
+                                   "50",
+                                   "--max-texture-pixels",
+                                   "4096",
+                                   "--max-output-pixels",
+                                   "65536",
+                                   "--max-samples",
+                                   "100000",
+                                   "--max-lights",
+                                   "2",
+                                   "--max-objects",
+                                   "4",
+                                   "--max-json-bytes",
+                                   "2000",
+                                   "--max-json-depth",
+                                   "8",
+                                   "--token",
+                                   "abc",
+                                   "--cors-origin",
+                                   "*",
+                                   "--render-timeout",
+                                   "0.25",
+                                   "--max-import-seconds",
+                                   "2.5",
+                                   "--max-render-cost",
+                                   "300",
+                                   "--long-render-cost",
+                                   "0"});
   EXPECT_EQ(o.limits.max_bundle_files, 3u);
   EXPECT_EQ(o.limits.import.max_vertices, 100u);
   EXPECT_EQ(o.limits.import.max_triangles, 50u);

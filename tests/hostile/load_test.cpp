@@ -60,7 +60,8 @@ struct Tally {
 
 std::string model_text(unsigned n) {
   std::ostringstream obj;
-  obj << "# load " << n << "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 " << 1 + n % 7 << "\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n";
+  obj << "# load " << n << "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 " << 1 + n % 7
+      << "\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n";
   return obj.str();
 }
 
@@ -129,8 +130,10 @@ TEST(Load, SixteenClientsMixedForBoundedTime) {
           // Requests that deserve a 4xx, each of its own kind.
           httplib::Result res = [&]() -> httplib::Result {
             switch (pick) {
-              case 7: return client.Post("/render", "{\"width\": 12", "application/json");
-              case 8: return post_json(client, "/render", {{"outline", {{"width", 1000}}}});
+              case 7:
+                return client.Post("/render", "{\"width\": 12", "application/json");
+              case 8:
+                return post_json(client, "/render", {{"outline", {{"width", 1000}}}});
               default: {
                 httplib::MultipartFormDataItems items = {{"file", "v 0 0 0\n", "../x.obj", ""}};
                 return client.Post("/models", items);

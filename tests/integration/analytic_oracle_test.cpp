@@ -12,8 +12,8 @@
 #include <utility>
 
 #include "support/edge_measure.h"
-#include "support/sphere_oracle.h"
 #include "support/generated_models.h"
+#include "support/sphere_oracle.h"
 #include "test_client.h"
 
 namespace toond::test {
@@ -36,17 +36,18 @@ class AnalyticOracle : public SharedDaemonTest {
   }
 
   static json sphere_params(int steps, int msaa, bool band_aa = true) {
-    return {{"model", sphere_id()},
-            {"width", kSize},
-            {"height", kSize},
-            {"background", {0, 0, 0}},
-            {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}},
-            {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}, {"color", {1, 1, 1}}, {"intensity", 1}}}},
-            {"ambient", 0},
-            {"shading", {{"mode", "cel"}, {"steps", steps}, {"rounding", "ceil"}, {"base", "white"}, {"band_aa", band_aa}}},
-            {"specular", {{"enabled", false}}},
-            {"outline", {{"enabled", false}}},
-            {"msaa", msaa}};
+    return {
+        {"model", sphere_id()},
+        {"width", kSize},
+        {"height", kSize},
+        {"background", {0, 0, 0}},
+        {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}},
+        {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}, {"color", {1, 1, 1}}, {"intensity", 1}}}},
+        {"ambient", 0},
+        {"shading", {{"mode", "cel"}, {"steps", steps}, {"rounding", "ceil"}, {"base", "white"}, {"band_aa", band_aa}}},
+        {"specular", {{"enabled", false}}},
+        {"outline", {{"enabled", false}}},
+        {"msaa", msaa}};
   }
 
   // The silhouette from an unlit white render: every covered fraction of a
@@ -64,10 +65,10 @@ class AnalyticOracle : public SharedDaemonTest {
     json params = sphere_params(steps, msaa, band_aa);
     if (lod) params["lod"] = lod;
     const ErrorStats stats = test::band_edge_errors(render_ok(client, params), disk, steps);
-    std::printf("[oracle] steps %d msaa %d band_aa %d lod %s: band-edge error mean %.3f px, max %.3f px over %zu edges "
-                "(%zu missing)\n",
-                steps, msaa, band_aa ? 1 : 0, lod ? lod : "default", stats.mean_abs, stats.max_abs, stats.count,
-                stats.missing);
+    std::printf(
+        "[oracle] steps %d msaa %d band_aa %d lod %s: band-edge error mean %.3f px, max %.3f px over %zu edges "
+        "(%zu missing)\n",
+        steps, msaa, band_aa ? 1 : 0, lod ? lod : "default", stats.mean_abs, stats.max_abs, stats.count, stats.missing);
     return stats;
   }
 };

@@ -16,8 +16,8 @@
 #include "image/png_codec.h"
 #include "support/edge_measure.h"
 #include "support/golden_compare.h"
-#include "support/webp_frames.h"
 #include "support/shared_models.h"
+#include "support/webp_frames.h"
 #include "test_client.h"
 
 namespace toond::test {
@@ -29,7 +29,9 @@ using json = nlohmann::json;
 // default is the CPU, which the other suites' daemons use).
 class AnimatedModel : public SharedDaemonTest {
  public:
-  static void SetUpTestSuite() { daemon_ = std::make_unique<Daemon>(std::filesystem::path{}, std::vector<std::string>{"--skinning", "gpu"}); }
+  static void SetUpTestSuite() {
+    daemon_ = std::make_unique<Daemon>(std::filesystem::path{}, std::vector<std::string>{"--skinning", "gpu"});
+  }
 
  protected:
   static httplib::Client daemon_client() { return daemon().client(); }
@@ -59,7 +61,10 @@ class AnimatedModel : public SharedDaemonTest {
   }
   static image::Image pose(double time, const std::string& output = "color", const json& clip = "Bend") {
     auto client = daemon().client();
-    return render_ok(client, {{"model", id()}, {"width", 96}, {"height", 96}, {"output", output},
+    return render_ok(client, {{"model", id()},
+                              {"width", 96},
+                              {"height", 96},
+                              {"output", output},
                               {"animation", {{"clip", clip}, {"time", time}}}});
   }
 };
@@ -149,8 +154,8 @@ TEST_F(AnimatedModel, MinetestsPlayerUploadsWithItsSkinAndItsClipsFrameRate) {
   ASSERT_TRUE(again && again->status == 200);
   EXPECT_EQ(json::parse(again->body)["animation"], info["animation"]);
   const auto at_frame = [&](int frame) {
-    return render_ok(client, {{"model", id}, {"width", 96}, {"height", 96},
-                              {"animation", {{"clip", 0}, {"time", frame / 60.0}}}});
+    return render_ok(
+        client, {{"model", id}, {"width", 96}, {"height", 96}, {"animation", {{"clip", 0}, {"time", frame / 60.0}}}});
   };
   const image::Image standing = at_frame(0), walking = at_frame(173);
   EXPECT_NE(standing.rgba, walking.rgba);
@@ -160,8 +165,9 @@ TEST_F(AnimatedModel, MinetestsPlayerUploadsWithItsSkinAndItsClipsFrameRate) {
 
 TEST_F(AnimatedModel, ServerTimingCountsThePosing) {
   auto client = daemon_client();
-  const auto posed = post_json(client, "/render", {{"model", id()}, {"width", 32}, {"height", 32},
-                                                   {"animation", {{"clip", "Bend"}, {"time", 0.3}}}});
+  const auto posed =
+      post_json(client, "/render",
+                {{"model", id()}, {"width", 32}, {"height", 32}, {"animation", {{"clip", "Bend"}, {"time", 0.3}}}});
   ASSERT_TRUE(posed && posed->status == 200);
   const std::string timing = posed->get_header_value("Server-Timing");
   EXPECT_EQ(timing.rfind("pose;dur=", 0), 0u) << timing;
@@ -173,9 +179,9 @@ TEST_F(AnimatedModel, APoseDiffersFromTheRestAndTimeWrapsRoundTheLoop) {
   const image::Image start = pose(0.0);
   const image::Image quarter = pose(0.25);
   EXPECT_NE(start.rgba, quarter.rgba);
-  EXPECT_EQ(pose(1.0).rgba, start.rgba);      // the clip's duration is its start again
-  EXPECT_EQ(pose(1.25).rgba, quarter.rgba);   // past the end: round again
-  EXPECT_EQ(pose(-0.75).rgba, quarter.rgba);  // before the start: back from the end
+  EXPECT_EQ(pose(1.0).rgba, start.rgba);                 // the clip's duration is its start again
+  EXPECT_EQ(pose(1.25).rgba, quarter.rgba);              // past the end: round again
+  EXPECT_EQ(pose(-0.75).rgba, quarter.rgba);             // before the start: back from the end
   EXPECT_EQ(pose(0.25, "color", 0).rgba, quarter.rgba);  // the clip by its index
 }
 
@@ -292,14 +298,16 @@ TEST_F(AnimatedModel, PosingOnTheCpuDrawsWhatTheVertexStageDraws) {
   }
   // Posing on the CPU is counted where it happens, on the render thread.
   auto client = on_cpu.client();
-  const auto posed = post_json(client, "/render", {{"model", on_cpu_id}, {"width", 32}, {"height", 32},
-                                                   {"animation", {{"clip", "Walk"}, {"time", 0.1}}}});
+  const auto posed = post_json(
+      client, "/render",
+      {{"model", on_cpu_id}, {"width", 32}, {"height", 32}, {"animation", {{"clip", "Walk"}, {"time", 0.1}}}});
   ASSERT_TRUE(posed && posed->status == 200);
   EXPECT_NE(posed->get_header_value("Server-Timing").find(", pose_vertices;dur="), std::string::npos)
       << posed->get_header_value("Server-Timing");
   auto gpu_client = daemon().client();
-  const auto skinned = post_json(gpu_client, "/render", {{"model", on_cpu_id}, {"width", 32}, {"height", 32},
-                                                         {"animation", {{"clip", "Walk"}, {"time", 0.1}}}});
+  const auto skinned = post_json(
+      gpu_client, "/render",
+      {{"model", on_cpu_id}, {"width", 32}, {"height", 32}, {"animation", {{"clip", "Walk"}, {"time", 0.1}}}});
   ASSERT_TRUE(skinned && skinned->status == 200);
   EXPECT_EQ(skinned->get_header_value("Server-Timing").find("pose_vertices"), std::string::npos);
 }
@@ -315,8 +323,9 @@ TEST_F(AnimatedModel, TheRestPoseIsWhereTheJointsPutTheSkin) {
   json gltf = json::parse(read_file(folder / "rigged.gltf"));
   gltf["nodes"][3]["scale"] = {1.0, 0.5, 1.0};
   auto client = daemon_client();
-  httplib::MultipartFormDataItems items = {{"file", gltf.dump(), "rigged.gltf", "model/gltf+json"},
-                                           {"file", read_file(folder / "rigged.bin"), "rigged.bin", "application/octet-stream"}};
+  httplib::MultipartFormDataItems items = {
+      {"file", gltf.dump(), "rigged.gltf", "model/gltf+json"},
+      {"file", read_file(folder / "rigged.bin"), "rigged.bin", "application/octet-stream"}};
   const auto res = client.Post("/models", items);
   ASSERT_TRUE(res && (res->status == 200 || res->status == 201)) << (res ? res->body : "no answer");
   const std::string squashed = json::parse(res->body)["id"];
@@ -452,13 +461,14 @@ TEST_F(AnimatedModel, EachTileOfADimetricWalkIsTheSingleRenderOfItsPoseAndView) 
   const json view_light = {{{"type", "directional"}, {"direction", {-0.4, -0.5, -1}}, {"space", "view"}}};
   for (const auto& [name, frame] : atlas["frames"].items()) {
     const image::Image single = render_ok(
-        client, {{"model", walker},
-                 {"width", 96},
-                 {"height", 96},
-                 {"background", {0, 0, 0, 0}},
-                 {"camera", {{"preset", "dimetric"}, {"yaw", frame["yaw"]}, {"pitch", frame["pitch"]}, {"distance", distance}}},
-                 {"lights", view_light},
-                 {"animation", {{"clip", frame["clip"]}, {"time", frame["time"]}}}});
+        client,
+        {{"model", walker},
+         {"width", 96},
+         {"height", 96},
+         {"background", {0, 0, 0, 0}},
+         {"camera", {{"preset", "dimetric"}, {"yaw", frame["yaw"]}, {"pitch", frame["pitch"]}, {"distance", distance}}},
+         {"lights", view_light},
+         {"animation", {{"clip", frame["clip"]}, {"time", frame["time"]}}}});
     const GoldenDiff diff = compare_golden(single, tile_of(sheet, frame["frame"]));
     EXPECT_TRUE(diff.passes()) << name << " (yaw " << frame["yaw"] << "): " << diff.pixels_over
                                << " pixels differ, largest " << diff.largest;
@@ -515,18 +525,18 @@ TEST_F(AnimatedModel, ASheetLightsTheBackViewLikeTheFront) {
         << camera.dump() << ": a model-space light leaves the back darker (back " << in_model.at(180.0) << ", front "
         << in_model.at(0.0) << ")";
     std::printf("camera %s: back / front median luminance %.3f by default (view), %.3f with the light in model space\n",
-                camera.dump().c_str(), by_default.at(180.0) / by_default.at(0.0), in_model.at(180.0) / in_model.at(0.0));
+                camera.dump().c_str(), by_default.at(180.0) / by_default.at(0.0),
+                in_model.at(180.0) / in_model.at(0.0));
   }
 }
 
 TEST_F(AnimatedModel, AnAnimatedWebpPlaysTheClipsWithTheirOwnFrameTimes) {
   // Twist lasts 0.5 s: 6 frames at 12 per second end at 83, 167, 250, ...
   // ms of each direction's loop (rounded as the exact times add up).
-  const json params = {
-      {"model", id()},
-      {"width", 32},
-      {"height", 32},
-      {"sheet", {{"frames", 2}, {"animate", true}, {"animation", {{"clip", "Twist"}, {"fps", 12}}}}}};
+  const json params = {{"model", id()},
+                       {"width", 32},
+                       {"height", 32},
+                       {"sheet", {{"frames", 2}, {"animate", true}, {"animation", {{"clip", "Twist"}, {"fps", 12}}}}}};
   auto client = daemon_client();
   const auto res = post_json(client, "/render", params);
   ASSERT_TRUE(res && res->status == 200) << (res ? res->body : "");
@@ -594,8 +604,8 @@ TEST_F(AnimatedModel, AWalkingCharactersFeetStayPutInEveryDirection) {
   }
   ASSERT_EQ(lowest_by_yaw.size(), 8u);
   for (const auto& [yaw, range] : lowest_by_yaw) {
-    EXPECT_LE(range.second - range.first, 1) << "yaw " << yaw << ": the lowest row goes from " << range.first
-                                             << " to " << range.second;
+    EXPECT_LE(range.second - range.first, 1)
+        << "yaw " << yaw << ": the lowest row goes from " << range.first << " to " << range.second;
   }
 }
 
@@ -616,8 +626,9 @@ TEST_F(AnimatedModel, AnAnimatedSheetRefusesWhatCannotBe) {
             std::pair(400, std::string("/sheet/animation/fps")));
   EXPECT_EQ(code_and_path({{"animation", {{"clip", "Bend"}}}}, {{"animation", {{"clip", "Bend"}}}}),
             std::pair(400, std::string("/animation")));
-  EXPECT_EQ(code_and_path({{"frames", 64}, {"pitches", {0, 10, 20}}, {"animation", {{"clip", "Bend"}, {"frames", 64}}}}),
-            std::pair(400, std::string("/sheet/animation")));
+  EXPECT_EQ(
+      code_and_path({{"frames", 64}, {"pitches", {0, 10, 20}}, {"animation", {{"clip", "Bend"}, {"frames", 64}}}}),
+      std::pair(400, std::string("/sheet/animation")));
 }
 
 }  // namespace

@@ -65,9 +65,8 @@ TEST_F(BundleImages, RampImageShadesExactlyLikeTheSameRampAsStops) {
   // Texel i of 4 covers N·L in [i/4, (i+1)/4); texel 0 also everything below.
   auto grey = [](int g) { return json::array({g / 255.0, g / 255.0, g / 255.0}); };
   json from_stops = base();
-  from_stops["shading"]["ramp"] = {{{"at", -1}, {"color", grey(40)}},
-                                   {{"at", 0.5}, {"color", grey(130)}},
-                                   {{"at", 0.75}, {"color", grey(230)}}};
+  from_stops["shading"]["ramp"] = {
+      {{"at", -1}, {"color", grey(40)}}, {{"at", 0.5}, {"color", grey(130)}}, {{"at", 0.75}, {"color", grey(230)}}};
   const auto b = render_ok(client, from_stops);
   ASSERT_EQ(a.rgba.size(), b.rgba.size());
   EXPECT_EQ(a.rgba, b.rgba);
@@ -105,7 +104,7 @@ TEST_F(BundleImages, RampImageErrorsNameTheParameter) {
     const char* says;
   } cases[] = {
       {"ramps/missing.png", "missing_file", "no file"},
-      {"../ramps/three.png", "missing_file", "no file"},   // never leaves the bundle
+      {"../ramps/three.png", "missing_file", "no file"},  // never leaves the bundle
       {"/etc/passwd", "missing_file", "no file"},
       {"notes/readme.png", "bad_image", "not a readable image"},
       {"ramps/gradient.png", "bad_image", "40 runs"},

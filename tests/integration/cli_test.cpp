@@ -39,8 +39,8 @@ TEST_F(Cli, ServerFromTheEnvironmentAndBeforeTheVerb) {
 
 TEST_F(Cli, UploadThenRenderByIdWithSet) {
   TOOND_REQUIRE_SHARED_MODELS();
-  const auto upload = toon({"upload", (shared_models_dir() / "spot" / "spot.obj").string(), "--server",
-                            daemon().url(), "--quiet"});
+  const auto upload =
+      toon({"upload", (shared_models_dir() / "spot" / "spot.obj").string(), "--server", daemon().url(), "--quiet"});
   ASSERT_EQ(upload.status, 0) << upload.err;
   std::string id = upload.out;
   while (!id.empty() && (id.back() == '\n' || id.back() == '\r')) id.pop_back();
@@ -66,8 +66,8 @@ TEST_F(Cli, RenderAPathUploadsItInOneCall) {
   TOOND_REQUIRE_SHARED_MODELS();
   const auto png = out_dir() / "dog.png";
   const auto r = toon({"--server", daemon().url(), "render",
-                       (shared_models_dir() / "kenney-cube-pet-dog" / "animal-dog.obj").string(), "--set",
-                       "msaa=1", "-o", png.string()});
+                       (shared_models_dir() / "kenney-cube-pet-dog" / "animal-dog.obj").string(), "--set", "msaa=1",
+                       "-o", png.string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto img = image::decode_png(read_file(png));
   EXPECT_EQ(img.width, 512);
@@ -90,8 +90,8 @@ TEST_F(Cli, UploadsAndRendersADotMMesh) {
   EXPECT_EQ(info["files"], json::array({"tetra.m"}));
 
   const auto png = out_dir() / "tetra.png";
-  const auto render = toon({"render", mesh.string(), "--set", "width=96", "--set", "height=96", "-o",
-                            png.string(), "--server", daemon().url()});
+  const auto render = toon({"render", mesh.string(), "--set", "width=96", "--set", "height=96", "-o", png.string(),
+                            "--server", daemon().url()});
   ASSERT_EQ(render.status, 0) << render.err;
   EXPECT_GT(coverage(foreground_mask(image::decode_png(read_file(png)))), 0.05);
 }
@@ -129,9 +129,7 @@ TEST_F(Cli, UploadsAnFbxCharacterWithItsClips) {
 
 TEST_F(Cli, RenderWithParamsFileRendersTheDemo) {
   const auto params = out_dir() / "params.json";
-  {
-    std::ofstream(params) << json{{"width", 96}, {"height", 64}, {"shading", {{"steps", 4}}}}.dump();
-  }
+  { std::ofstream(params) << json{{"width", 96}, {"height", 64}, {"shading", {{"steps", 4}}}}.dump(); }
   const auto png = out_dir() / "demo.png";
   const auto r = toon({"render", "--params", params.string(), "-o", png.string(), "--server", daemon().url()});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -142,8 +140,8 @@ TEST_F(Cli, RenderWithParamsFileRendersTheDemo) {
 
 TEST_F(Cli, UnknownSetKeyFailsBeforeAnyRequest) {
   // No server at this address: a usage error must come first.
-  const auto r = toon({"render", "--set", "outline.thickness=3", "-o", "/tmp/never.png", "--server",
-                       "http://127.0.0.1:9"});
+  const auto r =
+      toon({"render", "--set", "outline.thickness=3", "-o", "/tmp/never.png", "--server", "http://127.0.0.1:9"});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("outline.thickness"), std::string::npos) << r.err;
 }
@@ -156,8 +154,8 @@ TEST_F(Cli, BadSetValueFails) {
 
 TEST_F(Cli, ServerSideRangeErrorIsReportedWithItsPath) {
   // 1000 is a number, so the CLI accepts the type; the range check names the path.
-  const auto r = toon({"render", "--set", "outline.width=1000", "-o", (out_dir() / "x.png").string(),
-                       "--server", daemon().url()});
+  const auto r =
+      toon({"render", "--set", "outline.width=1000", "-o", (out_dir() / "x.png").string(), "--server", daemon().url()});
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.err.find("/outline/width"), std::string::npos) << r.err;
 }

@@ -184,8 +184,7 @@ int dominant_period(const Image& img, int y0, int y1, int x0, int x1, int min_la
   for (int lag = min_lag; lag <= max_lag; ++lag) {
     double sum = 0;
     for (int y = y0; y < y1; ++y)
-      for (int x = x0; x + lag < x1; ++x)
-        sum += luminance(rgb_at(img, x, y)) * luminance(rgb_at(img, x + lag, y));
+      for (int x = x0; x + lag < x1; ++x) sum += luminance(rgb_at(img, x, y)) * luminance(rgb_at(img, x + lag, y));
     sum /= (x1 - x0 - lag);
     if (sum > best) {
       best = sum;
@@ -201,8 +200,8 @@ TEST_F(Effects, HalftoneDotsRepeatWithTheCellSize) {
   params["shading"] = {{"mode", "phong"}};
   params["lights"] = {{{"type", "directional"}, {"direction", {-1, 0, -0.2}}}};
   for (int cell : {6, 10}) {
-    params["halftone"] = {{"enabled", true}, {"style", "dots"}, {"cell", cell}, {"angle", 0},
-                          {"ink", {0, 0, 0}}, {"ink_mix", 1}};
+    params["halftone"] = {{"enabled", true}, {"style", "dots"},  {"cell", cell},
+                          {"angle", 0},      {"ink", {0, 0, 0}}, {"ink_mix", 1}};
     const auto img = render_ok(client, params);
     // The dots grow toward the shadow side; measure in the mid tones.
     EXPECT_EQ(dominant_period(img, 100, 156, 60, 150, 3, 16), cell) << "cell " << cell;
@@ -305,7 +304,7 @@ TEST_F(RampEffects, RampStopsSetLevelsAndColoursAtTheirNdotL) {
   // normal tips just past 90° (N·L < 0) would otherwise fall below it, where
   // the ramp documents no light.
   params["shading"] = {{"ramp", json::array({json{{"at", -1}, {"value", 0.25}}, json{{"at", 0.5}, {"color", {1, 0, 0}}},
-                                               json{{"at", 0.9}, {"value", 1}}})}};
+                                             json{{"at", 0.9}, {"value", 1}}})}};
   const auto img = render_ok(client, params);
   EXPECT_EQ(colour_histogram(img, foreground_mask(img)).size(), 3u);
   // N·L >= 0.9 inside r = 0.436; >= 0.5 inside r = 0.866.
@@ -536,7 +535,8 @@ TEST_F(Effects, EveryPresetLooksDifferent) {
 
 TEST_F(Effects, ExplicitFieldsOverrideThePreset) {
   auto client = daemon().client();
-  auto res = post_json(client, "/render", {{"preset", "bw_comic"}, {"outline", {{"width", 0}}}, {"width", 64}, {"height", 64}});
+  auto res = post_json(client, "/render",
+                       {{"preset", "bw_comic"}, {"outline", {{"width", 0}}}, {"width", 64}, {"height", 64}});
   ASSERT_TRUE(res);
   ASSERT_EQ(res->status, 200) << res->body;
   EXPECT_EQ(res->get_header_value("X-Toond-Passes").find("hull_outline"), std::string::npos);

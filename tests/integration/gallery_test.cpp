@@ -64,8 +64,8 @@ TEST_F(Gallery, OneSharedModelEveryLookASheetAndAPage) {
   TOOND_REQUIRE_SHARED_MODELS();
   const fs::path out = make_temp_dir("toon-gallery") / "out";
   const std::string model = "kenney-space-craft";
-  const auto r = toon({"gallery", "--models", shared_models_dir().string() + "/", "--only", model, "--size", "64",
-                       "-o", out.string()});
+  const auto r = toon(
+      {"gallery", "--models", shared_models_dir().string() + "/", "--only", model, "--size", "64", "-o", out.string()});
   ASSERT_EQ(r.status, 0) << r.err;
 
   int looks = 0, presets = 0;

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/obj_import.h"
+#include "scene/import/obj_import.h"
 #include "support/generated_models.h"
 #include "support/gltf_draco_writer.h"
 #include "support/gltf_meshopt_writer.h"
@@ -88,8 +88,9 @@ TEST_F(GltfCompression, GarbageDracoDataIsA422NamingThePrimitiveAndTheDaemonStay
   const json error = error_of(res);
   EXPECT_EQ(error["code"], "bad_bundle");
   EXPECT_EQ(error["path"], "model.glb");
-  EXPECT_NE(error["message"].get<std::string>().find("mesh 0 primitive 0 (KHR_draco_mesh_compression) cannot be decoded"),
-            std::string::npos)
+  EXPECT_NE(
+      error["message"].get<std::string>().find("mesh 0 primitive 0 (KHR_draco_mesh_compression) cannot be decoded"),
+      std::string::npos)
       << error;
   expect_alive(client);
 }
@@ -102,8 +103,9 @@ TEST_F(GltfCompression, ATruncatedMeshoptStreamIsA422NamingTheView) {
   auto res = post_glb(client, parts);
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 422) << res->body;
-  EXPECT_NE(error_of(res)["message"].get<std::string>().find("buffer view 0 (EXT_meshopt_compression) cannot be decoded"),
-            std::string::npos)
+  EXPECT_NE(
+      error_of(res)["message"].get<std::string>().find("buffer view 0 (EXT_meshopt_compression) cannot be decoded"),
+      std::string::npos)
       << res->body;
   expect_alive(client);
 }

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "scene/obj_import.h"
 #include "image/png_codec.h"
+#include "scene/import/obj_import.h"
 #include "support/gltf_twin.h"
 #include "support/image_checks.h"
 #include "support/shared_models.h"
@@ -30,20 +30,20 @@ TEST_P(GltfRender, GlbTwinRendersLikeTheObj) {
       bundle.add(std::filesystem::relative(entry.path(), dir).generic_string(), read_file(entry.path()));
     }
   }
-  const std::string glb =
-      write_gltf(gltf_twin(scene::import_obj_bundle(bundle), bundle), GltfForm::Glb)[0].second;
+  const std::string glb = write_gltf(gltf_twin(scene::import_obj_bundle(bundle), bundle), GltfForm::Glb)[0].second;
 
   auto client = daemon().client();
   auto obj_upload = upload_model_folder(client, dir);
   ASSERT_TRUE(obj_upload && (obj_upload->status == 200 || obj_upload->status == 201));
-  auto glb_upload = client.Post("/models", httplib::MultipartFormDataItems{{"file", glb, "model.glb", "model/gltf-binary"}});
+  auto glb_upload =
+      client.Post("/models", httplib::MultipartFormDataItems{{"file", glb, "model.glb", "model/gltf-binary"}});
   ASSERT_TRUE(glb_upload);
   ASSERT_TRUE(glb_upload->status == 200 || glb_upload->status == 201) << glb_upload->body;
 
   // The twin carries no specular colour (glTF has no Phong Ks), so the
   // highlight is off in both.
-  const json look = {{"width", 320}, {"height", 320}, {"camera", {{"yaw", -140}, {"pitch", 12}}},
-                     {"specular", {{"enabled", false}}}};
+  const json look = {
+      {"width", 320}, {"height", 320}, {"camera", {{"yaw", -140}, {"pitch", 12}}}, {"specular", {{"enabled", false}}}};
   json obj_params = look;
   obj_params["model"] = json::parse(obj_upload->body)["id"];
   json glb_params = look;
@@ -122,8 +122,12 @@ class GltfMaterials : public SharedDaemonTest {};
 // surface is not drawn, so the background shows; OPAQUE draws it all.
 TEST_F(GltfMaterials, MaskCutsTheShapeOutOfTheTexture) {
   auto client = daemon().client();
-  const json look = {{"width", 128}, {"height", 128}, {"background", {0, 0, 1}}, {"outline", {{"enabled", false}}},
-                     {"shading", {{"mode", "flat"}}}, {"camera", {{"yaw", 0}, {"pitch", 0}}}};
+  const json look = {{"width", 128},
+                     {"height", 128},
+                     {"background", {0, 0, 1}},
+                     {"outline", {{"enabled", false}}},
+                     {"shading", {{"mode", "flat"}}},
+                     {"camera", {{"yaw", 0}, {"pitch", 0}}}};
   json params = look;
   params["model"] = upload_glb(client, quad_glb(half_transparent_png(), {{"alphaMode", "MASK"}}));
   const auto [masked_left, masked_right] = background_in_thirds(render_ok(client, params));
@@ -142,8 +146,8 @@ TEST_F(GltfMaterials, DataLayersFollowWhatTheMaskLeaves) {
   auto client = daemon().client();
   const std::string masked = upload_glb(client, quad_glb(half_transparent_png(), {{"alphaMode", "MASK"}}));
   for (const char* output : {"depth", "normal", "id"}) {
-    const json params = {{"model", masked}, {"width", 128}, {"height", 128}, {"output", output},
-                         {"camera", {{"yaw", 0}, {"pitch", 0}}}};
+    const json params = {
+        {"model", masked}, {"width", 128}, {"height", 128}, {"output", output}, {"camera", {{"yaw", 0}, {"pitch", 0}}}};
     const image::Image layer = render_ok(client, params);
     const bool depth = std::string(output) == "depth";
     auto background = [&](int x, int y) {
@@ -183,7 +187,10 @@ TEST_F(GltfMaterials, OutlinesFollowWhatTheMaskLeaves) {
   const std::string masked = upload_glb(client, quad_glb(opaque_middle_right_png(), {{"alphaMode", "MASK"}}));
   const std::string opaque = upload_glb(client, quad_glb(opaque_middle_right_png(), json::object()));
   for (const char* method : {"hull", "wireframe", "edges"}) {
-    json params = {{"width", 128}, {"height", 128}, {"background", {0, 0, 1}}, {"shading", {{"mode", "flat"}, {"base", "white"}}},
+    json params = {{"width", 128},
+                   {"height", 128},
+                   {"background", {0, 0, 1}},
+                   {"shading", {{"mode", "flat"}, {"base", "white"}}},
                    {"outline", {{"method", method}, {"width", 3}, {"color", {1, 0, 0}}, {"creases", "never"}}}};
     const bool from_behind = std::string(method) == "wireframe";
     params["camera"] = {{"yaw", from_behind ? 180 : 0}, {"pitch", 0}};
@@ -215,9 +222,14 @@ std::pair<double, double> floor_level_in_thirds(const image::Image& img) {
 // only; the opaque quad's covers both.
 TEST_F(GltfMaterials, MaskedMaterialsCastShadowsOnlyWhereTheyAreDrawn) {
   auto client = daemon().client();
-  json params = {{"width", 128}, {"height", 128}, {"background", {0, 0, 1}}, {"outline", {{"enabled", false}}},
-                 {"camera", {{"yaw", 0}, {"pitch", 35}}}, {"floor", {{"enabled", true}}},
-                 {"shadows", {{"enabled", true}}}, {"specular", {{"enabled", false}}},
+  json params = {{"width", 128},
+                 {"height", 128},
+                 {"background", {0, 0, 1}},
+                 {"outline", {{"enabled", false}}},
+                 {"camera", {{"yaw", 0}, {"pitch", 35}}},
+                 {"floor", {{"enabled", true}}},
+                 {"shadows", {{"enabled", true}}},
+                 {"specular", {{"enabled", false}}},
                  {"lights", {{{"type", "directional"}, {"direction", {0, -1, 0.9}}}}}};
   params["model"] = upload_glb(client, quad_glb(opaque_middle_right_png(), json::object()));
   const auto [opaque_left, opaque_right] = floor_level_in_thirds(render_ok(client, params));
@@ -239,9 +251,14 @@ TEST_F(GltfMaterials, UnlitShowsTheBaseColourWithoutBands) {
     img.rgba.assign(4 * 4 * 4, 255);
     return img;
   }());
-  const json look = {{"width", 128}, {"height", 128}, {"outline", {{"enabled", false}}},
-                     {"shading", {{"mode", "cel"}, {"steps", 3}}}, {"specular", {{"enabled", false}}},
-                     {"rim", {{"enabled", false}}}, {"ambient", 0.2}, {"camera", {{"yaw", 0}, {"pitch", 0}}},
+  const json look = {{"width", 128},
+                     {"height", 128},
+                     {"outline", {{"enabled", false}}},
+                     {"shading", {{"mode", "cel"}, {"steps", 3}}},
+                     {"specular", {{"enabled", false}}},
+                     {"rim", {{"enabled", false}}},
+                     {"ambient", 0.2},
+                     {"camera", {{"yaw", 0}, {"pitch", 0}}},
                      {"lights", {{{"type", "directional"}, {"direction", {-0.95, 0, -0.3}}, {"intensity", 1}}}}};
   json params = look;
   params["model"] = upload_glb(client, quad_glb(white, {{"extensions", {{"KHR_materials_unlit", json::object()}}}}));
@@ -254,7 +271,6 @@ TEST_F(GltfMaterials, UnlitShowsTheBaseColourWithoutBands) {
   EXPECT_NEAR(unlit.b, 124, 2);
   EXPECT_LT(lit.r + 10, unlit.r) << "the lit quad should sit in a darker band";
 }
-
 
 }  // namespace
 }  // namespace toond::test

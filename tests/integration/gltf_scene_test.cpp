@@ -18,8 +18,7 @@ using nlohmann::json;
 // A cube; scene 0 holds it once, scene 1 twice, side by side.
 std::string two_scene_glb() {
   GltfPrimitive cube;
-  cube.positions = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                    {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  cube.positions = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
   cube.indices = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
                   2, 3, 7, 2, 7, 6, 1, 2, 6, 1, 6, 5, 0, 4, 7, 0, 7, 3};
   GltfDocument doc;
@@ -37,7 +36,8 @@ std::string two_scene_glb() {
 
 httplib::Result upload(httplib::Client& client, const std::string& query, const std::string& bytes,
                        const std::string& name = "model.glb") {
-  return client.Post("/models" + query, httplib::MultipartFormDataItems{{"file", bytes, name, "application/octet-stream"}});
+  return client.Post("/models" + query,
+                     httplib::MultipartFormDataItems{{"file", bytes, name, "application/octet-stream"}});
 }
 
 std::size_t differing_pixels(const image::Image& a, const image::Image& b) {

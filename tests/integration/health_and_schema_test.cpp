@@ -31,8 +31,8 @@ TEST_F(HealthAndSchema, SchemaIsTheRenderParameterSchema) {
   const auto schema = nlohmann::json::parse(res->body);
   EXPECT_EQ(schema["type"], "object");
   EXPECT_EQ(schema["additionalProperties"], false);
-  for (const char* key : {"width", "height", "background", "camera", "lights", "ambient", "shading",
-                          "outline", "msaa", "model"}) {
+  for (const char* key :
+       {"width", "height", "background", "camera", "lights", "ambient", "shading", "outline", "msaa", "model"}) {
     EXPECT_TRUE(schema["properties"].contains(key)) << key;
   }
   EXPECT_EQ(schema["properties"]["shading"]["properties"]["rounding"]["enum"],

@@ -27,8 +27,7 @@ using Files = std::vector<std::pair<std::string, std::string>>;
 class MeshFormats : public SharedDaemonTest {
  protected:
   // Uploads files of tests/exported/blender; the stored model's id.
-  std::string upload_exported(const std::vector<std::string>& names, const std::string& query,
-                              int triangles) {
+  std::string upload_exported(const std::vector<std::string>& names, const std::string& query, int triangles) {
     auto client = daemon().client();
     httplib::MultipartFormDataItems items;
     for (const std::string& name : names) {
@@ -117,8 +116,7 @@ TEST_F(MeshFormats, ACubeRendersAlikeFromEveryFormat) {
 
 TEST_F(MeshFormats, ASmoothSheetRendersAlikeFromEveryFormatThatSmoothsByAngle) {
   const Triangles sheet = wavy_grid(24, 24);
-  expect_alike(sheet, {{{"m.stl", binary_stl(sheet, "solid sheet")}},
-                       {{"m.ply", ply(sheet, PlyForm::BinaryLittle)}}});
+  expect_alike(sheet, {{{"m.stl", binary_stl(sheet, "solid sheet")}}, {{"m.ply", ply(sheet, PlyForm::BinaryLittle)}}});
 }
 
 // Files written by a real exporter (tests/exported/blender/make.py, Blender
@@ -165,7 +163,8 @@ TEST_F(MeshFormats, TheUploadAnswerSaysWhichAxisWasUp) {
   EXPECT_EQ(up_of("walker.glb", ""), "y");
   EXPECT_EQ(up_of("part.stl", "?up=y"), "y");
   EXPECT_EQ(up_of("part.obj", "?up=z"), "z");
-  httplib::MultipartFormDataItems part{{"file", read_file(kBlender / "part.stl"), "part.stl", "application/octet-stream"}};
+  httplib::MultipartFormDataItems part{
+      {"file", read_file(kBlender / "part.stl"), "part.stl", "application/octet-stream"}};
   const auto bad = client.Post("/models?up=x", part);
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 400);

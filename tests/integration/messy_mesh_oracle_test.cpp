@@ -171,13 +171,15 @@ TEST_F(MessyMeshOracle, DefaultRimIsAVisibleContrastingRing) {
     }
     if (depth > 1.5) widths.push_back(depth);
   }
-  ASSERT_GT(widths.size(), static_cast<std::size_t>(kOracleRays / 4)) << "the rim shows on a quarter of the rim or more";
+  ASSERT_GT(widths.size(), static_cast<std::size_t>(kOracleRays / 4))
+      << "the rim shows on a quarter of the rim or more";
   std::sort(widths.begin(), widths.end());
   const double share = widths[widths.size() / 2] / (2.0 * disk.radius);
   const double mean_change = brightening / static_cast<double>(rim_pixels);
-  std::printf("[messy] default rim: on %zu of %d rays, median width %.1f px = %.1f %% of the silhouette, "
-              "brightens by %.2f (linear)\n", widths.size(), kOracleRays, widths[widths.size() / 2], 100.0 * share,
-              mean_change);
+  std::printf(
+      "[messy] default rim: on %zu of %d rays, median width %.1f px = %.1f %% of the silhouette, "
+      "brightens by %.2f (linear)\n",
+      widths.size(), kOracleRays, widths[widths.size() / 2], 100.0 * share, mean_change);
   EXPECT_GE(share, 0.03);
   EXPECT_LE(share, 0.08);
   EXPECT_GE(std::abs(mean_change), 0.15);
@@ -191,17 +193,17 @@ TEST_F(MessyMeshOracle, DefaultRimIsAVisibleContrastingRing) {
 TEST_F(MessyMeshOracle, HostileCubeOutlineHasNoSpike) {
   std::string hostile =
       "v -1 -1 -1\nv 1 -1 -1\nv -1 1 -1\nv 1 1 -1\nv -1 -1 1\nv 1 -1 1\nv -1 1 1\nv 1 1 1\n"
-      "v 0 1 1\n"              // 9: splits the top front edge, for the front face only
-      "v 1 1 1.000000001\n";   // 10: corner 8 again, a rounding error off
+      "v 0 1 1\n"             // 9: splits the top front edge, for the front face only
+      "v 1 1 1.000000001\n";  // 10: corner 8 again, a rounding error off
   for (int k = 0; k <= 20; ++k) hostile += "v " + std::to_string(-1.0 + 0.1 * k) + " -1 -1\n";  // 11..31
   hostile += "v -1 0 0.999999\n";  // 32: a micrometre inside the left face's edge
   hostile +=
-      "f 1 3 4\nf 1 4 2\n"              // back
-      "f 5 6 9\nf 6 8 9\nf 5 9 7\n"     // front, with the T-junction at 9
-      "f 1 2 6\nf 1 6 5\n"              // bottom
-      "f 3 7 10\nf 3 10 4\n"            // top, through the near-duplicate corner
+      "f 1 3 4\nf 1 4 2\n"                       // back
+      "f 5 6 9\nf 6 8 9\nf 5 9 7\n"              // front, with the T-junction at 9
+      "f 1 2 6\nf 1 6 5\n"                       // bottom
+      "f 3 7 10\nf 3 10 4\n"                     // top, through the near-duplicate corner
       "f 1 5 32\nf 1 32 7\nf 1 7 3\nf 5 7 32\n"  // left, with the sliver
-      "f 2 4 8\nf 2 8 6\n";             // right
+      "f 2 4 8\nf 2 8 6\n";                      // right
   for (int k = 0; k < 20; ++k) hostile += "f 1 " + std::to_string(11 + k) + " " + std::to_string(12 + k) + "\n";
 
   auto client = daemon().client();

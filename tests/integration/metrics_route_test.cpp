@@ -51,12 +51,9 @@ TEST(MetricsRoute, CountsRequestsByRouteAndStatusAndTimesRendersAndPasses) {
 
   // Each request is counted just after its answer went out: wait for them.
   const std::vector<std::pair<std::string, double>> expected = {
-      {request_series("POST", "/models", 201), 1},
-      {request_series("POST", "/render", 200), 2},
-      {request_series("POST", "/render", 400), 1},
-      {request_series("POST", "/models/{id}/render", 200), 1},
-      {request_series("GET", "/models/{id}", 404), 1},
-      {request_series("GET", "other", 404), 1},
+      {request_series("POST", "/models", 201), 1},     {request_series("POST", "/render", 200), 2},
+      {request_series("POST", "/render", 400), 1},     {request_series("POST", "/models/{id}/render", 200), 1},
+      {request_series("GET", "/models/{id}", 404), 1}, {request_series("GET", "other", 404), 1},
   };
   const std::string after = scrape_when(client, [&](const std::string& text) {
     for (const auto& [series, count] : expected) {

@@ -82,8 +82,8 @@ TEST_F(ModelRenderRoute, TheCliRendersAStoredModelThroughItsPath) {
   const ProcessResult run = run_process({TOON_BINARY, "render", "--server", daemon().url(), "--model", id, "--set",
                                          "width=40", "--set", "height=40", "-o", out.string()});
   ASSERT_EQ(run.status, 0) << run.err;
-  const std::string after = scrape_when(
-      client, [&](const std::string& text) { return counter_value(text, series) >= before + 1; });
+  const std::string after =
+      scrape_when(client, [&](const std::string& text) { return counter_value(text, series) >= before + 1; });
   EXPECT_EQ(counter_value(after, series), before + 1);
   std::ifstream file(out, std::ios::binary);
   const std::string png((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());

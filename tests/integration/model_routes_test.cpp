@@ -59,8 +59,7 @@ TEST_F(ModelRoutes, DifferentBytesGiveADifferentId) {
   auto with_texture = upload_files(client, folder, {"spot.obj", "spot.mtl", "spot_texture.png"});
   auto without_texture = upload_files(client, folder, {"spot.obj", "spot.mtl"});
   ASSERT_TRUE(with_texture && without_texture);
-  EXPECT_NE(nlohmann::json::parse(with_texture->body)["id"],
-            nlohmann::json::parse(without_texture->body)["id"]);
+  EXPECT_NE(nlohmann::json::parse(with_texture->body)["id"], nlohmann::json::parse(without_texture->body)["id"]);
   // The missing texture is a warning, not an error.
   EXPECT_FALSE(nlohmann::json::parse(without_texture->body)["warnings"].empty());
 }
@@ -68,8 +67,8 @@ TEST_F(ModelRoutes, DifferentBytesGiveADifferentId) {
 TEST_F(ModelRoutes, DeleteRemovesTheModel) {
   TOOND_REQUIRE_SHARED_MODELS();
   auto client = daemon().client();
-  auto res = upload_files(client, shared_models_dir() / "kenney-space-craft",
-                          {"craft_speederA.obj", "craft_speederA.mtl"});
+  auto res =
+      upload_files(client, shared_models_dir() / "kenney-space-craft", {"craft_speederA.obj", "craft_speederA.mtl"});
   ASSERT_TRUE(res);
   const std::string id = nlohmann::json::parse(res->body)["id"];
   auto deleted = client.Delete(("/models/" + id).c_str());
@@ -132,9 +131,8 @@ TEST_F(ModelRoutes, UploadThatIsNotMultipartIsRejected) {
 
 TEST_F(ModelRoutes, UnsafeFileNameIsRejectedWithItsPath) {
   auto client = daemon().client();
-  httplib::MultipartFormDataItems items = {
-      {"file", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "m.obj", "text/plain"},
-      {"file", "x", "../../etc/passwd", "text/plain"}};
+  httplib::MultipartFormDataItems items = {{"file", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "m.obj", "text/plain"},
+                                           {"file", "x", "../../etc/passwd", "text/plain"}};
   auto res = client.Post("/models", items);
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 400);

@@ -28,7 +28,8 @@ class NormalsByAngle : public SharedDaemonTest {
   // The distinct normals the normal layer shows where the cube covers it.
   std::size_t distinct_normals(const std::string& id) {
     auto client = daemon().client();
-    const image::Image layer = render_ok(client, {{"model", id}, {"output", "normal"}, {"width", 128}, {"height", 128}});
+    const image::Image layer =
+        render_ok(client, {{"model", id}, {"output", "normal"}, {"width", 128}, {"height", 128}});
     std::set<std::tuple<int, int, int>> seen;
     for (int y = 0; y < layer.height; ++y) {
       for (int x = 0; x < layer.width; ++x) {
@@ -78,9 +79,11 @@ TEST_F(NormalsByAngle, UpZTurnsATallFileUpright) {
   const json info = json::parse(res->body);
   EXPECT_EQ(info.at("up"), "z");
   auto client = daemon().client();
-  const image::Image depth =
-      render_ok(client, {{"model", info.at("id")}, {"output", "normal"}, {"width", 128}, {"height", 128},
-                         {"camera", {{"yaw", 0}, {"pitch", 0}}}});
+  const image::Image depth = render_ok(client, {{"model", info.at("id")},
+                                                {"output", "normal"},
+                                                {"width", 128},
+                                                {"height", 128},
+                                                {"camera", {{"yaw", 0}, {"pitch", 0}}}});
   int left = 128, right = -1, top = 128, bottom = -1;
   for (int y = 0; y < depth.height; ++y) {
     for (int x = 0; x < depth.width; ++x) {
@@ -95,9 +98,9 @@ TEST_F(NormalsByAngle, UpZTurnsATallFileUpright) {
 }
 
 TEST_F(NormalsByAngle, BadOptionsAreA400NamingThem) {
-  for (const auto& [query, path] : {std::pair{"?smooth_angle=abc", "?smooth_angle"},
-                                    std::pair{"?smooth_angle=181", "?smooth_angle"},
-                                    std::pair{"?smooth_angle=-1", "?smooth_angle"}, std::pair{"?up=x", "?up"}}) {
+  for (const auto& [query, path] :
+       {std::pair{"?smooth_angle=abc", "?smooth_angle"}, std::pair{"?smooth_angle=181", "?smooth_angle"},
+        std::pair{"?smooth_angle=-1", "?smooth_angle"}, std::pair{"?up=x", "?up"}}) {
     auto res = upload(query);
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, 400) << query << ": " << res->body;

@@ -27,7 +27,9 @@ class NumericalStress : public SharedDaemonTest {
  public:
   // No result cache: a repeated request must be rendered again, so that two
   // renders of the same input can be compared byte for byte.
-  static void SetUpTestSuite() { daemon_ = std::make_unique<Daemon>(std::filesystem::path{}, std::vector<std::string>{"--result-cache-mb", "0"}); }
+  static void SetUpTestSuite() {
+    daemon_ = std::make_unique<Daemon>(std::filesystem::path{}, std::vector<std::string>{"--result-cache-mb", "0"});
+  }
 
  protected:
   static std::string upload(const std::string& obj, const std::string& name = "model.obj") {
@@ -57,7 +59,8 @@ class NumericalStress : public SharedDaemonTest {
 
   // Pixels that cannot come from the grey pipeline above.
   static std::size_t garbage_pixels(const image::Image& img, double ambient, Rgb background = {153, 153, 153}) {
-    const int floor_byte = static_cast<int>(std::floor(255.0 * std::pow(ambient, 1.0 / 2.4) * 1.055 - 0.055 * 255.0)) - 2;
+    const int floor_byte =
+        static_cast<int>(std::floor(255.0 * std::pow(ambient, 1.0 / 2.4) * 1.055 - 0.055 * 255.0)) - 2;
     std::size_t bad = 0;
     for (int y = 0; y < img.height; ++y)
       for (int x = 0; x < img.width; ++x) {
@@ -256,7 +259,8 @@ TEST_F(NumericalStress, ShadowTouchesItsCasterAtTheContact) {
       ++rows;
       gaps += darkened(left - 2, y) ? 0 : 1;
       bool full_length = true;
-      for (int x = std::max(0, left - (right - left) * 9 / 10); x < left - 2; ++x) full_length = full_length && darkened(x, y);
+      for (int x = std::max(0, left - (right - left) * 9 / 10); x < left - 2; ++x)
+        full_length = full_length && darkened(x, y);
       short_rows += full_length ? 0 : 1;
     }
     EXPECT_GT(rows, 20u) << "map " << map_size << ": the shadow reaches the cube on that many rows";
@@ -286,8 +290,10 @@ TEST_F(NumericalStress, DegenerateMeshesRenderSanely) {
       const std::size_t end = sphere.find('\n', pos);
       const std::string line = sphere.substr(pos, end - pos);
       pos = end + 1;
-      if (line.rfind("v ", 0) == 0) duplicated += line + "\n" + line + "\n";
-      else if (line.rfind("vn ", 0) == 0) duplicated += line + "\n" + line + "\n";
+      if (line.rfind("v ", 0) == 0)
+        duplicated += line + "\n" + line + "\n";
+      else if (line.rfind("vn ", 0) == 0)
+        duplicated += line + "\n" + line + "\n";
       else if (line.rfind("f ", 0) == 0) {
         // Vertex i (1-based) is now 2i-1 and 2i; normals likewise.
         std::string face = "f";
@@ -310,9 +316,10 @@ TEST_F(NumericalStress, DegenerateMeshesRenderSanely) {
   const std::string dense = sphere_obj(256, 128);
 
   auto client = daemon().client();
-  for (const auto& [name, obj] : std::map<std::string, std::string>{
-           {"degenerate triangles", degenerate}, {"bad normals", normals},
-           {"duplicated vertices", duplicated}, {"dense", dense}}) {
+  for (const auto& [name, obj] : std::map<std::string, std::string>{{"degenerate triangles", degenerate},
+                                                                    {"bad normals", normals},
+                                                                    {"duplicated vertices", duplicated},
+                                                                    {"dense", dense}}) {
     const std::string id = upload(obj, "stress.obj");
     ASSERT_FALSE(id.empty()) << name;
     json params = grey_params(id);

@@ -15,9 +15,9 @@
 #include "image/png_codec.h"
 #include "image/srgb.h"
 #include "support/generated_models.h"
-#include "support/shared_models.h"
 #include "support/golden_compare.h"
 #include "support/image_checks.h"
+#include "support/shared_models.h"
 #include "test_client.h"
 
 namespace toond::test {
@@ -75,7 +75,8 @@ class OutputLayers : public SharedDaemonTest {
   static std::string png_of(const json& params) {
     auto res = post(params);
     if (!res || res->status != 200) {
-      ADD_FAILURE() << params.dump() << " answered " << (res ? std::to_string(res->status) + ": " + res->body : "nothing");
+      ADD_FAILURE() << params.dump() << " answered "
+                    << (res ? std::to_string(res->status) + ": " + res->body : "nothing");
       return {};
     }
     EXPECT_EQ(res->get_header_value("Content-Type"), "image/png");
@@ -88,7 +89,10 @@ class OutputLayers : public SharedDaemonTest {
       auto client = daemon().client();
       return upload_obj_text(client, sphere_obj(64, 32), "sphere.obj");
     }();
-    return {{"model", sphere}, {"width", 96}, {"height", 96}, {"output", output},
+    return {{"model", sphere},
+            {"width", 96},
+            {"height", 96},
+            {"output", output},
             {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}}};
   }
 };
@@ -196,8 +200,8 @@ TEST_F(OutputLayers, AntialiasedLinesOverTheBareColourDifferOnlyByTheSamplesThey
       }
       over_golden += !golden_ok;
     }
-    std::printf("[lines] %s: %zu partly covered pixels, %zu off by more than %d levels\n", look.dump().c_str(),
-                partial, over_golden, kGoldenLevels);
+    std::printf("[lines] %s: %zu partly covered pixels, %zu off by more than %d levels\n", look.dump().c_str(), partial,
+                over_golden, kGoldenLevels);
     EXPECT_GT(partial, 20u) << look.dump() << ": antialiased lines have partly covered pixels";
     EXPECT_EQ(over_bound, 0u) << look.dump() << ": worst excess " << worst_excess;
     // The edges method blends its lines by coverage in the colour render
@@ -270,10 +274,13 @@ TEST_F(OutputLayers, ATwoObjectSceneNumbersItsObjects) {
   auto client = daemon().client();
   const std::string sphere = upload_obj_text(client, sphere_obj(32, 16), "ball.obj");
   const std::string cube = upload_obj_text(client, cube_obj(0.8), "box.obj");
-  const json params = {{"width", 128}, {"height", 64}, {"output", "id"},
+  const json params = {{"width", 128},
+                       {"height", 64},
+                       {"output", "id"},
                        {"camera", {{"yaw", 0}, {"pitch", 0}}},
-                       {"objects", {{{"model", sphere}, {"transform", {{"translate", {-1.5, 0, 0}}}}},
-                                    {{"model", cube}, {"transform", {{"translate", {1.5, 0, 0}}}}}}}};
+                       {"objects",
+                        {{{"model", sphere}, {"transform", {{"translate", {-1.5, 0, 0}}}}},
+                         {{"model", cube}, {"transform", {{"translate", {1.5, 0, 0}}}}}}}};
   const PilImage ids = decode_with_pil(png_of(params), true);
   ASSERT_EQ(ids.width, 128);
   EXPECT_EQ(ids.mode, "P");
@@ -370,7 +377,10 @@ TEST_F(OutputLayers, EachLayerWorksWithASheet) {
 
 TEST_F(OutputLayers, TheDataLayersRunNoShadingAndNoOutline) {
   for (const char* output : {"depth", "normal", "id"}) {
-    auto res = post({{"width", 32}, {"height", 32}, {"output", output}, {"shadows", {{"enabled", true}}},
+    auto res = post({{"width", 32},
+                     {"height", 32},
+                     {"output", output},
+                     {"shadows", {{"enabled", true}}},
                      {"floor", {{"enabled", true}}}});
     ASSERT_TRUE(res);
     ASSERT_EQ(res->status, 200) << res->body;
@@ -386,8 +396,8 @@ TEST_F(OutputLayers, TheCliAsksForALayerWithOutput) {
   ASSERT_EQ(r.status, 0) << r.err;
   const image::Image lines = image::decode_png(read_file(png));
   EXPECT_EQ(lines.pixel(0, 0)[3], 0) << "the lines layer is clear where there is no line";
-  const auto bad = run_process({TOON_BINARY, "render", "--output", "albedo", "-o", png.string(), "--server",
-                                daemon().url()});
+  const auto bad =
+      run_process({TOON_BINARY, "render", "--output", "albedo", "-o", png.string(), "--server", daemon().url()});
   EXPECT_NE(bad.status, 0);
   EXPECT_NE(bad.err.find("output"), std::string::npos) << bad.err;
 }

@@ -59,7 +59,8 @@ class ReferenceRender : public SharedDaemonTest {
     const struct {
       const char* label;
       int msaa, supersample, map;
-    } ladder[] = {{"msaa 1, map 1024", 1, 1, 1024}, {"msaa 4, map 2048 (default)", 4, 1, 2048},
+    } ladder[] = {{"msaa 1, map 1024", 1, 1, 1024},
+                  {"msaa 4, map 2048 (default)", 4, 1, 2048},
                   {"supersample 2 × msaa 4, map 4096", 4, 2, 4096}};
     double previous = 1e9;
     for (const auto& rung : ladder) {
@@ -68,8 +69,8 @@ class ReferenceRender : public SharedDaemonTest {
       params["supersample"] = rung.supersample;
       if (scene.contains("shadows")) params["shadows"]["map_size"] = rung.map;
       const ImageError e = image_error(render_ok(client, params), ref);
-      std::printf("[reference] %s, %s: mean abs error %.5f, %.2f %% of pixels off\n", name, rung.label,
-                  e.mean_abs, e.percent_off);
+      std::printf("[reference] %s, %s: mean abs error %.5f, %.2f %% of pixels off\n", name, rung.label, e.mean_abs,
+                  e.percent_off);
       EXPECT_LT(e.mean_abs, previous) << name << ": " << rung.label;
       previous = e.mean_abs;
     }

@@ -44,12 +44,13 @@ TEST_F(Render, DemoModelRendersAtTheRequestedSize) {
 TEST_F(Render, AWireframeWithoutMultisamplingLeavesTheImageOpaque) {
   auto client = daemon().client();
   for (int msaa : {1, 4}) {
-    const json request = {{"width", 160}, {"height", 128}, {"msaa", msaa},
-                          {"outline", {{"method", "wireframe"}, {"width", 2.5}}}};
+    const json request = {
+        {"width", 160}, {"height", 128}, {"msaa", msaa}, {"outline", {{"method", "wireframe"}, {"width", 2.5}}}};
     const auto img = render_ok(client, request);
     json unlined = request;
     unlined["outline"]["enabled"] = false;
-    EXPECT_GT(differing_share(img, render_ok(client, unlined), 3), 0.01) << "msaa " << msaa << ": the wireframe is drawn";
+    EXPECT_GT(differing_share(img, render_ok(client, unlined), 3), 0.01)
+        << "msaa " << msaa << ": the wireframe is drawn";
     std::size_t translucent = 0;
     for (std::size_t i = 3; i < img.rgba.size(); i += 4) translucent += img.rgba[i] != 255;
     EXPECT_EQ(translucent, 0u) << "msaa " << msaa;
@@ -172,8 +173,12 @@ TEST_F(Render, NormalMapsChangeTheShading) {
     EXPECT_TRUE(res && (res->status == 200 || res->status == 201));
     const json info = json::parse(res->body);
     const std::string id = info["id"];
-    auto rendered = post_json(client, "/render", {{"model", id}, {"msaa", 1}, {"outline", {{"enabled", false}}},
-                                                  {"specular", {{"enabled", false}}}, {"shading", {{"base", "white"}}}});
+    auto rendered = post_json(client, "/render",
+                              {{"model", id},
+                               {"msaa", 1},
+                               {"outline", {{"enabled", false}}},
+                               {"specular", {{"enabled", false}}},
+                               {"shading", {{"base", "white"}}}});
     EXPECT_TRUE(rendered && rendered->status == 200);
     return image::decode_png(rendered->body);
   };
@@ -203,8 +208,11 @@ TEST_F(Render, VertexColoursAreTheBaseColour) {
       "v -1 -1 -1 0 0 1\nv 1 -1 -1 0 0 1\nv 1 1 -1 0 0 1\nv -1 1 -1 0 0 1\n"
       "f 1 2 3 4\nf 5 6 7 8\n";
   const std::string id = upload_obj_text(client, quad, "coloured.obj");
-  const auto img = render_ok(client, {{"model", id}, {"msaa", 1}, {"shading", {{"mode", "flat"}}},
-                                      {"camera", {{"yaw", 0}, {"pitch", 0}}}, {"outline", {{"enabled", false}}}});
+  const auto img = render_ok(client, {{"model", id},
+                                      {"msaa", 1},
+                                      {"shading", {{"mode", "flat"}}},
+                                      {"camera", {{"yaw", 0}, {"pitch", 0}}},
+                                      {"outline", {{"enabled", false}}}});
   EXPECT_EQ(rgb_at(img, img.width / 2, img.height / 2), (Rgb{255, 0, 0})) << "the front quad is red";
 }
 
@@ -247,8 +255,7 @@ void expect_closed_dark_ring(httplib::Client& client, json params, double width)
       if (!edge[static_cast<std::size_t>(y) * w + x]) continue;
       bool touches = false;
       for (int dy = -1; dy <= 1 && !touches; ++dy)
-        for (int dx = -1; dx <= 1 && !touches; ++dx)
-          touches = ring[static_cast<std::size_t>(y + dy) * w + x + dx];
+        for (int dx = -1; dx <= 1 && !touches; ++dx) touches = ring[static_cast<std::size_t>(y + dy) * w + x + dx];
       // Silhouette pixels whose neighbours are all model pixels or ring pixels
       // only; a background neighbour with no ring is a gap.
       bool background_neighbour = false;
@@ -366,8 +373,12 @@ TEST_F(Render, OutlineStaysClosedOnAGeneratedCube) {
 TEST_F(Render, SupersamplingSmoothsEdgesAtTheSameSize) {
   auto client = daemon().client();
   const std::string sphere = upload_obj_text(client, sphere_obj(64, 32), "sphere.obj");
-  json params = {{"model", sphere}, {"width", 128}, {"height", 96}, {"msaa", 1},
-                 {"outline", {{"enabled", false}}}, {"specular", {{"enabled", false}}}};
+  json params = {{"model", sphere},
+                 {"width", 128},
+                 {"height", 96},
+                 {"msaa", 1},
+                 {"outline", {{"enabled", false}}},
+                 {"specular", {{"enabled", false}}}};
   const auto sharp = render_ok(client, params);
   params["supersample"] = 3;
   auto res = post_json(client, "/render", params);

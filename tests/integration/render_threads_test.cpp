@@ -59,9 +59,8 @@ TEST(RenderThreads, TwoContextsDrawTheSameImagesAndBothForgetADeletedModel) {
   EXPECT_EQ(sample_value(res->body, "toond_gpu_models_loaded"), 2) << res->body;
 
   ASSERT_EQ(client.Delete(("/models/" + id).c_str())->status, 200);
-  const std::string after = scrape_when(client, [](const std::string& text) {
-    return sample_value(text, "toond_gpu_models_loaded") == 0;
-  });
+  const std::string after =
+      scrape_when(client, [](const std::string& text) { return sample_value(text, "toond_gpu_models_loaded") == 0; });
   EXPECT_EQ(sample_value(after, "toond_gpu_models_loaded"), 0);
   EXPECT_EQ(sample_value(after, "toond_gpu_model_bytes"), 0);
 }

@@ -70,8 +70,8 @@ TEST_F(RequestErrors, WrongType) {
 
 TEST_F(RequestErrors, ValueNotInEnum) {
   auto client = daemon().client();
-  expect_error(post_json(client, "/render", {{"shading", {{"rounding", "truncate"}}}}), 400,
-               "invalid_parameter", "/shading/rounding");
+  expect_error(post_json(client, "/render", {{"shading", {{"rounding", "truncate"}}}}), 400, "invalid_parameter",
+               "/shading/rounding");
   expect_error(post_json(client, "/render", {{"msaa", 3}}), 400, "invalid_parameter", "/msaa");
 }
 
@@ -83,18 +83,18 @@ TEST_F(RequestErrors, ArrayElementOutOfRange) {
 
 TEST_F(RequestErrors, RenderBeyondTheSampleBudgetNamesTheKnobToLower) {
   auto client = daemon().client();
-  const auto error = expect_error(
-      post_json(client, "/render", {{"width", 4096}, {"height", 4096}, {"supersample", 2}, {"msaa", 8}}), 422,
-      "limit_exceeded", "/msaa");
+  const auto error =
+      expect_error(post_json(client, "/render", {{"width", 4096}, {"height", 4096}, {"supersample", 2}, {"msaa", 8}}),
+                   422, "limit_exceeded", "/msaa");
   EXPECT_NE(error["message"].get<std::string>().find("samples"), std::string::npos);
-  expect_error(post_json(client, "/render", {{"width", 4096}, {"height", 4096}, {"supersample", 3}, {"msaa", 1}}),
-               422, "limit_exceeded", "/supersample");
+  expect_error(post_json(client, "/render", {{"width", 4096}, {"height", 4096}, {"supersample", 3}, {"msaa", 1}}), 422,
+               "limit_exceeded", "/supersample");
 }
 
 TEST_F(RequestErrors, MissingModel) {
   auto client = daemon().client();
-  expect_error(post_json(client, "/render", {{"model", "0123456789abcdef0123456789abcdef"}}), 404,
-               "unknown_model", "/model");
+  expect_error(post_json(client, "/render", {{"model", "0123456789abcdef0123456789abcdef"}}), 404, "unknown_model",
+               "/model");
 }
 
 TEST_F(RequestErrors, ModelIdThatIsNotAnId) {

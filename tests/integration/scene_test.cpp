@@ -151,14 +151,15 @@ TEST_F(Scene, RotationTurnsTheModel) {
 TEST_F(Scene, OneObjectWithoutTransformRendersExactlyLikeTheModel) {
   auto client = daemon().client();
   // Everything on: lines, highlight, rim, shadows and floor.
-  json params = {{"width", 200},
-                 {"height", 160},
-                 {"rim", {{"enabled", true}}},
-                 {"shadows", {{"enabled", true}}},
-                 {"floor", {{"enabled", true}}},
-                 {"outline", {{"method", {"hull", "edges"}}}},
-                 {"lights", {{{"type", "directional"}, {"direction", {-0.4, -0.5, -1}}},
-                             {{"type", "point"}, {"position", {1.5, 1, 2}}}}}};
+  json params = {
+      {"width", 200},
+      {"height", 160},
+      {"rim", {{"enabled", true}}},
+      {"shadows", {{"enabled", true}}},
+      {"floor", {{"enabled", true}}},
+      {"outline", {{"method", {"hull", "edges"}}}},
+      {"lights",
+       {{{"type", "directional"}, {"direction", {-0.4, -0.5, -1}}}, {{"type", "point"}, {"position", {1.5, 1, 2}}}}}};
   json single = params;
   single["model"] = sphere_;
   json scene = params;

@@ -33,7 +33,8 @@ fs::path copy_shaders() {
   const fs::path dir = make_temp_dir("toond-shaders");
   for (const auto& entry : fs::directory_iterator(TOOND_SHADER_SOURCE_DIR)) {
     const auto ext = entry.path().extension();
-    if (ext == ".vert" || ext == ".frag" || ext == ".geom" || ext == ".glsl") fs::copy_file(entry.path(), dir / entry.path().filename());
+    if (ext == ".vert" || ext == ".frag" || ext == ".geom" || ext == ".glsl")
+      fs::copy_file(entry.path(), dir / entry.path().filename());
   }
   return dir;
 }
@@ -52,7 +53,8 @@ std::size_t differing_pixels(const image::Image& a, const image::Image& b) {
   if (a.width != b.width || a.height != b.height) return static_cast<std::size_t>(-1);
   std::size_t n = 0;
   for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
-    if (!std::equal(a.rgba.begin() + static_cast<std::ptrdiff_t>(i), a.rgba.begin() + static_cast<std::ptrdiff_t>(i + 4),
+    if (!std::equal(a.rgba.begin() + static_cast<std::ptrdiff_t>(i),
+                    a.rgba.begin() + static_cast<std::ptrdiff_t>(i + 4),
                     b.rgba.begin() + static_cast<std::ptrdiff_t>(i))) {
       ++n;
     }
@@ -132,7 +134,8 @@ TEST_F(ShaderReload, AModuleEditRendersAndABrokenOneIsReportedAtItsOwnLine) {
   EXPECT_GT(differing_pixels(before, edited), 96u * 96u / 10) << "the module's edit did not change the image";
 
   write_text(module, with_line(original, "float broken = ;"));
-  const int broken_line = 1 + static_cast<int>(std::count(original.begin(), original.begin() + static_cast<long>(at), '\n'));
+  const int broken_line =
+      1 + static_cast<int>(std::count(original.begin(), original.begin() + static_cast<long>(at), '\n'));
   auto res = post_json(client, "/render", params_);
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 500) << res->body;
@@ -166,7 +169,8 @@ TEST_F(ShaderReload, AShaderDirThatIsNotAFolderStopsStartUp) {
   const auto missing = run_process({TOOND_BINARY, "--listen", "127.0.0.1:0", "--shader-dir", (dir_ / "nope").string()});
   EXPECT_EQ(missing.status, 2) << missing.err;
   EXPECT_NE(missing.err.find("--shader-dir"), std::string::npos) << missing.err;
-  const auto file = run_process({TOOND_BINARY, "--listen", "127.0.0.1:0", "--shader-dir", (dir_ / "toon.frag").string()});
+  const auto file =
+      run_process({TOOND_BINARY, "--listen", "127.0.0.1:0", "--shader-dir", (dir_ / "toon.frag").string()});
   EXPECT_EQ(file.status, 2) << file.err;
   EXPECT_NE(file.err.find("not a directory"), std::string::npos) << file.err;
 }

@@ -120,15 +120,17 @@ TEST_F(PixelArtSheet, AGivenPaletteIsAllThereIsAndEachBlockItsNearestColour) {
     hex.push_back(text);
     allowed.insert((std::uint32_t(r) << 16) | (std::uint32_t(g) << 8) | std::uint32_t(b));
   }
-  const json params = {{"width", 64},
-                       {"height", 64},
-                       {"background", kTransparent},
-                       // Lines as given: the small renders below draw the request's own.
-                       {"sheet", {{"frames", 4}, {"pixel_art", {{"scale", k}, {"palette", hex}, {"lines", "as_given"}}}}}};
+  const json params = {
+      {"width", 64},
+      {"height", 64},
+      {"background", kTransparent},
+      // Lines as given: the small renders below draw the request's own.
+      {"sheet", {{"frames", 4}, {"pixel_art", {{"scale", k}, {"palette", hex}, {"lines", "as_given"}}}}}};
   const std::string png = body_of(params, "image/png");
   ASSERT_FALSE(png.empty());
   const image::Image sheet = image::decode_png(png);
-  for (std::uint32_t c : visible_colours(sheet)) EXPECT_TRUE(allowed.count(c)) << std::hex << c << " is not in the palette";
+  for (std::uint32_t c : visible_colours(sheet))
+    EXPECT_TRUE(allowed.count(c)) << std::hex << c << " is not in the palette";
 
   auto nearest = [&](const std::uint8_t* p) {
     std::uint32_t best = 0;
@@ -235,8 +237,8 @@ LineShares line_shares(const ArtPixels& art) {
       ++covered;
       lines += k == '#';
       if (y < top_end) ++top_covered, top_lines += k == '#';
-      const bool by_background = art.at(x - 1, y) == ' ' || art.at(x + 1, y) == ' ' || art.at(x, y - 1) == ' ' ||
-                                 art.at(x, y + 1) == ' ';
+      const bool by_background =
+          art.at(x - 1, y) == ' ' || art.at(x + 1, y) == ' ' || art.at(x, y - 1) == ' ' || art.at(x, y + 1) == ' ';
       shares.open_border += by_background && k != '#';
     }
   }
@@ -354,8 +356,8 @@ TEST_F(PixelArtSheet, SpriteLinesLeaveOutCreasesBetweenAreasTooNarrowToRead) {
   const ArtPixels art = art_pixels(sheet, k);
   const LineShares shares = line_shares(art);
   const int short_rows = rows_without_a_readable_run(art);
-  std::printf("thin rod: %d rows without %d own-colour pixels in a row, line share %.2f\n", short_rows,
-              kReadableRun, shares.whole);
+  std::printf("thin rod: %d rows without %d own-colour pixels in a row, line share %.2f\n", short_rows, kReadableRun,
+              shares.whole);
   int covered = 0;
   for (const char c : art.kind) covered += c != ' ';
   ASSERT_GT(covered, 60) << "the rod is drawn along the tile";
@@ -385,7 +387,8 @@ TEST_F(PixelArtSheet, BadValuesAndLimitsAreRefusedBeforeRendering) {
       {json{{"width", 48}, {"height", 48}, {"sheet", {{"frame_ms", 0}}}}, 400, "/sheet/frame_ms"},
       // 64 frames × 8 pitches of 512² is over the default --max-output-pixels
       // (4096²), as pixel art and as an animation alike.
-      {json{{"sheet", {{"frames", 64}, {"pitches", many_pitches}, {"pixel_art", json::object()}}}}, 422, "/sheet/frames"},
+      {json{{"sheet", {{"frames", 64}, {"pitches", many_pitches}, {"pixel_art", json::object()}}}}, 422,
+       "/sheet/frames"},
       {json{{"sheet", {{"frames", 64}, {"pitches", many_pitches}, {"animate", true}}}}, 422, "/sheet/frames"},
   };
 
@@ -462,9 +465,11 @@ TEST_F(PixelArtSheet, AnimatedPixelArtIsBlocksOnOnePaletteInEveryFrame) {
 
 // Pillow, not libwebp through our own test code, opens the animation.
 TEST_F(PixelArtSheet, PillowOpensTheAnimationWithEveryFrame) {
-  const auto probe = run_process({"/usr/bin/python3", "-c", "from PIL import features; assert features.check('webp_anim')"});
+  const auto probe =
+      run_process({"/usr/bin/python3", "-c", "from PIL import features; assert features.check('webp_anim')"});
   if (probe.status != 0) GTEST_SKIP() << "/usr/bin/python3 with Pillow's animated WebP is absent (Debian: python3-pil)";
-  const std::string webp = body_of({{"width", 32}, {"height", 32}, {"sheet", {{"frames", 5}, {"animate", true}}}}, "image/webp");
+  const std::string webp =
+      body_of({{"width", 32}, {"height", 32}, {"sheet", {{"frames", 5}, {"animate", true}}}}, "image/webp");
   ASSERT_FALSE(webp.empty());
   const auto file = make_temp_dir("toond-anim") / "turntable.webp";
   std::ofstream(file, std::ios::binary) << webp;
@@ -476,7 +481,8 @@ TEST_F(PixelArtSheet, PillowOpensTheAnimationWithEveryFrame) {
                               " 'animated': im.is_animated, 'loop': im.info.get('loop')}))\n",
                               file.string()});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(json::parse(r.out), (json{{"format", "WEBP"}, {"size", {32, 32}}, {"frames", 5}, {"animated", true}, {"loop", 0}}));
+  EXPECT_EQ(json::parse(r.out),
+            (json{{"format", "WEBP"}, {"size", {32, 32}}, {"frames", 5}, {"animated", true}, {"loop", 0}}));
 }
 
 TEST_F(PixelArtSheet, TheCliWritesTheWebpItIsAnswered) {

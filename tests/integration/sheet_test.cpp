@@ -107,7 +107,8 @@ TEST_F(Sheet, EachTileIsTheSingleRenderOfItsViewUnderTheSharedFraming) {
     for (const auto& [name, frame] : atlas["frames"].items()) {
       json view = camera;
       view.update({{"yaw", frame["yaw"]}, {"pitch", frame["pitch"]}, {"distance", distance}});
-      const image::Image single = render_ok(client, {{"width", 64}, {"height", 64}, {"camera", view}, {"lights", view_light}});
+      const image::Image single =
+          render_ok(client, {{"width", 64}, {"height", 64}, {"camera", view}, {"lights", view_light}});
       const GoldenDiff diff = compare_golden(single, tile_of(sheet, frame["frame"]));
       EXPECT_TRUE(diff.passes()) << camera.dump() << " frame " << name << " (yaw " << frame["yaw"] << ", pitch "
                                  << frame["pitch"] << "): " << diff.pixels_over << " pixels differ by more than "
@@ -140,15 +141,18 @@ TEST_F(Sheet, TheModelKeepsItsSizeFromFrameToFrame) {
   const image::Image sheet = image::decode_png(png);
   const json atlas = atlas_of(png);
   std::set<int> heights;
-  for (const auto& [name, frame] : atlas["frames"].items()) heights.insert(silhouette_height(tile_of(sheet, frame["frame"])));
+  for (const auto& [name, frame] : atlas["frames"].items())
+    heights.insert(silhouette_height(tile_of(sheet, frame["frame"])));
   ASSERT_FALSE(heights.empty());
-  EXPECT_LE(*heights.rbegin() - *heights.begin(), 1) << "tile heights from " << *heights.begin() << " to "
-                                                      << *heights.rbegin();
+  EXPECT_LE(*heights.rbegin() - *heights.begin(), 1)
+      << "tile heights from " << *heights.begin() << " to " << *heights.rbegin();
   EXPECT_NEAR(*heights.begin(), alone_corner, 1) << "every frame has the scale of the widest view";
 }
 
 TEST_F(Sheet, TheAtlasDescribesTheSheetItRidesIn) {
-  const json params = {{"width", 40}, {"height", 32}, {"camera", {{"preset", "isometric"}}},
+  const json params = {{"width", 40},
+                       {"height", 32},
+                       {"camera", {{"preset", "isometric"}}},
                        {"sheet", {{"frames", 8}, {"columns", 3}, {"yaw_start", 0}, {"padding", 2}}}};
   const std::string png = sheet_png(params);
   ASSERT_FALSE(png.empty());
@@ -200,8 +204,8 @@ TEST_F(Sheet, LimitsAndBadValuesAreRefusedBeforeRendering) {
   auto client = daemon().client();
   // 64 frames × 8 pitches of 512² is 134 M pixels, over the default
   // --max-output-pixels (4096²) that any single 512² render is far within.
-  auto over = post_json(client, "/render",
-                        {{"sheet", {{"frames", 64}, {"pitches", {-60, -40, -20, 0, 20, 40, 60, 80}}}}});
+  auto over =
+      post_json(client, "/render", {{"sheet", {{"frames", 64}, {"pitches", {-60, -40, -20, 0, 20, 40, 60, 80}}}}});
   ASSERT_TRUE(over);
   EXPECT_EQ(over->status, 422) << over->body;
   EXPECT_EQ(error_of(over)["code"], "limit_exceeded");
@@ -250,8 +254,9 @@ TEST_F(Sheet, AnotherDecoderReadsTheSheetAndItsAtlas) {
   std::ifstream in(pixels, std::ios::binary);
   const std::string theirs((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const image::Image ours = image::decode_png(png);
-  EXPECT_TRUE(theirs.size() == ours.rgba.size() && std::equal(ours.rgba.begin(), ours.rgba.end(), theirs.begin(),
-                                                              [](std::uint8_t a, char b) { return a == static_cast<std::uint8_t>(b); }))
+  EXPECT_TRUE(theirs.size() == ours.rgba.size() &&
+              std::equal(ours.rgba.begin(), ours.rgba.end(), theirs.begin(),
+                         [](std::uint8_t a, char b) { return a == static_cast<std::uint8_t>(b); }))
       << "PIL's pixels differ from the sheet's";
 }
 
@@ -283,8 +288,8 @@ TEST_F(Sheet, TheCliSetsTheLightsSpace) {
   ASSERT_EQ(model.status, 0) << model.err;
   auto client = daemon().client();
   const json light = {{"type", "directional"}, {"direction", {-0.4, -0.5, -1}}, {"space", "view"}};
-  const image::Image asked = render_ok(
-      client, {{"width", 48}, {"height", 48}, {"camera", {{"yaw", 180}}}, {"lights", {light}}});
+  const image::Image asked =
+      render_ok(client, {{"width", 48}, {"height", 48}, {"camera", {{"yaw", 180}}}, {"lights", {light}}});
   EXPECT_EQ(image::decode_png(read_file(dir / "view.png")).rgba, asked.rgba);
   EXPECT_NE(image::decode_png(read_file(dir / "model.png")).rgba, asked.rgba);
   const auto bad = cli("world", "bad.png");

@@ -256,10 +256,10 @@ TEST(StoreBound, TwoReplicasOnOneStoreEvictUnderLoad) {
     }
     // Each replica let models go; between them, each of the 25 models that
     // is not kept, exactly once.
-    const double by_a = counter_value(scrape_when(ca, [](const std::string&) { return true; }),
-                                      "toond_store_evictions_total");
-    const double by_b = counter_value(scrape_when(cb, [](const std::string&) { return true; }),
-                                      "toond_store_evictions_total");
+    const double by_a =
+        counter_value(scrape_when(ca, [](const std::string&) { return true; }), "toond_store_evictions_total");
+    const double by_b =
+        counter_value(scrape_when(cb, [](const std::string&) { return true; }), "toond_store_evictions_total");
     EXPECT_GT(by_a, 0);
     EXPECT_GT(by_b, 0);
     EXPECT_EQ(by_a + by_b, static_cast<double>(25 - entries.size()));

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "scene/position_weld.h"
+#include "scene/mesh/position_weld.h"
 
 namespace toond::scene {
 namespace {

@@ -70,16 +70,14 @@ std::filesystem::path make_temp_dir(const std::string& prefix) {
   throw std::runtime_error("cannot create a temporary directory");
 }
 
-Daemon::Daemon(std::filesystem::path data_dir, std::vector<std::string> extra_args)
-    : data_dir_(std::move(data_dir)) {
+Daemon::Daemon(std::filesystem::path data_dir, std::vector<std::string> extra_args) : data_dir_(std::move(data_dir)) {
   if (data_dir_.empty()) {
     data_dir_ = make_temp_dir("toond-test");
     own_data_dir_ = true;
   }
   int out_pipe[2];
   if (pipe(out_pipe) != 0) throw std::runtime_error("pipe failed");
-  std::vector<std::string> args = {TOOND_BINARY, "--listen", "127.0.0.1:0", "--data-dir",
-                                   data_dir_.string()};
+  std::vector<std::string> args = {TOOND_BINARY, "--listen", "127.0.0.1:0", "--data-dir", data_dir_.string()};
   args.insert(args.end(), extra_args.begin(), extra_args.end());
   auto argv = c_strings(args);
   posix_spawn_file_actions_t actions;
@@ -146,8 +144,7 @@ void Daemon::crash() {
   pid_ = -1;
 }
 
-ProcessResult run_process(const std::vector<std::string>& argv_in,
-                          const std::vector<std::string>& extra_env) {
+ProcessResult run_process(const std::vector<std::string>& argv_in, const std::vector<std::string>& extra_env) {
   std::vector<std::string> args = argv_in;
   auto argv = c_strings(args);
   std::vector<std::string> env_strings = environment_with(extra_env);

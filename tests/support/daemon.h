@@ -48,7 +48,6 @@ struct ProcessResult {
   std::string out;
   std::string err;
 };
-ProcessResult run_process(const std::vector<std::string>& argv,
-                          const std::vector<std::string>& extra_env = {});
+ProcessResult run_process(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env = {});
 
 }  // namespace toond::test

@@ -80,9 +80,9 @@ int main(int argc, char** argv) {
 
   draco::Encoder encoder;
   if (bits > 0) {
-    for (const auto type : {draco::GeometryAttribute::POSITION, draco::GeometryAttribute::NORMAL,
-                            draco::GeometryAttribute::COLOR, draco::GeometryAttribute::TEX_COORD,
-                            draco::GeometryAttribute::GENERIC}) {
+    for (const auto type :
+         {draco::GeometryAttribute::POSITION, draco::GeometryAttribute::NORMAL, draco::GeometryAttribute::COLOR,
+          draco::GeometryAttribute::TEX_COORD, draco::GeometryAttribute::GENERIC}) {
       encoder.SetAttributeQuantization(type, bits);
     }
   }

@@ -37,10 +37,12 @@ std::string sphere_obj(int segments, int rings, double radius, glm::dvec3 centre
   for (int r = 0; r < rings; ++r) {
     for (int s = 0; s < segments; ++s) {
       const int a = index(r, s), b = index(r + 1, s), c = index(r + 1, s + 1), d = index(r, s + 1);
-      if (r != 0) obj += "f " + std::to_string(a) + "//" + std::to_string(a) + " " + std::to_string(b) + "//" +
-                         std::to_string(b) + " " + std::to_string(d) + "//" + std::to_string(d) + "\n";
-      if (r != rings - 1) obj += "f " + std::to_string(b) + "//" + std::to_string(b) + " " + std::to_string(c) +
-                                 "//" + std::to_string(c) + " " + std::to_string(d) + "//" + std::to_string(d) + "\n";
+      if (r != 0)
+        obj += "f " + std::to_string(a) + "//" + std::to_string(a) + " " + std::to_string(b) + "//" +
+               std::to_string(b) + " " + std::to_string(d) + "//" + std::to_string(d) + "\n";
+      if (r != rings - 1)
+        obj += "f " + std::to_string(b) + "//" + std::to_string(b) + " " + std::to_string(c) + "//" +
+               std::to_string(c) + " " + std::to_string(d) + "//" + std::to_string(d) + "\n";
     }
   }
   return obj;

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "draco_decode/draco_wire.h"
-#include "scene/child_process.h"
+#include "scene/import/child_process.h"
 
 namespace toond::test {
 namespace {
@@ -30,7 +30,8 @@ const char* accessor_bytes(const GltfParts& plain, const json& accessor) {
 
 std::uint32_t u32_at(const std::string& bytes, std::size_t at) {
   std::uint32_t v = 0;
-  for (std::size_t i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+  for (std::size_t i = 0; i < 4; ++i)
+    v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
   return v;
 }
 
@@ -94,7 +95,7 @@ GltfParts draco_compress(const GltfParts& plain, const DracoOptions& options) {
           {{"buffer", 0}, {"byteOffset", out.bin.size()}, {"byteLength", encoded.bytes.size()}});
       out.bin += encoded.bytes;
       primitive["extensions"][kDracoExtension] = {{"bufferView", out.json["bufferViews"].size() - 1},
-                                             {"attributes", encoded.ids}};
+                                                  {"attributes", encoded.ids}};
       const auto describe_decoded = [&](const json& index, std::size_t count) {
         json& accessor = out.json["accessors"][index.get<std::size_t>()];
         accessor["count"] = count;

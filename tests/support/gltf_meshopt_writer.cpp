@@ -73,15 +73,21 @@ json compressed_view(GltfParts& parts, const void* elements, std::size_t count, 
   list_extension(parts.json, "extensionsUsed", kMeshoptExtension);
   list_extension(parts.json, "extensionsRequired", kMeshoptExtension);
   json view = {{"buffer", 1}, {"byteOffset", view_offset}, {"byteLength", count * stride}};
-  json extension = {{"buffer", 0},    {"byteOffset", stream_offset}, {"byteLength", stream.size()},
-                    {"byteStride", stride}, {"count", count},         {"mode", mode}};
+  json extension = {{"buffer", 0},
+                    {"byteOffset", stream_offset},
+                    {"byteLength", stream.size()},
+                    {"byteStride", stride},
+                    {"count", count},
+                    {"mode", mode}};
   if (filter != "NONE") extension["filter"] = filter;
   view["extensions"] = {{kMeshoptExtension, extension}};
   return view;
 }
 
 std::size_t component_size(int component_type) {
-  return component_type == 5120 || component_type == 5121 ? 1 : component_type == 5122 || component_type == 5123 ? 2 : 4;
+  return component_type == 5120 || component_type == 5121   ? 1
+         : component_type == 5122 || component_type == 5123 ? 2
+                                                            : 4;
 }
 
 std::size_t component_count(const std::string& type) {
@@ -140,7 +146,8 @@ GltfParts meshopt_compress(const GltfParts& plain, MeshoptFallback fallback) {
   json& stand_in = out.json["buffers"][1];
   if (fallback != MeshoptFallback::StandIn) stand_in.erase("extensions");
   if (fallback == MeshoptFallback::Zeros) {
-    stand_in["uri"] = data_uri(std::string(stand_in["byteLength"].get<std::size_t>(), '\0'), "application/octet-stream");
+    stand_in["uri"] =
+        data_uri(std::string(stand_in["byteLength"].get<std::size_t>(), '\0'), "application/octet-stream");
     json& required = out.json["extensionsRequired"];
     required.erase(std::remove(required.begin(), required.end(), kMeshoptExtension), required.end());
     if (required.empty()) out.json.erase("extensionsRequired");

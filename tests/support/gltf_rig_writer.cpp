@@ -29,8 +29,8 @@ int append_float_accessor(GltfParts& parts, const std::vector<float>& values, co
 
 int append_joints_accessor(GltfParts& parts, const std::vector<std::uint16_t>& joints) {
   constexpr int kUnsignedShort = 5123;
-  return append_accessor(parts, joints.data(), joints.size() * sizeof(std::uint16_t), joints.size() / 4,
-                         kUnsignedShort, "VEC4");
+  return append_accessor(parts, joints.data(), joints.size() * sizeof(std::uint16_t), joints.size() / 4, kUnsignedShort,
+                         "VEC4");
 }
 
 GltfPrimitive bar_primitive(int rings) {
@@ -42,7 +42,8 @@ GltfPrimitive bar_primitive(int rings) {
   }
   for (int r = 0; r + 1 < rings; ++r) {
     for (std::uint32_t s = 0; s < 4; ++s) {
-      const std::uint32_t a = static_cast<std::uint32_t>(r) * 4 + s, b = static_cast<std::uint32_t>(r) * 4 + (s + 1) % 4;
+      const std::uint32_t a = static_cast<std::uint32_t>(r) * 4 + s,
+                          b = static_cast<std::uint32_t>(r) * 4 + (s + 1) % 4;
       const std::uint32_t c = b + 4, d = a + 4;
       bar.indices.insert(bar.indices.end(), {a, c, b, a, d, c});
     }

@@ -40,7 +40,8 @@ GltfDocument gltf_twin(const scene::Model& model, const scene::Bundle& bundle) {
   all.positions = mesh.positions;
   all.normals = mesh.normals;
   for (const glm::vec2& t : mesh.texcoords) all.texcoords.emplace_back(t.x, 1.0f - t.y);
-  for (const glm::vec3& c : mesh.colors) all.colours.emplace_back(srgb_decoded(c.r), srgb_decoded(c.g), srgb_decoded(c.b), 1.0f);
+  for (const glm::vec3& c : mesh.colors)
+    all.colours.emplace_back(srgb_decoded(c.r), srgb_decoded(c.g), srgb_decoded(c.b), 1.0f);
   std::vector<GltfPrimitive> primitives;
   for (const scene::Submesh& s : mesh.submeshes) {
     GltfPrimitive p = all;

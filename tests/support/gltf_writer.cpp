@@ -27,8 +27,8 @@ class BinaryWriter {
 };
 
 template <typename T>
-int add_accessor(BinaryWriter& writer, json& doc, const std::vector<T>& values, const char* type,
-                 int component_type, int components, bool bounds) {
+int add_accessor(BinaryWriter& writer, json& doc, const std::vector<T>& values, const char* type, int component_type,
+                 int components, bool bounds) {
   const int view = writer.add_view(values.data(), values.size() * sizeof(T), doc["bufferViews"]);
   json accessor = {{"bufferView", view}, {"componentType", component_type}, {"count", values.size()}, {"type", type}};
   if (bounds && !values.empty()) {
@@ -83,14 +83,15 @@ GltfParts build_gltf(const GltfDocument& document) {
     for (const GltfPrimitive& p : primitives) {
       json attributes = {{"POSITION", add_accessor(writer, doc, p.positions, "VEC3", 5126, 3, true)}};
       if (!p.normals.empty()) attributes["NORMAL"] = add_accessor(writer, doc, p.normals, "VEC3", 5126, 3, false);
-      if (!p.texcoords.empty()) attributes["TEXCOORD_0"] = add_accessor(writer, doc, p.texcoords, "VEC2", 5126, 2, false);
+      if (!p.texcoords.empty())
+        attributes["TEXCOORD_0"] = add_accessor(writer, doc, p.texcoords, "VEC2", 5126, 2, false);
       if (!p.tangents.empty()) attributes["TANGENT"] = add_accessor(writer, doc, p.tangents, "VEC4", 5126, 4, false);
       if (!p.colours.empty()) attributes["COLOR_0"] = add_accessor(writer, doc, p.colours, "VEC4", 5126, 4, false);
       json primitive = {{"attributes", attributes}, {"mode", p.mode}};
       if (!p.indices.empty()) {
         const int view = writer.add_view(p.indices.data(), p.indices.size() * 4, doc["bufferViews"], 34963);
-        doc["accessors"].push_back({{"bufferView", view}, {"componentType", 5125}, {"count", p.indices.size()},
-                                    {"type", "SCALAR"}});
+        doc["accessors"].push_back(
+            {{"bufferView", view}, {"componentType", 5125}, {"count", p.indices.size()}, {"type", "SCALAR"}});
         primitive["indices"] = doc["accessors"].size() - 1;
       }
       if (p.material >= 0) primitive["material"] = p.material;
@@ -128,7 +129,8 @@ GltfParts build_gltf(const GltfDocument& document) {
   for (const GltfMaterial& m : document.materials) {
     json material = {{"pbrMetallicRoughness",
                       {{"baseColorFactor", {m.base_colour.r, m.base_colour.g, m.base_colour.b, m.base_colour.a}}}}};
-    if (m.base_colour_image >= 0) material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", m.base_colour_image}};
+    if (m.base_colour_image >= 0)
+      material["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", m.base_colour_image}};
     if (m.normal_image >= 0) material["normalTexture"] = {{"index", m.normal_image}};
     material.merge_patch(m.json);
     doc["materials"].push_back(material);

@@ -17,10 +17,10 @@ namespace toond::test {
 
 struct GltfPrimitive {
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;    // empty, or one per position
-  std::vector<glm::vec2> texcoords;  // glTF orientation: v runs down the image
-  std::vector<glm::vec4> colours;    // linear RGBA, empty or one per position
-  std::vector<glm::vec4> tangents;   // xyz, w handedness; empty or one per position
+  std::vector<glm::vec3> normals;      // empty, or one per position
+  std::vector<glm::vec2> texcoords;    // glTF orientation: v runs down the image
+  std::vector<glm::vec4> colours;      // linear RGBA, empty or one per position
+  std::vector<glm::vec4> tangents;     // xyz, w handedness; empty or one per position
   std::vector<std::uint32_t> indices;  // empty: not indexed
   int mode = 4;                        // triangles
   int material = -1;

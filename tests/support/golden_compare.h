@@ -8,8 +8,8 @@
 
 namespace toond::test {
 
-inline constexpr int kGoldenLevels = 3;            // per channel, of 255
-inline constexpr std::size_t kGoldenPixels = 8;    // pixels allowed over it
+inline constexpr int kGoldenLevels = 3;          // per channel, of 255
+inline constexpr std::size_t kGoldenPixels = 8;  // pixels allowed over it
 
 struct GoldenDiff {
   bool same_size = true;

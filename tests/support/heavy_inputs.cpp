@@ -258,7 +258,8 @@ scene::Bundle skinned_chain(int n) {
       weights.insert(weights.end(), {1, 0, 0, 0});
     }
     for (std::uint32_t k = 0; r + 1 < joints && k < 4; ++k) {
-      const std::uint32_t a = static_cast<std::uint32_t>(r) * 4 + k, b = static_cast<std::uint32_t>(r) * 4 + (k + 1) % 4;
+      const std::uint32_t a = static_cast<std::uint32_t>(r) * 4 + k,
+                          b = static_cast<std::uint32_t>(r) * 4 + (k + 1) % 4;
       indices.insert(indices.end(), {a, b + 4, b, a, a + 4, b + 4});
     }
   }
@@ -279,8 +280,9 @@ scene::Bundle skinned_chain(int n) {
     inverse_binds.insert(inverse_binds.end(), {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -static_cast<float>(r), 0, 1});
   }
   j["scenes"] = {{{"nodes", {0, 1}}}};
-  j["skins"] = {{{"joints", joint_nodes},
-                 {"inverseBindMatrices", accessor(inverse_binds.data(), inverse_binds.size() * 4, joints, 5126, "MAT4")}}};
+  j["skins"] = {
+      {{"joints", joint_nodes},
+       {"inverseBindMatrices", accessor(inverse_binds.data(), inverse_binds.size() * 4, joints, 5126, "MAT4")}}};
   std::vector<float> times(kKeys);
   for (int k = 0; k < kKeys; ++k) times[static_cast<std::size_t>(k)] = 0.04f * static_cast<float>(k);
   const auto input = accessor(times.data(), times.size() * 4, times.size(), 5126, "SCALAR");

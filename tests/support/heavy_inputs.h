@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/bundle.h"
+#include "scene/import/bundle.h"
 
 namespace toond::test {
 

@@ -1,25 +1,22 @@
 #include "support/import_timing.h"
 
-#include <algorithm>
 #include <malloc.h>
+#include <algorithm>
 
 #include <ctime>
 #include <limits>
 #include <vector>
 
-#include "scene/bundle_import.h"
+#include "scene/import/bundle_import.h"
 
 namespace toond::test {
-namespace {
-
-// The calling thread's CPU time (user and system, page faults included):
-// the import runs on it alone, and time the scheduler gives to other
-// processes of a busy machine does not count.
 double thread_seconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
 }
+
+namespace {
 
 double seconds_to_import(const scene::Bundle& bundle, std::size_t* triangles = nullptr) {
   const double start = thread_seconds();

@@ -11,13 +11,18 @@ namespace toond::test {
 
 struct ScalingMeasure {
   int n = 0;
-  std::size_t bytes = 0;          // of the bundle at n
-  double seconds_n = 0.0;         // median import_bundle CPU time at n
-  double seconds_2n = 0.0;        // the same at 2n
-  std::size_t triangles_n = 0;    // of the imported model at n
+  std::size_t bytes = 0;        // of the bundle at n
+  double seconds_n = 0.0;       // median import_bundle CPU time at n
+  double seconds_2n = 0.0;      // the same at 2n
+  std::size_t triangles_n = 0;  // of the imported model at n
   std::size_t triangles_2n = 0;
   double ratio() const { return seconds_2n / seconds_n; }
 };
+
+// The calling thread's CPU time (user and system, page faults included):
+// the import runs on it alone, and time the scheduler gives to other
+// processes of a busy machine does not count.
+double thread_seconds();
 
 // Makes malloc reuse freed memory instead of returning it to the kernel and
 // mapping fresh pages for the next import. On the 2-core VM a fresh page's

@@ -7,8 +7,8 @@
 #include "http/render_params_wire.h"
 #include "param_schema.h"
 #include "presets.h"
-#include "render/gpu_model.h"
-#include "render/renderer.h"
+#include "render/frame/gpu_model.h"
+#include "render/run/renderer.h"
 #include "toond_shader_files.h"
 
 namespace toond::test {

@@ -12,11 +12,11 @@
 
 #include "gpu/program_cache.h"
 #include "image/image.h"
-#include "render/gpu_model.h"
-#include "render/render_params.h"
-#include "render/renderer.h"
-#include "scene/model.h"
-#include "scene/pose.h"
+#include "render/frame/gpu_model.h"
+#include "render/plan/render_params.h"
+#include "render/run/renderer.h"
+#include "scene/animation/pose.h"
+#include "scene/mesh/model.h"
 
 namespace toond::test {
 

@@ -61,7 +61,8 @@ std::string config(const fs::path& prefix, const std::vector<std::string>& upstr
     << "error_log " << p << "/error.log notice;\n"
     << "events { worker_connections 256; }\n"
     << "http {\n"
-    << "  access_log " << p << "/access.log;\n"
+    << "  access_log " << p
+    << "/access.log;\n"
     // Debian's build points these at /var/lib/nginx, which a test may not write.
     << "  client_body_temp_path " << p << "/body;\n"
     << "  proxy_temp_path " << p << "/proxy;\n"
@@ -114,8 +115,8 @@ NginxBalancer::NginxBalancer(const std::string& nginx, const std::vector<std::st
 }
 
 bool NginxBalancer::start(const std::string& nginx, int port) {
-  std::vector<std::string> args = {nginx, "-p", prefix_.string(), "-c", (prefix_ / "nginx.conf").string(),
-                                   "-e", (prefix_ / "error.log").string()};
+  std::vector<std::string> args = {
+      nginx, "-p", prefix_.string(), "-c", (prefix_ / "nginx.conf").string(), "-e", (prefix_ / "error.log").string()};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

@@ -24,10 +24,12 @@ ErrorStats band_edge_errors(const image::Image& img, const DiskEstimate& disk, i
     const double expected = disk.radius * std::sqrt(1.0 - double(k * k) / double(steps * steps));
     const double midpoint = (k + 0.5) / steps;
     for (int i = 0; i < kOracleRays; ++i) {
-      const auto found =
-          ray_crossing(grey, disk.centre_x, disk.centre_y, ray_angle(i), expected - window, expected + window, midpoint);
-      if (found) stats.add(*found - expected);
-      else ++stats.missing;
+      const auto found = ray_crossing(grey, disk.centre_x, disk.centre_y, ray_angle(i), expected - window,
+                                      expected + window, midpoint);
+      if (found)
+        stats.add(*found - expected);
+      else
+        ++stats.missing;
     }
   }
   return stats;

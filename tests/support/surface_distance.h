@@ -31,7 +31,7 @@ class SurfaceDistance {
   };
   std::uint32_t build(std::uint32_t first, std::uint32_t count);
 
-  std::vector<glm::dvec3> corners_;  // three per triangle
+  std::vector<glm::dvec3> corners_;   // three per triangle
   std::vector<std::uint32_t> order_;  // triangle indices, grouped by leaf
   std::vector<Node> nodes_;
 };

@@ -8,7 +8,7 @@
 // hundreds of thousands.
 #include <vector>
 
-#include "render/shader_variant.h"
+#include "render/plan/shader_variant.h"
 
 namespace toond::test {
 

@@ -10,9 +10,9 @@
 namespace toond::test {
 
 struct WebpFrames {
-  int loop_count = -1;       // 0: forever
+  int loop_count = -1;               // 0: forever
   std::vector<image::Image> frames;  // the whole canvas after each frame, RGBA
-  std::vector<int> end_ms;   // when each frame ends, from the start
+  std::vector<int> end_ms;           // when each frame ends, from the start
 };
 
 // Throws std::runtime_error when libwebp cannot read `bytes`.

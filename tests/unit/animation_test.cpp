@@ -16,8 +16,8 @@
 
 #include "gltf_import_checks.h"
 #include "pose_checks.h"
-#include "scene/clip_sampling.h"
-#include "scene/pose.h"
+#include "scene/animation/clip_sampling.h"
+#include "scene/animation/pose.h"
 #include "support/gltf_rig_writer.h"
 
 namespace toond::scene {
@@ -86,7 +86,8 @@ TEST(ClipSampling, HalfTurnStepsStayOnTheShortPathAndOfUnitLength) {
   const auto about_y = [&](double degrees) { return glm::angleAxis(glm::radians(degrees), y); };
   // Keys 179° apart at irregular times: each interval turns forward, the
   // shorter way, so 358° is reached through 268.5°.
-  const Channel near_half = rotation_channel({0, 0.1, 0.75}, {about_y(0), about_y(179), about_y(358)}, Interpolation::Linear);
+  const Channel near_half =
+      rotation_channel({0, 0.1, 0.75}, {about_y(0), about_y(179), about_y(358)}, Interpolation::Linear);
   EXPECT_NEAR(angle_between(sampled_rotation(near_half, 0.425), about_y(268.5)), 0.0, 1e-9);
   // Keys exactly 180° apart: both ways are as short; either way the
   // middle is a quarter turn from each key, and of unit length.
@@ -141,7 +142,8 @@ TEST(RangeTime, CountsFromTheStartAndLoopsInsideTheRange) {
 
 TEST(RigClips, AreFoundByNameOrByThePartAfterTheBarWhenUnique) {
   Rig rig;
-  for (const char* name : {"Armature|Walk", "Armature|Run", "Other|Run", "idle"}) rig.clips.push_back({name, 1.0, {}, {}});
+  for (const char* name : {"Armature|Walk", "Armature|Run", "Other|Run", "idle"})
+    rig.clips.push_back({name, 1.0, {}, {}});
   EXPECT_EQ(rig.find_clip("Armature|Walk"), 0u);
   EXPECT_EQ(rig.find_clip("Walk"), 0u);
   EXPECT_EQ(rig.find_clip("idle"), 3u);
@@ -202,7 +204,8 @@ RiggedBar rigged_bar(const glm::dmat4& root = glm::dmat4(1.0), double root_scale
   p.json["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", test::append_float_accessor(p, morph, "VEC3")}}};
   p.json["meshes"][0]["weights"] = {0.0};
   // Inverse bind matrices: the joints' rest world transforms inverted.
-  const glm::dmat4 joint0 = glm::translate(glm::dmat4(1.0), glm::dvec3(root[3])) * glm::scale(glm::dmat4(1.0), glm::dvec3(root_scale));
+  const glm::dmat4 joint0 =
+      glm::translate(glm::dmat4(1.0), glm::dvec3(root[3])) * glm::scale(glm::dmat4(1.0), glm::dvec3(root_scale));
   const glm::dmat4 joint1 = joint0 * glm::translate(glm::dmat4(1.0), glm::dvec3(0, 1, 0));
   std::vector<float> ibm;
   for (const glm::dmat4& j : {glm::inverse(joint0), glm::inverse(joint1)}) {
@@ -213,21 +216,27 @@ RiggedBar rigged_bar(const glm::dmat4& root = glm::dmat4(1.0), double root_scale
   p.json["nodes"][0]["skin"] = 0;
   const glm::dquat turn = glm::angleAxis(kQuarter, glm::dvec3(0, 0, 1));
   const int times = test::append_float_accessor(p, {0.0f, 1.0f}, "SCALAR");
-  const int turns = test::append_float_accessor(p, {0, 0, 0, 1, static_cast<float>(turn.x), static_cast<float>(turn.y),
-                                                    static_cast<float>(turn.z), static_cast<float>(turn.w)}, "VEC4");
+  const int turns = test::append_float_accessor(p,
+                                                {0, 0, 0, 1, static_cast<float>(turn.x), static_cast<float>(turn.y),
+                                                 static_cast<float>(turn.z), static_cast<float>(turn.w)},
+                                                "VEC4");
   const glm::dvec3 rest(root[3]);
   const int jump_times = test::append_float_accessor(p, {0.0f, 0.25f}, "SCALAR");
   const int jumps = test::append_float_accessor(
-      p, {static_cast<float>(rest.x), static_cast<float>(rest.y), static_cast<float>(rest.z),
-          static_cast<float>(rest.x + 0.5), static_cast<float>(rest.y), static_cast<float>(rest.z)}, "VEC3");
+      p,
+      {static_cast<float>(rest.x), static_cast<float>(rest.y), static_cast<float>(rest.z),
+       static_cast<float>(rest.x + 0.5), static_cast<float>(rest.y), static_cast<float>(rest.z)},
+      "VEC3");
   const int morph_weights = test::append_float_accessor(p, {0.0f, 1.0f}, "SCALAR");
   p.json["animations"] = {{{"name", "Armature|Bend"},
-                           {"samplers", {{{"input", times}, {"output", turns}},
-                                         {{"input", jump_times}, {"output", jumps}, {"interpolation", "STEP"}},
-                                         {{"input", times}, {"output", morph_weights}}}},
-                           {"channels", {{{"sampler", 0}, {"target", {{"node", 2}, {"path", "rotation"}}}},
-                                         {{"sampler", 1}, {"target", {{"node", 1}, {"path", "translation"}}}},
-                                         {{"sampler", 2}, {"target", {{"node", 0}, {"path", "weights"}}}}}}}};
+                           {"samplers",
+                            {{{"input", times}, {"output", turns}},
+                             {{"input", jump_times}, {"output", jumps}, {"interpolation", "STEP"}},
+                             {{"input", times}, {"output", morph_weights}}}},
+                           {"channels",
+                            {{{"sampler", 0}, {"target", {{"node", 2}, {"path", "rotation"}}}},
+                             {{"sampler", 1}, {"target", {{"node", 1}, {"path", "translation"}}}},
+                             {{"sampler", 2}, {"target", {{"node", 0}, {"path", "weights"}}}}}}}};
   return bar;
 }
 
@@ -276,7 +285,9 @@ void expect_bar_posed_like_the_oracle(const glm::dmat4& root, double root_scale,
   }
 }
 
-TEST(GltfRig, ASkinnedMorphedBarIsPosedAsTheGltfRulesSay) { expect_bar_posed_like_the_oracle(glm::dmat4(1.0), 1.0, 1e-5); }
+TEST(GltfRig, ASkinnedMorphedBarIsPosedAsTheGltfRulesSay) {
+  expect_bar_posed_like_the_oracle(glm::dmat4(1.0), 1.0, 1e-5);
+}
 
 TEST(GltfRig, JointsFarFromTheOriginAtATinyScaleKeepTheirPrecision) {
   // Joints 1e4 units out with scale 1e-3: the bar is 2 mm long there.
@@ -476,7 +487,8 @@ TEST(GltfRigErrors, AJointIndexPastTheSkinsJointsNamesTheAccessor) {
   RiggedBar bar = rigged_bar();
   std::vector<std::uint16_t> joints(12 * 4, 0);
   joints[8] = 5;
-  bar.parts.json["meshes"][0]["primitives"][0]["attributes"]["JOINTS_1"] = test::append_joints_accessor(bar.parts, joints);
+  bar.parts.json["meshes"][0]["primitives"][0]["attributes"]["JOINTS_1"] =
+      test::append_joints_accessor(bar.parts, joints);
   const std::string error = import_error(test::pack_gltf(bar.parts, test::GltfForm::Glb));
   EXPECT_NE(error.find("JOINTS_1 names joint 5, past the skin's 2 joints"), std::string::npos) << error;
 }
@@ -505,14 +517,16 @@ TEST(GltfRigErrors, AJointOutsideTheDrawnSceneIsRefused) {
 
 TEST(GltfRigErrors, KeyTimesThatDoNotIncreaseAreRefused) {
   RiggedBar bar = rigged_bar();
-  bar.parts.json["animations"][0]["samplers"][0]["input"] = test::append_float_accessor(bar.parts, {0.0f, 0.0f}, "SCALAR");
+  bar.parts.json["animations"][0]["samplers"][0]["input"] =
+      test::append_float_accessor(bar.parts, {0.0f, 0.0f}, "SCALAR");
   const std::string error = import_error(test::pack_gltf(bar.parts, test::GltfForm::Glb));
   EXPECT_NE(error.find("sampler 0 input is not increasing"), std::string::npos) << error;
 }
 
 TEST(GltfRigErrors, OutputCountsThatDoNotMatchTheKeysAreRefused) {
   RiggedBar bar = rigged_bar();
-  bar.parts.json["animations"][0]["samplers"][0]["output"] = test::append_float_accessor(bar.parts, {0, 0, 0, 1}, "VEC4");
+  bar.parts.json["animations"][0]["samplers"][0]["output"] =
+      test::append_float_accessor(bar.parts, {0, 0, 0, 1}, "VEC4");
   const std::string error = import_error(test::pack_gltf(bar.parts, test::GltfForm::Glb));
   EXPECT_NE(error.find("output has 4 numbers where its 2 keys need 8"), std::string::npos) << error;
 }
@@ -520,13 +534,15 @@ TEST(GltfRigErrors, OutputCountsThatDoNotMatchTheKeysAreRefused) {
 TEST(GltfRigErrors, NanKeysAreRefused) {
   RiggedBar bar = rigged_bar();
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  bar.parts.json["animations"][0]["samplers"][0]["input"] = test::append_float_accessor(bar.parts, {0.0f, nan}, "SCALAR");
+  bar.parts.json["animations"][0]["samplers"][0]["input"] =
+      test::append_float_accessor(bar.parts, {0.0f, nan}, "SCALAR");
   EXPECT_NE(import_error(test::pack_gltf(bar.parts, test::GltfForm::Glb)).find("not finite"), std::string::npos);
   RiggedBar values = rigged_bar();
   values.parts.json["animations"][0]["samplers"][1]["output"] =
       test::append_float_accessor(values.parts, {0, 0, 0, nan, 0, 0}, "VEC3");
-  EXPECT_NE(import_error(test::pack_gltf(values.parts, test::GltfForm::Glb)).find("output holds a value that is not finite"),
-            std::string::npos);
+  EXPECT_NE(
+      import_error(test::pack_gltf(values.parts, test::GltfForm::Glb)).find("output holds a value that is not finite"),
+      std::string::npos);
 }
 
 TEST(GltfRigErrors, CountsAreCheckedBeforeAnythingIsRead) {
@@ -540,9 +556,11 @@ TEST(GltfRigErrors, CountsAreCheckedBeforeAnythingIsRead) {
     j["meshes"][0]["primitives"][0]["targets"][0]["POSITION"] = empty_accessor(j, "VEC3");
   });
   EXPECT_NE(error.find("has 1000000000 elements where 12 are needed"), std::string::npos) << error;
-  error = bar_error([&](nlohmann::json& j) { j["animations"][0]["samplers"][0]["input"] = empty_accessor(j, "SCALAR"); });
+  error =
+      bar_error([&](nlohmann::json& j) { j["animations"][0]["samplers"][0]["input"] = empty_accessor(j, "SCALAR"); });
   EXPECT_NE(error.find("more than 20000000 key times and values"), std::string::npos) << error;
-  error = bar_error([&](nlohmann::json& j) { j["animations"][0]["samplers"][0]["output"] = empty_accessor(j, "VEC4"); });
+  error =
+      bar_error([&](nlohmann::json& j) { j["animations"][0]["samplers"][0]["output"] = empty_accessor(j, "VEC4"); });
   EXPECT_NE(error.find("output has 4000000000 numbers where its 2 keys need 8"), std::string::npos) << error;
 }
 

@@ -19,21 +19,21 @@
 #include "fake_helpers.h"
 #include "model_checks.h"
 #include "pose_checks.h"
-#include "scene/assimp_import.h"
-#include "scene/bundle_import.h"
-#include "scene/import_error.h"
-#include "scene/mesh_processing.h"
+#include "scene/import/assimp_import.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/import_error.h"
+#include "scene/mesh/mesh_processing.h"
 #include "support/shared_models.h"
 #include "support/stored_zip.h"
 
 namespace toond::scene {
 namespace {
 
+using test::read_file;
 using test_checks::expect_well_formed;
 using test_checks::Files;
 using test_checks::has_warning;
 using test_checks::make_bundle;
-using test::read_file;
 using test_checks::warnings_of;
 
 const std::filesystem::path kBlender = TOOND_EXPORTED_DIR "/blender";
@@ -183,8 +183,8 @@ INSTANTIATE_TEST_SUITE_P(Blender, WalkerTwin, ::testing::Values("walker.glb", "w
                          });
 
 TEST_F(AssimpImport, AColladaFileIsUprightInMetresAndFindsItsTextureByFileName) {
-  const Model model = import_bundle(make_bundle({{"art/quad.dae", kTexturedQuadDae},
-                                                 {"art/checker.png", test_checks::tiny_png(200, 40, 40)}}));
+  const Model model = import_bundle(
+      make_bundle({{"art/quad.dae", kTexturedQuadDae}, {"art/checker.png", test_checks::tiny_png(200, 40, 40)}}));
   expect_well_formed(model);
   const glm::vec3 size = model.mesh.bounds.max - model.mesh.bounds.min;
   EXPECT_NEAR(size.x, 1.0f, 1e-5f);
@@ -357,7 +357,9 @@ class B3dWriter {
   }
 
  private:
-  static std::string chunk(const char* tag, const std::string& body) { return tag + ints({static_cast<int>(body.size())}) + body; }
+  static std::string chunk(const char* tag, const std::string& body) {
+    return tag + ints({static_cast<int>(body.size())}) + body;
+  }
   static std::string text(const std::string& s) { return s + '\0'; }
   static std::string ints(std::initializer_list<int> values) {
     std::string out;
@@ -405,7 +407,8 @@ TEST_F(AssimpImport, MinetestsPlayerComesWithItsClipFrameRateAndSkin) {
 // Minetest plays, the B3D's vertices are where Blender's glTF puts them.
 TEST_F(AssimpImport, MinetestsPlayerPosesLikeBlendersGltfOfTheSameFileFrameForFrame) {
   const Model b3d = minetest_player();
-  const Model gltf = import_bundle(make_bundle({{"character_blender.glb", read_file(kMinetest / "character_blender.glb")}}));
+  const Model gltf =
+      import_bundle(make_bundle({{"character_blender.glb", read_file(kMinetest / "character_blender.glb")}}));
   ASSERT_TRUE(b3d.rig && gltf.rig);
   ASSERT_EQ(gltf.rig->clips.size(), 1u);
   EXPECT_FALSE(gltf.rig->clips[0].frame_rate);  // glTF keys by seconds
@@ -439,11 +442,13 @@ TEST_F(AssimpImport, MinetestsWalkIsFramedByTheWalkAlone) {
   };
   for (int step = 0; step <= 38; ++step) {
     const double time = walk.start + (walk.end - walk.start) * step / 38.0;
-    const PosedVertices posed = pose_vertices(model.mesh, *model.rig, pose_nodes(*model.rig, &model.rig->clips[0], time));
+    const PosedVertices posed =
+        pose_vertices(model.mesh, *model.rig, pose_nodes(*model.rig, &model.rig->clips[0], time));
     for (const glm::vec3& p : posed.positions) ASSERT_TRUE(inside(walking.bounds, p)) << "at " << time << " s";
   }
   // Lying down (frame 164) leaves the walk's frame.
-  const PosedVertices lying = pose_vertices(model.mesh, *model.rig, pose_nodes(*model.rig, &model.rig->clips[0], 164.0 / 60.0));
+  const PosedVertices lying =
+      pose_vertices(model.mesh, *model.rig, pose_nodes(*model.rig, &model.rig->clips[0], 164.0 / 60.0));
   EXPECT_FALSE(std::all_of(lying.positions.begin(), lying.positions.end(),
                            [&](const glm::vec3& p) { return inside(walking.bounds, p); }));
 }
@@ -488,7 +493,8 @@ TEST_F(AssimpImportErrors, AMendedClipStillMeetsEveryOtherCheck) {
   ASSERT_NE(tris, std::string::npos);
   file[tris + 16] = 7;  // the triangle's second corner: vertex 7 of 3
   const std::string index = conversion_error({{"index.b3d", file}});
-  EXPECT_NE(index.find("index.b3d: B3D Importer - error in B3D file data: Bad triangle index"), std::string::npos) << index;
+  EXPECT_NE(index.find("index.b3d: B3D Importer - error in B3D file data: Bad triangle index"), std::string::npos)
+      << index;
 }
 
 // `creases: auto` draws crease lines on what a viewer would call a
@@ -508,8 +514,8 @@ class CreaseDecision : public ::testing::Test {
 CreaseProfile creases_of(const std::string& name, const std::string& bytes) {
   const Model model = import_bundle(make_bundle({{name, bytes}}));
   const CreaseProfile& c = model.mesh.creases;
-  std::printf("%s: edge length creased %.4f, surface beside crease lines %.4f\n", name.c_str(), c.at(kDefaultCreaseAngle),
-              c.lines_area(kDefaultCreaseAngle));
+  std::printf("%s: edge length creased %.4f, surface beside crease lines %.4f\n", name.c_str(),
+              c.at(kDefaultCreaseAngle), c.lines_area(kDefaultCreaseAngle));
   return c;
 }
 
@@ -520,7 +526,8 @@ std::string sphere_obj(int rings) {
   for (int r = 0; r <= rings; ++r) {
     for (int s = 0; s < 2 * rings; ++s) {
       const double theta = pi * r / rings, phi = pi * s / rings;
-      obj << "v " << std::sin(theta) * std::cos(phi) << " " << std::cos(theta) << " " << std::sin(theta) * std::sin(phi) << "\n";
+      obj << "v " << std::sin(theta) * std::cos(phi) << " " << std::cos(theta) << " " << std::sin(theta) * std::sin(phi)
+          << "\n";
     }
   }
   const auto at = [rings](int r, int s) { return r * 2 * rings + (s % (2 * rings)) + 1; };

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "render/background_thread.h"
+#include "render/cull/background_thread.h"
 
 namespace toond::render {
 namespace {
@@ -111,7 +111,9 @@ TEST(Handoff, AJobDroppedBeforeItBeganIsSkipped) {
   Blocker blocker;
   blocker.block(thread);
   std::atomic<int> runs{0};
-  { Handoff<int> job(thread, [&runs] { return ++runs; }); }
+  {
+    Handoff<int> job(thread, [&runs] { return ++runs; });
+  }
   blocker.release.set_value();
   thread.drain();
   EXPECT_EQ(runs, 0);

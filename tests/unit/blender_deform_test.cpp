@@ -16,7 +16,7 @@
 
 #include "model_checks.h"
 #include "pose_checks.h"
-#include "scene/bundle_import.h"
+#include "scene/import/bundle_import.h"
 #include "support/shared_models.h"
 
 namespace toond::scene {
@@ -60,7 +60,8 @@ TEST_P(BlenderDeform, PosesWhereBlenderDeformsIt) {
   const Model model = import_bundle(test_checks::make_bundle({{c.file, test::read_file(kDeformedByBlender / c.file)}}));
   ASSERT_TRUE(model.rig);
   const Rig& rig = *model.rig;
-  const std::optional<std::size_t> clip = std::string(c.clip).empty() ? std::optional<std::size_t>(0) : rig.find_clip(c.clip);
+  const std::optional<std::size_t> clip =
+      std::string(c.clip).empty() ? std::optional<std::size_t>(0) : rig.find_clip(c.clip);
   ASSERT_TRUE(clip) << rig.clip_names();
   const std::vector<glm::dvec3> blender = test_checks::obj_positions(test::read_file(kDeformedByBlender / c.obj));
   ASSERT_GT(blender.size(), 100u);
@@ -68,7 +69,8 @@ TEST_P(BlenderDeform, PosesWhereBlenderDeformsIt) {
   const std::vector<glm::dvec3> ours = test_checks::posed_points(model, *clip, deform_time(c));
   EXPECT_LT(test_checks::farthest_from(ours, blender), tolerance);
   EXPECT_LT(test_checks::farthest_from(blender, ours), tolerance);
-  const std::vector<glm::dvec3> unbent = test_checks::posed_points(model, *clip, deform_time({c.file, c.clip, 1, c.obj}));
+  const std::vector<glm::dvec3> unbent =
+      test_checks::posed_points(model, *clip, deform_time({c.file, c.clip, 1, c.obj}));
   EXPECT_GT(test_checks::farthest_from(blender, unbent), 100 * tolerance);
 }
 
@@ -80,59 +82,57 @@ std::string deform_case_name(const ::testing::TestParamInfo<DeformCase>& info) {
   return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Issue43Rigs, BlenderDeform,
-    ::testing::Values(DeformCase{"bending_arm.glb", "Bend", 7, "bending_arm_f07.obj"},
-                      DeformCase{"bending_arm.glb", "Bend", 10, "bending_arm_f10.obj"},
-                      DeformCase{"bending_arm.glb", "Bend", 19, "bending_arm_f19.obj"},
-                      DeformCase{"bending_arm.fbx", "Bend", 7, "bending_arm_f07.obj"},
-                      DeformCase{"bending_arm.fbx", "Bend", 10, "bending_arm_f10.obj"},
-                      DeformCase{"bending_arm.fbx", "Bend", 19, "bending_arm_f19.obj"},
-                      DeformCase{"turned_limb.glb", "Bend", 7, "turned_limb_f07.obj"},
-                      DeformCase{"turned_limb.glb", "Bend", 10, "turned_limb_f10.obj"},
-                      DeformCase{"turned_limb.glb", "Bend", 19, "turned_limb_f19.obj"},
-                      DeformCase{"turned_limb.fbx", "Bend", 7, "turned_limb_f07.obj"},
-                      DeformCase{"turned_limb.fbx", "Bend", 10, "turned_limb_f10.obj"},
-                      DeformCase{"turned_limb.fbx", "Bend", 19, "turned_limb_f19.obj"}),
-    deform_case_name);
+INSTANTIATE_TEST_SUITE_P(Issue43Rigs, BlenderDeform,
+                         ::testing::Values(DeformCase{"bending_arm.glb", "Bend", 7, "bending_arm_f07.obj"},
+                                           DeformCase{"bending_arm.glb", "Bend", 10, "bending_arm_f10.obj"},
+                                           DeformCase{"bending_arm.glb", "Bend", 19, "bending_arm_f19.obj"},
+                                           DeformCase{"bending_arm.fbx", "Bend", 7, "bending_arm_f07.obj"},
+                                           DeformCase{"bending_arm.fbx", "Bend", 10, "bending_arm_f10.obj"},
+                                           DeformCase{"bending_arm.fbx", "Bend", 19, "bending_arm_f19.obj"},
+                                           DeformCase{"turned_limb.glb", "Bend", 7, "turned_limb_f07.obj"},
+                                           DeformCase{"turned_limb.glb", "Bend", 10, "turned_limb_f10.obj"},
+                                           DeformCase{"turned_limb.glb", "Bend", 19, "turned_limb_f19.obj"},
+                                           DeformCase{"turned_limb.fbx", "Bend", 7, "turned_limb_f07.obj"},
+                                           DeformCase{"turned_limb.fbx", "Bend", 10, "turned_limb_f10.obj"},
+                                           DeformCase{"turned_limb.fbx", "Bend", 19, "turned_limb_f19.obj"}),
+                         deform_case_name);
 
 // COLLADA is left out where Blender's own file is wrong (an armature object
 // with a transform: make_conformance.py) or toond cannot read it yet
 // (morph_skin, constant: tests/conformance/cases.json); FBX and COLLADA for
 // `eight`, whose readers keep four influences.
-INSTANTIATE_TEST_SUITE_P(
-    ConformanceSet, BlenderDeform,
-    ::testing::Values(DeformCase{"conf_tentacle.glb", "Move", 9, "conf_tentacle_f09.obj"},
-                      DeformCase{"conf_tentacle.fbx", "Move", 9, "conf_tentacle_f09.obj"},
-                      DeformCase{"conf_tentacle.dae", "", 9, "conf_tentacle_f09.obj"},
-                      DeformCase{"conf_turned.glb", "Move", 9, "conf_turned_f09.obj"},
-                      DeformCase{"conf_turned.fbx", "Move", 9, "conf_turned_f09.obj"},
-                      DeformCase{"conf_stretched.glb", "Move", 9, "conf_stretched_f09.obj"},
-                      DeformCase{"conf_stretched.fbx", "Move", 9, "conf_stretched_f09.obj"},
-                      DeformCase{"conf_parented.glb", "Move", 9, "conf_parented_f09.obj"},
-                      DeformCase{"conf_parented.fbx", "Move", 9, "conf_parented_f09.obj"},
-                      DeformCase{"conf_offset_mesh.glb", "Move", 9, "conf_offset_mesh_f09.obj"},
-                      DeformCase{"conf_offset_mesh.fbx", "Move", 9, "conf_offset_mesh_f09.obj"},
-                      DeformCase{"conf_offset_mesh.dae", "", 9, "conf_offset_mesh_f09.obj"},
-                      DeformCase{"conf_branches.glb", "Move", 9, "conf_branches_f09.obj"},
-                      DeformCase{"conf_branches.fbx", "Move", 9, "conf_branches_f09.obj"},
-                      DeformCase{"conf_branches.dae", "", 9, "conf_branches_f09.obj"},
-                      DeformCase{"conf_eight.glb", "Move", 9, "conf_eight_f09.obj"},
-                      DeformCase{"conf_cubic.glb", "Move", 9, "conf_cubic_f09.obj"},
-                      DeformCase{"conf_cubic.fbx", "Move", 9, "conf_cubic_f09.obj"},
-                      DeformCase{"conf_cubic.dae", "", 9, "conf_cubic_f09.obj"},
-                      DeformCase{"conf_step.glb", "Move", 9, "conf_step_f09.obj"},
-                      DeformCase{"conf_step.fbx", "Move", 9, "conf_step_f09.obj"},
-                      DeformCase{"conf_step.dae", "", 9, "conf_step_f09.obj"},
-                      DeformCase{"conf_constant.glb", "Move", 9, "conf_constant_f09.obj"},
-                      DeformCase{"conf_constant.fbx", "Move", 9, "conf_constant_f09.obj"},
-                      DeformCase{"conf_scale_keys.glb", "Move", 9, "conf_scale_keys_f09.obj"},
-                      DeformCase{"conf_scale_keys.fbx", "Move", 9, "conf_scale_keys_f09.obj"},
-                      DeformCase{"conf_scale_keys.dae", "", 9, "conf_scale_keys_f09.obj"},
-                      DeformCase{"conf_morph_skin.glb", "Move", 9, "conf_morph_skin_f09.obj"},
-                      DeformCase{"conf_morph_skin.fbx", "Move", 9, "conf_morph_skin_f09.obj"},
-                      DeformCase{"conf_skinned_node_moved.glb", "Move", 9, "conf_turned_f09.obj"}),
-    deform_case_name);
+INSTANTIATE_TEST_SUITE_P(ConformanceSet, BlenderDeform,
+                         ::testing::Values(DeformCase{"conf_tentacle.glb", "Move", 9, "conf_tentacle_f09.obj"},
+                                           DeformCase{"conf_tentacle.fbx", "Move", 9, "conf_tentacle_f09.obj"},
+                                           DeformCase{"conf_tentacle.dae", "", 9, "conf_tentacle_f09.obj"},
+                                           DeformCase{"conf_turned.glb", "Move", 9, "conf_turned_f09.obj"},
+                                           DeformCase{"conf_turned.fbx", "Move", 9, "conf_turned_f09.obj"},
+                                           DeformCase{"conf_stretched.glb", "Move", 9, "conf_stretched_f09.obj"},
+                                           DeformCase{"conf_stretched.fbx", "Move", 9, "conf_stretched_f09.obj"},
+                                           DeformCase{"conf_parented.glb", "Move", 9, "conf_parented_f09.obj"},
+                                           DeformCase{"conf_parented.fbx", "Move", 9, "conf_parented_f09.obj"},
+                                           DeformCase{"conf_offset_mesh.glb", "Move", 9, "conf_offset_mesh_f09.obj"},
+                                           DeformCase{"conf_offset_mesh.fbx", "Move", 9, "conf_offset_mesh_f09.obj"},
+                                           DeformCase{"conf_offset_mesh.dae", "", 9, "conf_offset_mesh_f09.obj"},
+                                           DeformCase{"conf_branches.glb", "Move", 9, "conf_branches_f09.obj"},
+                                           DeformCase{"conf_branches.fbx", "Move", 9, "conf_branches_f09.obj"},
+                                           DeformCase{"conf_branches.dae", "", 9, "conf_branches_f09.obj"},
+                                           DeformCase{"conf_eight.glb", "Move", 9, "conf_eight_f09.obj"},
+                                           DeformCase{"conf_cubic.glb", "Move", 9, "conf_cubic_f09.obj"},
+                                           DeformCase{"conf_cubic.fbx", "Move", 9, "conf_cubic_f09.obj"},
+                                           DeformCase{"conf_cubic.dae", "", 9, "conf_cubic_f09.obj"},
+                                           DeformCase{"conf_step.glb", "Move", 9, "conf_step_f09.obj"},
+                                           DeformCase{"conf_step.fbx", "Move", 9, "conf_step_f09.obj"},
+                                           DeformCase{"conf_step.dae", "", 9, "conf_step_f09.obj"},
+                                           DeformCase{"conf_constant.glb", "Move", 9, "conf_constant_f09.obj"},
+                                           DeformCase{"conf_constant.fbx", "Move", 9, "conf_constant_f09.obj"},
+                                           DeformCase{"conf_scale_keys.glb", "Move", 9, "conf_scale_keys_f09.obj"},
+                                           DeformCase{"conf_scale_keys.fbx", "Move", 9, "conf_scale_keys_f09.obj"},
+                                           DeformCase{"conf_scale_keys.dae", "", 9, "conf_scale_keys_f09.obj"},
+                                           DeformCase{"conf_morph_skin.glb", "Move", 9, "conf_morph_skin_f09.obj"},
+                                           DeformCase{"conf_morph_skin.fbx", "Move", 9, "conf_morph_skin_f09.obj"},
+                                           DeformCase{"conf_skinned_node_moved.glb", "Move", 9, "conf_turned_f09.obj"}),
+                         deform_case_name);
 
 }  // namespace
 }  // namespace toond::scene

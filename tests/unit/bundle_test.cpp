@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "scene/bundle.h"
-#include "scene/import_error.h"
+#include "scene/import/bundle.h"
+#include "scene/import/import_error.h"
 
 namespace toond::scene {
 namespace {

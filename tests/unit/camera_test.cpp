@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "render/camera.h"
+#include "render/plan/camera.h"
 
 namespace toond::render {
 namespace {

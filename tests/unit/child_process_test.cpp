@@ -9,7 +9,7 @@
 #include <chrono>
 #include <string>
 
-#include "scene/child_process.h"
+#include "scene/import/child_process.h"
 
 namespace toond::scene {
 namespace {
@@ -17,8 +17,8 @@ namespace {
 using namespace std::chrono_literals;
 using End = ChildResult::End;
 
-ChildResult shell(const std::string& script, std::string_view input = {},
-                  std::chrono::milliseconds time_limit = 10s, std::size_t max_output = 1 << 20) {
+ChildResult shell(const std::string& script, std::string_view input = {}, std::chrono::milliseconds time_limit = 10s,
+                  std::size_t max_output = 1 << 20) {
   ChildRun run;
   run.program = "/bin/sh";
   run.arguments = {"-c", script};

@@ -1,7 +1,7 @@
 // The `toon` CLI without a daemon: argument parsing, --set against the
 // schema, bundle discovery on disk, and the wording of server errors.
-#include "cli_test_helpers.h"
 #include "cli_args.h"
+#include "cli_test_helpers.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -31,9 +31,7 @@ using Args = std::vector<std::string>;
 
 const proto::ParamSchema& schema() { return proto::ParamSchema::render_params(); }
 
-Options parse(const Args& args, std::optional<std::string> env = std::nullopt) {
-  return parse_args(args, env);
-}
+Options parse(const Args& args, std::optional<std::string> env = std::nullopt) { return parse_args(args, env); }
 
 using cli_test::contains;
 using cli_test::TempDir;
@@ -48,8 +46,7 @@ TEST(CliArgs, ServerBeforeVerb) {
 }
 
 TEST(CliArgs, ServerAfterVerbAndEqualsForm) {
-  const Options o = parse(
-      {"render", "--model", "0123456789abcdef", "-o", "x.png", "--server=http://renderhost:81"});
+  const Options o = parse({"render", "--model", "0123456789abcdef", "-o", "x.png", "--server=http://renderhost:81"});
   EXPECT_EQ(o.verb, Verb::render);
   EXPECT_EQ(o.server, "http://renderhost:81");
 }
@@ -61,14 +58,12 @@ TEST(CliArgs, ServerDefaultsWithoutFlagOrEnvironment) {
 
 TEST(CliArgs, ServerFromEnvironmentUnlessFlagGiven) {
   EXPECT_EQ(parse({"health"}, "http://env-host:7000").server, "http://env-host:7000");
-  EXPECT_EQ(parse({"health", "--server", "http://flag:1"}, "http://env-host:7000").server,
-            "http://flag:1");
+  EXPECT_EQ(parse({"health", "--server", "http://flag:1"}, "http://env-host:7000").server, "http://flag:1");
 }
 
 TEST(CliArgs, ToondUrlIsReadFromTheProcessEnvironment) {
   const char* saved = std::getenv("TOOND_URL");
-  const std::optional<std::string> restore =
-      saved ? std::optional<std::string>(saved) : std::nullopt;
+  const std::optional<std::string> restore = saved ? std::optional<std::string>(saved) : std::nullopt;
   ::setenv("TOOND_URL", "http://from-env:1234", 1);
   EXPECT_EQ(parse({"health"}, server_from_environment()).server, "http://from-env:1234");
   ::setenv("TOOND_URL", "", 1);
@@ -83,8 +78,8 @@ TEST(CliArgs, TrailingSlashOfServerIsDropped) {
 }
 
 TEST(CliArgs, BadServerUrlsAreUsageErrors) {
-  for (const char* url : {"ftp://h", "127.0.0.1:8080", "http://", "http://h:99999", "http://h:x",
-                          "http://h:8080/?q=1"}) {
+  for (const char* url :
+       {"ftp://h", "127.0.0.1:8080", "http://", "http://h:99999", "http://h:x", "http://h:8080/?q=1"}) {
     EXPECT_FALSE(usage_error([&] { parse({"health", "--server", url}); }).empty()) << url;
   }
   EXPECT_FALSE(usage_error([] { parse({"health"}, "not a url"); }).empty());
@@ -115,14 +110,8 @@ TEST(CliArgs, NoVerbOrUnknownVerbOrOptionIsRejected) {
 }
 
 TEST(CliArgs, FlagsOfOneVerbAreRejectedOnAnother) {
-  EXPECT_TRUE(contains(usage_error([] {
-                         parse({"health", "-o", "x.png"});
-                       }),
-                       "health does not take -o"));
-  EXPECT_TRUE(contains(usage_error([] {
-                         parse({"upload", "a.obj", "--set", "width=5"});
-                       }),
-                       "--set"));
+  EXPECT_TRUE(contains(usage_error([] { parse({"health", "-o", "x.png"}); }), "health does not take -o"));
+  EXPECT_TRUE(contains(usage_error([] { parse({"upload", "a.obj", "--set", "width=5"}); }), "--set"));
   EXPECT_TRUE(contains(usage_error([] { parse({"render", "-q", "-o", "x.png"}); }), "--quiet"));
   EXPECT_FALSE(usage_error([] { parse({"health", "extra"}); }).empty());
 }
@@ -151,7 +140,10 @@ TEST(CliArgs, UploadTakesTheSmoothingAngleAndTheUpAxis) {
   EXPECT_EQ(options.up, "z");
   EXPECT_TRUE(parse({"upload", "part.obj"}).smooth_angle.empty());
   for (const char* bad : {"-1", "181", "x", ""}) {
-    EXPECT_TRUE(contains(usage_error([bad] { parse({"upload", "--smooth-angle", bad, "m.obj"}); }), "--smooth-angle"))
+    EXPECT_TRUE(contains(usage_error([bad] {
+                           parse({"upload", "--smooth-angle", bad, "m.obj"});
+                         }),
+                         "--smooth-angle"))
         << bad;
   }
   EXPECT_TRUE(contains(usage_error([] { parse({"upload", "--up", "x", "m.obj"}); }), "--up"));
@@ -164,11 +156,10 @@ TEST(CliArgs, RenderRequiresOutput) {
 }
 
 TEST(CliArgs, RenderRejectsPathTogetherWithModel) {
-  EXPECT_TRUE(
-      contains(usage_error([] {
-                 parse({"render", "spot.obj", "--model", "0123456789abcdef", "-o", "x.png"});
-               }),
-               "not both"));
+  EXPECT_TRUE(contains(usage_error([] {
+                         parse({"render", "spot.obj", "--model", "0123456789abcdef", "-o", "x.png"});
+                       }),
+                       "not both"));
 }
 
 TEST(CliArgs, RenderForms) {
@@ -177,8 +168,7 @@ TEST(CliArgs, RenderForms) {
   EXPECT_TRUE(demo.model_id.empty());
   EXPECT_EQ(demo.output, "demo.png");
 
-  const Options local =
-      parse({"render", "spot/spot.obj", "--out=spot.png", "--params", "p.json"});
+  const Options local = parse({"render", "spot/spot.obj", "--out=spot.png", "--params", "p.json"});
   EXPECT_EQ(local.obj_path, "spot/spot.obj");
   EXPECT_EQ(local.output, "spot.png");
   EXPECT_EQ(local.params_file, "p.json");
@@ -204,10 +194,7 @@ TEST(CliArgs, OutputNamesTheLayer) {
 }
 
 TEST(CliArgs, SetNeedsKeyEqualsValue) {
-  EXPECT_TRUE(contains(usage_error([] {
-                         parse({"render", "-o", "x", "--set", "outline.width"});
-                       }),
-                       "key.sub=value"));
+  EXPECT_TRUE(contains(usage_error([] { parse({"render", "-o", "x", "--set", "outline.width"}); }), "key.sub=value"));
   EXPECT_FALSE(usage_error([] { parse({"render", "-o", "x", "--set", "=3"}); }).empty());
   const Options o = parse({"render", "-o", "x", "--set=background=[1,1,1]"});
   ASSERT_EQ(o.sets.size(), 1u);
@@ -232,8 +219,7 @@ TEST(CliArgs, HelpAndVersionNeedNothingElse) {
 
 TEST(CliArgs, UsageTextListsVerbsAndFlags) {
   const std::string all = usage_text(Verb::none);
-  for (const char* word :
-       {"health", "upload", "render", "--server", "TOOND_URL", "--help", "--version"}) {
+  for (const char* word : {"health", "upload", "render", "--server", "TOOND_URL", "--help", "--version"}) {
     EXPECT_TRUE(contains(all, word)) << word;
   }
   const std::string render = usage_text(Verb::render);
@@ -267,8 +253,8 @@ TEST(CliArgs, HelpNamesExactlyTheFlagsTheParserTakes) {
   for (const VerbInfo& v : verbs()) all_verbs.push_back(v.verb);
   for (const Flag& flag : flags()) {
     for (const Verb verb : all_verbs) {
-      const bool listed_here = flag.verbs == kGlobal ? verb == Verb::none
-                                                     : verb != Verb::none && (flag.verbs & verb_set(verb)) != 0;
+      const bool listed_here =
+          flag.verbs == kGlobal ? verb == Verb::none : verb != Verb::none && (flag.verbs & verb_set(verb)) != 0;
       if (!listed_here) continue;
       EXPECT_TRUE(contains(usage_text(verb), "\n  " + flag.help.written() + " "))
           << verb_name(verb) << " --help lacks " << flag.help.written();
@@ -297,9 +283,8 @@ TEST(CliArgs, HelpStatesTheDefaultsInForce) {
 // ---------------------------------------------------------------- render parameters
 
 TEST(RenderParams, RepeatedSetsMergeAndLaterOnesWin) {
-  const Options o = parse({"render", "-o", "x.png", "--set", "outline.width=3", "--set",
-                           "outline.color=[1,0,0]", "--set", "shading.steps=5", "--set",
-                           "outline.width=4.5", "--set", "outline.enabled=false"});
+  const Options o = parse({"render", "-o", "x.png", "--set", "outline.width=3", "--set", "outline.color=[1,0,0]",
+                           "--set", "shading.steps=5", "--set", "outline.width=4.5", "--set", "outline.enabled=false"});
   const json p = build_render_params(o, schema());
   EXPECT_EQ(p, json::parse(R"({"outline":{"width":4.5,"color":[1,0,0],"enabled":false},
                                "shading":{"steps":5}})"));
@@ -337,6 +322,50 @@ TEST(RenderParams, SetWalksIntoFieldsOfAlternativesAndTakesCommaLists) {
   EXPECT_TRUE(contains(usage_error([&] { build_render_params(unknown, schema()); }), "unknown"));
 }
 
+// A clip's range as users type it: two numbers in seconds, or in frames
+// (168f,187f) where the clip has a frame rate, which the daemon's answer
+// for the model lists; the frames become seconds before the request goes.
+TEST(RenderParams, ARangeIsSecondsOrFramesOfAClipWithAFrameRate) {
+  const Options seconds = parse({"render", "-o", "x.png", "--set", "sheet.animation.clip=walk", "--set",
+                                 "sheet.animation.range=5.6,6.23", "--set", "sheet.animation.loop=false"});
+  EXPECT_EQ(build_render_params(seconds, schema())["sheet"]["animation"],
+            json::parse(R"({"clip":"walk","range":[5.6,6.23],"loop":false})"));
+
+  std::vector<std::string> asked;
+  const ClipsOfModel clips = [&](const std::string& id) {
+    asked.push_back(id);
+    return json::parse(R"([{"name":"anim","duration":3.67,"frame_rate":60},
+                           {"name":"Armature|Walk","duration":1.0}])");
+  };
+  const Options frames = parse({"render", "-o", "x.png", "--model", "0123456789abcdef", "--set",
+                                "sheet.animation.range=168f,187f", "--set", "sheet.animation.clip=anim", "--set",
+                                "animation.clip=0", "--set", "animation.range=[ 0f, 30f ]"});
+  const json p = build_render_params(frames, schema(), clips);
+  EXPECT_EQ(asked, (std::vector<std::string>{"0123456789abcdef", "0123456789abcdef"}));
+  EXPECT_EQ(p["sheet"]["animation"]["range"], json::parse("[2.8, 3.1166666666666667]"));
+  EXPECT_EQ(p["animation"]["range"], json::parse("[0, 0.5]"));
+
+  const auto refused = [&](const Args& args) {
+    return usage_error([&] { build_render_params(parse(args), schema(), clips); });
+  };
+  const std::string by_seconds = refused({"render", "-o", "x.png", "--model", "0123456789abcdef", "--set",
+                                          "animation.clip=Walk", "--set", "animation.range=1f,2f"});
+  EXPECT_TRUE(contains(by_seconds, "no frame rate")) << by_seconds;
+  EXPECT_TRUE(contains(by_seconds, "animation.range=1f,2f")) << by_seconds;
+  const std::string no_model =
+      refused({"render", "-o", "x.png", "--set", "animation.clip=anim", "--set", "animation.range=1f,2f"});
+  EXPECT_TRUE(contains(no_model, "--model ID")) << no_model;
+  const std::string no_clip =
+      refused({"render", "-o", "x.png", "--model", "0123456789abcdef", "--set", "animation.range=1f,2f"});
+  EXPECT_TRUE(contains(no_clip, "--set animation.clip=NAME")) << no_clip;
+  const std::string unknown = refused({"render", "-o", "x.png", "--model", "0123456789abcdef", "--set",
+                                       "animation.clip=run", "--set", "animation.range=1f,2f"});
+  EXPECT_TRUE(contains(unknown, "no clip \"run\"")) << unknown;
+  const std::string mixed = refused({"render", "-o", "x.png", "--model", "0123456789abcdef", "--set",
+                                     "animation.clip=anim", "--set", "animation.range=1f,2"});
+  EXPECT_TRUE(contains(mixed, "both ends in frames")) << mixed;
+}
+
 TEST(RenderParams, UnknownKeyIsRejectedNamingIt) {
   const Options o = parse({"render", "-o", "x.png", "--set", "outline.widht=3"});
   const std::string message = usage_error([&] { build_render_params(o, schema()); });
@@ -363,8 +392,7 @@ TEST(RenderParams, BadValueTypeIsRejectedNamingTheKey) {
 
 TEST(RenderParams, OutOfRangeAndEnumAreCaughtLocally) {
   const Options wide = parse({"render", "-o", "x.png", "--set", "outline.width=100"});
-  EXPECT_TRUE(
-      contains(usage_error([&] { build_render_params(wide, schema()); }), "/outline/width"));
+  EXPECT_TRUE(contains(usage_error([&] { build_render_params(wide, schema()); }), "/outline/width"));
   const Options msaa = parse({"render", "-o", "x.png", "--set", "msaa=3"});
   EXPECT_TRUE(contains(usage_error([&] { build_render_params(msaa, schema()); }), "/msaa"));
   const Options mode = parse({"render", "-o", "x.png", "--set", "shading.mode=watercolor"});
@@ -390,10 +418,8 @@ TEST(RenderParams, ModelIdIsSetAndChecked) {
 
 TEST(RenderParams, ParamsFileIsTheBaseAndSetsOverrideIt) {
   TempDir dir;
-  const fs::path file =
-      dir.write("p.json", R"({"width":320,"outline":{"width":1,"color":[0,0,1]}})");
-  const Options o =
-      parse({"render", "--params", file.string(), "--set", "outline.width=6", "-o", "x.png"});
+  const fs::path file = dir.write("p.json", R"({"width":320,"outline":{"width":1,"color":[0,0,1]}})");
+  const Options o = parse({"render", "--params", file.string(), "--set", "outline.width=6", "-o", "x.png"});
   const json p = build_render_params(o, schema());
   EXPECT_EQ(p["width"], 320);
   EXPECT_EQ(p["outline"]["width"], 6.0);
@@ -411,8 +437,7 @@ TEST(RenderParams, BrokenParamsFilesAreUsageErrors) {
   EXPECT_TRUE(contains(message_for("[1,2,3]"), "JSON object"));
   EXPECT_TRUE(contains(message_for(R"({"outline":{"thickness":2}})"), "/outline/thickness"));
 
-  const Options missing =
-      parse({"render", "--params", (dir.path() / "nope.json").string(), "-o", "x"});
+  const Options missing = parse({"render", "--params", (dir.path() / "nope.json").string(), "-o", "x"});
   EXPECT_TRUE(contains(usage_error([&] { build_render_params(missing, schema()); }), "nope.json"));
 }
 
@@ -454,8 +479,7 @@ bool has_warning(const BundleScan& scan, const std::string& needle) {
 TEST(BundleScan, FindsMtlAndTexturesWithSubfoldersBackslashesAndCase) {
   TempDir dir;
   const fs::path root = dir.path() / "model";
-  dir.write("model/model.obj",
-            "# comment\r\nmtllib model.mtl\r\nmtllib missing.mtl\r\nv 0 0 0\r\nf 1 1 1\r\n");
+  dir.write("model/model.obj", "# comment\r\nmtllib model.mtl\r\nmtllib missing.mtl\r\nv 0 0 0\r\nf 1 1 1\r\n");
   dir.write("model/model.mtl",
             "newmtl a\n"
             "Kd 1 1 1\n"
@@ -477,9 +501,8 @@ TEST(BundleScan, FindsMtlAndTexturesWithSubfoldersBackslashesAndCase) {
   dir.write("secret.png", "must never be sent");
 
   const BundleScan scan = scan_obj_bundle(root / "model.obj");
-  EXPECT_EQ(names(scan),
-            (std::vector<std::string>{"model.obj", "model.mtl", "textures/color.png",
-                                      "sub/normal.png", "spec.png", "texture 01.png"}));
+  EXPECT_EQ(names(scan), (std::vector<std::string>{"model.obj", "model.mtl", "textures/color.png", "sub/normal.png",
+                                                   "spec.png", "texture 01.png"}));
   EXPECT_EQ(scan.files[2].content, "colour");
   EXPECT_TRUE(has_warning(scan, "missing.mtl"));
   EXPECT_TRUE(has_warning(scan, "'../secret.png' refused"));
@@ -497,8 +520,7 @@ TEST(BundleScan, TexturesResolveRelativeToTheirMtlInsideTheFolder) {
   dir.write("folder/image.jpg", "jpg");
   dir.write("top.png", "top");
   const BundleScan scan = scan_obj_bundle(dir.path() / "m.obj");
-  EXPECT_EQ(names(scan),
-            (std::vector<std::string>{"m.obj", "folder/sub.mtl", "folder/image.jpg", "top.png"}));
+  EXPECT_EQ(names(scan), (std::vector<std::string>{"m.obj", "folder/sub.mtl", "folder/image.jpg", "top.png"}));
   EXPECT_TRUE(has_warning(scan, "'../../out.png' refused"));
 }
 
@@ -539,8 +561,9 @@ TEST(BundleScan, AnFbxOrColladaFileBringsTheImagesItNames) {
   EXPECT_EQ(names(scan), (std::vector<std::string>{"hero.fbx", "skin.png", "textures/eyes.jpg"}));
   EXPECT_TRUE(has_warning(scan, "'gone.tga' not found"));
 
-  dir.write("scene/scene.dae", "<library_images><image id=\"a\"><init_from>../../etc/secret.png</init_from></image>"
-                               "<image id=\"b\"><init_from>paint.png</init_from></image></library_images>");
+  dir.write("scene/scene.dae",
+            "<library_images><image id=\"a\"><init_from>../../etc/secret.png</init_from></image>"
+            "<image id=\"b\"><init_from>paint.png</init_from></image></library_images>");
   dir.write("scene/paint.png", "paint");
   dir.write("etc/secret.png", "must never be sent");
   const BundleScan collada = scan_obj_bundle(dir.path() / "scene" / "scene.dae");
@@ -599,8 +622,7 @@ TEST(BundleScan, OtherCaseIsMatchedOverTheWholePathAsTheDaemonDoes) {
 TEST(BundleScan, ForeignAbsolutePathsFallBackToTheFileNameBesideTheMtl) {
   TempDir dir;
   dir.write("skin.png", "png");
-  const BundleScan scan =
-      scan_with_library(dir, "newmtl a\nmap_Kd C:\\Users\\artist\\skin.png\nmap_Ks /etc/passwd\n");
+  const BundleScan scan = scan_with_library(dir, "newmtl a\nmap_Kd C:\\Users\\artist\\skin.png\nmap_Ks /etc/passwd\n");
   EXPECT_EQ(names(scan), (std::vector<std::string>{"m.obj", "m.mtl", "skin.png"}));
   EXPECT_TRUE(has_warning(scan, "'/etc/passwd' refused: absolute path"));
 }
@@ -617,8 +639,7 @@ TEST(BundleScan, SharedModelsResolveCompletely) {
   const fs::path models = test::shared_models_dir();
 
   const BundleScan dog = scan_obj_bundle(models / "kenney-cube-pet-dog/animal-dog.obj");
-  EXPECT_EQ(names(dog), (std::vector<std::string>{"animal-dog.obj", "animal-dog.mtl",
-                                                  "Textures/colormap.png"}));
+  EXPECT_EQ(names(dog), (std::vector<std::string>{"animal-dog.obj", "animal-dog.mtl", "Textures/colormap.png"}));
   EXPECT_TRUE(dog.warnings.empty());
 
   const BundleScan windmill = scan_obj_bundle(models / "windmill/windmill.obj");
@@ -626,8 +647,7 @@ TEST(BundleScan, SharedModelsResolveCompletely) {
   EXPECT_TRUE(windmill.warnings.empty());
 
   // Missing references upstream are warnings, never errors.
-  const BundleScan options =
-      scan_obj_bundle(models / "edge-cases/tinyobjloader/texture-options-issue-85.obj");
+  const BundleScan options = scan_obj_bundle(models / "edge-cases/tinyobjloader/texture-options-issue-85.obj");
   EXPECT_GE(options.files.size(), 2u);
   EXPECT_FALSE(options.warnings.empty());
 }
@@ -635,16 +655,11 @@ TEST(BundleScan, SharedModelsResolveCompletely) {
 // ---------------------------------------------------------------- replies
 
 TEST(Reply, ToondErrorBodyBecomesOneLine) {
-  EXPECT_EQ(
-      describe_error_reply(
-          400,
-          R"({"error":{"code":"invalid_parameter","message":"too wide","path":"/outline/width"}})",
-          ""),
-      "error 400 invalid_parameter at /outline/width: too wide");
-  EXPECT_EQ(
-      describe_error_reply(
-          404, R"({"error":{"code":"unknown_model","message":"no such model","path":""}})", ""),
-      "error 404 unknown_model: no such model");
+  EXPECT_EQ(describe_error_reply(
+                400, R"({"error":{"code":"invalid_parameter","message":"too wide","path":"/outline/width"}})", ""),
+            "error 400 invalid_parameter at /outline/width: too wide");
+  EXPECT_EQ(describe_error_reply(404, R"({"error":{"code":"unknown_model","message":"no such model","path":""}})", ""),
+            "error 404 unknown_model: no such model");
   EXPECT_EQ(describe_error_reply(503, R"({"error":{"code":"busy","message":"queue full"}})", "2"),
             "error 503 busy: queue full (busy; retry after 2 s)");
 }

@@ -1,4 +1,4 @@
-// The count of drawn layers over a grid (render/cover_layers.h): which
+// The count of drawn layers over a grid (render/cull/cover_layers.h): which
 // boxes it calls covered for a square, a square over a larger one (a fold's
 // inner edge), a hole and a face walked the other way, and, for scattered
 // triangles, that every point of a box it calls covered lies in a face
@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/cover_layers.h"
+#include "render/cull/cover_layers.h"
 
 namespace toond::render {
 namespace {

@@ -22,11 +22,11 @@
 #include "image/float_image.h"
 #include "image/srgb.h"
 #include "model_checks.h"
-#include "render/frame_plan.h"
-#include "scene/bundle_import.h"
-#include "scene/model_library.h"
-#include "scene/model_store.h"
-#include "scene/pose.h"
+#include "render/plan/frame_plan.h"
+#include "scene/animation/pose.h"
+#include "scene/import/bundle_import.h"
+#include "scene/store/model_library.h"
+#include "scene/store/model_store.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"
 #include "support/shared_models.h"
@@ -65,7 +65,7 @@ class CreaseLines : public test::GlContextTest {};
 // mostly the lines the screen-space pass found where one part of the model
 // lies in front of another (no crease edge runs there). Measured 0.82 of
 // 4,222 pixels with the seams where its 138 parts cross
-// (scene/intersection_lines.h), 0.79 without.
+// (scene/mesh/intersection_lines.h), 0.79 without.
 constexpr double kLeastShareOfScreenSpaceLines = 0.6;
 
 TEST_F(CreaseLines, TheWindmillsLinesCoverMostOfWhatTheScreenSpacePassDrew) {
@@ -102,9 +102,10 @@ TEST_F(CreaseLines, TheWindmillsLinesCoverMostOfWhatTheScreenSpacePassDrew) {
   }
   ASSERT_GT(screen_space_lines, 1000u);
   const double share = static_cast<double>(covered) / static_cast<double>(screen_space_lines);
-  std::printf("[creases] windmill: the screen-space pass darkened %zu inner pixels, the crease lines %.3f of them "
-              "(%zu line pixels in all, %zu crease edges and %zu seam segments drawn)\n",
-              screen_space_lines, share, edge_lines, by_edges.crease_edges_drawn, by_edges.intersection_segments_drawn);
+  std::printf(
+      "[creases] windmill: the screen-space pass darkened %zu inner pixels, the crease lines %.3f of them "
+      "(%zu line pixels in all, %zu crease edges and %zu seam segments drawn)\n",
+      screen_space_lines, share, edge_lines, by_edges.crease_edges_drawn, by_edges.intersection_segments_drawn);
   EXPECT_GE(share, kLeastShareOfScreenSpaceLines);
 }
 
@@ -254,8 +255,8 @@ TEST_F(CreaseLines, TheDemoSpheresSeamOnItsBoxIsDrawn) {
 
 // The shared Kenney dog: its ears, eyes and snout are parts pushed into
 // its head, its legs into its body. Along the seams that show (those
-// import found, scene/intersection_lines.h, sampled every hundredth of
-// the model), the lines come back. Measured: 0.94 of 772 pixels, 0.03
+// import found, scene/mesh/intersection_lines.h, sampled every hundredth
+// of the model), the lines come back. Measured: 0.94 of 772 pixels, 0.03
 // with the crease edges alone.
 TEST_F(CreaseLines, TheKenneyDogsSeamsAreDrawn) {
   TOOND_REQUIRE_SHARED_MODELS();
@@ -314,8 +315,8 @@ std::string flat_box_obj(glm::dvec3 half, glm::dvec3 centre, double yaw_deg, int
   const glm::dmat4 place = glm::rotate(glm::translate(glm::dmat4(1.0), centre), glm::radians(yaw_deg), {0, 1, 0});
   std::string obj;
   for (int i = 0; i < 8; ++i) {
-    const glm::dvec4 p = place * glm::dvec4((i & 1) ? half.x : -half.x, (i & 2) ? half.y : -half.y,
-                                            (i & 4) ? half.z : -half.z, 1.0);
+    const glm::dvec4 p =
+        place * glm::dvec4((i & 1) ? half.x : -half.x, (i & 2) ? half.y : -half.y, (i & 4) ? half.z : -half.z, 1.0);
     obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
   }
   // Corner (i, j, k) of x, y, z is vertex first + i + 2j + 4k; faces wound
@@ -394,7 +395,7 @@ std::string sphere_with_faceted_back() {
 }
 
 // Seen from the front, every crease of that sphere is turned away: runs of
-// them are left out before the vertex stage (render/facing_runs.h), no
+// them are left out before the vertex stage (render/cull/facing_runs.h), no
 // edge is drawn, and the image is the one without crease lines. From the
 // back they draw.
 TEST_F(CreaseLines, AViewWhoseCreasesAllTurnAwayDrawsNoEdge) {
@@ -430,7 +431,8 @@ std::string ridge_obj(double rise, int segments) {
     obj += "v " + std::to_string(x) + " 0.0173 " + std::to_string(rise) + "\n";
     obj += "v " + std::to_string(x) + " 1 0\n";
   }
-  const glm::dvec3 left = glm::normalize(glm::dvec3(0.0, -rise, 1.0173)), right = glm::normalize(glm::dvec3(0.0, rise, 0.9827));
+  const glm::dvec3 left = glm::normalize(glm::dvec3(0.0, -rise, 1.0173)),
+                   right = glm::normalize(glm::dvec3(0.0, rise, 0.9827));
   obj += "vn " + std::to_string(left.x) + " " + std::to_string(left.y) + " " + std::to_string(left.z) + "\n";
   obj += "vn " + std::to_string(right.x) + " " + std::to_string(right.y) + " " + std::to_string(right.z) + "\n";
   for (int i = 0; i < segments; ++i) {
@@ -503,9 +505,10 @@ TEST_F(CreaseLines, ALineIsItsWidthAlongItsLengthAndAtItsJoins) {
         ASSERT_GT(join_columns, 0);
         ASSERT_GT(between_columns, 0);
         const double at_joins = joins / join_columns, elsewhere = between / between_columns;
-        std::printf("[creases] ridge rise %+.1f msaa %d width %.1f: worst error %.3f px, %.3f px at joins, %.3f "
-                    "between\n",
-                    rise, msaa, width, worst, at_joins, elsewhere);
+        std::printf(
+            "[creases] ridge rise %+.1f msaa %d width %.1f: worst error %.3f px, %.3f px at joins, %.3f "
+            "between\n",
+            rise, msaa, width, worst, at_joins, elsewhere);
         EXPECT_LE(worst, 0.5) << "rise " << rise << " msaa " << msaa << " width " << width;
         EXPECT_NEAR(at_joins, elsewhere, 0.1) << "rise " << rise << " msaa " << msaa << " width " << width;
       }

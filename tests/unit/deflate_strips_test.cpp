@@ -24,8 +24,8 @@ std::vector<std::uint8_t> scanlines(int rows, int width) {
 std::vector<std::uint8_t> inflate_zlib(const std::string& stream, std::size_t expected_size) {
   std::vector<std::uint8_t> out(expected_size + 1);
   uLongf size = static_cast<uLongf>(out.size());
-  const int rc = uncompress(out.data(), &size, reinterpret_cast<const Bytef*>(stream.data()),
-                            static_cast<uLong>(stream.size()));
+  const int rc =
+      uncompress(out.data(), &size, reinterpret_cast<const Bytef*>(stream.data()), static_cast<uLong>(stream.size()));
   EXPECT_EQ(rc, Z_OK);
   out.resize(size);
   return out;
@@ -36,14 +36,15 @@ TEST(DeflateStrips, StripsJoinIntoOneZlibStream) {
   const std::vector<std::uint8_t> input = scanlines(rows, width);
   const ScanlineSource source = [&](int first, int count, std::vector<std::uint8_t>&) {
     return std::span<const std::uint8_t>(input).subspan(static_cast<std::size_t>(first) * width,
-                                                         static_cast<std::size_t>(count) * width);
+                                                        static_cast<std::size_t>(count) * width);
   };
   for (const int strips : {1, 2, 3, 7, 97, 500}) {
     for (const int threads : {1, 2, 4}) {
-      for (const auto& [method, level, strategy] :
-           {std::tuple{DeflateMethod::Runs, 1, Z_DEFAULT_STRATEGY}, {DeflateMethod::Zlib, 0, Z_DEFAULT_STRATEGY},
-            {DeflateMethod::Zlib, 1, Z_RLE}, {DeflateMethod::Zlib, 1, Z_DEFAULT_STRATEGY},
-            {DeflateMethod::Zlib, 9, Z_DEFAULT_STRATEGY}}) {
+      for (const auto& [method, level, strategy] : {std::tuple{DeflateMethod::Runs, 1, Z_DEFAULT_STRATEGY},
+                                                    {DeflateMethod::Zlib, 0, Z_DEFAULT_STRATEGY},
+                                                    {DeflateMethod::Zlib, 1, Z_RLE},
+                                                    {DeflateMethod::Zlib, 1, Z_DEFAULT_STRATEGY},
+                                                    {DeflateMethod::Zlib, 9, Z_DEFAULT_STRATEGY}}) {
         SCOPED_TRACE(testing::Message() << strips << " strips, " << threads << " threads, "
                                         << (method == DeflateMethod::Runs ? "runs" : "zlib level ") << level);
         const std::string stream = deflate_scanlines(rows, width, source, {method, level, strategy, strips, threads});

@@ -3,10 +3,10 @@
 #include <cmath>
 
 #include "image/png_codec.h"
-#include "scene/demo_model.h"
-#include "scene/mesh_processing.h"
-#include "scene/model_store.h"
-#include "scene/obj_import.h"
+#include "scene/import/demo_model.h"
+#include "scene/import/obj_import.h"
+#include "scene/mesh/mesh_processing.h"
+#include "scene/store/model_store.h"
 
 namespace toond::scene {
 namespace {

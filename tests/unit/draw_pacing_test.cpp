@@ -9,11 +9,11 @@
 #include <thread>
 
 #include "gpu/program_cache.h"
-#include "render/draw_pacing.h"
-#include "render/render_cost.h"
-#include "render/renderer.h"
-#include "scene/bundle_import.h"
-#include "scene/obj_import.h"
+#include "render/frame/draw_pacing.h"
+#include "render/plan/render_cost.h"
+#include "render/run/renderer.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/obj_import.h"
 #include "support/costly_models.h"
 #include "support/generated_models.h"
 #include "support/gl_context_test.h"
@@ -38,7 +38,9 @@ class DrawPacingTest : public test::GlContextTest {
     params_ = test::complete_params({{"width", 96}, {"height", 96}});
   }
 
-  RenderOutput render(DrawPacing* pacing) { return renderer_->render({RenderObject{*gpu_model_, *model_}}, params_, pacing); }
+  RenderOutput render(DrawPacing* pacing) {
+    return renderer_->render({RenderObject{*gpu_model_, *model_}}, params_, pacing);
+  }
 
   static scene::Model cube_model() {
     scene::Bundle bundle;
@@ -74,7 +76,7 @@ TEST_F(DrawPacingTest, ChunksDrawTheSameImageAsOneDrawCall) {
 }
 
 // The main pass draws a sphere as the ranges between its runs of faces
-// turned away (render/facing_runs.h), a few faces each: the chunks still
+// turned away (render/cull/facing_runs.h), a few faces each: the chunks still
 // hold the set number of triangles, not one range each.
 TEST_F(DrawPacingTest, ManyShortDrawsWaitOncePerChunkOfTriangles) {
   scene::Bundle bundle;
@@ -99,8 +101,8 @@ TEST_F(DrawPacingTest, ManyShortDrawsWaitOncePerChunkOfTriangles) {
 TEST_F(DrawPacingTest, TheEdgePassInBandsDrawsTheSameImage) {
   const scene::Model cube = cube_model();
   const GpuModel gpu_cube(cube);
-  for (const nlohmann::json& outline : {nlohmann::json{{"method", "edges"}, {"width", 3}},
-                                        nlohmann::json{{"creases", "always"}}}) {
+  for (const nlohmann::json& outline :
+       {nlohmann::json{{"method", "edges"}, {"width", 3}}, nlohmann::json{{"creases", "always"}}}) {
     RenderParams params = test::complete_params({{"width", 96}, {"height", 96}, {"outline", outline}});
     // Crease lines as sprite lines find them, in screen space.
     params.outline.screen_space_creases = true;
@@ -156,8 +158,8 @@ TEST_F(DrawPacingTest, ADeadlineThatPassesMidwayStopsWithinAChunk) {
   const auto started = Clock::now();
   render(nullptr);
   const auto warm = Clock::now() - started;
-  const auto deadline = Clock::now() + std::clamp<Clock::duration>(10 * warm, std::chrono::milliseconds(300),
-                                                                   std::chrono::seconds(3));
+  const auto deadline =
+      Clock::now() + std::clamp<Clock::duration>(10 * warm, std::chrono::milliseconds(300), std::chrono::seconds(3));
   int pauses = 0;
   DrawPacing stopping(7, 0, deadline, [&] {
     if (++pauses == 3) std::this_thread::sleep_until(deadline + std::chrono::milliseconds(5));
@@ -177,8 +179,8 @@ TEST_F(DrawPacingTest, ADeadlineThatPassesBetweenBandsStopsTheEdgePass) {
   const auto started = Clock::now();
   const image::Image before = renderer_->render({RenderObject{gpu_cube, cube}}, params).image;
   const auto warm = Clock::now() - started;
-  const auto deadline = Clock::now() + std::clamp<Clock::duration>(10 * warm, std::chrono::milliseconds(300),
-                                                                   std::chrono::seconds(3));
+  const auto deadline =
+      Clock::now() + std::clamp<Clock::duration>(10 * warm, std::chrono::milliseconds(300), std::chrono::seconds(3));
   int pauses = 0;
   DrawPacing stopping(1000000, ten_rows_a_band(params), deadline, [&] {
     if (++pauses == 3) std::this_thread::sleep_until(deadline + std::chrono::milliseconds(5));

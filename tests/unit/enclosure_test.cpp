@@ -5,9 +5,9 @@
 #include <utility>
 
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/enclosure.h"
-#include "scene/mesh_processing.h"
+#include "scene/import/bundle_import.h"
+#include "scene/mesh/enclosure.h"
+#include "scene/mesh/mesh_processing.h"
 #include "support/generated_models.h"
 
 namespace toond::scene {
@@ -65,10 +65,9 @@ TEST(Enclosure, AHoleIsCappedAndAFlippedTriangleOpensIt) {
             Enclosure::Outward);
   ASSERT_EQ(caps.size(), 3u);
   const Mesh full = imported(test::cube_obj());
-  const glm::vec3 missing_normal = glm::cross(full.positions[full.indices[full.indices.size() - 2]] -
-                                                  full.positions[full.indices[full.indices.size() - 3]],
-                                              full.positions[full.indices[full.indices.size() - 1]] -
-                                                  full.positions[full.indices[full.indices.size() - 3]]);
+  const glm::vec3 missing_normal = glm::cross(
+      full.positions[full.indices[full.indices.size() - 2]] - full.positions[full.indices[full.indices.size() - 3]],
+      full.positions[full.indices[full.indices.size() - 1]] - full.positions[full.indices[full.indices.size() - 3]]);
   for (std::size_t t = 0; t < caps.size(); t += 3) {
     const glm::vec3 n = glm::cross(caps[t + 1] - caps[t], caps[t + 2] - caps[t]);
     EXPECT_GT(glm::dot(n, missing_normal), 0.0f) << "cap " << t / 3 << " faces out like the missing face";
@@ -126,7 +125,8 @@ TEST(Enclosure, RimsTooLongToCapLeaveItOpen) {
   std::vector<std::uint32_t> kept;
   for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
     const float y = (mesh.positions[mesh.indices[t]].y + mesh.positions[mesh.indices[t + 1]].y +
-                     mesh.positions[mesh.indices[t + 2]].y) / 3.0f;
+                     mesh.positions[mesh.indices[t + 2]].y) /
+                    3.0f;
     if (std::abs(y) > 0.2f) kept.insert(kept.end(), &mesh.indices[t], &mesh.indices[t] + 3);
   }
   ASSERT_LT(kept.size(), mesh.indices.size());

@@ -11,17 +11,17 @@
 #include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
-#include "render/camera.h"
-#include "render/face_culling.h"
-#include "render/gpu_model.h"
-#include "render/render_params.h"
-#include "render/renderer.h"
-#include "scene/bundle_import.h"
+#include "render/frame/gpu_model.h"
+#include "render/plan/camera.h"
+#include "render/plan/face_culling.h"
+#include "render/plan/render_params.h"
+#include "render/run/renderer.h"
+#include "scene/import/bundle_import.h"
+#include "scene/mesh/enclosure.h"
+#include "support/generated_models.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"
-#include "support/generated_models.h"
 #include "support/shared_models.h"
-#include "scene/enclosure.h"
 
 namespace toond::render {
 namespace {
@@ -109,7 +109,8 @@ class FaceCullingRender : public test::GlContextTest {
     out.both = drawn.render(p).image;
     for (std::size_t k = 0; k < out.culled.rgba.size(); k += 4) {
       int worst = 0;
-      for (std::size_t c = 0; c < 4; ++c) worst = std::max(worst, std::abs(out.culled.rgba[k + c] - out.both.rgba[k + c]));
+      for (std::size_t c = 0; c < 4; ++c)
+        worst = std::max(worst, std::abs(out.culled.rgba[k + c] - out.both.rgba[k + c]));
       out.differing += worst > 0;
       out.largest = std::max(out.largest, worst);
     }
@@ -128,8 +129,9 @@ scene::Model holed_sphere(Cut cut) {
   scene::Mesh& mesh = sphere.mesh;
   std::vector<std::uint32_t> kept;
   for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
-    const glm::vec3 middle = (mesh.positions[mesh.indices[t]] + mesh.positions[mesh.indices[t + 1]] +
-                              mesh.positions[mesh.indices[t + 2]]) / 3.0f;
+    const glm::vec3 middle =
+        (mesh.positions[mesh.indices[t]] + mesh.positions[mesh.indices[t + 1]] + mesh.positions[mesh.indices[t + 2]]) /
+        3.0f;
     if (!cut(middle)) kept.insert(kept.end(), &mesh.indices[t], &mesh.indices[t] + 3);
   }
   EXPECT_LT(kept.size(), mesh.indices.size());
@@ -215,11 +217,12 @@ TEST_F(FaceCullingRender, ScenesOfSeveralObjectsKeepEveryPixel) {
   const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(48, 24));
   const scene::Model cube = scene::test_checks::model_of_obj(test::cube_obj());
   const glm::dmat4 in_front = glm::translate(glm::dmat4(1.0), glm::dvec3(1.0, 0.3, 1.2));
-  const glm::dmat4 mirrored = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(-1.5, 0.2, -0.4)), glm::dvec3(-1, 1, 1));
+  const glm::dmat4 mirrored =
+      glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(-1.5, 0.2, -0.4)), glm::dvec3(-1, 1, 1));
   for (const nlohmann::json& request : {nlohmann::json{{"width", 128}, {"height", 128}},
                                         nlohmann::json{{"width", 128}, {"height", 128}, {"outline", {{"width", 4}}}}}) {
-    const Pair pair = render_both_ways({{&cube, mirrored}, {&cube, glm::dmat4(1.0)}, {&sphere, in_front}},
-                                       params(request));
+    const Pair pair =
+        render_both_ways({{&cube, mirrored}, {&cube, glm::dmat4(1.0)}, {&sphere, in_front}}, params(request));
     EXPECT_EQ(pair.culled_side, HiddenFaces::Front);
     EXPECT_TRUE(pair.culled.rgba == pair.both.rgba) << request;
   }
@@ -251,7 +254,8 @@ TEST_F(FaceCullingRender, OpenMeshesSkipOnlyWhileTheirHolesFaceAway) {
     // folds through itself in a few places, where a face turned away lies
     // nearer than the front one: there culling shows the outer surface.
     EXPECT_LE(above.differing, model == &sphere ? kGrazingTiePixels : 4) << pitch;
-    const Pair below = render_both_ways(*model, params({{"width", 128}, {"height", 128}, {"camera", {{"pitch", -60}}}}));
+    const Pair below =
+        render_both_ways(*model, params({{"width", 128}, {"height", 128}, {"camera", {{"pitch", -60}}}}));
     EXPECT_EQ(below.culled_side, HiddenFaces::None);
     EXPECT_TRUE(below.culled.rgba == below.both.rgba);
   }
@@ -323,13 +327,17 @@ TEST_F(FaceCullingRender, OpenMeshesDrawTheirInsideOnlyWhereAHoleShows) {
 // its caps are checked on that side too), one looking into the other's hole.
 TEST_F(FaceCullingRender, OpenObjectsInOneSceneKeepEveryPixel) {
   const scene::Model sphere = holed_sphere([](const glm::vec3& c) { return c.x > 0.8f; });
-  const glm::dmat4 mirrored = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(-2.5, 0.0, 0.0)), glm::dvec3(-1, 1, 1));
+  const glm::dmat4 mirrored =
+      glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(-2.5, 0.0, 0.0)), glm::dvec3(-1, 1, 1));
   const glm::dmat4 beside = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -1.0));
   int mirrored_culled = 0;
   int mirrored_drawn_whole = 0;
   for (int yaw : {0, 90, 180, 270}) {
-    const nlohmann::json request = {{"width", 128}, {"height", 128}, {"outline", {{"width", 4}}},
-                                    {"floor", {{"enabled", true}}}, {"camera", {{"yaw", yaw}, {"pitch", 10}}}};
+    const nlohmann::json request = {{"width", 128},
+                                    {"height", 128},
+                                    {"outline", {{"width", 4}}},
+                                    {"floor", {{"enabled", true}}},
+                                    {"camera", {{"yaw", yaw}, {"pitch", 10}}}};
     const Pair pair = render_both_ways({{&sphere, mirrored}, {&sphere, beside}}, params(request));
     EXPECT_TRUE(pair.culled.rgba == pair.both.rgba) << request;
     mirrored_culled += pair.culled_side == HiddenFaces::Front;

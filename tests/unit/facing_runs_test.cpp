@@ -1,5 +1,5 @@
 // Runs of faces the main pass leaves out as surely turned away from the
-// camera (render/facing_runs.h): which runs a view leaves out, where it
+// camera (render/cull/facing_runs.h): which runs a view leaves out, where it
 // leaves none, and, with a GL context, that leaving them out changes no
 // byte of any image.
 #include <gtest/gtest.h>
@@ -12,9 +12,9 @@
 #include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
-#include "render/facing_runs.h"
-#include "render/renderer.h"
-#include "scene/bundle_import.h"
+#include "render/cull/facing_runs.h"
+#include "render/run/renderer.h"
+#include "scene/import/bundle_import.h"
 #include "support/generated_models.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"
@@ -179,11 +179,12 @@ const std::vector<nlohmann::json>& run_requests() {
 
 TEST_F(FacingRunsRender, LeavingRunsOutChangesNoByteOfGeneratedModels) {
   const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(64, 32));
-  const scene::Model messy = scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 64, .rings = 32, .jitter = 1e-7}));
-  const scene::Model faceted =
-      scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::PerFace}));
-  const scene::Model bare =
-      scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::None}));
+  const scene::Model messy =
+      scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 64, .rings = 32, .jitter = 1e-7}));
+  const scene::Model faceted = scene::test_checks::model_of_obj(
+      test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::PerFace}));
+  const scene::Model bare = scene::test_checks::model_of_obj(
+      test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::None}));
   for (const auto& [model, what] : {std::pair{&sphere, "sphere"}, std::pair{&messy, "messy"},
                                     std::pair{&faceted, "per-face normals"}, std::pair{&bare, "no normals"}}) {
     for (const nlohmann::json& request : run_requests()) {
@@ -207,8 +208,10 @@ TEST_F(FacingRunsRender, LeavingRunsOutChangesNoByteOfGeneratedModels) {
 TEST_F(FacingRunsRender, LeavingRunsOutChangesNoByteOfScenes) {
   const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(48, 24));
   const glm::dmat4 left = glm::translate(glm::dmat4(1.0), glm::dvec3(-2.0, 0.0, 0.0));
-  const glm::dmat4 mirrored = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(2.0, 0.0, 0.0)), glm::dvec3(-1, 1, 1));
-  const glm::dmat4 stretched = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, -1.8, 0.3)), glm::dvec3(1.6, 0.4, 1));
+  const glm::dmat4 mirrored =
+      glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(2.0, 0.0, 0.0)), glm::dvec3(-1, 1, 1));
+  const glm::dmat4 stretched =
+      glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, -1.8, 0.3)), glm::dvec3(1.6, 0.4, 1));
   for (const nlohmann::json& request : run_requests()) {
     const std::size_t with_mirror = expect_same_image({{&sphere, left}, {&sphere, mirrored}}, request, "mirrored");
     const std::size_t one = expect_same_image({{&sphere, left}}, request, "one");

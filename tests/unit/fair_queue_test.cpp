@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "render/fair_queue.h"
+#include "render/run/fair_queue.h"
 
 namespace toond::render {
 namespace {

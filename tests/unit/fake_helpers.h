@@ -12,8 +12,7 @@ namespace toond::scene::test_checks {
 
 class FakeHelpers {
  public:
-  FakeHelpers()
-      : dir_(std::filesystem::temp_directory_path() / ("toond-fake-helpers-" + std::to_string(getpid()))) {
+  FakeHelpers() : dir_(std::filesystem::temp_directory_path() / ("toond-fake-helpers-" + std::to_string(getpid()))) {
     std::filesystem::create_directories(dir_);
   }
   ~FakeHelpers() { std::filesystem::remove_all(dir_); }

@@ -1,4 +1,4 @@
-// A frame is planned once, before it is queued (render/frame_plan.h): the
+// A frame is planned once, before it is queued (render/plan/frame_plan.h): the
 // plan's passes, camera, outline width and cost are what the render thread
 // draws with, the frame's context is worked out from it without GL, and a
 // request's price is its frames' plans' costs.
@@ -10,10 +10,10 @@
 #include "model_checks.h"
 #include "pipeline/plan.h"
 #include "pipeline/price.h"
-#include "render/frame_context.h"
-#include "render/frame_plan.h"
-#include "render/gpu_model.h"
-#include "render/renderer.h"
+#include "render/frame/frame_context.h"
+#include "render/frame/gpu_model.h"
+#include "render/plan/frame_plan.h"
+#include "render/run/renderer.h"
 #include "support/generated_models.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"
@@ -28,8 +28,8 @@ scene::Model sphere() { return scene::test_checks::model_of_obj(test::sphere_obj
 TEST(FramePlan, TheFramesContextIsWorkedOutFromItsPlanWithoutGl) {
   const scene::Model model = sphere();
   const std::vector<PlannedObject> objects = {{model}};
-  const FramePlan plan = plan_frame(test::complete_params({{"width", 200}, {"height", 100}, {"supersample", 2}}),
-                                    objects);
+  const FramePlan plan =
+      plan_frame(test::complete_params({{"width", 200}, {"height", 100}, {"supersample", 2}}), objects);
   EXPECT_TRUE(plan.passes.has(Pass::Main));
   EXPECT_EQ(plan.passes.supersample, 2);
   EXPECT_GT(plan.outline_px, 0.0f);
@@ -89,8 +89,8 @@ TEST_F(FramePlanRender, TheRendererDrawsWithThePlansCamera) {
   const GpuModel gpu(model);
   const std::vector<PlannedObject> planned = {{model}};
   const std::vector<RenderObject> objects = {{gpu, model}};
-  const FramePlan side = plan_frame(test::complete_params({{"width", 96}, {"height", 96}, {"camera", {{"yaw", 90}}}}),
-                                    planned);
+  const FramePlan side =
+      plan_frame(test::complete_params({{"width", 96}, {"height", 96}, {"camera", {{"yaw", 90}}}}), planned);
   FramePlan front = plan_frame(test::complete_params({{"width", 96}, {"height", 96}}), planned);
   const image::Image front_image = renderer.render(objects, front).image;
   front.camera = side.camera;

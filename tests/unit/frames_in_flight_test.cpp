@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "http/render_params_wire.h"
-#include "param_schema.h"
-#include "render/gpu_model.h"
-#include "render/renderer.h"
-#include "scene/bundle_import.h"
 #include "model_checks.h"
-#include "support/gl_context_test.h"
+#include "param_schema.h"
+#include "render/frame/gpu_model.h"
+#include "render/run/renderer.h"
+#include "scene/import/bundle_import.h"
 #include "support/generated_models.h"
+#include "support/gl_context_test.h"
 #include "toond_shader_files.h"
 
 namespace toond::render {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <vector>
 
-#include "render/camera.h"
-#include "render/outline_width.h"
-#include "scene/extreme_points.h"
+#include "render/plan/camera.h"
+#include "render/plan/outline_width.h"
+#include "scene/mesh/extreme_points.h"
 
 namespace toond::render {
 namespace {

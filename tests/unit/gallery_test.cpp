@@ -7,16 +7,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <regex>
 #include <set>
 #include <string>
 #include <vector>
 
-#include "cli_test_helpers.h"
 #include "cli_args.h"
+#include "cli_test_helpers.h"
 #include "gallery_looks.h"
 #include "gallery_page.h"
 #include "gallery_sheet.h"
@@ -84,10 +84,10 @@ TEST(GalleryLooks, NamesAreUniqueAndSafeAsFileNames) {
     EXPECT_TRUE(std::regex_match(look.name, safe)) << look.name;
   }
   // Every preset and the effects the gallery promises are there.
-  for (const char* name : {"bw_comic", "noir", "default", "specular_off", "rim", "halftone_dots",
-                           "halftone_checker", "contour_even", "contour_fresnel", "shadows_floor",
-                           "two_tone", "color_ramp", "outline_texture", "outline_material", "supersample_2",
-                           "msaa_1", "msaa_8", "lights_sum", "point_light"}) {
+  for (const char* name :
+       {"bw_comic", "noir", "default", "specular_off", "rim", "halftone_dots", "halftone_checker", "contour_even",
+        "contour_fresnel", "shadows_floor", "two_tone", "color_ramp", "outline_texture", "outline_material",
+        "supersample_2", "msaa_1", "msaa_8", "lights_sum", "point_light"}) {
     EXPECT_TRUE(names.count(name)) << name;
   }
 }
@@ -141,8 +141,8 @@ TEST(GalleryViews, SpotIsSeenFromTheFrontOthersGetTheDefaultCamera) {
 TEST(GalleryViews, TheDefaultViewSendsNoCameraAndNoLights) {
   const Look& plain = effect_looks().front();
   ASSERT_EQ(plain.name, "default");
-  const json params = render_params(plain, json(), view_for_model("utah-teapot", schema()), ModelFrame{}, 64,
-                                    "", schema());
+  const json params =
+      render_params(plain, json(), view_for_model("utah-teapot", schema()), ModelFrame{}, 64, "", schema());
   EXPECT_EQ(params, (json{{"width", 64}, {"height", 64}}));
 }
 
@@ -200,8 +200,8 @@ TEST(GalleryViews, PointLightsAreScaledToTheModel) {
   const json params = render_params(*point, json(), ModelView{30, 15}, frame, 64, "", schema());
   const json& light = params["lights"][0];
   for (std::size_t i = 0; i < 3; ++i) {
-    EXPECT_NEAR(light["position"][i].get<double>(),
-                frame.center[i] + 100 * table_light["position"][i].get<double>(), 1e-6)
+    EXPECT_NEAR(light["position"][i].get<double>(), frame.center[i] + 100 * table_light["position"][i].get<double>(),
+                1e-6)
         << i;
   }
   EXPECT_NEAR(light["radius"].get<double>(), 100 * table_light["radius"].get<double>(), 1e-6);
@@ -349,8 +349,8 @@ TEST(GalleryArgs, DefaultsAndFlags) {
   EXPECT_TRUE(d.only.empty());
   EXPECT_EQ(d.output, "out");
 
-  const Options o = parse_args({"gallery", "--models=m", "--size", "64", "--only", "spot,bob", "--only=windmill",
-                                "-o", "out", "--server", "http://h:1"},
+  const Options o = parse_args({"gallery", "--models=m", "--size", "64", "--only", "spot,bob", "--only=windmill", "-o",
+                                "out", "--server", "http://h:1"},
                                std::nullopt);
   EXPECT_EQ(o.models_dir, "m");
   EXPECT_EQ(o.size, 64);
@@ -362,19 +362,27 @@ TEST(GalleryArgs, DefaultsAndFlags) {
 TEST(GalleryArgs, MistakesAreUsageErrors) {
   EXPECT_TRUE(contains(usage_error([] { parse_args({"gallery"}, std::nullopt); }), "-o OUTDIR"));
   EXPECT_TRUE(contains(usage_error([] { parse_args({"gallery", "-o", "-"}, std::nullopt); }), "folder"));
-  EXPECT_TRUE(contains(usage_error([] { parse_args({"gallery", "--size", "8", "-o", "x"}, std::nullopt); }),
+  EXPECT_TRUE(contains(usage_error([] { parse_args({"gallery", "--size", "8", "-o", "x"}, std::nullopt); }), "--size"));
+  EXPECT_TRUE(contains(usage_error([] {
+                         parse_args({"gallery", "--size", "1e3", "-o", "x"}, std::nullopt);
+                       }),
                        "--size"));
-  EXPECT_TRUE(contains(usage_error([] { parse_args({"gallery", "--size", "1e3", "-o", "x"}, std::nullopt); }),
-                       "--size"));
-  EXPECT_TRUE(contains(
-      usage_error([] { parse_args({"gallery", "--all", "--only", "spot", "-o", "x"}, std::nullopt); }), "--all"));
-  EXPECT_TRUE(contains(usage_error([] { parse_args({"gallery", "--only", "a,,b", "-o", "x"}, std::nullopt); }),
+  EXPECT_TRUE(contains(usage_error([] {
+                         parse_args({"gallery", "--all", "--only", "spot", "-o", "x"}, std::nullopt);
+                       }),
+                       "--all"));
+  EXPECT_TRUE(contains(usage_error([] {
+                         parse_args({"gallery", "--only", "a,,b", "-o", "x"}, std::nullopt);
+                       }),
                        "--only"));
-  EXPECT_TRUE(contains(usage_error([] { parse_args({"gallery", "spot", "-o", "x"}, std::nullopt); }),
-                       "no arguments"));
-  EXPECT_TRUE(contains(usage_error([] { parse_args({"gallery", "--set", "width=9", "-o", "x"}, std::nullopt); }),
+  EXPECT_TRUE(contains(usage_error([] { parse_args({"gallery", "spot", "-o", "x"}, std::nullopt); }), "no arguments"));
+  EXPECT_TRUE(contains(usage_error([] {
+                         parse_args({"gallery", "--set", "width=9", "-o", "x"}, std::nullopt);
+                       }),
                        "gallery does not take --set"));
-  EXPECT_TRUE(contains(usage_error([] { parse_args({"render", "--size", "64", "-o", "x.png"}, std::nullopt); }),
+  EXPECT_TRUE(contains(usage_error([] {
+                         parse_args({"render", "--size", "64", "-o", "x.png"}, std::nullopt);
+                       }),
                        "render does not take --size"));
   EXPECT_FALSE(usage_text(Verb::gallery).empty());
   EXPECT_TRUE(contains(usage_text(Verb::none), "gallery"));
@@ -462,9 +470,9 @@ TEST(GallerySheet, SizeGapAndPlacement) {
   EXPECT_EQ(at(sheet, 7, 2), (std::array<int, 4>{0, 255, 0, 255}));
   EXPECT_EQ(at(sheet, 12, 3), (std::array<int, 4>{0, 0, 255, 255}));
   EXPECT_EQ(at(sheet, 2, 6), (std::array<int, 4>{0, 0, 255, 255}));
-  EXPECT_EQ(at(sheet, 7, 6), rgba(kSheetMissing));   // the failed render
+  EXPECT_EQ(at(sheet, 7, 6), rgba(kSheetMissing));  // the failed render
   EXPECT_EQ(at(sheet, 9, 7), rgba(kSheetMissing));
-  EXPECT_EQ(at(sheet, 12, 6), bg);                   // no third cell in row 1
+  EXPECT_EQ(at(sheet, 12, 6), bg);  // no third cell in row 1
 }
 
 TEST(GallerySheet, SmallImagesAreCentredLargeOnesClippedTransparentComposited) {

@@ -18,8 +18,8 @@
 #include "cli_test_helpers.h"
 #include "glb_from_obj.h"
 #include "image/png_codec.h"
-#include "scene/gltf_import.h"
-#include "scene/obj_import.h"
+#include "scene/import/gltf_import.h"
+#include "scene/import/obj_import.h"
 
 namespace toond::cli {
 namespace {
@@ -67,7 +67,8 @@ std::string tiny_png() {
 }
 
 BundleScan scan_of(const std::string& obj, const std::string& mtl) {
-  return BundleScan{{{"model.obj", "model.obj", obj}, {"mats/m.mtl", "mats/m.mtl", mtl},
+  return BundleScan{{{"model.obj", "model.obj", obj},
+                     {"mats/m.mtl", "mats/m.mtl", mtl},
                      {"mats/tex/c.png", "mats/tex/c.png", tiny_png()}},
                     {}};
 }
@@ -103,8 +104,8 @@ std::vector<Triangle> triangles_of(const scene::Model& model) {
         const glm::dvec3 p = mesh.origin + glm::dvec3(mesh.positions[v]);
         const glm::vec2 t = mesh.texcoords[v];
         const glm::vec3 n = mesh.normals[v];
-        corners[c] = {rounded(p.x), rounded(p.y), rounded(p.z), rounded(t.x), rounded(t.y),
-                      rounded(n.x), rounded(n.y), rounded(n.z)};
+        corners[c] = {rounded(p.x), rounded(p.y), rounded(p.z), rounded(t.x),
+                      rounded(t.y), rounded(n.x), rounded(n.y), rounded(n.z)};
       }
       std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
       out.emplace_back(corners, std::array<double, 3>{rounded(m.diffuse.r), rounded(m.diffuse.g), rounded(m.diffuse.b)},

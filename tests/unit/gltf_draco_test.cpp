@@ -14,9 +14,9 @@
 #include "fake_helpers.h"
 #include "gltf_import_checks.h"
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/import_error.h"
-#include "scene/obj_import.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/import_error.h"
+#include "scene/import/obj_import.h"
 #include "support/generated_models.h"
 #include "support/gltf_draco_writer.h"
 #include "support/gltf_twin.h"
@@ -74,7 +74,8 @@ TEST_P(DracoForms, LosslessFileImportsToTheSameTrianglesAsItsPlainTwin) {
       << test_checks::warnings_of(from_draco);
 }
 
-INSTANTIATE_TEST_SUITE_P(Gltf, DracoForms, ::testing::Values(GltfForm::Glb, GltfForm::SeparateFiles, GltfForm::DataUris));
+INSTANTIATE_TEST_SUITE_P(Gltf, DracoForms,
+                         ::testing::Values(GltfForm::Glb, GltfForm::SeparateFiles, GltfForm::DataUris));
 
 TEST_F(GltfDraco, QuantizedFileMatchesWithinTheQuantizationStep) {
   const GltfParts plain = sphere_parts();
@@ -210,8 +211,9 @@ TEST_F(GltfDracoMalformed, ADecoderThatCrashesHangsOrBabblesIsARefusalNotACrash)
 
   setenv("TOOND_DRACO_DECODER", fakes.make("crash", "kill -SEGV $$").c_str(), 1);
   std::string error = import_error(files);
-  EXPECT_NE(error.find("mesh 0 primitive 0 (KHR_draco_mesh_compression) cannot be decoded: the decoder crashed (SIGSEGV)"),
-            std::string::npos)
+  EXPECT_NE(
+      error.find("mesh 0 primitive 0 (KHR_draco_mesh_compression) cannot be decoded: the decoder crashed (SIGSEGV)"),
+      std::string::npos)
       << error;
 
   setenv("TOOND_DRACO_DECODER", fakes.make("babble", "cat >/dev/null; printf 'TDM1 not a mesh at all'").c_str(), 1);

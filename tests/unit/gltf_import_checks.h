@@ -9,9 +9,9 @@
 
 #include "http/import_limit_flag.h"
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/import_error.h"
-#include "scene/obj_import.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/import_error.h"
+#include "scene/import/obj_import.h"
 #include "support/generated_models.h"
 #include "support/gltf_twin.h"
 #include "support/gltf_writer.h"

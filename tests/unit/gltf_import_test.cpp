@@ -9,11 +9,11 @@
 
 #include "gltf_import_checks.h"
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/gltf_import.h"
-#include "scene/import_error.h"
-#include "scene/mesh_processing.h"
-#include "scene/obj_import.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/gltf_import.h"
+#include "scene/import/import_error.h"
+#include "scene/import/obj_import.h"
+#include "scene/mesh/mesh_processing.h"
 #include "support/gltf_twin.h"
 #include "support/gltf_writer.h"
 #include "support/shared_models.h"
@@ -78,7 +78,8 @@ TEST_P(EveryForm, CubeImportsWithItsTrianglesNormalsAndBounds) {
   EXPECT_TRUE(m.warnings.empty()) << warnings_of(m);
 }
 
-INSTANTIATE_TEST_SUITE_P(Gltf, EveryForm, ::testing::Values(GltfForm::Glb, GltfForm::SeparateFiles, GltfForm::DataUris));
+INSTANTIATE_TEST_SUITE_P(Gltf, EveryForm,
+                         ::testing::Values(GltfForm::Glb, GltfForm::SeparateFiles, GltfForm::DataUris));
 
 TEST(GltfImport, IsRecognisedByContentWhateverItsName) {
   auto files = test::write_gltf(cube_document(), GltfForm::Glb);
@@ -282,7 +283,8 @@ TEST(GltfImport, QuantizedAndSparseAccessorsAreRead) {
   const std::size_t offset = parts.bin.size();
   parts.bin += shorts;
   parts.json["buffers"][0]["byteLength"] = parts.bin.size();
-  parts.json["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", shorts.size()}, {"byteStride", 8}});
+  parts.json["bufferViews"].push_back(
+      {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", shorts.size()}, {"byteStride", 8}});
   // Sparse: vertex 0 is moved to (0, 0, 1), in the accessor's own normalised shorts.
   const std::size_t sparse_at = parts.bin.size();
   const std::uint16_t index = 0;
@@ -296,11 +298,17 @@ TEST(GltfImport, QuantizedAndSparseAccessorsAreRead) {
   parts.json["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", sparse_at + 4}, {"byteLength", 6}});
   const auto views = parts.json["bufferViews"].size();
   json& position = parts.json["accessors"][0];
-  position = {{"bufferView", views - 3}, {"componentType", 5122}, {"normalized", true}, {"count", cube.positions.size()},
-              {"type", "VEC3"}, {"min", {-1, -1, -1}}, {"max", {1, 1, 1}},
-              {"sparse", {{"count", 1},
-                          {"indices", {{"bufferView", views - 2}, {"componentType", 5123}}},
-                          {"values", {{"bufferView", views - 1}}}}}};
+  position = {{"bufferView", views - 3},
+              {"componentType", 5122},
+              {"normalized", true},
+              {"count", cube.positions.size()},
+              {"type", "VEC3"},
+              {"min", {-1, -1, -1}},
+              {"max", {1, 1, 1}},
+              {"sparse",
+               {{"count", 1},
+                {"indices", {{"bufferView", views - 2}, {"componentType", 5123}}},
+                {"values", {{"bufferView", views - 1}}}}}};
   parts.json["extensionsUsed"] = {"KHR_mesh_quantization"};
   parts.json["extensionsRequired"] = {"KHR_mesh_quantization"};
   const Model m = import_files(test::pack_gltf(parts, GltfForm::Glb));
@@ -378,10 +386,9 @@ TEST(GltfImport, MissingNormalsAreFlat) {
       "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\nf 1 5 8 4\n";
   const Model reference = import_bundle(make_bundle({{"cube.obj", obj}}));
   for (std::size_t t = 0; t < gltf.mesh.indices.size(); t += 3) {
-    const glm::dvec3 face =
-        triangle_normal(glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t]]),
-                        glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t + 1]]),
-                        glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t + 2]]));
+    const glm::dvec3 face = triangle_normal(glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t]]),
+                                            glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t + 1]]),
+                                            glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t + 2]]));
     for (int k = 0; k < 3; ++k) {
       EXPECT_NEAR(glm::dot(glm::dvec3(gltf.mesh.normals[gltf.mesh.indices[t + k]]), face), 1.0, 1e-6);
     }
@@ -412,10 +419,9 @@ TEST(GltfImport, MissingNormalsAreFlatEvenWhereObjWouldSmooth) {
   const Model gltf = import_files(test::write_gltf(doc, GltfForm::Glb));
   std::size_t flat = 0, slivers = 0;
   for (std::size_t t = 0; t < gltf.mesh.indices.size(); t += 3) {
-    const glm::dvec3 face =
-        triangle_normal(glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t]]),
-                        glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t + 1]]),
-                        glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t + 2]]));
+    const glm::dvec3 face = triangle_normal(glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t]]),
+                                            glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t + 1]]),
+                                            glm::dvec3(gltf.mesh.positions[gltf.mesh.indices[t + 2]]));
     // The pole's corners are a hair apart (sin π in floats): the slivers
     // there have no normal of their own and take their neighbours'.
     if (glm::length(face) < 0.5) {

@@ -11,9 +11,9 @@
 
 #include "gltf_import_checks.h"
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/import_error.h"
-#include "scene/obj_import.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/import_error.h"
+#include "scene/import/obj_import.h"
 #include "support/generated_models.h"
 #include "support/gltf_meshopt_writer.h"
 #include "support/gltf_twin.h"
@@ -34,7 +34,9 @@ using test_checks::make_bundle;
 using test_checks::sphere_parts;
 using test_checks::unmatched_triangles;
 
-json& extension_of(GltfParts& parts, int view) { return parts.json["bufferViews"][view]["extensions"]["EXT_meshopt_compression"]; }
+json& extension_of(GltfParts& parts, int view) {
+  return parts.json["bufferViews"][view]["extensions"]["EXT_meshopt_compression"];
+}
 
 // The first view compressed in `mode`.
 int first_view(const GltfParts& parts, const std::string& mode) {
@@ -150,8 +152,13 @@ TEST(GltfMeshopt, QuantizedDataThroughEveryFilterFeedsTheAccessors) {
   parts.json["bufferViews"][uv_view]["byteStride"] = 8;
   parts.json["bufferViews"][colour_view]["byteStride"] = 8;
   parts.json["accessors"] = {
-      {{"bufferView", position_view}, {"componentType", 5122}, {"normalized", true}, {"count", n}, {"type", "VEC3"},
-       {"min", {-1, -1, -1}}, {"max", {1, 1, 1}}},
+      {{"bufferView", position_view},
+       {"componentType", 5122},
+       {"normalized", true},
+       {"count", n},
+       {"type", "VEC3"},
+       {"min", {-1, -1, -1}},
+       {"max", {1, 1, 1}}},
       {{"bufferView", normal_view}, {"componentType", 5120}, {"normalized", true}, {"count", n}, {"type", "VEC3"}},
       {{"bufferView", uv_view}, {"componentType", 5126}, {"count", n}, {"type", "VEC2"}},
       {{"bufferView", colour_view}, {"componentType", 5122}, {"normalized", true}, {"count", n}, {"type", "VEC4"}},
@@ -201,8 +208,9 @@ TEST(GltfMeshoptMalformed, ATruncatedStreamIsRefusedNamingTheView) {
   json& index_extension = extension_of(parts, triangles);
   index_extension["byteLength"] = index_extension["byteLength"].get<std::size_t>() - 20;
   const std::string index_error = import_error(test::pack_gltf(parts, GltfForm::Glb));
-  EXPECT_NE(index_error.find("buffer view " + std::to_string(triangles) + " (EXT_meshopt_compression) cannot be decoded"),
-            std::string::npos)
+  EXPECT_NE(
+      index_error.find("buffer view " + std::to_string(triangles) + " (EXT_meshopt_compression) cannot be decoded"),
+      std::string::npos)
       << index_error;
 }
 

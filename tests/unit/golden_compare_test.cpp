@@ -39,9 +39,9 @@ TEST(GoldenCompare, TheDiffImageShowsBothAndTheirDifference) {
   const image::Image diff = side_by_side_diff(reference, changed);
   EXPECT_EQ(diff.width, 12);
   EXPECT_EQ(diff.height, 2);
-  EXPECT_EQ(diff.rgba[0], 100);            // reference
-  EXPECT_EQ(diff.rgba[4 * 4], 110);        // render
-  EXPECT_EQ(diff.rgba[8 * 4], 80);         // 8 × the difference of 10
+  EXPECT_EQ(diff.rgba[0], 100);      // reference
+  EXPECT_EQ(diff.rgba[4 * 4], 110);  // render
+  EXPECT_EQ(diff.rgba[8 * 4], 80);   // 8 × the difference of 10
   EXPECT_EQ(diff.rgba[8 * 4 + 1], 0);
   EXPECT_EQ(diff.rgba[3], 255);
 }

@@ -24,14 +24,14 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "image/png_codec.h"
-#include "scene/bundle_import.h"
-#include "scene/demo_model.h"
-#include "support/gl_context_test.h"
-#include "support/generated_models.h"
-#include "support/golden_compare.h"
-#include "support/in_process_render.h"
 #include "model_checks.h"
 #include "presets.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/demo_model.h"
+#include "support/generated_models.h"
+#include "support/gl_context_test.h"
+#include "support/golden_compare.h"
+#include "support/in_process_render.h"
 
 namespace toond::render {
 namespace {
@@ -73,7 +73,8 @@ std::vector<GoldenCase> feature_cases() {
       {"steps_4_round", Subject::Sphere, {{"shading", {{"steps", 4}, {"rounding", "round"}}}}},
       {"band_aa_off", Subject::Sphere, {{"shading", {{"band_aa", false}}}}},
       {"two_tone", Subject::Sphere, {{"shading", {{"two_tone", {{"enabled", true}}}}}}},
-      {"ramp_colors", Subject::Sphere,
+      {"ramp_colors",
+       Subject::Sphere,
        {{"shading", {{"ramp", {{{"at", 0}, {"color", {0.2, 0.1, 0.4}}}, {{"at", 0.5}, {"color", {0.9, 0.6, 0.3}}}}}}}}},
       {"base_white", Subject::Demo, {{"shading", {{"base", "white"}}}}},
       {"specular_off", Subject::Sphere, {{"specular", {{"enabled", false}}}}},
@@ -98,7 +99,8 @@ std::vector<GoldenCase> feature_cases() {
       {"shadows_floor", Subject::Demo, {{"shadows", {{"enabled", true}}}, {"floor", {{"enabled", true}}}}},
       {"floor_only", Subject::Sphere, {{"floor", {{"enabled", true}, {"color", {0.5, 0.7, 0.5}}}}}},
       {"point_light", Subject::Sphere, {{"lights", {point}}}},
-      {"lights_sum", Subject::Sphere,
+      {"lights_sum",
+       Subject::Sphere,
        {{"light_combine", "sum"},
         {"lights",
          {{{"type", "directional"}, {"direction", {-1, -0.2, -0.5}}, {"color", {1, 0.6, 0.4}}},
@@ -109,7 +111,8 @@ std::vector<GoldenCase> feature_cases() {
       {"vertex_colors", Subject::ColouredCube, json::object()},
       // A low light from the side throws the sphere's shadow across the
       // floor in view, so a broken shadow pass changes many pixels.
-      {"shadows_side_light", Subject::Sphere,
+      {"shadows_side_light",
+       Subject::Sphere,
        {{"shadows", {{"enabled", true}}},
         {"floor", {{"enabled", true}}},
         {"camera", {{"pitch", 35}, {"zoom", 0.55}}},
@@ -147,19 +150,24 @@ class GoldenImage : public test::GlContextTest {
     static const scene::Model demo = scene::import_bundle(scene::make_demo_bundle());
     static const scene::Model sphere =
         scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", test::sphere_obj(64, 32)}}));
-    static const scene::Model cube = scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", test::cube_obj()}}));
+    static const scene::Model cube =
+        scene::import_bundle(scene::test_checks::make_bundle({{"m.obj", test::cube_obj()}}));
     // Every corner its own colour (OBJ "v x y z r g b"), faces blending them.
-    static const scene::Model coloured = scene::import_bundle(scene::test_checks::make_bundle(
-        {{"m.obj",
-          "v -1 -1 -1 1 0 0\nv 1 -1 -1 0 1 0\nv -1 1 -1 0 0 1\nv 1 1 -1 1 1 0\n"
-          "v -1 -1 1 1 0 1\nv 1 -1 1 0 1 1\nv -1 1 1 1 1 1\nv 1 1 1 0.2 0.2 0.2\n"
-          "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n"}}));
+    static const scene::Model coloured = scene::import_bundle(
+        scene::test_checks::make_bundle({{"m.obj",
+                                          "v -1 -1 -1 1 0 0\nv 1 -1 -1 0 1 0\nv -1 1 -1 0 0 1\nv 1 1 -1 1 1 0\n"
+                                          "v -1 -1 1 1 0 1\nv 1 -1 1 0 1 1\nv -1 1 1 1 1 1\nv 1 1 1 0.2 0.2 0.2\n"
+                                          "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n"}}));
     switch (subject) {
-      case Subject::Demo: return demo;
-      case Subject::ColouredCube: return coloured;
-      case Subject::Cube: return cube;
+      case Subject::Demo:
+        return demo;
+      case Subject::ColouredCube:
+        return coloured;
+      case Subject::Cube:
+        return cube;
       case Subject::Sphere:
-      case Subject::SphereAndCube: break;
+      case Subject::SphereAndCube:
+        break;
     }
     return sphere;
   }

@@ -1,9 +1,9 @@
 // The GPU model cache's limits, on a real context (llvmpipe on CI).
 #include <gtest/gtest.h>
 
-#include "render/gpu_model_cache.h"
-#include "scene/bundle_import.h"
-#include "scene/demo_model.h"
+#include "render/frame/gpu_model_cache.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/demo_model.h"
 #include "support/gl_context_test.h"
 
 namespace toond::render {

@@ -1,9 +1,8 @@
 // A pose drawn by the vertex stages (shaders/skinning.glsl), and the same
 // pose posed on the CPU and uploaded (--skinning cpu), against the pose
-// worked out by scene::pose_vertices and drawn as a static mesh: both framed alike, through every pass that moves vertices
-// (main, hull, wireframe, the edges' prepass, shadow) and the data layers.
-// The models are Blender's exports: a walker (13 bones, blended weights,
-// three materials) and a bending bar (3 bones and an animated shape key).
+// worked out by scene::pose_vertices and drawn as a static mesh: both framed alike, through every pass that moves
+// vertices (main, hull, wireframe, the edges' prepass, shadow) and the data layers. The models are Blender's exports: a
+// walker (13 bones, blended weights, three materials) and a bending bar (3 bones and an animated shape key).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,11 +14,11 @@
 #include "gltf_import_checks.h"
 #include "http/render_params_wire.h"
 #include "param_schema.h"
-#include "render/gpu_model.h"
-#include "render/renderer.h"
-#include "scene/pose.h"
+#include "render/frame/gpu_model.h"
+#include "render/run/renderer.h"
+#include "scene/animation/pose.h"
+#include "scene/mesh/extreme_points.h"
 #include "support/gl_context_test.h"
-#include "scene/extreme_points.h"
 #include "support/shared_models.h"
 #include "toond_shader_files.h"
 
@@ -94,7 +93,8 @@ class GpuSkinning : public test::GlContextTest {
     skin->extremes = scene::extreme_points(posed.positions);
     const Model reference = cpu_posed_copy(model, posed, *skin);
 
-    auto skin_on_cpu = std::make_shared<scene::SkinPose>(scene::skin_pose(model.mesh, rig, nodes, scene::Skinning::Cpu));
+    auto skin_on_cpu =
+        std::make_shared<scene::SkinPose>(scene::skin_pose(model.mesh, rig, nodes, scene::Skinning::Cpu));
     skin_on_cpu->bounds = skin->bounds;
     skin_on_cpu->extremes = skin->extremes;
 
@@ -161,11 +161,13 @@ TEST_F(GpuSkinning, MorphedTangentsTurnANormalMapAlike) {
   scene::Texture tilted;
   tilted.width = tilted.height = 4;
   tilted.color_space = scene::ColorSpace::Linear;
-  for (int i = 0; i < 16; ++i) tilted.rgba.insert(tilted.rgba.end(), {230, 128, 180, 255});  // (0.8, 0, 0.4) in tangent space
+  for (int i = 0; i < 16; ++i)
+    tilted.rgba.insert(tilted.rgba.end(), {230, 128, 180, 255});  // (0.8, 0, 0.4) in tangent space
   model.textures.push_back(tilted);
   for (scene::Material& m : model.materials) m.normal_texture = static_cast<int>(model.textures.size() - 1);
   auto rig = std::make_shared<scene::Rig>(*model.rig);
-  for (scene::MorphSet& set : rig->morph_sets) set.tangent_deltas.assign(set.position_deltas.size(), glm::vec3(0, 2, 1));
+  for (scene::MorphSet& set : rig->morph_sets)
+    set.tangent_deltas.assign(set.position_deltas.size(), glm::vec3(0, 2, 1));
   model.rig = rig;
   expect_gpu_pose_is_cpu_pose(model, "Bend", 0.5);
 }

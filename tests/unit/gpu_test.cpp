@@ -2,10 +2,10 @@
 #include <gtest/gtest.h>
 
 #include "gpu/egl_context.h"
-#include "support/gl_context_test.h"
 #include "gpu/program.h"
 #include "gpu/render_target.h"
 #include "gpu/shader_compile_error.h"
+#include "support/gl_context_test.h"
 
 namespace toond::gpu {
 namespace {

@@ -1,4 +1,4 @@
-// The hull's faces left out before drawing (render/hull_cull.h): which
+// The hull's faces left out before drawing (render/cull/hull_cull.h): which
 // edges pair up, which faces a view leaves out on the CPU, and, with a GL
 // context, that leaving them out changes no byte of any image while it
 // does leave most of them out.
@@ -19,11 +19,11 @@
 #include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
-#include "render/background_thread.h"
-#include "render/gpu_model.h"
-#include "render/hull_cull.h"
-#include "render/renderer.h"
-#include "scene/bundle_import.h"
+#include "render/cull/background_thread.h"
+#include "render/cull/hull_cull.h"
+#include "render/frame/gpu_model.h"
+#include "render/run/renderer.h"
+#include "scene/import/bundle_import.h"
 #include "support/generated_models.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"
@@ -38,7 +38,8 @@ HullCullMesh::Stream stream(const std::vector<glm::vec3>& values) {
 
 HullCullMesh mesh_of(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
   const std::vector<scene::Submesh> one = {{0, static_cast<std::uint32_t>(indices.size()), 0}};
-  return HullCullMesh(stream(positions), stream(std::vector<glm::vec3>(positions.size(), glm::vec3(0.0f))), indices, one);
+  return HullCullMesh(stream(positions), stream(std::vector<glm::vec3>(positions.size(), glm::vec3(0.0f))), indices,
+                      one);
 }
 
 TEST(HullCull, OnlyAnEdgeWalkedOnceEachWayByTwoFacesHasANeighbour) {
@@ -189,7 +190,8 @@ std::string sphere_before_sphere_obj() {
 }
 
 TEST(HullCull, ARimWithTheModelUnderBothSidesLeavesItsFacesOut) {
-  const scene::Model alone = scene::test_checks::model_of_obj(test::sphere_obj(24, 12, 0.35, glm::dvec3(0.2, 0.1, 1.3)));
+  const scene::Model alone =
+      scene::test_checks::model_of_obj(test::sphere_obj(24, 12, 0.35, glm::dvec3(0.2, 0.1, 1.3)));
   const scene::Model both = scene::test_checks::model_of_obj(sphere_before_sphere_obj());
   HullCullView view = sphere_view(256, 2.0);
   // How many of the small sphere's faces (its vertices come last) are kept.
@@ -198,7 +200,8 @@ TEST(HullCull, ARimWithTheModelUnderBothSidesLeavesItsFacesOut) {
     const std::optional<HullSubset> subset = hull_faces_that_may_show(cull, view);
     EXPECT_TRUE(subset);
     std::size_t kept = 0;
-    for (std::size_t e = 0; subset && e < subset->indices.size(); e += 3) kept += subset->indices[e] >= first_small_vertex;
+    for (std::size_t e = 0; subset && e < subset->indices.size(); e += 3)
+      kept += subset->indices[e] >= first_small_vertex;
     return kept;
   };
   const std::size_t alone_kept = small_kept(alone.mesh, 0);
@@ -310,11 +313,12 @@ TEST_F(HullCullRender, TheDefaultCullsOnACpuRasterizerOnly) {
 TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {
   const scene::Model sphere = scene::test_checks::model_of_obj(test::sphere_obj(64, 32));
   const scene::Model cube = scene::test_checks::model_of_obj(test::cube_obj());
-  const scene::Model messy = scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 64, .rings = 32, .jitter = 1e-7}));
-  const scene::Model faceted =
-      scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::PerFace}));
-  const scene::Model bare =
-      scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::None}));
+  const scene::Model messy =
+      scene::test_checks::model_of_obj(test::exporter_sphere_obj({.segments = 64, .rings = 32, .jitter = 1e-7}));
+  const scene::Model faceted = scene::test_checks::model_of_obj(
+      test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::PerFace}));
+  const scene::Model bare = scene::test_checks::model_of_obj(
+      test::exporter_sphere_obj({.segments = 48, .rings = 24, .normals = test::ExporterSphere::Normals::None}));
   // The cube's twelve faces all reach its silhouette: it keeps them all.
   expect_same_image({{&cube, glm::dmat4(1.0)}}, requests().front(), "cube");
   // A one-sided disk seen from behind: the main pass draws its faces turned
@@ -322,16 +326,16 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfGeneratedModels) {
   // no face has a covered point in its box and none may be left out.
   const scene::Model disk = scene::test_checks::model_of_obj(test::disk_obj(96));
   for (const int yaw : {0, 180}) {
-    const std::size_t culled =
-        expect_same_image({{&disk, glm::dmat4(1.0)}}, {{"width", 160}, {"height", 160}, {"camera", {{"yaw", yaw}}}}, "disk");
+    const std::size_t culled = expect_same_image({{&disk, glm::dmat4(1.0)}},
+                                                 {{"width", 160}, {"height", 160}, {"camera", {{"yaw", yaw}}}}, "disk");
     if (yaw == 180) {
       EXPECT_EQ(culled, 0u);
     }
   }
   const scene::Model nested = scene::test_checks::model_of_obj(sphere_before_sphere_obj());
-  for (const auto& [model, what] : {std::pair{&sphere, "sphere"}, std::pair{&messy, "messy"},
-                                    std::pair{&faceted, "per-face normals"}, std::pair{&bare, "no normals"},
-                                    std::pair{&nested, "sphere before sphere"}}) {
+  for (const auto& [model, what] :
+       {std::pair{&sphere, "sphere"}, std::pair{&messy, "messy"}, std::pair{&faceted, "per-face normals"},
+        std::pair{&bare, "no normals"}, std::pair{&nested, "sphere before sphere"}}) {
     for (const nlohmann::json& request : requests()) {
       EXPECT_GT(expect_same_image({{model, glm::dmat4(1.0)}}, request, what), 0u) << what << " " << request;
     }
@@ -346,13 +350,16 @@ TEST_F(HullCullRender, LeavingFacesOutChangesNoByteOfScenes) {
   const scene::Model cube = scene::test_checks::model_of_obj(test::cube_obj());
   const glm::dmat4 left = glm::translate(glm::dmat4(1.0), glm::dvec3(-2.0, 0.0, 0.0));
   const glm::dmat4 right = glm::translate(glm::dmat4(1.0), glm::dvec3(2.0, 0.0, 0.0));
-  const glm::dmat4 plank = glm::rotate(glm::scale(glm::dmat4(1.0), glm::dvec3(2.2, 0.03, 0.03)), 0.05,
-                                       glm::dvec3(0.0, 0.0, 1.0));
-  const glm::dmat4 mirrored = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.8, -0.5)), glm::dvec3(-1, 1, 1));
-  const glm::dmat4 stretched = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, -1.8, 0.3)), glm::dvec3(1.6, 0.4, 1));
+  const glm::dmat4 plank =
+      glm::rotate(glm::scale(glm::dmat4(1.0), glm::dvec3(2.2, 0.03, 0.03)), 0.05, glm::dvec3(0.0, 0.0, 1.0));
+  const glm::dmat4 mirrored =
+      glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.8, -0.5)), glm::dvec3(-1, 1, 1));
+  const glm::dmat4 stretched =
+      glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, -1.8, 0.3)), glm::dvec3(1.6, 0.4, 1));
   // Grown alike on every axis: the cull turns its offsets by one factor.
-  const glm::dmat4 grown = glm::rotate(glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -5.0)), glm::dvec3(2.5)),
-                                       0.4, glm::dvec3(1.0, 1.0, 0.0));
+  const glm::dmat4 grown =
+      glm::rotate(glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -5.0)), glm::dvec3(2.5)), 0.4,
+                  glm::dvec3(1.0, 1.0, 0.0));
   for (const nlohmann::json& request : requests()) {
     const std::size_t culled = expect_same_image(
         {{&sphere, left}, {&sphere, right}, {&cube, plank}, {&cube, mirrored}, {&sphere, stretched}, {&sphere, grown}},

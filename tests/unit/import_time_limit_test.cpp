@@ -8,7 +8,7 @@
 #include <string>
 
 #include "model_checks.h"
-#include "scene/bundle_import.h"
+#include "scene/import/bundle_import.h"
 #include "support/generated_models.h"
 
 namespace toond::scene {
@@ -30,9 +30,9 @@ TEST(ImportTimeLimit, AnImportPastItsDeadlineIsAbandonedNamingTheLimit) {
   ImportLimits limits;
   limits.max_seconds = 1e-9;
   EXPECT_EQ(limit_named_by(make_bundle({{"s.obj", test::sphere_obj(64, 32)}}), limits), ImportLimit::Seconds);
-  EXPECT_EQ(limit_named_by(make_bundle({{"s.m", "Vertex 1 0 0 0\nVertex 2 1 0 0\nVertex 3 0 1 0\nFace 1 1 2 3\n"}}),
-                           limits),
-            ImportLimit::Seconds);
+  EXPECT_EQ(
+      limit_named_by(make_bundle({{"s.m", "Vertex 1 0 0 0\nVertex 2 1 0 0\nVertex 3 0 1 0\nFace 1 1 2 3\n"}}), limits),
+      ImportLimit::Seconds);
 }
 
 TEST(ImportTimeLimit, ADeadlineAlreadySetIsKept) {

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/mesh_builder.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/mesh_builder.h"
 
 namespace toond::scene {
 namespace {

@@ -1,5 +1,5 @@
 // Where separate parts of a model pass through each other
-// (scene/intersection_lines.h): the seams import finds, on clean and on
+// (scene/mesh/intersection_lines.h): the seams import finds, on clean and on
 // messy input (split copies of vertices, near-duplicates, seams cut into
 // pieces by the triangles of both parts), the contacts that make no line
 // (boxes stacked flush, faces lying on faces) and the one that does (a
@@ -19,15 +19,15 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "model_checks.h"
-#include "render/frame_plan.h"
-#include "render/intersections_known.h"
-#include "render/render_params.h"
-#include "scene/bundle_import.h"
-#include "scene/crease_edges.h"
-#include "scene/demo_model.h"
-#include "scene/intersection_lines.h"
-#include "scene/obj_import.h"
-#include "scene/pose.h"
+#include "render/plan/frame_plan.h"
+#include "render/plan/intersections_known.h"
+#include "render/plan/render_params.h"
+#include "scene/animation/pose.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/demo_model.h"
+#include "scene/import/obj_import.h"
+#include "scene/mesh/crease_edges.h"
+#include "scene/mesh/intersection_lines.h"
 #include "support/in_process_render.h"
 #include "support/shared_models.h"
 
@@ -102,7 +102,8 @@ struct Soup {
     const auto at = [&](int r, int s) { return first + static_cast<std::uint32_t>(r * (segments + 1) + s); };
     for (int r = 0; r < rings; ++r) {
       for (int s = 0; s < segments; ++s) {
-        indices.insert(indices.end(), {at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r, s), at(r + 1, s + 1), at(r + 1, s)});
+        indices.insert(indices.end(),
+                       {at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r, s), at(r + 1, s + 1), at(r + 1, s)});
       }
     }
   }
@@ -153,7 +154,7 @@ std::size_t loose_ends(const IntersectionLines& lines, double near) {
   return loose;
 }
 
-// The demo model (scene/demo_model.cpp): a sphere of radius 0.6 centred
+// The demo model (scene/import/demo_model.cpp): a sphere of radius 0.6 centred
 // 0.95 above the floor, sunk 0.05 into a box 0.4 high. Where they cross is
 // a circle on the box's top of radius √(0.6² − 0.55²), the polygon the
 // sphere's facets cut from it; the surfaces meet there at a sharp wedge.
@@ -338,8 +339,8 @@ TEST(IntersectionLines, TheSearchGivesUpAtItsDeadline) {
 TEST(IntersectionLines, APosesSeamsLieOnTwoPartsInThatPose) {
   setenv("TOOND_ASSIMP_CONVERTER", TOOND_ASSIMP_CONVERTER_PATH, 1);
   const std::filesystem::path folder = std::filesystem::path(TOOND_EXPORTED_DIR) / "minetest";
-  const Model player = import_bundle(
-      test_checks::make_bundle({{"character.b3d", test::read_file(folder / "character.b3d")}}));
+  const Model player =
+      import_bundle(test_checks::make_bundle({{"character.b3d", test::read_file(folder / "character.b3d")}}));
   ASSERT_TRUE(player.rig);
   const Mesh& mesh = player.mesh;
   const Rig& rig = *player.rig;
@@ -388,9 +389,10 @@ TEST(IntersectionLines, APosesSeamsLieOnTwoPartsInThatPose) {
       apart += glm::distance(carried[0].second, carried[1].second) > 0.005 * diagonal;
     }
   }
-  std::printf("[seams] minetest player walking: %zu seam segments in the pose, %zu at rest; of %zu rest seam ends, "
-              "%zu land more than 0.5 %% of the model apart carried by either part\n",
-              now.size(), mesh.intersections.size(), ends, apart);
+  std::printf(
+      "[seams] minetest player walking: %zu seam segments in the pose, %zu at rest; of %zu rest seam ends, "
+      "%zu land more than 0.5 %% of the model apart carried by either part\n",
+      now.size(), mesh.intersections.size(), ends, apart);
   EXPECT_GT(ends, 0u);
   EXPECT_GT(apart, 0u);
 }

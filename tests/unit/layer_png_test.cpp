@@ -34,8 +34,8 @@ std::vector<Sample> read_as(const std::string& png, png_uint_32 format, png_uint
   image.format = format;
   std::vector<Sample> samples(PNG_IMAGE_SIZE(image) / sizeof(Sample));
   std::vector<png_byte> colour_map(PNG_IMAGE_COLORMAP_SIZE(image));
-  EXPECT_TRUE(png_image_finish_read(&image, nullptr, samples.data(), 0,
-                                    colour_map.empty() ? nullptr : colour_map.data()))
+  EXPECT_TRUE(
+      png_image_finish_read(&image, nullptr, samples.data(), 0, colour_map.empty() ? nullptr : colour_map.data()))
       << image.message;
   return samples;
 }

@@ -12,8 +12,8 @@
 #include "http/render_params_wire.h"
 #include "param_schema.h"
 #include "presets.h"
-#include "render/camera.h"
-#include "render/light_space.h"
+#include "render/plan/camera.h"
+#include "render/plan/light_space.h"
 #include "request_error.h"
 
 namespace toond::render {

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "http/error_response.h"
-#include "render/render_service.h"
-#include "scene/import_limits.h"
+#include "render/run/render_service.h"
+#include "scene/import/import_limits.h"
 
 namespace toond::http {
 namespace {

@@ -16,8 +16,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "gltf_import_checks.h"
-#include "scene/motion_classes.h"
-#include "scene/pose.h"
+#include "scene/animation/motion_classes.h"
+#include "scene/animation/pose.h"
 #include "support/gltf_rig_writer.h"
 #include "support/surface_distance.h"
 
@@ -44,7 +44,8 @@ test::GltfPrimitive cylinder() {
   const auto at = [](int r, int s) { return static_cast<std::uint32_t>(r * kSegments + (s % kSegments)); };
   for (int r = 0; r + 1 < kRings; ++r) {
     for (int s = 0; s < kSegments; ++s) {
-      p.indices.insert(p.indices.end(), {at(r, s), at(r + 1, s), at(r, s + 1), at(r, s + 1), at(r + 1, s), at(r + 1, s + 1)});
+      p.indices.insert(p.indices.end(),
+                       {at(r, s), at(r + 1, s), at(r, s + 1), at(r, s + 1), at(r + 1, s), at(r + 1, s + 1)});
     }
   }
   const auto bottom = static_cast<std::uint32_t>(p.positions.size());
@@ -116,15 +117,16 @@ test::GltfFiles bending_arm(Weights kind, bool with_morph) {
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) inverse_binds.push_back(static_cast<float>(inverse[c][r]));
   }
-  p.json["skins"] = {{{"joints", {1, 2, 3}}, {"inverseBindMatrices", test::append_float_accessor(p, inverse_binds, "MAT4")}}};
+  p.json["skins"] = {
+      {{"joints", {1, 2, 3}}, {"inverseBindMatrices", test::append_float_accessor(p, inverse_binds, "MAT4")}}};
   p.json["nodes"][0]["skin"] = 0;
   const int times = test::append_float_accessor(p, {0.0f, 0.25f, 0.5f, 0.75f, 1.0f}, "SCALAR");
   const auto turns = [&](double scale) {
     std::vector<float> keys;
     for (const double degrees : {0.0, 35.0, 0.0, -35.0, 0.0}) {
       const glm::dquat q = glm::angleAxis(glm::radians(degrees * scale), glm::dvec3(1, 0, 0));
-      keys.insert(keys.end(), {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z),
-                               static_cast<float>(q.w)});
+      keys.insert(keys.end(),
+                  {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z), static_cast<float>(q.w)});
     }
     return test::append_float_accessor(p, keys, "VEC4");
   };
@@ -142,7 +144,7 @@ test::GltfFiles bending_arm(Weights kind, bool with_morph) {
 }
 
 struct Stray {
-  double worst = 0;  // the farthest a full-detail vertex lies from the level
+  double worst = 0;    // the farthest a full-detail vertex lies from the level
   double allowed = 0;  // the level's error times the pose's stretch
   std::size_t outliers = 0;
 };
@@ -171,8 +173,8 @@ void expect_every_level_poses_within_its_error(const Model& model) {
     for (std::size_t l = 0; l < model.mesh.lods.size(); ++l) {
       const MeshLod& level = model.mesh.lods[l];
       const Stray stray = stray_in_pose(model, level, time);
-      EXPECT_EQ(stray.outliers, 0u) << "level " << l + 1 << " (" << level.triangle_count() << " triangles) at "
-                                    << time << " s: worst " << stray.worst << ", allowed " << stray.allowed;
+      EXPECT_EQ(stray.outliers, 0u) << "level " << l + 1 << " (" << level.triangle_count() << " triangles) at " << time
+                                    << " s: worst " << stray.worst << ", allowed " << stray.allowed;
     }
   }
 }
@@ -208,7 +210,8 @@ TEST(MotionClasses, VerticesShareAClassExactlyWhereTheirWeightsAreEqualAndNoMorp
     const glm::dvec3 p = glm::dvec3(model.mesh.positions[v]) + model.mesh.origin;
     const bool bulges = std::abs(p.y - bulge_y) < 1e-4 && glm::length(glm::dvec2(p.x, p.z)) > 0.1;
     if (bulges) {
-      bulging_points_of_class[classes[v]].insert({static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
+      bulging_points_of_class[classes[v]].insert(
+          {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
       continue;
     }
     const auto w = bone_weights(p.y, Weights::Blended);

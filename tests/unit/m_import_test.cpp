@@ -7,12 +7,12 @@
 #include <string>
 
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/import_error.h"
-#include "scene/m_import.h"
-#include "scene/mesh_processing.h"
-#include "scene/model_store.h"
-#include "scene/obj_import.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/import_error.h"
+#include "scene/import/m_import.h"
+#include "scene/import/obj_import.h"
+#include "scene/mesh/mesh_processing.h"
+#include "scene/store/model_store.h"
 
 namespace toond::scene {
 namespace {
@@ -35,9 +35,7 @@ const std::string kTetrahedron =
     "Face 3  20 5 7\n"
     "Face 4  5 10 7\n";
 
-glm::vec3 corner(int bits) {
-  return {(bits & 1) ? 1.0f : -1.0f, (bits & 2) ? 1.0f : -1.0f, (bits & 4) ? 1.0f : -1.0f};
-}
+glm::vec3 corner(int bits) { return {(bits & 1) ? 1.0f : -1.0f, (bits & 2) ? 1.0f : -1.0f, (bits & 4) ? 1.0f : -1.0f}; }
 
 std::string number(float v) { return std::to_string(v); }
 
@@ -57,8 +55,8 @@ std::string cube_m(const std::string& eol = "\n") {
     const glm::vec3 n = glm::normalize(p) * 2.0f;  // not unit: normalised on import
     text += "Vertex " + std::to_string(100 + 3 * i) + " " + number(p.x) + " " + number(p.y) + " " + number(p.z) +
             " {wid=" + std::to_string(i) + " normal=(" + number(n.x) + " " + number(n.y) + " " + number(n.z) +
-            ") uv=(" + std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + ") rgb=(" +
-            std::to_string(i & 1) + " 0.5 " + std::to_string((i >> 2) & 1) + ")}" + eol;
+            ") uv=(" + std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + ") rgb=(" + std::to_string(i & 1) +
+            " 0.5 " + std::to_string((i >> 2) & 1) + ")}" + eol;
   }
   text += "Corner 100 1 {normal=(0 0 1)}" + eol;
   return text;
@@ -115,8 +113,7 @@ TEST(MImport, CubeWithQuadsNormalsUVsAndColours) {
       EXPECT_NEAR(glm::length(m.mesh.normals[v] - glm::normalize(p)), 0.0f, 1e-5f);
       const int bits = (p.x > 0 ? 1 : 0) | (p.y > 0 ? 2 : 0) | (p.z > 0 ? 4 : 0);
       EXPECT_EQ(m.mesh.texcoords[v], glm::vec2(static_cast<float>(bits & 1), static_cast<float>((bits >> 1) & 1)));
-      EXPECT_EQ(m.mesh.colors[v],
-                glm::vec3(static_cast<float>(bits & 1), 0.5f, static_cast<float>((bits >> 2) & 1)));
+      EXPECT_EQ(m.mesh.colors[v], glm::vec3(static_cast<float>(bits & 1), 0.5f, static_cast<float>((bits >> 2) & 1)));
     }
     for (std::size_t t = 0; t < m.mesh.indices.size(); t += 3) {
       const glm::dvec3 a = m.mesh.positions[m.mesh.indices[t]];
@@ -178,8 +175,9 @@ TEST(MImport, MalformedLinesAreImportErrorsNamingTheLine) {
 TEST(MImport, NothingToRenderIsAnImportError) {
   expect_import_error(import_any, make_bundle({{"e.m", ""}}), "e.m", "no faces");
   expect_import_error(import_any, make_bundle({{"e.m", "# only comments\nVertex 1 0 0 0\n"}}), "e.m", "no faces");
-  expect_import_error(import_any, make_bundle({{"e.m", "Vertex 1 0 0 0\nVertex 2 1 0 0\nVertex 3 2 0 0\nFace 1 1 2 3\n"}}),
-                      "e.m", "no faces");
+  expect_import_error(import_any,
+                      make_bundle({{"e.m", "Vertex 1 0 0 0\nVertex 2 1 0 0\nVertex 3 2 0 0\nFace 1 1 2 3\n"}}), "e.m",
+                      "no faces");
 }
 
 TEST(MImport, TolerantAttributes) {
@@ -212,13 +210,12 @@ TEST(MImport, FarFromOriginIsRecentredInDouble) {
 TEST(BundleImport, PicksTheImporterByExtension) {
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
   EXPECT_EQ(import_bundle(make_bundle({{"tet.m", kTetrahedron}})).mesh.triangle_count(), 4u);
-  EXPECT_EQ(import_bundle(make_bundle({{"sub/TET.M", kTetrahedron}, {"notes.txt", "x"}})).mesh.triangle_count(),
-            4u);
+  EXPECT_EQ(import_bundle(make_bundle({{"sub/TET.M", kTetrahedron}, {"notes.txt", "x"}})).mesh.triangle_count(), 4u);
   EXPECT_EQ(import_bundle(make_bundle({{"tri.obj", obj}, {"tri.mtl", ""}})).mesh.triangle_count(), 1u);
   EXPECT_EQ(import_bundle(make_bundle({{"Tri.OBJ", obj}})).mesh.triangle_count(), 1u);
   // Names that only contain the extensions are not model files.
-  expect_import_error(import_any, make_bundle({{"a.mtl", "newmtl a\n"}, {"b.obj.txt", obj}, {"c.mm", ""}}), "", "no model (.obj, .gltf, .glb, .stl, .ply, .fbx",
-                      "'a.mtl'");
+  expect_import_error(import_any, make_bundle({{"a.mtl", "newmtl a\n"}, {"b.obj.txt", obj}, {"c.mm", ""}}), "",
+                      "no model (.obj, .gltf, .glb, .stl, .ply, .fbx", "'a.mtl'");
   expect_import_error(import_any, Bundle{}, "", "no model (.obj, .gltf, .glb, .stl, .ply, .fbx", "empty");
 }
 
@@ -231,7 +228,8 @@ TEST(BundleImport, ExactlyOneModelFile) {
     EXPECT_NE(std::string(e.what()).find("'a.obj'"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("'b.m'"), std::string::npos) << e.what();
   }
-  expect_import_error(import_any, make_bundle({{"a.m", kTetrahedron}, {"x/b.M", kTetrahedron}}), "x/b.M", "'a.m'", "'x/b.M'");
+  expect_import_error(import_any, make_bundle({{"a.m", kTetrahedron}, {"x/b.M", kTetrahedron}}), "x/b.M", "'a.m'",
+                      "'x/b.M'");
   // The format importers keep their own entry points.
   EXPECT_THROW(import_m_bundle(make_bundle({{"a.obj", "v 0 0 0\n"}})), ImportError);
   EXPECT_EQ(import_obj_bundle(make_bundle({{"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}, {"b.m", ""}}))

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "model_checks.h"
-#include "render/lod_choice.h"
-#include "scene/bundle_import.h"
-#include "scene/mesh_lod.h"
-#include "scene/mesh_processing.h"
+#include "render/plan/lod_choice.h"
+#include "scene/import/bundle_import.h"
+#include "scene/mesh/mesh_lod.h"
+#include "scene/mesh/mesh_processing.h"
 #include "support/generated_models.h"
 
 namespace toond::scene {

@@ -4,7 +4,7 @@
 #include <numbers>
 #include <vector>
 
-#include "scene/mesh_processing.h"
+#include "scene/mesh/mesh_processing.h"
 
 namespace toond::scene {
 namespace {
@@ -97,8 +97,7 @@ TEST(MeshProcessing, HardCubeKeepsFaceNormalsButSharesOutlineNormals) {
   // mitred so that each of the three faces moves out by exactly one unit.
   for (std::size_t v = 0; v < 24; ++v) {
     EXPECT_NEAR(glm::length(outline[v]), std::sqrt(3.0f), kTol) << "vertex " << v;
-    EXPECT_NEAR(glm::dot(glm::normalize(outline[v]), glm::normalize(cube.positions[v])), 1.0f, kTol)
-        << "vertex " << v;
+    EXPECT_NEAR(glm::dot(glm::normalize(outline[v]), glm::normalize(cube.positions[v])), 1.0f, kTol) << "vertex " << v;
     for (std::size_t face = 0; face < 6; ++face) {
       const glm::vec3 n = normals[face * 4];
       // Faces that meet at this corner see the plane move by one unit.
@@ -242,10 +241,11 @@ TEST(MeshProcessing, TangentIsOrthogonalisedAgainstTheShadingNormal) {
 
 TEST(MeshProcessing, DegenerateOrMissingUVsGiveAPerpendicularTangent) {
   TangentCase q;
-  for (const auto& uvs : {std::vector<glm::vec2>(4, glm::vec2(0.5f)),                      // all equal
-                          std::vector<glm::vec2>{{0, 0}, {1, 1}, {2, 2}, {3, 3}},            // collinear
-                          std::vector<glm::vec2>{{0, 0}, {1e30f, 0}, {1e30f, 1e30f}, {0, 1e30f}},  // huge (still finite)
-                          std::vector<glm::vec2>{}}) {                                         // none
+  for (const auto& uvs :
+       {std::vector<glm::vec2>(4, glm::vec2(0.5f)),                              // all equal
+        std::vector<glm::vec2>{{0, 0}, {1, 1}, {2, 2}, {3, 3}},                  // collinear
+        std::vector<glm::vec2>{{0, 0}, {1e30f, 0}, {1e30f, 1e30f}, {0, 1e30f}},  // huge (still finite)
+        std::vector<glm::vec2>{}}) {                                             // none
     q.uvs = uvs;
     const auto tangents = q.run();
     ASSERT_EQ(tangents.size(), 4u);

@@ -17,9 +17,9 @@
 #include <nlohmann/json.hpp>
 
 #include "http/error_response.h"
-#include "scene/model_pins.h"
-#include "scene/model_store.h"
-#include "scene/model_use.h"
+#include "scene/store/model_pins.h"
+#include "scene/store/model_store.h"
+#include "scene/store/model_use.h"
 
 namespace toond::scene {
 namespace {

@@ -8,9 +8,9 @@
 #include <set>
 #include <thread>
 
-#include "scene/demo_model.h"
-#include "scene/import_error.h"
-#include "scene/model_store.h"
+#include "scene/import/demo_model.h"
+#include "scene/import/import_error.h"
+#include "scene/store/model_store.h"
 
 namespace toond::scene {
 namespace {
@@ -29,8 +29,7 @@ class ModelStoreTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("toond-store-" + std::to_string(::getpid()) + "-" + info->name());
+    dir_ = fs::temp_directory_path() / ("toond-store-" + std::to_string(::getpid()) + "-" + info->name());
     fs::remove_all(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -86,7 +85,7 @@ TEST_F(ModelStoreTest, PutStoresOnceAndReportsTheModel) {
   EXPECT_EQ(first.info.textures, 1u);
   EXPECT_EQ(first.info.bytes, bundle.total_bytes());
   EXPECT_EQ(first.info.files, (std::vector<std::string>{"demo.mtl", "demo.obj", "ramps/sharp.png", "textures/demo.png",
-                                      "textures/floor.png"}));
+                                                        "textures/floor.png"}));
   EXPECT_TRUE(first.info.warnings.empty());
   EXPECT_TRUE(fs::is_regular_file(dir_ / "models" / first.info.id / "info.json"));
   EXPECT_TRUE(fs::is_regular_file(dir_ / "models" / first.info.id / "files" / "textures" / "demo.png"));
@@ -182,8 +181,8 @@ TEST_F(ModelStoreTest, IdsFromOutsideCannotEscape) {
   const std::string id = store.put(triangle_bundle()).info.id;
   std::string upper = id;
   for (auto& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  for (const std::string& bad : {std::string(".."), std::string("../models"), std::string(""), upper,
-                                id.substr(0, 31), id + "0", std::string("/etc")}) {
+  for (const std::string& bad : {std::string(".."), std::string("../models"), std::string(""), upper, id.substr(0, 31),
+                                 id + "0", std::string("/etc")}) {
     EXPECT_FALSE(store.info(bad)) << bad;
     EXPECT_FALSE(store.load(bad)) << bad;
     EXPECT_FALSE(store.remove(bad)) << bad;
@@ -225,8 +224,12 @@ TEST(ModelInfo, JsonRoundTrip) {
 }
 
 TEST(ModelInfo, ARecordWithoutAnUpAxisReadsAsItWasImported) {
-  nlohmann::json j = {{"id", "0123456789abcdef0123456789abcdef"}, {"triangles", 1}, {"materials", 1},
-                      {"textures", 0}, {"bytes", 1}, {"files", {"a.obj"}}};
+  nlohmann::json j = {{"id", "0123456789abcdef0123456789abcdef"},
+                      {"triangles", 1},
+                      {"materials", 1},
+                      {"textures", 0},
+                      {"bytes", 1},
+                      {"files", {"a.obj"}}};
   EXPECT_EQ(ModelInfo::from_json(j).choices.up, ImportChoices::Up::Y);
   j["files"] = {"part.3mf"};
   EXPECT_EQ(ModelInfo::from_json(j).choices.up, ImportChoices::Up::Z);

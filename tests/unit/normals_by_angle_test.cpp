@@ -7,9 +7,9 @@
 #include <string>
 
 #include "model_checks.h"
-#include "scene/mesh_processing.h"
-#include "scene/normals_by_angle.h"
-#include "scene/obj_import.h"
+#include "scene/import/obj_import.h"
+#include "scene/mesh/mesh_processing.h"
+#include "scene/mesh/normals_by_angle.h"
 
 namespace toond::scene {
 namespace {
@@ -109,7 +109,9 @@ TEST(NormalsByAngle, ZeroSplitsEveryEdgeAnd180JoinsEveryTwoSidedOne) {
   const std::vector<std::uint32_t> indices = {0, 1, 2, 0, 2, 3, 1, 4, 2};
   const std::vector<std::uint32_t> classes = {0, 1, 2, 3, 4};
   const std::vector<std::uint8_t> eligible(indices.size(), 1);
-  const auto count = [](const std::vector<std::uint32_t>& g) { return std::set<std::uint32_t>(g.begin(), g.end()).size(); };
+  const auto count = [](const std::vector<std::uint32_t>& g) {
+    return std::set<std::uint32_t>(g.begin(), g.end()).size();
+  };
   EXPECT_EQ(count(corner_groups_by_angle(positions, classes, indices, eligible, 0)), 9u);
   // The quad's diagonal joins corners 0 and 2 of both its triangles.
   EXPECT_EQ(count(corner_groups_by_angle(positions, classes, indices, eligible, 30)), 7u);

@@ -9,18 +9,18 @@
 #include <vector>
 
 #include "model_checks.h"
-#include "scene/import_error.h"
-#include "scene/mesh_processing.h"
-#include "scene/obj_import.h"
-#include "scene/obj_text.h"
-#include "scene/texture_decode.h"
+#include "scene/import/import_error.h"
+#include "scene/import/obj_import.h"
+#include "scene/import/obj_text.h"
+#include "scene/import/texture_decode.h"
+#include "scene/mesh/mesh_processing.h"
 #include "support/shared_models.h"
 
 namespace toond::scene {
 namespace {
 
-using test_checks::expect_import_error;
 using test_checks::bundle_from_folder;
+using test_checks::expect_import_error;
 using test_checks::expect_well_formed;
 using test_checks::has_warning;
 using test_checks::make_bundle;
@@ -120,8 +120,7 @@ TEST(ObjImport, HardEdgedCubeSplitsNormalsButSharesOutlineNormals) {
     const glm::vec3 n = m.mesh.normals[v];
     EXPECT_NEAR(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1.0f, 1e-6f);  // a face normal
     // The corner diagonal, mitred: each face plane moves out one unit.
-    EXPECT_NEAR(glm::dot(glm::normalize(m.mesh.outline_normals[v]), glm::normalize(m.mesh.positions[v])), 1.0f,
-                1e-5f);
+    EXPECT_NEAR(glm::dot(glm::normalize(m.mesh.outline_normals[v]), glm::normalize(m.mesh.positions[v])), 1.0f, 1e-5f);
     EXPECT_NEAR(glm::dot(m.mesh.outline_normals[v], n), 1.0f, 1e-5f);
     for (std::size_t w = 0; w < 24; ++w) {
       if (m.mesh.positions[w] == m.mesh.positions[v]) {
@@ -171,8 +170,7 @@ TEST(ObjImport, MaterialsBecomeSubmeshes) {
 }
 
 TEST(ObjImport, MaterialNamesWithBlanks) {
-  const std::string obj =
-      "mtllib ./spaces.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl  Hard Shiny  Plastic \nf 1 2 3\n";
+  const std::string obj = "mtllib ./spaces.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl  Hard Shiny  Plastic \nf 1 2 3\n";
   const std::string mtl = "newmtl Hard Shiny  Plastic\r\nKd 0.1 0.2 0.3\r\n";
   const Model m = import_obj_bundle(make_bundle({{"s.obj", obj}, {"spaces.mtl", mtl}}));
   ASSERT_EQ(m.materials.size(), 1u);
@@ -261,8 +259,8 @@ TEST(ObjImport, MissingMtlIsAWarning) {
   EXPECT_TRUE(has_warning(m, "nothere.mtl")) << warnings_of(m);
   // Said once, by the importer: the parser adds no warning of its own.
   std::size_t about_the_library = 0;
-  for (const std::string& w : m.warnings) about_the_library += w.find("material file") != std::string::npos ||
-                                                               w.find("nothere.mtl") != std::string::npos;
+  for (const std::string& w : m.warnings)
+    about_the_library += w.find("material file") != std::string::npos || w.find("nothere.mtl") != std::string::npos;
   EXPECT_EQ(about_the_library, 1u) << warnings_of(m);
 }
 
@@ -273,7 +271,8 @@ TEST(ObjImport, BadIndicesAreImportErrors) {
   const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n";
   expect_import_error(import_obj_only, make_bundle({{"bad.obj", verts + "f 1 2 9\n"}}), "bad.obj", "bad.obj");
   expect_import_error(import_obj_only, make_bundle({{"bad.obj", verts + "f 1 2 3 9\n"}}), "bad.obj", "does not exist");
-  expect_import_error(import_obj_only, make_bundle({{"bad.obj", verts + "f 1 2 3 4 9\n"}}), "bad.obj", "does not exist");
+  expect_import_error(import_obj_only, make_bundle({{"bad.obj", verts + "f 1 2 3 4 9\n"}}), "bad.obj",
+                      "does not exist");
   expect_import_error(import_obj_only, make_bundle({{"bad.obj", verts + "f 1 2 -7\n"}}), "bad.obj", "does not exist");
   expect_import_error(import_obj_only, make_bundle({{"bad.obj", verts + "f 1 2 0\n"}}), "bad.obj", "bad.obj");
 }
@@ -298,10 +297,10 @@ TEST(ObjImport, BundleMustHoldExactlyOneObj) {
 }
 
 TEST(ObjImport, NothingToRenderIsAnImportError) {
-  expect_import_error(import_obj_only, make_bundle({{"lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\np 1\n"}}), "lines.obj",
-                      "no faces");
-  expect_import_error(import_obj_only, make_bundle({{"flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n"}}), "flat.obj",
-                      "no faces");
+  expect_import_error(import_obj_only, make_bundle({{"lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\np 1\n"}}),
+                      "lines.obj", "no faces");
+  expect_import_error(import_obj_only, make_bundle({{"flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n"}}),
+                      "flat.obj", "no faces");
   expect_import_error(import_obj_only, make_bundle({{"empty.obj", ""}}), "empty.obj", "no faces");
 }
 
@@ -451,8 +450,7 @@ TEST(ObjImport, NormalMapsAreLinearAndStoredApartFromColourMaps) {
 TEST(ObjImport, GreyBumpMapIsAHeightMapAndIgnored) {
   const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n";
   const std::string mtl = "newmtl a\nKd 1 1 1\nbump height.png\nmap_Kd height.png\n";
-  const Model m =
-      import_obj_bundle(make_bundle({{"m.obj", obj}, {"m.mtl", mtl}, {"height.png", tiny_png(9, 9, 9)}}));
+  const Model m = import_obj_bundle(make_bundle({{"m.obj", obj}, {"m.mtl", mtl}, {"height.png", tiny_png(9, 9, 9)}}));
   expect_well_formed(m);
   EXPECT_EQ(m.materials[0].normal_texture, -1);
   EXPECT_EQ(m.materials[0].diffuse_texture, 0);  // still fine as a colour map
@@ -473,15 +471,15 @@ TEST(ObjImport, TangentsFollowTheTextureCoordinates) {
   // A quad in the XY plane facing +Z, U along +X and V along +Y; then the
   // same with U mirrored; then with all UVs equal.
   const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n";
-  const Model plain = import_obj_bundle(
-      make_bundle({{"p.obj", quad + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1/1 2/2/1 3/3/1 4/4/1\n"}}));
+  const Model plain =
+      import_obj_bundle(make_bundle({{"p.obj", quad + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1/1 2/2/1 3/3/1 4/4/1\n"}}));
   expect_well_formed(plain);
   for (const auto& t : plain.mesh.tangents) {
     EXPECT_NEAR(glm::length(glm::vec3(t) - glm::vec3(1, 0, 0)), 0.0f, 1e-6f);
     EXPECT_EQ(t.w, 1.0f);
   }
-  const Model mirrored = import_obj_bundle(
-      make_bundle({{"m.obj", quad + "vt 1 0\nvt 0 0\nvt 0 1\nvt 1 1\nf 1/1/1 2/2/1 3/3/1 4/4/1\n"}}));
+  const Model mirrored =
+      import_obj_bundle(make_bundle({{"m.obj", quad + "vt 1 0\nvt 0 0\nvt 0 1\nvt 1 1\nf 1/1/1 2/2/1 3/3/1 4/4/1\n"}}));
   expect_well_formed(mirrored);
   for (const auto& t : mirrored.mesh.tangents) {
     EXPECT_NEAR(glm::length(glm::vec3(t) - glm::vec3(-1, 0, 0)), 0.0f, 1e-6f);
@@ -495,13 +493,17 @@ TEST(ObjImport, TangentsFollowTheTextureCoordinates) {
 TEST(ObjText, PreparationKeepsLineNumbersAndMeaning) {
   EXPECT_EQ(prepare_obj_text("v 1 2 3\nf 1// 2// 3//\n"), "v 1 2 3\nf 1 2 3\n");
   EXPECT_EQ(prepare_obj_text("f 1/1/ 2/2/ \\\n  3/3/\nv 0 0 0"), "f 1/1 2/2 3/3\n\nv 0 0 0\n");
-  EXPECT_EQ(prepare_obj_text("usemtl  a b\tc  \n"), "usemtl a\x1f" "b\x1f" "c\n");
+  EXPECT_EQ(prepare_obj_text("usemtl  a b\tc  \n"),
+            "usemtl a\x1f"
+            "b\x1f"
+            "c\n");
   EXPECT_EQ(prepare_obj_text("usemtl plain\nf 1/2/3 4//5\n"), "usemtl plain\nf 1/2/3 4//5\n");
   // An mtllib line reaches the material reader in one piece.
-  EXPECT_EQ(prepare_obj_text("mtllib  mats\\a.mtl my\\ file.mtl \n"),
-            "mtllib mats\\\\a.mtl\\ my\\\\\\ file.mtl\n");
+  EXPECT_EQ(prepare_obj_text("mtllib  mats\\a.mtl my\\ file.mtl \n"), "mtllib mats\\\\a.mtl\\ my\\\\\\ file.mtl\n");
   EXPECT_EQ(prepare_obj_text("mtllib plain.mtl\n"), "mtllib plain.mtl\n");
-  EXPECT_EQ(material_alias(" a  b "), "a\x1f" "b");
+  EXPECT_EQ(material_alias(" a  b "),
+            "a\x1f"
+            "b");
 }
 
 // Faces naming a position the file does not define are found before

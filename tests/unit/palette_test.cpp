@@ -34,8 +34,8 @@ void expect_indices_give_back(const Image& image, const Palette& palette) {
 }
 
 TEST(Palette, IndexesEachDistinctColourOnce) {
-  const Image img = from_pixels(3, 2, {{1, 2, 3, 255}, {1, 2, 3, 255}, {9, 9, 9, 255},
-                                       {9, 9, 9, 255}, {1, 2, 3, 255}, {0, 0, 0, 255}});
+  const Image img = from_pixels(
+      3, 2, {{1, 2, 3, 255}, {1, 2, 3, 255}, {9, 9, 9, 255}, {9, 9, 9, 255}, {1, 2, 3, 255}, {0, 0, 0, 255}});
   const auto palette = find_palette(img);
   ASSERT_TRUE(palette);
   EXPECT_EQ(palette->colours().size(), 3u);
@@ -64,8 +64,8 @@ TEST(Palette, ColoursDifferingOnlyInAlphaStayApart) {
 std::vector<Rgba8> distinct_colours(int count) {
   std::vector<Rgba8> colours;
   for (int i = 0; i < count; ++i) {
-    colours.push_back({static_cast<std::uint8_t>(i), static_cast<std::uint8_t>(i / 256),
-                       static_cast<std::uint8_t>(i / 3), 255});
+    colours.push_back(
+        {static_cast<std::uint8_t>(i), static_cast<std::uint8_t>(i / 256), static_cast<std::uint8_t>(i / 3), 255});
   }
   return colours;
 }

@@ -7,7 +7,7 @@
 
 #include "http/render_params_wire.h"
 #include "param_schema.h"
-#include "render/render_params.h"
+#include "render/plan/render_params.h"
 
 namespace toond::proto {
 namespace {
@@ -73,9 +73,12 @@ const json* field_at_pointer(const json& root, const std::string& pointer) {
     std::size_t slash = pointer.find('/', start);
     if (slash == std::string::npos) slash = pointer.size();
     const std::string seg = pointer.substr(start, slash - start);
-    if (s->contains("properties") && (*s)["properties"].contains(seg)) s = &(*s)["properties"][seg];
-    else if (s->contains("items") && seg.find_first_not_of("0123456789") == std::string::npos) s = &(*s)["items"];
-    else return nullptr;
+    if (s->contains("properties") && (*s)["properties"].contains(seg))
+      s = &(*s)["properties"][seg];
+    else if (s->contains("items") && seg.find_first_not_of("0123456789") == std::string::npos)
+      s = &(*s)["items"];
+    else
+      return nullptr;
     start = slash + 1;
   }
   return s;
@@ -83,8 +86,9 @@ const json* field_at_pointer(const json& root, const std::string& pointer) {
 
 void check_condition(const json& condition, const json& field, const std::string& where,
                      std::vector<std::string>& problems) {
-  static const std::set<std::string> known = {"const", "enum", "not", "anyOf", "allOf", "type", "properties",
-                                              "contains", "minItems", "maxItems", "minLength", "maxLength"};
+  static const std::set<std::string> known = {"const",    "enum",     "not",        "anyOf",
+                                              "allOf",    "type",     "properties", "contains",
+                                              "minItems", "maxItems", "minLength",  "maxLength"};
   if (!condition.is_object()) {
     problems.push_back(where + ": not a schema");
     return;
@@ -96,29 +100,37 @@ void check_condition(const json& condition, const json& field, const std::string
   auto allowed = [&](const json& v) {
     if (!field.contains("enum")) return;
     const auto& e = field["enum"];
-    if (std::find(e.begin(), e.end(), v) == e.end()) problems.push_back(where + ": " + v.dump() + " is not in its enum");
+    if (std::find(e.begin(), e.end(), v) == e.end())
+      problems.push_back(where + ": " + v.dump() + " is not in its enum");
   };
   if (condition.contains("const")) allowed(condition["const"]);
-  if (condition.contains("enum")) for (const auto& v : condition["enum"]) allowed(v);
+  if (condition.contains("enum"))
+    for (const auto& v : condition["enum"]) allowed(v);
   for (const char* sub : {"anyOf", "allOf"}) {
-    if (condition.contains(sub)) for (const auto& s : condition[sub]) check_condition(s, field, where, problems);
+    if (condition.contains(sub))
+      for (const auto& s : condition[sub]) check_condition(s, field, where, problems);
   }
   if (condition.contains("not")) check_condition(condition["not"], field, where, problems);
   if (condition.contains("contains")) {
     const json* items = field.contains("items") ? &field["items"] : nullptr;
     // outline.method: a name or a list of names; its list form holds the items.
     if (!items && field.contains("oneOf")) {
-      for (const auto& alt : field["oneOf"]) if (alt.contains("items")) items = &alt["items"];
+      for (const auto& alt : field["oneOf"])
+        if (alt.contains("items")) items = &alt["items"];
     }
-    if (items) check_condition(condition["contains"], *items, where + " contains", problems);
-    else problems.push_back(where + ": contains on a field without items");
+    if (items)
+      check_condition(condition["contains"], *items, where + " contains", problems);
+    else
+      problems.push_back(where + ": contains on a field without items");
   }
   if (condition.contains("properties")) {
     for (const auto& [key, sub] : condition["properties"].items()) {
-      const json* child = field.contains("properties") && field["properties"].contains(key) ? &field["properties"][key]
-                                                                                           : nullptr;
-      if (!child) problems.push_back(where + ": no property " + key);
-      else check_condition(sub, *child, where + "/" + key, problems);
+      const json* child =
+          field.contains("properties") && field["properties"].contains(key) ? &field["properties"][key] : nullptr;
+      if (!child)
+        problems.push_back(where + ": no property " + key);
+      else
+        check_condition(sub, *child, where + "/" + key, problems);
     }
   }
 }
@@ -132,11 +144,13 @@ void check_applies_when(const json& root, const json& node, const std::string& p
       if (sub.contains("x-applies-when")) {
         for (const auto& [key, condition] : sub["x-applies-when"].items()) {
           ++count;
-          const json* field = key.starts_with("/") ? field_at_pointer(root, key)
+          const json* field = key.starts_with("/")               ? field_at_pointer(root, key)
                               : node["properties"].contains(key) ? &node["properties"][key]
                                                                  : nullptr;
-          if (!field) problems.push_back(here + ": names no field " + key);
-          else check_condition(condition, *field, here + " when " + key, problems);
+          if (!field)
+            problems.push_back(here + ": names no field " + key);
+          else
+            check_condition(condition, *field, here + " when " + key, problems);
         }
       }
       check_applies_when(root, sub, here, count, problems);

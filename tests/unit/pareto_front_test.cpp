@@ -13,8 +13,7 @@ namespace {
 
 // A sweep point timed between `low` and `high` (its repeats' interquartile
 // range) around `median`.
-PlotPoint point(const char* label, double low, double median, double high, double error,
-                std::size_t bytes = 1000) {
+PlotPoint point(const char* label, double low, double median, double high, double error, std::size_t bytes = 1000) {
   PlotPoint p;
   p.label = label;
   p.time_low_ms = low;
@@ -48,8 +47,7 @@ TEST(ParetoFront, MoreAccurateAndNotSlowerBeatsAPoint) {
 // Two settings that draw the same image (same error) whose medians differ
 // by less than their spread: neither beats the other.
 TEST(ParetoFront, TheSameImageWithinTheNoiseKeepsBothOnTheFront) {
-  EXPECT_EQ(front({point("msaa 4", 24, 26, 29, 1.0), point("msaa 2", 23, 25, 27, 1.0)}),
-            (Labels{"msaa 4", "msaa 2"}));
+  EXPECT_EQ(front({point("msaa 4", 24, 26, 29, 1.0), point("msaa 2", 23, 25, 27, 1.0)}), (Labels{"msaa 4", "msaa 2"}));
 }
 
 // Without spread (one repeat) the front is the classic one: any faster

@@ -5,7 +5,7 @@
 
 #include "http/render_params_wire.h"
 #include "param_schema.h"
-#include "render/pass_plan.h"
+#include "render/plan/pass_plan.h"
 
 namespace toond::render {
 namespace {
@@ -109,8 +109,8 @@ TEST(PassPlan, ShadingModeAndRoundingBecomeDefines) {
 // ~40 % of the cel pass); unlit colour has no loop and no variant per count.
 TEST(PassPlan, TheLightCountIsPartOfTheVariant) {
   EXPECT_TRUE(has_define(plan_passes(params(json::object()), {}), "LIGHT_COUNT 1"));
-  const json two = {{"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}},
-                                {{"type", "point"}, {"position", {1, 1, 1}}}}}};
+  const json two = {
+      {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}}, {{"type", "point"}, {"position", {1, 1, 1}}}}}};
   EXPECT_TRUE(has_define(plan_passes(params(two), {}), "LIGHT_COUNT 2"));
   EXPECT_TRUE(has_define(plan_passes(params({{"lights", json::array()}}), {}), "LIGHT_COUNT 0"));
   const PassPlan flat = plan_passes(params({{"shading", {{"mode", "flat"}}}}), {});
@@ -245,13 +245,16 @@ TEST(PassPlan, MaskedMaterialsAlphaTestTheOutlines) {
 // A data layer draws the Layer pass alone: no shading, shadow, floor,
 // outline, resolve or downsample, whatever else the request asks for.
 TEST(PassPlan, ADataLayerRunsTheLayerPassAlone) {
-  const json busy = {{"shadows", {{"enabled", true}}}, {"floor", {{"enabled", true}}},
-                     {"outline", {{"method", {"hull", "wireframe", "edges"}}}}, {"contour", {{"enabled", true}}},
-                     {"msaa", 8}, {"supersample", 2}};
+  const json busy = {{"shadows", {{"enabled", true}}},
+                     {"floor", {{"enabled", true}}},
+                     {"outline", {{"method", {"hull", "wireframe", "edges"}}}},
+                     {"contour", {{"enabled", true}}},
+                     {"msaa", 8},
+                     {"supersample", 2}};
   ModelTraits hard;
   hard.hard_edged = true;
-  for (const auto& [name, feature] : {std::pair{"depth", LayerFeature::Depth}, std::pair{"normal", LayerFeature::Normal},
-                                      std::pair{"id", LayerFeature::Id}}) {
+  for (const auto& [name, feature] : {std::pair{"depth", LayerFeature::Depth},
+                                      std::pair{"normal", LayerFeature::Normal}, std::pair{"id", LayerFeature::Id}}) {
     json request = busy;
     request["output"] = name;
     const PassPlan plan = plan_passes(params(request), hard);
@@ -272,7 +275,8 @@ TEST(PassPlan, ALayerTestsTheAlphaOfMaskedMaterials) {
 
 TEST(PassPlan, IdsNumberTheObjectsOfASceneOrTheMaterialsOfAModel) {
   EXPECT_EQ(plan_passes(params({{"output", "id"}}), {}).ids_by, IdSource::Material);
-  const json scene = {{"output", "id"}, {"objects", {{{"model", "0123456789abcdef"}}, {{"model", "0123456789abcdef"}}}}};
+  const json scene = {{"output", "id"},
+                      {"objects", {{{"model", "0123456789abcdef"}}, {{"model", "0123456789abcdef"}}}}};
   EXPECT_EQ(plan_passes(params(scene), {}).ids_by, IdSource::Object);
 }
 
@@ -284,8 +288,8 @@ TEST(PassPlan, TheLinesLayerKeepsTheLinePassesAndDropsTheShading) {
   ModelTraits hard;
   hard.hard_edged = true;
   hard.has_crease_edges = true;
-  const json request = {{"output", "lines"}, {"shadows", {{"enabled", true}}}, {"floor", {{"enabled", true}}},
-                        {"supersample", 2}};
+  const json request = {
+      {"output", "lines"}, {"shadows", {{"enabled", true}}}, {"floor", {{"enabled", true}}}, {"supersample", 2}};
   const PassPlan plan = plan_passes(params(request), hard);
   EXPECT_EQ(plan.describe(), "main,floor,hull_outline,creases,resolve,downsample,readback");
   EXPECT_TRUE(has_define(plan, "LINES_ONLY"));

@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "gpu/render_target.h"
-#include "render/pass_timer.h"
-#include "render/renderer.h"
+#include "render/frame/pass_timer.h"
+#include "render/run/renderer.h"
 #include "support/gl_context_test.h"
 
 namespace toond::render {

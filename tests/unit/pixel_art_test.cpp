@@ -8,15 +8,15 @@
 #include <random>
 #include <set>
 
-#include "pipeline/budget.h"
 #include "http/render_params_wire.h"
-#include "pipeline/sheet_checks.h"
 #include "image/block_upscale.h"
 #include "image/palette_quantise.h"
 #include "image/webp_animation.h"
 #include "limit_error.h"
 #include "param_schema.h"
-#include "render/pixel_art_frame.h"
+#include "pipeline/budget.h"
+#include "pipeline/sheet_checks.h"
+#include "render/plan/pixel_art_frame.h"
 #include "request_error.h"
 #include "support/webp_frames.h"
 
@@ -127,7 +127,8 @@ TEST(Quantise, WithoutDitherEveryPixelIsItsNearestEntry) {
 TEST(Quantise, OrderedDitherMixesNeighbouringEntriesOnlyWhenAsked) {
   Image ramp = blank(256, 8);
   for (int y = 0; y < 8; ++y) {
-    for (int x = 0; x < 256; ++x) set(ramp, x, y, {static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(x)});
+    for (int x = 0; x < 256; ++x)
+      set(ramp, x, y, {static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(x)});
   }
   const std::vector<Rgb8> palette = {{0, 0, 0}, {255, 255, 255}};
   Image plain = ramp;
@@ -223,7 +224,8 @@ TEST(PixelArtParams, WireFieldsParseAndDrawSmallWithoutAntialiasing) {
        {"height", 32},
        {"msaa", 8},
        {"supersample", 2},
-       {"sheet", {{"frames", 4}, {"animate", true}, {"pixel_art", {{"scale", 8}, {"palette", {"#ff8000", "#0A0b0C"}}}}}}});
+       {"sheet",
+        {{"frames", 4}, {"animate", true}, {"pixel_art", {{"scale", 8}, {"palette", {"#ff8000", "#0A0b0C"}}}}}}});
   ASSERT_TRUE(p.sheet && p.sheet->pixel_art);
   EXPECT_EQ(p.sheet->pixel_art->scale, 8);
   EXPECT_EQ(p.sheet->pixel_art->colors, 16) << "the default";
@@ -313,8 +315,9 @@ TEST(PixelArtParams, TheBudgetWeighsTheFramesAsDrawnAndTheWholeAnimation) {
   // art the frames are drawn at 16², one sample each.
   const json sheet = {{"frames", 8}, {"pixel_art", {{"scale", 4}}}};
   EXPECT_NO_THROW(pipeline::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", sheet}}), limits));
-  EXPECT_THROW(pipeline::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", {{"frames", 8}}}}), limits),
-               LimitError);
+  EXPECT_THROW(
+      pipeline::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", {{"frames", 8}}}}), limits),
+      LimitError);
   for (const json& over : {json{{"frames", 9}, {"pixel_art", {{"scale", 4}}}}, json{{"frames", 9}, {"animate", true}},
                            json{{"frames", 9}, {"animate", true}, {"pixel_art", json::object()}}}) {
     try {

@@ -55,10 +55,9 @@ constexpr int kRgb = 2, kPalette = 3, kRgba = 6;
 
 bool has_chunk(const std::string& png, const std::string& type) {
   for (std::size_t at = 8; at + 8 <= png.size();) {
-    const std::uint32_t length = static_cast<std::uint32_t>(static_cast<unsigned char>(png[at]) << 24 |
-                                                            static_cast<unsigned char>(png[at + 1]) << 16 |
-                                                            static_cast<unsigned char>(png[at + 2]) << 8 |
-                                                            static_cast<unsigned char>(png[at + 3]));
+    const std::uint32_t length = static_cast<std::uint32_t>(
+        static_cast<unsigned char>(png[at]) << 24 | static_cast<unsigned char>(png[at + 1]) << 16 |
+        static_cast<unsigned char>(png[at + 2]) << 8 | static_cast<unsigned char>(png[at + 3]));
     if (png.compare(at + 4, 4, type) == 0) return true;
     at += 12 + length;
   }

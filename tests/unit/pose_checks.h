@@ -8,8 +8,8 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/model.h"
-#include "scene/pose.h"
+#include "scene/animation/pose.h"
+#include "scene/mesh/model.h"
 
 namespace toond::scene::test_checks {
 

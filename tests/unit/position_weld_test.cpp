@@ -6,18 +6,18 @@
 #include <cmath>
 #include <vector>
 
-#include "scene/crease_edges.h"
-#include "scene/crease_profile.h"
-#include "scene/mesh_processing.h"
-#include "scene/position_weld.h"
+#include "scene/mesh/crease_edges.h"
+#include "scene/mesh/crease_profile.h"
+#include "scene/mesh/mesh_processing.h"
+#include "scene/mesh/position_weld.h"
 
 namespace toond::scene {
 namespace {
 
 TEST(PositionWeld, PointsARoundingErrorApartBecomeOne) {
   // A pole as an exporter writes it: sin(π) is 1.2e-16, not 0.
-  std::vector<glm::vec3> p = {{1.2246e-16f, -1, 0}, {0, -1, -1.2246e-16f}, {-1.2246e-16f, -1, 1e-16f},
-                              {1, 0, 0}, {-1, 1, 0}};
+  std::vector<glm::vec3> p = {
+      {1.2246e-16f, -1, 0}, {0, -1, -1.2246e-16f}, {-1.2246e-16f, -1, 1e-16f}, {1, 0, 0}, {-1, 1, 0}};
   const WeldReport report = weld_positions(p);
   EXPECT_NEAR(report.tolerance, std::sqrt(4.0 + 4.0 + 0.0) * kWeldRelativeTolerance, 1e-12);
   EXPECT_EQ(report.moved, 2u);

@@ -1,5 +1,5 @@
 // An image ramp becomes the same stops a JSON ramp would give.
-#include "render/ramp_image.h"
+#include "render/frame/ramp_image.h"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@ scene::Texture row_of(const std::vector<std::uint8_t>& greys, int height = 1) {
     for (std::uint8_t g : greys) {
       // Rows other than the middle one are red, so reading the wrong row shows.
       const bool middle = y == height / 2;
-      t.rgba.insert(t.rgba.end(), {middle ? g : std::uint8_t{255}, middle ? g : std::uint8_t{0},
-                                   middle ? g : std::uint8_t{0}, 255});
+      t.rgba.insert(t.rgba.end(),
+                    {middle ? g : std::uint8_t{255}, middle ? g : std::uint8_t{0}, middle ? g : std::uint8_t{0}, 255});
     }
   }
   return t;
@@ -58,9 +58,7 @@ TEST(RampImage, AGradientIsNotACelRamp) {
   EXPECT_EQ(ramp_from_image(row_of(gradient)).size(), 16u);
 }
 
-TEST(RampImage, EmptyImageIsAnError) {
-  EXPECT_THROW(ramp_from_image(scene::Texture{}), RampImageError);
-}
+TEST(RampImage, EmptyImageIsAnError) { EXPECT_THROW(ramp_from_image(scene::Texture{}), RampImageError); }
 
 }  // namespace
 }  // namespace toond::render

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "model_checks.h"
-#include "render/pass_plan.h"
-#include "render/render_cost.h"
-#include "scene/crease_edges.h"
-#include "scene/duplicate_triangles.h"
-#include "scene/obj_import.h"
-#include "scene/render_cost_profile.h"
+#include "render/plan/pass_plan.h"
+#include "render/plan/render_cost.h"
+#include "scene/import/obj_import.h"
+#include "scene/mesh/crease_edges.h"
+#include "scene/mesh/duplicate_triangles.h"
+#include "scene/mesh/render_cost_profile.h"
 #include "support/costly_models.h"
 
 namespace toond {
@@ -48,22 +48,22 @@ TEST(DuplicateTriangles, MinusZeroIsZero) {
 TEST(DuplicateTriangles, ImportKeepsOneOfARepeatedFaceAndSaysHowMany) {
   // Three materials over the same face, written with fresh vertices each
   // time: the one drawn last (the last material) is what showed before.
-  const std::string obj = "mtllib t.mtl\n" + test::one_triangle_many_materials(3) +
-                          "usemtl other\nv 5 5 5\nv 6 5 5\nv 5 6 5\nf -3 -2 -1\n";
+  const std::string obj =
+      "mtllib t.mtl\n" + test::one_triangle_many_materials(3) + "usemtl other\nv 5 5 5\nv 6 5 5\nv 5 6 5\nf -3 -2 -1\n";
   const std::string mtl = "newmtl m0\nKd 1 0 0\nnewmtl m1\nKd 0 1 0\nnewmtl m2\nKd 0 0 1\nnewmtl other\nKd 1 1 1\n";
   const scene::Model m = scene::import_obj_bundle(make_bundle({{"t.obj", obj}, {"t.mtl", mtl}}));
   ASSERT_EQ(m.mesh.triangle_count(), 2u);
   EXPECT_TRUE(has_warning(m, "2 triangles repeated the corners of another and were dropped")) << warnings_of(m);
   std::vector<std::string> drawn;
-  for (const scene::Submesh& s : m.mesh.submeshes) drawn.push_back(m.materials[static_cast<std::size_t>(s.material)].name);
+  for (const scene::Submesh& s : m.mesh.submeshes)
+    drawn.push_back(m.materials[static_cast<std::size_t>(s.material)].name);
   EXPECT_EQ(drawn, (std::vector<std::string>{"m2", "other"}));
 }
 
 // The file: no MTL, so each name is also a warning of its own; the
 // count of repeats is not crowded out by them.
 TEST(DuplicateTriangles, AHundredThousandRepeatsImportAsOne) {
-  const scene::Model m =
-      scene::import_obj_bundle(make_bundle({{"t.obj", test::one_triangle_many_materials(100000)}}));
+  const scene::Model m = scene::import_obj_bundle(make_bundle({{"t.obj", test::one_triangle_many_materials(100000)}}));
   EXPECT_EQ(m.mesh.triangle_count(), 1u);
   EXPECT_TRUE(has_warning(m, "99999 triangles repeated")) << warnings_of(m);
 }

@@ -10,10 +10,12 @@
 
 #include "http/render_params_wire.h"
 #include "param_schema.h"
-#include "render/render_params.h"
+#include "render/plan/render_params.h"
 
 namespace toond::render {
 namespace {
+
+using json = nlohmann::json;
 
 struct Mismatch {
   std::vector<std::string> fields;
@@ -24,8 +26,8 @@ struct Mismatch {
 };
 
 TEST(RenderParamsDefaults, EveryInitialValueIsTheSchemasDefault) {
-  const RenderParams schema =
-      http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(nlohmann::json::object()));
+  const RenderParams schema = http::render_params_from_wire(
+      proto::ParamSchema::render_params().validate_and_complete(nlohmann::json::object()));
   const RenderParams initial;
   Mismatch m;
   m.check("width", schema.width, initial.width);
@@ -104,6 +106,30 @@ TEST(RenderParamsDefaults, EveryInitialValueIsTheSchemasDefault) {
   std::string list;
   for (const std::string& f : m.fields) list += " " + f;
   EXPECT_TRUE(m.fields.empty()) << "initial values that are not the schema's default:" << list;
+}
+
+// A sheet's clip entry has its defaults in either of its forms (one entry,
+// or a list of them: the schema's two alternatives), and `animation` in its
+// one.
+TEST(RenderParamsDefaults, AClipEntrysInitialValuesAreTheSchemasDefaults) {
+  const SheetClip initial_clip;
+  const json entry = {{"clip", "Walk"}};
+  for (const json& animation : {entry, json::array({entry, entry})}) {
+    const RenderParams schema = http::render_params_from_wire(
+        proto::ParamSchema::render_params().validate_and_complete({{"sheet", {{"animation", animation}}}}));
+    ASSERT_TRUE(schema.sheet) << animation;
+    ASSERT_FALSE(schema.sheet->clips.empty()) << animation;
+    for (const SheetClip& clip : schema.sheet->clips) {
+      EXPECT_EQ(clip.loop, initial_clip.loop) << "sheet.animation.loop in " << animation;
+      EXPECT_EQ(clip.range.has_value(), initial_clip.range.has_value()) << "sheet.animation.range in " << animation;
+    }
+  }
+  const RenderParams schema =
+      http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete({{"animation", entry}}));
+  ASSERT_TRUE(schema.animation);
+  const AnimationParams initial;
+  EXPECT_EQ(schema.animation->time, initial.time) << "animation.time";
+  EXPECT_EQ(schema.animation->range.has_value(), initial.range.has_value()) << "animation.range";
 }
 
 }  // namespace

@@ -9,13 +9,13 @@
 #include <memory>
 #include <string>
 
+#include "limit_error.h"
 #include "pipeline/price.h"
 #include "pipeline/render_limits.h"
-#include "limit_error.h"
-#include "render/sheet_layout.h"
 #include "presets.h"
-#include "scene/bundle_import.h"
-#include "scene/obj_import.h"
+#include "render/plan/sheet_layout.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/obj_import.h"
 #include "support/costly_models.h"
 #include "support/in_process_render.h"
 #include "support/shared_models.h"
@@ -92,9 +92,9 @@ TEST(RenderPrice, ASheetCostsAllItsFramesEachFromItsView) {
   double least = 1e300, most = 0;
   for (const render::SheetFrame& frame : render::layout_sheet(*job.params.sheet, 128, 128).frames) {
     const render::RenderCost one =
-        price_render(job_of(model, {{"width", 128},
-                                    {"height", 128},
-                                    {"camera", {{"yaw", frame.yaw_deg}, {"pitch", frame.pitch_deg}}}}))
+        price_render(
+            job_of(model,
+                   {{"width", 128}, {"height", 128}, {"camera", {{"yaw", frame.yaw_deg}, {"pitch", frame.pitch_deg}}}}))
             .total;
     singles += one.units();
     least = std::min(least, one.samples);

@@ -16,9 +16,9 @@
 #include <string>
 
 #include "model_checks.h"
-#include "render/gpu_model.h"
-#include "render/renderer.h"
-#include "scene/pose.h"
+#include "render/frame/gpu_model.h"
+#include "render/run/renderer.h"
+#include "scene/animation/pose.h"
 #include "support/gl_context_test.h"
 #include "support/in_process_render.h"
 #include "toond_shader_files.h"
@@ -78,8 +78,8 @@ class BlenderRigSilhouette : public test::GlContextTest, public ::testing::WithP
 
 TEST_P(BlenderRigSilhouette, TheDefaultRequestBendsAsBlenderDoes) {
   const BendCase& c = GetParam();
-  const scene::Model model = scene::import_bundle(
-      scene::test_checks::make_bundle({{c.file, test::read_file(kBlender / c.file)}}));
+  const scene::Model model =
+      scene::import_bundle(scene::test_checks::make_bundle({{c.file, test::read_file(kBlender / c.file)}}));
   ASSERT_TRUE(model.rig);
   const scene::Rig& rig = *model.rig;
   const std::size_t clip = rig.find_clip("Bend").value_or(0);
@@ -102,14 +102,16 @@ TEST_P(BlenderRigSilhouette, TheDefaultRequestBendsAsBlenderDoes) {
     skin->bounds = framing.bounds;
     skin->extremes = framing.extremes;
     posed.apply_pose(skin, model);
-    const RenderOutput by_default = renderer.render({RenderObject{posed, model, glm::dmat4(1.0), skin}}, test::complete_params(transparent));
-    const RenderOutput at_full = renderer.render({RenderObject{posed, model, glm::dmat4(1.0), skin}}, test::complete_params(full));
+    const RenderOutput by_default =
+        renderer.render({RenderObject{posed, model, glm::dmat4(1.0), skin}}, test::complete_params(transparent));
+    const RenderOutput at_full =
+        renderer.render({RenderObject{posed, model, glm::dmat4(1.0), skin}}, test::complete_params(full));
     const double default_overlap = overlap(silhouette(by_default), reference);
     const double full_overlap = overlap(silhouette(at_full), reference);
     const char* path = where == scene::Skinning::Cpu ? "cpu" : "vertex stage";
     std::cout << c.file << " frame " << c.frame << ", " << path << ": default request (level "
-              << by_default.lods[0].level << " of " << by_default.lods[0].levels << ", "
-              << by_default.lods[0].triangles << " triangles) shares " << default_overlap << " of the silhouettes with Blender's mesh, lod full "
+              << by_default.lods[0].level << " of " << by_default.lods[0].levels << ", " << by_default.lods[0].triangles
+              << " triangles) shares " << default_overlap << " of the silhouettes with Blender's mesh, lod full "
               << full_overlap << "\n";
     EXPECT_GE(default_overlap, 0.97) << path;
     EXPECT_GE(default_overlap, full_overlap - 0.01) << path;

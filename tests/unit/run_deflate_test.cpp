@@ -88,8 +88,8 @@ TEST(RunDeflate, ARowThatRepeatsTheRowAboveIsACopy) {
   EXPECT_EQ(inflate_raw(copied, input.size()), input);
   EXPECT_LT(copied.size(), input.size() * 6 / 10) << "half the rows cost a few bits each";
   EXPECT_GT(deflate_whole(input).size(), input.size() * 9 / 10) << "noise without copies stays noise";
-  for (const std::size_t row : {std::size_t{1}, std::size_t{4}, std::size_t{5}, std::size_t{1537}, std::size_t{32768},
-                                std::size_t{40000}}) {
+  for (const std::size_t row :
+       {std::size_t{1}, std::size_t{4}, std::size_t{5}, std::size_t{1537}, std::size_t{32768}, std::size_t{40000}}) {
     SCOPED_TRACE(row);
     RunDeflater deflater(row);
     deflater.add(input);

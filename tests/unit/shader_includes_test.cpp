@@ -21,9 +21,9 @@ ShaderTextReader files(std::map<std::string, std::string> texts) {
 }
 
 TEST(ShaderIncludes, AModuleIsPastedWithLineDirectivesThatNumberItsOwnLines) {
-  const ExpandedShader out = expand_includes(
-      "a.frag", files({{"a.frag", "#version 430 core\n#include \"m.glsl\"\nvoid main() {}\n"},
-                       {"m.glsl", "float f() { return 1.0; }\n"}}));
+  const ExpandedShader out =
+      expand_includes("a.frag", files({{"a.frag", "#version 430 core\n#include \"m.glsl\"\nvoid main() {}\n"},
+                                       {"m.glsl", "float f() { return 1.0; }\n"}}));
   EXPECT_EQ(out.text,
             "#version 430 core\n"
             "#line 1 1\n"

@@ -49,8 +49,7 @@ TEST(ShaderLog, GlslangStyle) {
 }
 
 TEST(ShaderLog, TheFirstErrorWinsOverEarlierWarnings) {
-  const auto mesa = first_shader_error(
-      "0:4(10): warning: `x' used uninitialized\n0:9(3): error: `y' undeclared\n");
+  const auto mesa = first_shader_error("0:4(10): warning: `x' used uninitialized\n0:9(3): error: `y' undeclared\n");
   EXPECT_EQ(mesa.line, 9);
   EXPECT_EQ(mesa.text, "`y' undeclared");
   const auto nvidia = first_shader_error(
@@ -66,8 +65,8 @@ TEST(ShaderLog, OnlyWarningsGiveTheFirstWarning) {
 }
 
 TEST(ShaderLog, LinkErrorsHaveNoLine) {
-  const auto e = first_shader_error(
-      "error: fragment shader input `v_normal' has no matching output in the previous stage\n");
+  const auto e =
+      first_shader_error("error: fragment shader input `v_normal' has no matching output in the previous stage\n");
   EXPECT_FALSE(e.line.has_value());
   EXPECT_EQ(e.text, "fragment shader input `v_normal' has no matching output in the previous stage");
 }
@@ -169,8 +168,10 @@ TEST(FixedShaderSources, NeverChange) {
 
 // ---- the program cache reloading, with a real context ------------------------
 
-const char* kVert = "#version 430 core\nout vec3 v_tint;\nvoid main() { v_tint = vec3(1.0); gl_Position = vec4(0.0); }\n";
-const char* kFrag = "#version 430 core\nin vec3 v_tint;\nout vec4 o_color;\nvoid main() { o_color = vec4(v_tint, 1.0); }\n";
+const char* kVert =
+    "#version 430 core\nout vec3 v_tint;\nvoid main() { v_tint = vec3(1.0); gl_Position = vec4(0.0); }\n";
+const char* kFrag =
+    "#version 430 core\nin vec3 v_tint;\nout vec4 o_color;\nvoid main() { o_color = vec4(v_tint, 1.0); }\n";
 
 class ShaderReload : public ShaderDirectoryTest {
  protected:

@@ -1,12 +1,13 @@
 // Every program variant the plan can draw with compiles and links in
 // glslang, the reference GLSL front end (a driver may accept what another
 // rejects). The variants come from the same key types the plan builds
-// (render/shader_variant.h): all of them for the outline, depth and edge
+// (render/plan/shader_variant.h): all of them for the outline, depth and edge
 // programs; for toon.frag, whose choices multiply to hundreds of
 // thousands, a cover holding every pair of choices (support/variant_cover.h).
 // Stage files are expanded with the renderer's own #include expansion.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -14,7 +15,6 @@
 #include <memory>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "gpu/shader_includes.h"
 #include "support/variant_cover.h"

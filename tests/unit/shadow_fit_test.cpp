@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "render/shadow_fit.h"
+#include "render/plan/shadow_fit.h"
 
 namespace toond::render {
 namespace {

@@ -8,14 +8,14 @@
 #include <utility>
 #include <vector>
 
+#include "http/render_params_wire.h"
 #include "limit_error.h"
 #include "param_schema.h"
-#include "presets.h"
-#include "render/camera.h"
 #include "pipeline/budget.h"
-#include "http/render_params_wire.h"
-#include "render/sheet_atlas.h"
-#include "render/sheet_layout.h"
+#include "presets.h"
+#include "render/atlas/sheet_atlas.h"
+#include "render/plan/camera.h"
+#include "render/plan/sheet_layout.h"
 
 namespace toond::render {
 namespace {
@@ -182,6 +182,79 @@ TEST(SheetLayout, FramesShowForWholeMillisecondsThatAddUpToTheClip) {
   for (const SheetFrame& f : layout_sheet(sheet, 8, 8).frames) EXPECT_EQ(f.duration_ms, 70);
 }
 
+// A clip resolved as the pipeline resolves it (pipeline/clips.h): its span
+// and the span's length.
+SheetClip resolved_clip(const std::string& name, scene::ClipRange span, int frames, bool loop) {
+  SheetClip clip;
+  clip.name = name;
+  clip.range = span;
+  clip.span = span;
+  clip.duration = span.end - span.start;
+  clip.frame_count = frames;
+  clip.loop = loop;
+  return clip;
+}
+
+// A range's frames count from its start on the file's time base; a loop
+// leaves its end out.
+TEST(SheetLayout, ARangesFramesRunFromItsStartAndALoopLeavesItsEndOut) {
+  SheetParams sheet;
+  sheet.frames = 2;
+  sheet.pitches_deg = {30};
+  sheet.clips = {resolved_clip("anim", {2.8, 3.2}, 4, true)};
+  const SheetLayout layout = layout_sheet(sheet, 8, 8);
+  ASSERT_EQ(layout.frames.size(), 8u);
+  for (int row = 0; row < 2; ++row) {
+    for (int k = 0; k < 4; ++k) {
+      const SheetFrame& f = layout.frames[static_cast<std::size_t>(row * 4 + k)];
+      EXPECT_NEAR(f.time, 2.8 + 0.1 * k, 1e-12) << "row " << row << ", frame " << k;
+      EXPECT_EQ(f.duration_ms, 100);
+    }
+  }
+}
+
+// A one-shot's frames reach its last pose: start + k · length / (frames − 1);
+// each shows for that step, the last too, so a row lasts its length and
+// one step more. One frame: the start, for the length.
+TEST(SheetLayout, AOneShotsFramesEndOnItsLastPose) {
+  SheetParams sheet;
+  sheet.frames = 1;
+  sheet.pitches_deg = {30};
+  sheet.clips = {resolved_clip("attack", {1.0, 2.0}, 5, false), resolved_clip("hit", {0.5, 0.75}, 1, false)};
+  const SheetLayout layout = layout_sheet(sheet, 8, 8);
+  ASSERT_EQ(layout.frames.size(), 6u);
+  EXPECT_EQ(layout.columns, 5);
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_DOUBLE_EQ(layout.frames[static_cast<std::size_t>(k)].time, 1.0 + 0.25 * k) << "frame " << k;
+    EXPECT_EQ(layout.frames[static_cast<std::size_t>(k)].duration_ms, 250) << "frame " << k;
+  }
+  EXPECT_DOUBLE_EQ(layout.frames[4].time, 2.0) << "the last frame is the range's end";
+  EXPECT_DOUBLE_EQ(layout.frames[5].time, 0.5);
+  EXPECT_EQ(layout.frames[5].duration_ms, 250);
+}
+
+// Aseprite writes a tag's "repeat" (a string) only when set; "1" plays it
+// once. A loop's tag has none, as a looping Aseprite tag has none.
+TEST(SheetAtlas, AOneShotsTagsPlayOnceAndALoopsRepeat) {
+  RenderParams p = params_of({{"width", 16}, {"height", 16}, {"sheet", {{"frames", 2}}}});
+  p.sheet->clips = {resolved_clip("Walk", {0.0, 1.0}, 4, true), resolved_clip("Die", {1.0, 2.0}, 3, false)};
+  const SheetLayout layout = layout_sheet(*p.sheet, p.width, p.height);
+  SceneFrame scene;
+  scene.bounds = {{-1, 0, -1}, {1, 2, 1}};
+  const json atlas = sheet_atlas(layout, p, scene, "sheet.png");
+  const json& tags = atlas["meta"]["frameTags"];
+  ASSERT_EQ(tags.size(), 4u);
+  for (const json& tag : tags) {
+    if (tag["clip"] == "Walk") {
+      EXPECT_FALSE(tag.contains("repeat")) << tag;
+    } else {
+      EXPECT_EQ(tag["repeat"], "1") << tag;
+    }
+  }
+  EXPECT_EQ(tags[3]["clip"], "Die");
+  EXPECT_DOUBLE_EQ(atlas["frames"][std::to_string(tags[3]["to"].get<int>())]["time"].get<double>(), 2.0);
+}
+
 TEST(SheetAtlas, FollowsAsepritesHashLayoutWithYawAndPitch) {
   const RenderParams p = params_of({{"width", 32}, {"height", 48}, {"sheet", {{"frames", 8}, {"columns", 4}}}});
   const SheetLayout layout = layout_sheet(*p.sheet, p.width, p.height);
@@ -236,8 +309,7 @@ TEST(SheetBudget, TheWholeSheetCountsAgainstTheLimits) {
     EXPECT_EQ(e.limit(), "--max-output-pixels");
     EXPECT_EQ(e.status(), 422);
   }
-  const RenderParams too_fine =
-      params_of({{"width", 64}, {"height", 64}, {"msaa", 8}, {"sheet", {{"frames", 8}}}});
+  const RenderParams too_fine = params_of({{"width", 64}, {"height", 64}, {"msaa", 8}, {"sheet", {{"frames", 8}}}});
   try {
     check_render_budget(too_fine, limits);
     ADD_FAILURE() << "8 frames × msaa 8 passed a sample limit of 8 × msaa 4";
@@ -276,25 +348,26 @@ TEST(CameraPresets, SpriteViewsAreOrthographicAndGivenFieldsWin) {
   EXPECT_EQ(dimetric.mode, params_of({{"preset", "anime"}}).mode) << "combines with a look preset";
 }
 
+// Where the schema refuses `request`, or "(accepted)".
+std::string schema_refusal_path(const json& request) {
+  try {
+    proto::ParamSchema::render_params().validate(request);
+  } catch (const RequestError& e) {
+    return e.path();
+  }
+  return "(accepted)";
+}
+
 TEST(SheetSchema, BadSheetsAreRefusedWithTheirPath) {
-  const auto& schema = proto::ParamSchema::render_params();
-  auto path_of = [&](const json& request) {
-    try {
-      schema.validate(request);
-    } catch (const RequestError& e) {
-      return e.path();
-    }
-    return std::string("(accepted)");
-  };
-  EXPECT_EQ(path_of({{"sheet", {{"frames", 0}}}}), "/sheet/frames");
-  EXPECT_EQ(path_of({{"sheet", {{"frames", 65}}}}), "/sheet/frames");
-  EXPECT_EQ(path_of({{"sheet", {{"columns", 0}}}}), "/sheet/columns");
-  EXPECT_EQ(path_of({{"sheet", {{"pitches", {0, 1, 2, 3, 4, 5, 6, 7, 8}}}}}), "/sheet/pitches");
-  EXPECT_EQ(path_of({{"sheet", {{"pitches", {90}}}}}), "/sheet/pitches/0");
-  EXPECT_EQ(path_of({{"sheet", {{"padding", 65}}}}), "/sheet/padding");
-  EXPECT_EQ(path_of({{"sheet", {{"fps", 5}}}}), "/sheet/fps");
-  EXPECT_EQ(path_of({{"camera", {{"preset", "cabinet"}}}}), "/camera/preset");
-  EXPECT_EQ(path_of({{"sheet", json::object()}}), "(accepted)");
+  EXPECT_EQ(schema_refusal_path({{"sheet", {{"frames", 0}}}}), "/sheet/frames");
+  EXPECT_EQ(schema_refusal_path({{"sheet", {{"frames", 65}}}}), "/sheet/frames");
+  EXPECT_EQ(schema_refusal_path({{"sheet", {{"columns", 0}}}}), "/sheet/columns");
+  EXPECT_EQ(schema_refusal_path({{"sheet", {{"pitches", {0, 1, 2, 3, 4, 5, 6, 7, 8}}}}}), "/sheet/pitches");
+  EXPECT_EQ(schema_refusal_path({{"sheet", {{"pitches", {90}}}}}), "/sheet/pitches/0");
+  EXPECT_EQ(schema_refusal_path({{"sheet", {{"padding", 65}}}}), "/sheet/padding");
+  EXPECT_EQ(schema_refusal_path({{"sheet", {{"fps", 5}}}}), "/sheet/fps");
+  EXPECT_EQ(schema_refusal_path({{"camera", {{"preset", "cabinet"}}}}), "/camera/preset");
+  EXPECT_EQ(schema_refusal_path({{"sheet", json::object()}}), "(accepted)");
 }
 
 TEST(SheetSchema, SetFromTextReachesTheSheet) {
@@ -302,6 +375,44 @@ TEST(SheetSchema, SetFromTextReachesTheSheet) {
   proto::ParamSchema::render_params().set_from_text(params, "sheet.frames", "8");
   proto::ParamSchema::render_params().set_from_text(params, "sheet.pitches", "[0,30]");
   EXPECT_EQ(params, (json{{"sheet", {{"frames", 8}, {"pitches", {0, 30}}}}}));
+}
+
+// sheet.animation is one clip's entry or a list of them: the schema holds
+// the entry twice, and the two must say the same.
+TEST(SheetSchema, AClipEntryIsTheSameInBothForms) {
+  const json& schema = proto::ParamSchema::render_params().document();
+  const json& forms = schema["properties"]["sheet"]["properties"]["animation"]["oneOf"];
+  ASSERT_EQ(forms.size(), 2u);
+  EXPECT_EQ(forms[0]["type"], "object");
+  EXPECT_EQ(forms[1]["type"], "array");
+  EXPECT_EQ(forms[0], forms[1]["items"]);
+  for (const char* field : {"clip", "frames", "fps", "range", "loop"}) {
+    EXPECT_TRUE(forms[0]["properties"].contains(field)) << field;
+  }
+}
+
+TEST(SheetSchema, ARangeIsTwoSecondsAndLoopABoolean) {
+  const json walk = {{"clip", "Walk"}, {"range", {2.8, 3.1}}, {"loop", false}};
+  EXPECT_EQ(schema_refusal_path({{"sheet", {{"animation", walk}}}}), "(accepted)");
+  EXPECT_EQ(schema_refusal_path({{"sheet", {{"animation", {walk, walk}}}}}), "(accepted)");
+  EXPECT_EQ(schema_refusal_path({{"animation", {{"clip", "Walk"}, {"range", {2.8, 3.1}}}}}), "(accepted)");
+  EXPECT_EQ(schema_refusal_path({{"animation", {{"clip", "Walk"}, {"range", {2.8}}}}}), "/animation/range");
+  EXPECT_EQ(schema_refusal_path({{"animation", {{"clip", "Walk"}, {"range", {1, 2, 3}}}}}), "/animation/range");
+  EXPECT_EQ(schema_refusal_path({{"animation", {{"clip", "Walk"}, {"range", {"1", 2}}}}}), "/animation/range/0");
+  EXPECT_EQ(schema_refusal_path({{"animation", {{"clip", "Walk"}, {"loop", false}}}}), "/animation/loop");
+}
+
+// The CLI's --set: a range as the two numbers a user types, into an entry
+// or the top-level animation.
+TEST(SheetSchema, SetFromTextTakesARangeAndALoop) {
+  const auto& schema = proto::ParamSchema::render_params();
+  json params = json::object();
+  schema.set_from_text(params, "sheet.animation.clip", "walk");
+  schema.set_from_text(params, "sheet.animation.range", "5.6,6.23");
+  schema.set_from_text(params, "sheet.animation.loop", "false");
+  schema.set_from_text(params, "animation.range", "[2.8, 3.1]");
+  EXPECT_EQ(params, (json{{"sheet", {{"animation", {{"clip", "walk"}, {"range", {5.6, 6.23}}, {"loop", false}}}}},
+                          {"animation", {{"range", {2.8, 3.1}}}}}));
 }
 
 }  // namespace

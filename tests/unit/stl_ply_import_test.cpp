@@ -6,10 +6,10 @@
 #include <string>
 
 #include "model_checks.h"
-#include "scene/bundle_import.h"
-#include "scene/import_error.h"
-#include "scene/import_limits.h"
-#include "scene/mesh_processing.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/import_error.h"
+#include "scene/import/import_limits.h"
+#include "scene/mesh/mesh_processing.h"
 #include "support/mesh_file_writers.h"
 
 namespace toond::scene {
@@ -82,10 +82,10 @@ TEST(StlImport, BadAsciiIsRefusedWithItsLine) {
   EXPECT_NE(import_error("a.stl", "solid x\nfacet normal 0 0 0\nouter loop\nvertex 0 zero 0\n").find("line 4"),
             std::string::npos);
   EXPECT_NE(import_error("a.stl", "solid x\nvertex 0 0 0\n").find("outside"), std::string::npos);
-  EXPECT_NE(import_error("a.stl", "solid x\nouter loop\nvertex 0 0 0\n").find("ends inside a loop"),
-            std::string::npos);
-  EXPECT_NE(import_error("a.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
-                                  "vertex nan 1 0\nendloop\nendfacet\n")
+  EXPECT_NE(import_error("a.stl", "solid x\nouter loop\nvertex 0 0 0\n").find("ends inside a loop"), std::string::npos);
+  EXPECT_NE(import_error("a.stl",
+                         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                         "vertex nan 1 0\nendloop\nendfacet\n")
                 .find("not a finite number"),
             std::string::npos);
 }
@@ -146,21 +146,22 @@ TEST(PlyImport, NormalsUvsColoursAndPolygonsAreRead) {
 }
 
 TEST(PlyImport, HostileHeadersAndCountsAreRefused) {
-  const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                           "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
   EXPECT_NE(import_error("h.ply", "ply\nformat ascii 1.0\n" + std::string(70000, '#')).find("end_header"),
             std::string::npos);
   EXPECT_NE(import_error("h.ply", "ply\ncomment " + std::string(70000, 'x') + "\nend_header\n").find("64 KiB"),
             std::string::npos);
-  EXPECT_NE(import_error("h.ply", "ply\nformat ascii 1.0\nelement vertex 1000000000000\nproperty float x\n"
-                                  "property float y\nproperty float z\nend_header\n0 0 0\n")
+  EXPECT_NE(import_error("h.ply",
+                         "ply\nformat ascii 1.0\nelement vertex 1000000000000\nproperty float x\n"
+                         "property float y\nproperty float z\nend_header\n0 0 0\n")
                 .find("claims"),
             std::string::npos);
   EXPECT_NE(import_error("h.ply", head + "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n").find("names vertex 7"),
             std::string::npos);
   EXPECT_NE(import_error("h.ply", head + "end_header\n0 0 0\n1 0 0\n").find("data ends"), std::string::npos);
-  EXPECT_NE(import_error("h.ply", "ply\nformat unknown 1.0\nend_header\n").find("unknown format"),
-            std::string::npos);
+  EXPECT_NE(import_error("h.ply", "ply\nformat unknown 1.0\nend_header\n").find("unknown format"), std::string::npos);
   EXPECT_NE(import_error("h.ply", "plx\nend_header\n").find("does not start"), std::string::npos);
   EXPECT_NE(import_error("h.ply", head + "end_header\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n").find("not a finite number"),
             std::string::npos);

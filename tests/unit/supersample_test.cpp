@@ -8,8 +8,8 @@
 #include <string>
 
 #include "image/downsample.h"
-#include "scene/bundle_import.h"
-#include "scene/demo_model.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/demo_model.h"
 #include "support/gl_context_test.h"
 #include "support/golden_compare.h"
 #include "support/in_process_render.h"

@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/model.h"
+#include "scene/mesh/model.h"
 
 namespace toond::scene::test_checks {
 

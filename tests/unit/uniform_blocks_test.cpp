@@ -1,5 +1,5 @@
-// The C++ mirrors of the shaders' uniform blocks (render/uniform_blocks.h,
-// render/shading_block.h) against what the driver reports for the compiled
+// The C++ mirrors of the shaders' uniform blocks (render/frame/uniform_blocks.h,
+// render/frame/shading_block.h) against what the driver reports for the compiled
 // programs: a member renamed, moved or retyped on one side only, or a block
 // renamed or rebound, fails here, not as wrong colours in a render.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "gpu/program_cache.h"
-#include "render/uniform_blocks.h"
+#include "render/frame/uniform_blocks.h"
 #include "support/gl_context_test.h"
 #include "toond_shader_files.h"
 

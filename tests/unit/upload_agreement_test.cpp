@@ -9,7 +9,7 @@
 #include "bundle_scan.h"
 #include "cli_test_helpers.h"
 #include "model_checks.h"
-#include "scene/obj_import.h"
+#include "scene/import/obj_import.h"
 
 namespace toond {
 namespace {
@@ -64,8 +64,8 @@ TEST(UploadAgreement, TheDaemonReadsEveryMaterialLibraryTheCliSent) {
     const char* file;    // the library on disk it means
   };
   // The daemon read only the first name of a line, and cut names at blanks.
-  for (const Library& library : {Library{"mtllib gone.mtl m.mtl", "m.mtl"},
-                                 Library{"mtllib my model.mtl", "my model.mtl"}}) {
+  for (const Library& library :
+       {Library{"mtllib gone.mtl m.mtl", "m.mtl"}, Library{"mtllib my model.mtl", "my model.mtl"}}) {
     SCOPED_TRACE(library.mtllib);
     TempDir dir;
     dir.write("m.obj", library.mtllib + kMesh);
@@ -77,21 +77,20 @@ TEST(UploadAgreement, TheDaemonReadsEveryMaterialLibraryTheCliSent) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Statements, UploadAgreement,
-    ::testing::Values(
-        // The daemon read the first word, the CLI the last.
-        Case{"UnescapedSpace", "map_Kd scanned texture.png", "texture.png"},
-        // The CLI refused the absolute path; the daemon falls back to the file name.
-        Case{"ForeignAbsolutePath", "map_Kd C:\\Users\\artist\\skin.png", "skin.png"},
-        // The daemon took off the quotes, the CLI did not.
-        Case{"Quoted", "map_Kd \"my skin.png\"", "my skin.png"},
-        // tinyobjloader reads the name as the second or third number of -o or -s.
-        Case{"ShortOffset", "map_Kd -o 0.1 diffuse.jpg", "diffuse.jpg"},
-        Case{"ShortScale", "norm -s 2 2 normal.png", "normal.png"},
-        Case{"OptionAfterTheName", "map_Kd wood.png -BM 1.5", "wood.png"},
-        Case{"BackslashesAndCase", "map_Kd -bm 1 .\\TEX\\Wood.PNG", "Tex/wood.png"}),
-    [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
+INSTANTIATE_TEST_SUITE_P(Statements, UploadAgreement,
+                         ::testing::Values(
+                             // The daemon read the first word, the CLI the last.
+                             Case{"UnescapedSpace", "map_Kd scanned texture.png", "texture.png"},
+                             // The CLI refused the absolute path; the daemon falls back to the file name.
+                             Case{"ForeignAbsolutePath", "map_Kd C:\\Users\\artist\\skin.png", "skin.png"},
+                             // The daemon took off the quotes, the CLI did not.
+                             Case{"Quoted", "map_Kd \"my skin.png\"", "my skin.png"},
+                             // tinyobjloader reads the name as the second or third number of -o or -s.
+                             Case{"ShortOffset", "map_Kd -o 0.1 diffuse.jpg", "diffuse.jpg"},
+                             Case{"ShortScale", "norm -s 2 2 normal.png", "normal.png"},
+                             Case{"OptionAfterTheName", "map_Kd wood.png -BM 1.5", "wood.png"},
+                             Case{"BackslashesAndCase", "map_Kd -bm 1 .\\TEX\\Wood.PNG", "Tex/wood.png"}),
+                         [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
 
 }  // namespace
 }  // namespace toond

@@ -1,6 +1,6 @@
-#include "render/draw_pacing.h"
+#include "render/frame/draw_pacing.h"
+#include "render/frame/texture_unit.h"
 #include "render/passes/passes.h"
-#include "render/texture_unit.h"
 
 namespace toond::render {
 namespace {
@@ -14,9 +14,12 @@ int culled_winding(const FrameContext& frame, std::size_t i) {
   const FaceSkip skip = frame.hidden_from(i, frame.clip, frame.viewer, true);
   if (skip.unless_caps_show) return 0;
   switch (skip.hidden) {
-    case HiddenFaces::None: return 0;
-    case HiddenFaces::Back: return 1;
-    case HiddenFaces::Front: return 2;
+    case HiddenFaces::None:
+      return 0;
+    case HiddenFaces::Back:
+      return 1;
+    case HiddenFaces::Front:
+      return 2;
   }
   return 0;
 }
@@ -64,7 +67,8 @@ void lay_line_coverage_over(PassContext& context, GLuint coverage) {
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  draw_full_screen(context.pacing, frame.draw_width, frame.draw_height, 1.0, [&] { context.resources.draw_fullscreen_triangle(); });
+  draw_full_screen(context.pacing, frame.draw_width, frame.draw_height, 1.0,
+                   [&] { context.resources.draw_fullscreen_triangle(); });
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }
@@ -110,8 +114,10 @@ void draw_crease_pass(PassContext& context) {
   glBlendEquation(GL_FUNC_ADD);
   glDisable(GL_BLEND);
   const bool lines_drawn = context.crease_edges_drawn + context.intersection_segments_drawn > 0;
-  if (!multisampled && lines_drawn) lay_line_coverage_over(context, coverage);
-  else if (!multisampled) context.target->bind_for_drawing();
+  if (!multisampled && lines_drawn)
+    lay_line_coverage_over(context, coverage);
+  else if (!multisampled)
+    context.target->bind_for_drawing();
 }
 
 }  // namespace toond::render

@@ -1,5 +1,5 @@
+#include "render/frame/texture_unit.h"
 #include "render/passes/passes.h"
-#include "render/texture_unit.h"
 
 namespace toond::render {
 

@@ -1,9 +1,9 @@
 #include <cmath>
 
-#include "render/draw_pacing.h"
+#include "render/frame/draw_pacing.h"
+#include "render/frame/texture_unit.h"
 #include "render/passes/passes.h"
-#include "render/render_cost.h"
-#include "render/texture_unit.h"
+#include "render/plan/render_cost.h"
 
 namespace toond::render {
 
@@ -31,7 +31,8 @@ void draw_edge_pass(PassContext& context) {
   // At 2048² this pass alone can take llvmpipe longer than the meshes: a
   // render priced as long draws it in bands, stepping aside between them.
   const double texels = edge_texels_per_pixel(frame.outline_px, frame.plan.creases_only);
-  draw_full_screen(context.pacing, frame.draw_width, frame.draw_height, texels, [&] { context.resources.draw_fullscreen_triangle(); });
+  draw_full_screen(context.pacing, frame.draw_width, frame.draw_height, texels,
+                   [&] { context.resources.draw_fullscreen_triangle(); });
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }

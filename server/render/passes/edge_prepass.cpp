@@ -1,5 +1,5 @@
+#include "render/frame/texture_unit.h"
 #include "render/passes/passes.h"
-#include "render/texture_unit.h"
 
 namespace toond::render {
 namespace {
@@ -27,12 +27,14 @@ void draw_edge_prepass(PassContext& context) {
   const DepthVariant variant = DepthVariant{}.set(DepthFeature::AlphaMask, alpha_tested);
   gpu::Program& prepass = context.programs.get("toon.vert", "normal_depth.frag", variant.defines());
   prepass.use();
-  draw_objects(context,
-               {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
-                .draw = [&](std::size_t i) {
-                  if (alpha_tested) draw_by_material(context, i);
-                  else draw_whole_object(context, i);
-                }});
+  draw_objects(context, {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
+                         .draw =
+                             [&](std::size_t i) {
+                               if (alpha_tested)
+                                 draw_by_material(context, i);
+                               else
+                                 draw_whole_object(context, i);
+                             }});
   if (!normals.needs_resolve()) return;
   normals.bind_for_resolve();
   glDisable(GL_DEPTH_TEST);

@@ -34,7 +34,8 @@ FaceSkip hull_face_skip(const FrameContext& frame, std::size_t i) {
   FaceSkip hull;
   if (frame.main_faces[i].hidden == HiddenFaces::None) return hull;
   const double reach = hull_reach(frame, frame.world_per_px_at_w1());
-  hull.hidden = hidden_faces(object.enclosure(frame.lod_of(i)), frame.scene.matrices[i], frame.clip, object.bounds(), reach);
+  hull.hidden =
+      hidden_faces(object.enclosure(frame.lod_of(i)), frame.scene.matrices[i], frame.clip, object.bounds(), reach);
   // The hull's holes move with its offset and may turn toward the camera
   // where the model's do not: its own caps, offset like it (they share
   // its vertices), are checked.
@@ -104,8 +105,10 @@ void draw_hull_of(const PassContext& context, const HullFaces& faces, std::size_
   const bool per_material = outline_per_material(context.frame);
   const std::optional<HullSubset>& subset = faces.subsets[i];
   if (!subset) {
-    if (per_material) draw_by_material(context, i);
-    else draw_whole_object(context, i);
+    if (per_material)
+      draw_by_material(context, i);
+    else
+      draw_whole_object(context, i);
     return;
   }
   const GpuModel& model = context.model(i);
@@ -138,14 +141,14 @@ void draw_hull_outline_pass(PassContext& context) {
   gpu::Program& program = context.programs.get("hull.vert", "hull.frag", frame.plan.outline.defines());
   program.use();
   const HullFaces faces = hull_faces(context);
-  draw_objects(context,
-               {.faces = [&](std::size_t i) { return context.hull_skips[i]; },
-                .draw = [&](std::size_t i) { draw_hull_of(context, faces, i, HullSide::Shown); },
-                .redraw = [&](std::size_t i) { draw_hull_of(context, faces, i, HullSide::Both); }});
+  draw_objects(context, {.faces = [&](std::size_t i) { return context.hull_skips[i]; },
+                         .draw = [&](std::size_t i) { draw_hull_of(context, faces, i, HullSide::Shown); },
+                         .redraw = [&](std::size_t i) { draw_hull_of(context, faces, i, HullSide::Both); }});
 }
 
 void start_hull_cull(PassContext& context) {
-  for (std::size_t i = 0; i < context.frame.objects.size(); ++i) context.hull_skips.push_back(hull_face_skip(context.frame, i));
+  for (std::size_t i = 0; i < context.frame.objects.size(); ++i)
+    context.hull_skips.push_back(hull_face_skip(context.frame, i));
   std::vector<std::optional<HullCullInput>> inputs;
   bool any = false;
   for (std::size_t i = 0; i < context.frame.objects.size(); ++i) {

@@ -31,20 +31,21 @@ void draw_layer_pass(PassContext& context) {
   // Submesh by submesh only where the material matters: an id per
   // material, or its alpha test.
   const bool by_material = numbered || variant.has(LayerFeature::AlphaMask);
-  draw_objects(context,
-               {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
-                .draw = [&](std::size_t i) {
-                  if (!by_material) {
-                    draw_whole_object(context, i);
-                    return;
-                  }
-                  const GpuModel& model = context.model(i);
-                  for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
-                    bind_material(model, sub.material);
-                    if (numbered) program.set("u_layer_id", static_cast<float>(layer_id(frame, i, sub.material)));
-                    model.draw(sub, context.pacing);
-                  }
-                }});
+  draw_objects(context, {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
+                         .draw =
+                             [&](std::size_t i) {
+                               if (!by_material) {
+                                 draw_whole_object(context, i);
+                                 return;
+                               }
+                               const GpuModel& model = context.model(i);
+                               for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
+                                 bind_material(model, sub.material);
+                                 if (numbered)
+                                   program.set("u_layer_id", static_cast<float>(layer_id(frame, i, sub.material)));
+                                 model.draw(sub, context.pacing);
+                               }
+                             }});
 }
 
 }  // namespace toond::render

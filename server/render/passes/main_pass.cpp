@@ -1,5 +1,5 @@
+#include "render/frame/texture_unit.h"
 #include "render/passes/passes.h"
-#include "render/texture_unit.h"
 
 namespace toond::render {
 namespace {
@@ -42,8 +42,10 @@ void shade_object(PassContext& context, std::size_t i, const std::optional<MeshV
     }
     // A request's colour for one material's darkest band, by its name.
     if (variant.has(ToonFeature::ShadeColor)) program.set("u_shade_color", frame.params.shade_colors.at(material.name));
-    if (viewer) context.main_triangles_skipped += model.draw_facing(frame.lod_of(i), k, *viewer, context.pacing);
-    else model.draw(sub, context.pacing);
+    if (viewer)
+      context.main_triangles_skipped += model.draw_facing(frame.lod_of(i), k, *viewer, context.pacing);
+    else
+      model.draw(sub, context.pacing);
   }
 }
 
@@ -70,8 +72,10 @@ void draw_main_pass(PassContext& context) {
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
-  if (frame.plan.stencil_mark) glEnable(GL_STENCIL_TEST);
-  else glDisable(GL_STENCIL_TEST);
+  if (frame.plan.stencil_mark)
+    glEnable(GL_STENCIL_TEST);
+  else
+    glDisable(GL_STENCIL_TEST);
   glStencilMask(0xff);
   // The lines layer holds nothing but lines: the background is for the
   // color render they are laid over.
@@ -85,11 +89,10 @@ void draw_main_pass(PassContext& context) {
   context.main_cap_checks.resize(frame.objects.size());
   if (frame.shadow) glBindTextureUnit(texture_unit::kShadowMap, context.resources.shadow_map().texture());
   // Where a cap shows, the side culled is drawn after all: whole.
-  draw_objects(context,
-               {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
-                .draw = [&](std::size_t i) { shade_object(context, i, turned_away_runs_viewer(context, i)); },
-                .redraw = [&](std::size_t i) { shade_object(context, i, std::nullopt); },
-                .cap_checks = &context.main_cap_checks});
+  draw_objects(context, {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
+                         .draw = [&](std::size_t i) { shade_object(context, i, turned_away_runs_viewer(context, i)); },
+                         .redraw = [&](std::size_t i) { shade_object(context, i, std::nullopt); },
+                         .cap_checks = &context.main_cap_checks});
 }
 
 }  // namespace toond::render

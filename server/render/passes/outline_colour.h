@@ -3,6 +3,7 @@
 // or per material (its colour darkened, or the texture under the line).
 #include <functional>
 
+#include "render/passes/object_draw.h"
 #include "render/passes/pass_context.h"
 
 namespace toond::render {

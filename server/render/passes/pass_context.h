@@ -8,13 +8,13 @@
 #include "gpu/gl_object.h"
 #include "gpu/program_cache.h"
 #include "gpu/render_target.h"
-#include "render/background_thread.h"
-#include "render/draw_pacing.h"
-#include "render/frame_blocks.h"
-#include "render/frame_context.h"
-#include "render/frame_resources.h"
-#include "render/hull_cull.h"
-#include "render/render_object.h"
+#include "render/cull/background_thread.h"
+#include "render/cull/hull_cull.h"
+#include "render/frame/draw_pacing.h"
+#include "render/frame/frame_blocks.h"
+#include "render/frame/frame_context.h"
+#include "render/frame/frame_resources.h"
+#include "render/frame/render_object.h"
 
 namespace toond::render {
 
@@ -34,10 +34,10 @@ struct PassContext {
   // (when their answers are ready anyway) to report which objects drew both
   // sides.
   std::vector<gpu::Query> main_cap_checks{};
-  // Whether the hull leaves out the faces that cannot show (render/hull_cull.h).
+  // Whether the hull leaves out the faces that cannot show (render/cull/hull_cull.h).
   bool cull_hull = false;
   // Whether the main pass leaves out runs of faces that surely turn to the
-  // side it culls (render/facing_runs.h).
+  // side it culls (render/cull/facing_runs.h).
   bool skip_turned_away_runs = true;
   // Where work is handed off while the passes record (the hull cull).
   BackgroundThread& background;

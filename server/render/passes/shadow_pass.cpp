@@ -27,13 +27,17 @@ void draw_shadow_pass(PassContext& context) {
   draw_objects(context,
                {// The nearest surface seen from the light is the same with
                 // the far side skipped, so the map is too.
-                .faces = [&](std::size_t i) {
-                  return FaceSkip{frame.culling_for(i, frame.shadow->view_projection, light, false).hidden};
-                },
-                .draw = [&](std::size_t i) {
-                  if (alpha_tested) draw_by_material(context, i);
-                  else draw_whole_object(context, i);
-                }});
+                .faces =
+                    [&](std::size_t i) {
+                      return FaceSkip{frame.culling_for(i, frame.shadow->view_projection, light, false).hidden};
+                    },
+                .draw =
+                    [&](std::size_t i) {
+                      if (alpha_tested)
+                        draw_by_material(context, i);
+                      else
+                        draw_whole_object(context, i);
+                    }});
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 

@@ -1,0 +1,54 @@
+#include "render/frame/frame_blocks.h"
+
+#include "render/frame/shading_block.h"
+#include "render/frame/uniform_blocks.h"
+
+namespace toond::render {
+namespace {
+
+ViewBlock view_block_for(const FrameContext& frame) {
+  ViewBlock view;
+  view.view_projection = frame.view_projection;
+  view.eye = frame.eye();
+  view.orthographic = frame.orthographic() ? 1 : 0;
+  view.view_dir = frame.view_dir();
+  view.world_per_px_at_w1 = static_cast<float>(frame.world_per_px_at_w1());
+  view.viewport_px = glm::vec2(static_cast<float>(frame.draw_width), static_cast<float>(frame.draw_height));
+  return view;
+}
+
+OutlineBlock outline_block_for(const FrameContext& frame) {
+  OutlineBlock outline;
+  outline.outline_color = frame.params.outline.color;
+  outline.darken = frame.params.outline.darken;
+  outline.width = frame.outline_px;
+  return outline;
+}
+
+}  // namespace
+
+FrameBlocks::FrameBlocks(const FrameContext& frame, gpu::UniformArena& arena) : arena_(arena) {
+  arena.clear();
+  const std::size_t view = arena.add(view_block_for(frame));
+  const std::size_t shading = arena.add(shading_block_for(frame));
+  const std::size_t outline = arena.add(outline_block_for(frame));
+  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+    objects_.push_back(
+        arena.add(ObjectBlock::placing(frame.model_matrices[i], frame.normal_matrices[i], frame.objects[i].skinned)));
+  }
+  frame_placement_ = arena.add(ObjectBlock{});
+  arena.upload();
+  arena.bind(ViewBlock::kBinding, view, sizeof(ViewBlock));
+  arena.bind(ShadingBlock::kBinding, shading, sizeof(ShadingBlock));
+  arena.bind(OutlineBlock::kBinding, outline, sizeof(OutlineBlock));
+}
+
+void FrameBlocks::bind_object(std::size_t i) const {
+  arena_.bind(ObjectBlock::kBinding, objects_[i], sizeof(ObjectBlock));
+}
+
+void FrameBlocks::bind_frame_placement() const {
+  arena_.bind(ObjectBlock::kBinding, frame_placement_, sizeof(ObjectBlock));
+}
+
+}  // namespace toond::render

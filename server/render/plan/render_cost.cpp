@@ -1,0 +1,168 @@
+#include "render/plan/render_cost.h"
+
+#include "render/plan/camera.h"
+#include "render/plan/light_space.h"
+#include "render/plan/outline_width.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
+
+namespace toond::render {
+namespace {
+
+// Passes that rasterise the meshes over the whole drawn frame.
+int frame_geometry_passes(const PassPlan& plan) {
+  int n = 0;
+  for (Pass pass : plan.passes) {
+    switch (pass) {
+      case Pass::Main:
+      case Pass::HullOutline:
+      case Pass::Wireframe:
+      case Pass::EdgePrepass:
+      case Pass::Layer:
+        ++n;
+        break;
+      default:
+        break;
+    }
+  }
+  return n;
+}
+
+// Passes that touch every sample of the frame once, however much is drawn.
+int frame_wide_passes(const PassPlan& plan) {
+  int n = 1;  // the clear before the first pass
+  for (Pass pass : plan.passes) {
+    switch (pass) {
+      case Pass::Edges:
+      case Pass::Resolve:
+      case Pass::Downsample:
+      case Pass::Readback:
+        ++n;
+        break;
+      default:
+        break;
+    }
+  }
+  return n;
+}
+
+// One pass over every mesh at `width` × `height` drawn pixels, seen along
+// `view` (none: from their densest direction).
+RenderCost pass_cost(std::span<const scene::Mesh* const> meshes, const std::optional<glm::dvec3>& view, double width,
+                     double height, double samples) {
+  RenderCost cost;
+  const double diagonal_tiles = std::hypot(width, height) / kTilePixels;
+  for (const scene::Mesh* mesh : meshes) {
+    const double layers = view ? mesh->cost.layers_toward(*view) : mesh->cost.layers();
+    cost.samples += layers * width * height * samples;
+    cost.triangles += static_cast<double>(mesh->triangle_count());
+    cost.tiles += mesh->cost.edge_span() * diagonal_tiles * samples;
+  }
+  return cost;
+}
+
+// The outline's width in drawn pixels as the frame will draw it: a width in
+// world units converted at the camera that frames the meshes' bounds.
+double drawn_line_px(const RenderParams& params, std::span<const scene::Mesh* const> meshes, double supersample) {
+  if (meshes.empty()) return 0.0;
+  scene::Bounds bounds = meshes.front()->bounds;
+  for (const scene::Mesh* mesh : meshes) {
+    bounds.min = glm::min(bounds.min, mesh->bounds.min);
+    bounds.max = glm::max(bounds.max, mesh->bounds.max);
+  }
+  const double aspect = static_cast<double>(params.width) / std::max(params.height, 1);
+  const CameraSetup camera = fit_camera(params.camera, bounds, aspect);
+  const bool orthographic = params.camera.projection == Projection::Orthographic;
+  return outline_width_px(params.outline, camera, orthographic, params.height) * supersample;
+}
+
+// The crease pass: every edge creased at the request's angle (and every
+// segment where parts cross that turns as far, drawn alike), and the
+// samples its lines cover (each mesh's creased length at the frame's scale:
+// framed, its bounding sphere fills the frame's shorter side). Drawn one
+// sample a pixel, the lines' coverage is gathered in a target of its own,
+// cleared and laid over the image: two more passes over the frame.
+RenderCost crease_cost(const RenderParams& params, const PassPlan& plan, std::span<const scene::Mesh* const> meshes,
+                       double width, double height) {
+  RenderCost cost;
+  const double angle = params.outline.crease_angle_deg;
+  const double line_px = drawn_line_px(params, meshes, plan.supersample);
+  const auto add = [&](const scene::TurnTally& lines) {
+    cost.crease_edges += static_cast<double>(lines.creased_at(angle));
+    cost.samples += lines.length_at(angle) * std::min(width, height) * line_px * plan.samples;
+  };
+  for (const scene::Mesh* mesh : meshes) {
+    add(mesh->crease_edges);
+    add(mesh->intersections);
+  }
+  if (plan.samples == 1) cost.framebuffer += 2 * width * height;
+  return cost;
+}
+
+}  // namespace
+
+double edge_texels_per_pixel(double line_px, bool creases_only) {
+  const double reach = std::ceil((0.5 * line_px + 0.5) * 1.4143);
+  return 4.0 * reach + (creases_only ? kCreasePixelTexels : kSilhouettePixelTexels);
+}
+
+double RenderCost::units() const {
+  return (samples + triangles * kTriangleSamples + tiles * kTileSamples + framebuffer * kFramebufferSamples +
+          frames * kFrameSamples + edge_texels * kEdgeTexelSamples + crease_edges * kCreaseEdgeSamples) /
+         1e6;
+}
+
+std::string RenderCost::describe() const {
+  std::ostringstream s;
+  s.precision(3);
+  s << units() << " Msamples (surface samples " << samples / 1e6 << " M, triangles " << triangles / 1e6
+    << " M, tile samples crossed " << tiles / 1e6 << " M, frame samples " << framebuffer / 1e6 << " M";
+  if (edge_texels > 0) s << ", edge pass texels " << edge_texels / 1e6 << " M";
+  if (crease_edges > 0) s << ", crease edges " << crease_edges / 1e6 << " M";
+  s << ")";
+  return s.str();
+}
+
+RenderCost& RenderCost::operator+=(const RenderCost& other) {
+  samples += other.samples;
+  triangles += other.triangles;
+  tiles += other.tiles;
+  framebuffer += other.framebuffer;
+  frames += other.frames;
+  edge_texels += other.edge_texels;
+  crease_edges += other.crease_edges;
+  return *this;
+}
+
+RenderCost predict_frame_cost(const RenderParams& params, const PassPlan& plan,
+                              std::span<const scene::Mesh* const> meshes, ViewKnown view) {
+  const double width = static_cast<double>(params.width) * plan.supersample;
+  const double height = static_cast<double>(params.height) * plan.supersample;
+  const bool known = view == ViewKnown::Camera;
+  const std::optional<glm::dvec3> eye =
+      known ? std::optional(toward_eye(params.camera.yaw_deg, params.camera.pitch_deg)) : std::nullopt;
+  RenderCost cost;
+  const RenderCost one_pass = pass_cost(meshes, eye, width, height, plan.samples);
+  for (int i = frame_geometry_passes(plan); i > 0; --i) cost += one_pass;
+  if (plan.has(Pass::Shadow)) {
+    const double side = params.shadows.map_size;
+    const Light& caster = params.lights[static_cast<std::size_t>(plan.shadow_light)];
+    const glm::dvec3 light =
+        caster.space == LightSpace::View ? view_to_scene(params.camera, caster.direction) : caster.direction;
+    cost += pass_cost(meshes, known ? std::optional(light) : std::nullopt, side, side, 1);
+    cost.framebuffer += side * side;  // its clear
+  }
+  cost.framebuffer += width * height * plan.samples * frame_wide_passes(plan);
+  if (plan.has(Pass::Edges)) {
+    cost.edge_texels =
+        width * height * edge_texels_per_pixel(drawn_line_px(params, meshes, plan.supersample), plan.creases_only);
+  }
+  if (plan.has(Pass::Creases)) cost += crease_cost(params, plan, meshes, width, height);
+  cost.frames = 1;
+  return cost;
+}
+
+}  // namespace toond::render

@@ -1,0 +1,440 @@
+#include "scene/import/obj_import.h"
+
+#include <tiny_obj_loader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "bundle_paths/statement_names.h"
+#include "scene/import/bundle_import.h"
+#include "scene/import/import_error.h"
+#include "scene/import/mesh_builder.h"
+#include "scene/import/obj_text.h"
+#include "scene/import/texture_decode.h"
+#include "text/trim.h"
+
+namespace toond::scene {
+namespace {
+
+std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+
+std::string find_obj(const Bundle& bundle) { return find_model_file(bundle, {".obj"}, ".obj"); }
+
+// Which statements an MTL gave a material, where tinyobj's defaults cannot
+// be told apart from values written in the file, and the texture statements
+// as written: tinyobj's option parser reads the name as a number after -o,
+// -s or -t with fewer than three numbers, while bundle_paths::texture_names
+// (the reading `toon` sends files by) does not.
+struct GivenStatements {
+  bool kd = false;
+  bool ns = false;
+  std::optional<std::string> map_kd;  // the text after the keyword
+  std::optional<std::string> bump;    // map_Bump, map_bump or bump
+  std::optional<std::string> norm;
+};
+
+// The statements given per material name in an MTL text. Lines, names and
+// keywords are cut exactly as tinyobj's LoadMtl cuts them (any of \n, \r\n,
+// \r ends a line; the name is the rest of the newmtl line less trailing
+// blanks; keywords are case-sensitive), so the names match the ones it
+// produced and the same statements count.
+std::map<std::string, GivenStatements> given_statements(std::string_view mtl) {
+  std::map<std::string, GivenStatements> given;
+  std::string current;
+  std::size_t pos = 0;
+  while (pos < mtl.size()) {
+    const std::size_t end = std::min(mtl.find_first_of("\r\n", pos), mtl.size());
+    const std::string_view line = text::trim(mtl.substr(pos, end - pos));
+    pos = end + ((end + 1 < mtl.size() && mtl[end] == '\r' && mtl[end + 1] == '\n') ? 2 : 1);
+    if (line.empty()) continue;
+    const auto is = [&](std::string_view keyword) {
+      return line.starts_with(keyword) && line.size() > keyword.size() &&
+             (line[keyword.size()] == ' ' || line[keyword.size()] == '\t');
+    };
+    // As tinyobj, a statement that names no file leaves the one before.
+    const auto texture = [&](std::optional<std::string>& statement, std::size_t keyword_size) {
+      const std::string_view rest = line.substr(keyword_size);
+      if (!bundle_paths::texture_names(rest).empty()) statement = std::string(rest);
+    };
+    if (is("newmtl")) {
+      current = std::string(line.substr(7));
+    } else if (is("Kd")) {
+      given[current].kd = true;
+    } else if (is("Ns")) {
+      given[current].ns = true;
+    } else if (is("map_Kd")) {
+      texture(given[current].map_kd, 6);
+    } else if (is("map_Bump") || is("map_bump")) {
+      texture(given[current].bump, 8);
+    } else if (is("bump")) {
+      texture(given[current].bump, 4);
+    } else if (is("norm")) {
+      texture(given[current].norm, 4);
+    }
+  }
+  return given;
+}
+
+// Serves `mtllib` names from the bundle instead of the file system, and
+// remembers which MTL each material came from: texture names in an MTL are
+// relative to the MTL's own folder.
+class BundleMaterialReader : public tinyobj::MaterialReader {
+ public:
+  BundleMaterialReader(const Bundle& bundle, std::string obj_path, ImportWarnings& warnings)
+      : bundle_(bundle), obj_path_(std::move(obj_path)), warnings_(warnings) {}
+
+  // `line` is a whole mtllib line (prepare_obj_text keeps tinyobj from
+  // cutting it), read as toon reads it.
+  bool operator()(const std::string& line, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* material_map, std::string*, std::string*) override {
+    const auto in_bundle = [&](const std::string& name) { return bundle_.resolve(obj_path_, name).has_value(); };
+    for (const std::string& reference : bundle_paths::mtllib_names(line, in_bundle)) {
+      load(reference, materials, material_map);
+    }
+    // Missing libraries are said by load, precisely: answering "found" keeps
+    // tinyobj from adding a warning of its own.
+    return true;
+  }
+
+  // What the MTL set for material `id`: tinyobj fills in its own defaults
+  // (Kd 0 without a texture and 0.6 with one, Ns 1) that cannot be told
+  // apart from values written in the file.
+  GivenStatements given(int id) const {
+    return id >= 0 && static_cast<std::size_t>(id) < given_.size() ? given_[static_cast<std::size_t>(id)]
+                                                                   : GivenStatements{};
+  }
+
+  // The MTL that defined material `id` (the OBJ itself when unknown).
+  const std::string& source_of(int id) const {
+    return id >= 0 && static_cast<std::size_t>(id) < sources_.size() ? sources_[static_cast<std::size_t>(id)]
+                                                                     : obj_path_;
+  }
+
+ private:
+  // The materials of library `reference`, added to tinyobj's lists.
+  void load(const std::string& reference, std::vector<tinyobj::material_t>* materials,
+            std::map<std::string, int>* material_map) {
+    const auto path = bundle_.resolve(obj_path_, reference);
+    if (!path) {
+      warnings_.add(obj_path_ + ": material library " + quoted(reference) +
+                    " is not in the bundle; its materials fall back to the default colour");
+      return;
+    }
+    std::istringstream in(*bundle_.find(*path));
+    std::string warn;
+    std::string err;
+    tinyobj::LoadMtl(material_map, materials, &in, &warn, &err);
+    for (const std::string* text : {&warn, &err}) {
+      std::istringstream lines(*text);
+      for (std::string line; std::getline(lines, line);) {
+        line = std::string(text::trim(line));
+        if (!line.empty() && line != ".") warnings_.add(*path + ": " + line);
+      }
+    }
+    const auto given = given_statements(*bundle_.find(*path));
+    for (std::size_t i = sources_.size(); i < materials->size(); ++i) {
+      const std::string& material = (*materials)[i].name;
+      sources_.push_back(*path);
+      const auto it = given.find(material);
+      given_.push_back(it == given.end() ? GivenStatements{} : it->second);
+      // prepare_obj_text turned usemtl names with blanks into this alias.
+      material_map->emplace(material_alias(material), static_cast<int>(i));
+    }
+  }
+
+  const Bundle& bundle_;
+  std::string obj_path_;
+  ImportWarnings& warnings_;
+  std::vector<std::string> sources_;
+  std::vector<GivenStatements> given_;
+};
+
+// Only consulted on failure, so the common path does not scan the text twice.
+std::size_t line_of_vertex(const std::string& text, std::size_t vertex) {
+  std::size_t line = 0;
+  std::size_t seen = 0;
+  std::istringstream in(text);
+  for (std::string s; std::getline(in, s);) {
+    ++line;
+    const auto first = s.find_first_not_of(" \t");
+    if (first != std::string::npos && s[first] == 'v' && first + 1 < s.size() &&
+        (s[first + 1] == ' ' || s[first + 1] == '\t')) {
+      if (seen++ == vertex) return line;
+    }
+  }
+  return 0;
+}
+
+glm::vec3 sanitize_colour(const tinyobj::real_t* rgb, float fallback) {
+  glm::vec3 c;
+  for (int i = 0; i < 3; ++i) {
+    const double value = rgb[i];
+    c[i] = std::isfinite(value) ? static_cast<float>(std::clamp(value, 0.0, 1.0)) : fallback;
+  }
+  return c;
+}
+
+// An image whose every pixel is grey is a height map (the classic meaning
+// of `bump`), not a tangent-space normal map, whose texels lean blue.
+bool is_greyscale(const Texture& texture) {
+  for (std::size_t i = 0; i + 3 < texture.rgba.size(); i += 4) {
+    if (texture.rgba[i] != texture.rgba[i + 1] || texture.rgba[i] != texture.rgba[i + 2]) return false;
+  }
+  return true;
+}
+
+class Importer {
+ public:
+  Importer(const Bundle& bundle, const ImportLimits& limits, const ImportChoices& choices)
+      : bundle_(bundle), obj_path_(find_obj(bundle)), limits_(limits), choices_(choices) {}
+
+  Model run() {
+    parse();
+    check_import_time(limits_, "parsing " + obj_path_);
+    MeshSource source = make_source();
+    source.limits = limits_;
+    apply_import_choices(source, choices_);
+    model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
+      build_materials(triangles);
+      check_import_time(limits_, "decoding textures");
+    });
+    model_.has_vertex_colors = !model_.mesh.colors.empty();
+    model_.warnings = warnings_.take();
+    return std::move(model_);
+  }
+
+ private:
+  void parse() {
+    ObjTextFindings findings;
+    std::istringstream in(prepare_obj_text(*bundle_.find(obj_path_), &findings));
+    // tinyobj drops a quad naming a missing vertex without a word; a model
+    // with holes is worse than a clear refusal.
+    if (findings.missing_vertex_line != 0) {
+      throw ImportError(obj_path_, obj_path_ + ": a face refers to a vertex that does not exist (line " +
+                                       std::to_string(findings.missing_vertex_line) + ")");
+    }
+    std::string warn;
+    std::string err;
+    reader_ = std::make_unique<BundleMaterialReader>(bundle_, obj_path_, warnings_);
+    // Without the fallback, attrib.colors is empty unless every `v` line
+    // carries a colour (tinyobj would otherwise fill in white).
+    const bool ok = tinyobj::LoadObj(&attrib_, &shapes_, &tinyobj_materials_, &warn, &err, &in, reader_.get(),
+                                     /*triangulate=*/true, /*default_vcols_fallback=*/false);
+    if (!ok) {
+      std::string reason(text::trim(std::string_view(err).substr(0, err.find('\n'))));
+      if (reason.empty()) reason = "the parser gave no reason";
+      throw ImportError(obj_path_, "cannot read " + obj_path_ + ": " + reason);
+    }
+    for (const std::string* messages : {&warn, &err}) {
+      std::istringstream lines(*messages);
+      for (std::string line; std::getline(lines, line);) {
+        line = std::string(text::trim(line));
+        if (line.empty() || line == ".") continue;
+        std::replace(line.begin(), line.end(), '\x1f', ' ');  // undo material_alias for display
+        warnings_.add(obj_path_ + ": " + line);
+      }
+    }
+  }
+
+  // tinyobj's lists and faces in the shared importer's terms; the lists are
+  // moved out of attrib_, which is not used after.
+  MeshSource make_source() {
+    MeshSource source;
+    source.file = obj_path_;
+    const auto& v = attrib_.vertices;
+    source.positions.reserve(v.size() / 3);
+    for (std::size_t i = 0; i + 2 < v.size(); i += 3) source.positions.emplace_back(v[i], v[i + 1], v[i + 2]);
+    const auto& vn = attrib_.normals;
+    source.normals.reserve(vn.size() / 3);
+    for (std::size_t i = 0; i + 2 < vn.size(); i += 3) source.normals.emplace_back(vn[i], vn[i + 1], vn[i + 2]);
+    const auto& vt = attrib_.texcoords;
+    source.texcoords.reserve(vt.size() / 2);
+    for (std::size_t i = 0; i + 1 < vt.size(); i += 2) source.texcoords.emplace_back(vt[i], vt[i + 1]);
+    const auto& vc = attrib_.colors;
+    if (!vc.empty() && vc.size() == v.size()) {
+      // OBJ's "v x y z r g b" extension: the file's 0..1 values, kept as
+      // written (sRGB-encoded like picked colours; see Mesh::colors).
+      source.colors.reserve(vc.size() / 3);
+      for (std::size_t i = 0; i + 2 < vc.size(); i += 3) source.colors.emplace_back(vc[i], vc[i + 1], vc[i + 2]);
+    }
+    has_vertex_colors_ = !source.colors.empty();
+    // Only called on failure, so the common path does not scan the text twice.
+    source.describe_position = [this](std::size_t vertex) {
+      const std::size_t line = line_of_vertex(*bundle_.find(obj_path_), vertex);
+      return "vertex " + std::to_string(vertex + 1) + (line > 0 ? " (line " + std::to_string(line) + ")" : "");
+    };
+    attrib_ = tinyobj::attrib_t{};
+
+    const auto position_count = static_cast<long long>(source.positions.size());
+    for (const auto& shape : shapes_) {
+      std::size_t offset = 0;
+      for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+        const std::size_t count = shape.mesh.num_face_vertices[f];
+        // LoadObj triangulates, but a fan keeps anything it leaves intact.
+        for (std::size_t k = 1; k + 1 < count; ++k) {
+          SourceTriangle tri;
+          const std::size_t picks[3] = {offset, offset + k, offset + k + 1};
+          for (int c = 0; c < 3; ++c) {
+            const auto& idx = shape.mesh.indices[picks[c]];
+            if (idx.vertex_index < 0 || idx.vertex_index >= position_count) {
+              throw ImportError(obj_path_, obj_path_ + ": a face" +
+                                               (shape.name.empty() ? "" : " in " + quoted(shape.name)) +
+                                               " refers to a vertex position that does not exist (the file defines " +
+                                               std::to_string(position_count) + ")");
+            }
+            SourceCorner& corner = tri.corner[c];
+            corner.position = static_cast<std::uint32_t>(idx.vertex_index);
+            corner.normal = idx.normal_index;
+            corner.texcoord = idx.texcoord_index;
+          }
+          tri.material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+          tri.smoothing = f < shape.mesh.smoothing_group_ids.size() ? shape.mesh.smoothing_group_ids[f] : 0u;
+          source.triangles.push_back(tri);
+        }
+        offset += count;
+      }
+    }
+    shapes_.clear();
+    return source;
+  }
+
+  // The texture `raw_name` of a material (decoded once per file and colour
+  // space), or -1 with a warning when it cannot be used.
+  int texture_for(const std::string& raw_name, const std::string& material_name, const std::string& mtl_path,
+                  ColorSpace space) {
+    const bool colour_map = space == ColorSpace::Srgb;
+    const std::string kind = colour_map ? "texture" : "normal map";
+    const std::string fallback =
+        colour_map ? "the material colour is used instead" : "the material is shaded without it";
+    const std::vector<bundle_paths::TextureName> candidates = bundle_paths::texture_names(raw_name);
+    if (candidates.empty()) return -1;
+    const std::string& written = candidates.front().name;
+    std::optional<std::string> path;
+    for (const bundle_paths::TextureName& candidate : candidates) {
+      if (!(path = bundle_.resolve(mtl_path, candidate.name))) continue;
+      if (candidate.file_name_only) {
+        warnings_.add(mtl_path + ": " + kind + " " + quoted(written) + " of material " + quoted(material_name) +
+                      " was found by its file name alone, as " + quoted(*path));
+      }
+      break;
+    }
+    if (!path) {
+      warnings_.add(mtl_path + ": " + kind + " " + quoted(written) + " of material " + quoted(material_name) +
+                    " is not in the bundle; " + fallback);
+      return -1;
+    }
+    const auto key = std::make_pair(*path, space);
+    if (const auto it = texture_slots_.find(key); it != texture_slots_.end()) return it->second;
+    int slot = -1;
+    try {
+      Texture texture =
+          decode_model_texture(*bundle_.find(*path), *path, limits_.max_texture_pixels, texture_pixels_left_);
+      texture.color_space = space;
+      if (!colour_map && is_greyscale(texture)) {
+        warnings_.add(*path + ": the bump map of material " + quoted(material_name) +
+                      " is grey, a height map rather than a tangent-space normal map; the material is shaded "
+                      "without it");
+      } else {
+        model_.textures.push_back(std::move(texture));
+        slot = static_cast<int>(model_.textures.size()) - 1;
+      }
+    } catch (const ImportLimitError&) {
+      throw;
+    } catch (const std::exception& e) {
+      warnings_.add(*path + ": " + kind + " of material " + quoted(material_name) + " cannot be used: " + e.what() +
+                    "; " + fallback);
+    }
+    texture_slots_.emplace(key, slot);
+    return slot;
+  }
+
+  void build_materials(std::vector<SourceTriangle>& triangles) {
+    std::set<int> used;
+    bool default_used = false;
+    for (auto& tri : triangles) {
+      if (tri.material < 0 || static_cast<std::size_t>(tri.material) >= tinyobj_materials_.size()) {
+        tri.material = -1;
+        default_used = true;
+      } else {
+        used.insert(tri.material);
+      }
+    }
+    // Only materials that faces use: unused ones would cost texture decodes
+    // and inflate the reported counts.
+    std::map<int, int> slot;
+    for (const int id : used) {
+      const auto& source = tinyobj_materials_[static_cast<std::size_t>(id)];
+      const std::string& mtl_path = reader_->source_of(id);
+      const GivenStatements given = reader_->given(id);
+      Material material;
+      material.name = source.name;
+      material.diffuse = sanitize_colour(source.diffuse, 0.8f);
+      const std::string diffuse_name = given.map_kd.value_or(source.diffuse_texname);
+      if (!diffuse_name.empty()) {
+        material.diffuse_texture = texture_for(diffuse_name, source.name, mtl_path, ColorSpace::Srgb);
+      }
+      if (!given.kd) {
+        // Without Kd a texture or the vertex colours show as painted
+        // (nvdiffrec-style MTLs give only map_Kd), and a plain material gets
+        // the default grey.
+        material.diffuse = glm::vec3(material.diffuse_texture >= 0 || has_vertex_colors_ ? 1.0f : 0.8f);
+      }
+      // `norm` names a normal map outright; tinyobj files map_Bump, map_bump
+      // and bump under bump_texname, which Blender and most exporters use
+      // for tangent-space normal maps (windmill does).
+      const std::string normal_name = given.norm.value_or(
+          given.bump.value_or(!source.normal_texname.empty() ? source.normal_texname : source.bump_texname));
+      if (!normal_name.empty()) {
+        material.normal_texture = texture_for(normal_name, source.name, mtl_path, ColorSpace::Linear);
+      }
+      // nvdiffrec MTLs (spot, bob) misuse Ks as (unused, roughness,
+      // metalness), e.g. "Ks 0 0.25 0"; kept as written.
+      material.specular = sanitize_colour(source.specular, 0.0f);
+      if (given.ns && std::isfinite(source.shininess)) {
+        material.shininess = static_cast<float>(std::clamp(static_cast<double>(source.shininess), 0.0, 1000.0));
+      }
+      slot[id] = static_cast<int>(model_.materials.size());
+      model_.materials.push_back(std::move(material));
+    }
+    if (default_used) {
+      slot[-1] = static_cast<int>(model_.materials.size());
+      Material fallback;
+      fallback.name = "default";
+      fallback.diffuse = glm::vec3(has_vertex_colors_ ? 1.0f : 0.8f);
+      model_.materials.push_back(std::move(fallback));
+    }
+    for (auto& tri : triangles) tri.material = slot.at(tri.material);
+  }
+
+  const Bundle& bundle_;
+  std::string obj_path_;
+  ImportLimits limits_;
+  ImportChoices choices_;
+  ImportWarnings warnings_;
+  std::unique_ptr<BundleMaterialReader> reader_;
+  tinyobj::attrib_t attrib_;
+  std::vector<tinyobj::shape_t> shapes_;
+  std::vector<tinyobj::material_t> tinyobj_materials_;
+  bool has_vertex_colors_ = false;
+  // Per (bundle path, colour space): a file used both as a colour map and
+  // as a normal map is decoded twice.
+  std::map<std::pair<std::string, ColorSpace>, int> texture_slots_;
+  std::uint64_t texture_pixels_left_ = kModelTexturePixels;
+  Model model_;
+};
+
+}  // namespace
+
+Model import_obj_bundle(const Bundle& bundle, const ImportLimits& limits, const ImportChoices& choices) {
+  return Importer(bundle, limits, choices).run();
+}
+
+}  // namespace toond::scene
