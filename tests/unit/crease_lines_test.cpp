@@ -202,9 +202,10 @@ ContactLines contact_lines(const scene::Model& model, const std::vector<glm::dve
 // Prints what `c` measured on `model` and expects the crease pass to draw
 // the seams where the screen-space pass drew lines along them.
 void expect_seams_drawn(const char* model, const ContactLines& c, std::size_t least_contact) {
-  std::printf("[creases] %s: %zu screen-space line pixels along the seams that show, the default frame darkens "
-              "%.3f of them, the crease edges alone %.3f (%zu seam segments drawn)\n",
-              model, c.contact, c.drawn, c.edges_alone, c.segments_drawn);
+  std::printf(
+      "[creases] %s: %zu screen-space line pixels along the seams that show, the default frame darkens "
+      "%.3f of them, the crease edges alone %.3f (%zu seam segments drawn)\n",
+      model, c.contact, c.drawn, c.edges_alone, c.segments_drawn);
   EXPECT_EQ(c.plan, "main,hull_outline,creases,resolve,readback");
   ASSERT_GT(c.contact, least_contact);
   EXPECT_GT(c.segments_drawn, 0u);

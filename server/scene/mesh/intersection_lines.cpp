@@ -1,8 +1,8 @@
 #include "scene/mesh/intersection_lines.h"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -230,7 +230,8 @@ std::vector<FoundSeam> joined(std::vector<FoundSeam> pieces, double tolerance) {
   }
   std::vector<FoundSeam> seams;
   for (auto& [planes, group] : by_planes) {
-    std::sort(group.begin(), group.end(), [&](std::size_t l, std::size_t r) { return pieces[l].from < pieces[r].from; });
+    std::sort(group.begin(), group.end(),
+              [&](std::size_t l, std::size_t r) { return pieces[l].from < pieces[r].from; });
     FoundSeam seam = pieces[group.front()];
     for (std::size_t k = 1; k < group.size(); ++k) {
       const FoundSeam& next = pieces[group[k]];
