@@ -1,8 +1,11 @@
 #include "scene/mesh/intersection_lines.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <optional>
 
@@ -152,6 +155,12 @@ struct FoundSeam {
   glm::vec3 points[4];  // p1, a, b, p2
   int turn = 0;         // whole degrees, rounded up
   double length = 0;
+  // The two triangles' planes (unit normal, offset along it), and where a
+  // and b lie along the line they meet in (normal 1 × normal 2).
+  glm::dvec4 plane1{0.0};
+  glm::dvec4 plane2{0.0};
+  double from = 0;
+  double to = 0;
 };
 
 // The stretch of the line where the planes of t1 and t2 meet that both
@@ -196,7 +205,51 @@ std::optional<FoundSeam> crossing(const Triangle& t1, const Triangle& t2, double
   found.points[2] = glm::vec3(b);
   found.points[3] = off(t2);
   found.length = length;
+  found.plane1 = glm::dvec4(t1.normal, glm::dot(t1.normal, t1.corners[0]));
+  found.plane2 = glm::dvec4(t2.normal, glm::dot(t2.normal, t2.corners[0]));
+  found.from = low.first;
+  found.to = high.first;
   return found;
+}
+
+// The pieces of one seam between the same two planes (cut apart wherever
+// a triangle edge of either part crosses it: a box's side through a wall
+// in four or five) joined into one segment each, the largest turn of its
+// pieces: fewer, longer lines for the crease pass to draw. Planes are
+// matched to a millionth (a near miss joins nothing); pieces join where
+// they touch or overlap along their line.
+std::vector<FoundSeam> joined(std::vector<FoundSeam> pieces, double tolerance) {
+  const auto grid = [](double v, double step) { return static_cast<std::int64_t>(std::llround(v / step)); };
+  std::map<std::array<std::int64_t, 8>, std::vector<std::size_t>> by_planes;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const FoundSeam& p = pieces[i];
+    by_planes[{grid(p.plane1.x, 1e-6), grid(p.plane1.y, 1e-6), grid(p.plane1.z, 1e-6), grid(p.plane1.w, 16 * tolerance),
+               grid(p.plane2.x, 1e-6), grid(p.plane2.y, 1e-6), grid(p.plane2.z, 1e-6),
+               grid(p.plane2.w, 16 * tolerance)}]
+        .push_back(i);
+  }
+  std::vector<FoundSeam> seams;
+  for (auto& [planes, group] : by_planes) {
+    std::sort(group.begin(), group.end(),
+              [&](std::size_t l, std::size_t r) { return pieces[l].from < pieces[r].from; });
+    FoundSeam seam = pieces[group.front()];
+    for (std::size_t k = 1; k < group.size(); ++k) {
+      const FoundSeam& next = pieces[group[k]];
+      if (next.from > seam.to + tolerance) {
+        seams.push_back(seam);
+        seam = next;
+        continue;
+      }
+      if (next.to > seam.to) {
+        seam.to = next.to;
+        seam.points[2] = next.points[2];
+      }
+      seam.turn = std::max(seam.turn, next.turn);
+    }
+    seams.push_back(seam);
+  }
+  for (FoundSeam& seam : seams) seam.length = glm::distance(glm::dvec3(seam.points[1]), glm::dvec3(seam.points[2]));
+  return seams;
 }
 
 // The pairs of triangles of different parts whose boxes overlap, through a
@@ -312,6 +365,8 @@ class Search {
   }
 
   void compare(std::uint32_t i, std::uint32_t j) {
+    // The lower part first: a seam's pieces found from either side alike.
+    if (triangles_[i].part > triangles_[j].part) std::swap(i, j);
     const Triangle& t1 = triangles_[i];
     const Triangle& t2 = triangles_[j];
     if (t1.part == t2.part || !t1.box.overlaps(t2.box) || !spend()) return;
@@ -401,9 +456,9 @@ IntersectionLines find_intersection_lines(std::span<const glm::vec3> positions, 
     lines.complete = false;
     return lines;
   }
-  std::vector<FoundSeam>& found = search.found();
-  // The greatest turn first; within a turn, in the order found, which
-  // follows the tree: segments drawn together lie together.
+  std::vector<FoundSeam> found = joined(std::move(search.found()), tolerance);
+  // The greatest turn first; within a turn, seams of one plane pair
+  // together, and so mostly near one another.
   std::stable_sort(found.begin(), found.end(), [](const FoundSeam& l, const FoundSeam& r) { return l.turn > r.turn; });
   std::vector<int> turns;
   std::vector<double> lengths;
