@@ -2,7 +2,9 @@
 // for skipping the faces turned away from the camera.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <utility>
+#include <vector>
 
 #include "model_checks.h"
 #include "scene/import/bundle_import.h"
@@ -132,6 +134,37 @@ TEST(Enclosure, RimsTooLongToCapLeaveItOpen) {
   ASSERT_LT(kept.size(), mesh.indices.size());
   std::vector<glm::vec3> caps;
   EXPECT_EQ(classify_enclosure(mesh.positions, group_by_position(mesh.positions), kept, &caps), Enclosure::Open);
+  EXPECT_TRUE(caps.empty());
+}
+
+// An open tube around the z axis through x = `x`, faces out, each of its
+// two rims `segments` long.
+Mesh tube(int segments, float x) {
+  Mesh mesh;
+  for (int i = 0; i < segments; ++i) {
+    const float a = 6.2831853f * static_cast<float>(i) / static_cast<float>(segments);
+    mesh.positions.emplace_back(x + std::cos(a), std::sin(a), -1.0f);
+    mesh.positions.emplace_back(x + std::cos(a), std::sin(a), 1.0f);
+  }
+  for (int i = 0; i < segments; ++i) {
+    const auto bottom = static_cast<std::uint32_t>(2 * i), next = static_cast<std::uint32_t>(2 * ((i + 1) % segments));
+    mesh.indices.insert(mesh.indices.end(), {bottom, next, next + 1, bottom, next + 1, bottom + 1});
+  }
+  return mesh;
+}
+
+// Rims short enough to cap one by one, but so many that capping them all
+// would cost more than the budget: one tube's two rims of 200 are capped,
+// three tubes' six are not.
+TEST(Enclosure, ManyRimsOverTheCappingBudgetLeaveItOpen) {
+  const Mesh one = tube(200, 0.0f);
+  std::vector<glm::vec3> caps;
+  EXPECT_EQ(classify_enclosure(one.positions, group_by_position(one.positions), one.indices, &caps),
+            Enclosure::Outward);
+  EXPECT_FALSE(caps.empty());
+  const Mesh three = joined(joined(one, tube(200, 3.0f)), tube(200, 6.0f));
+  EXPECT_EQ(classify_enclosure(three.positions, group_by_position(three.positions), three.indices, &caps),
+            Enclosure::Open);
   EXPECT_TRUE(caps.empty());
 }
 

@@ -2,12 +2,17 @@
 // width is one number for every method.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
 #include <vector>
 
 #include "render/plan/camera.h"
 #include "render/plan/outline_width.h"
 #include "scene/mesh/extreme_points.h"
+#include "scene/mesh/mesh_processing.h"
 
 namespace toond::render {
 namespace {
@@ -42,6 +47,64 @@ TEST(ExtremePoints, AreFewAndLieOnTheOutline) {
   EXPECT_LE(extremes.size(), static_cast<std::size_t>(scene::kExtremeDirections));
   EXPECT_GT(extremes.size(), 100u);
   for (const glm::vec3& p : extremes) EXPECT_NEAR(glm::length(p), 1.0f, 1e-5f);
+}
+
+// What extreme_points must find, by the plain scan it stands for: along each
+// of the same directions, the first of the points that reach farthest.
+std::vector<glm::vec3> scanned_extremes(const std::vector<glm::vec3>& points) {
+  const double golden = std::acos(-1.0) * (3.0 - std::sqrt(5.0));
+  std::vector<std::size_t> first;
+  for (int i = 0; i < scene::kExtremeDirections; ++i) {
+    const double y = 1.0 - (i + 0.5) * 2.0 / scene::kExtremeDirections;
+    const double r = std::sqrt(1.0 - y * y);
+    const glm::dvec3 dir(r * std::cos(golden * i), y, r * std::sin(golden * i));
+    double best = -std::numeric_limits<double>::infinity();
+    std::size_t at = 0;
+    for (std::size_t v = 0; v < points.size(); ++v) {
+      const double reach = glm::dot(glm::dvec3(points[v]), dir);
+      if (reach > best) {
+        best = reach;
+        at = v;
+      }
+    }
+    first.push_back(at);
+  }
+  std::sort(first.begin(), first.end());
+  first.erase(std::unique(first.begin(), first.end()), first.end());
+  std::vector<glm::vec3> out;
+  for (const std::size_t v : first) out.push_back(points[v]);
+  return out;
+}
+
+// Blocks of points are skipped where they cannot reach farther than a point
+// already found; ties, copies, a circle walked in order (every block the
+// best for a while), a flat cloud far from the origin and points that are
+// not numbers must still give exactly the scan's points.
+TEST(ExtremePoints, AreTheFirstOfTheFarthestAsAScanFindsThem) {
+  std::mt19937 random(45);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  std::vector<std::vector<glm::vec3>> sets;
+  std::vector<glm::vec3> grid, circle, star, flat, with_nan = sphere_points(3000);
+  for (int i = 0; i < 2000; ++i) grid.emplace_back(i % 5, (i / 5) % 5, (i / 25) % 5);
+  for (int i = 0; i < 5000; ++i) {
+    const float a = 6.2831853f * static_cast<float>(i) / 5000.0f;
+    circle.emplace_back(std::cos(a), std::sin(a), 0.0f);
+    const float r = i % 2 ? 0.6f : 1.0f;
+    star.emplace_back(r * std::cos(a), r * std::sin(a), 0.0f);
+  }
+  for (int i = 0; i < 5000; ++i) star.push_back(star[static_cast<std::size_t>(i * 37 % 5000)]);  // copies after
+  for (int i = 0; i < 4000; ++i) flat.emplace_back(1e6f + unit(random) * 1e3f, unit(random), unit(random) * 1e-6f);
+  with_nan[17] = glm::vec3(std::nanf(""), 0.0f, 0.0f);
+  with_nan[1000] = with_nan[2000] = glm::vec3(2.0f, 2.0f, 2.0f);
+  for (const auto* set : {&grid, &circle, &star, &flat, &with_nan}) {
+    const std::vector<glm::vec3> found = scene::extreme_points(*set), scanned = scanned_extremes(*set);
+    ASSERT_EQ(found.size(), scanned.size());
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      EXPECT_EQ(std::memcmp(&found[i], &scanned[i], sizeof(glm::vec3)), 0) << i << " of " << set->size() << " points";
+    }
+  }
+  // The import's form searches only the first vertex at each point.
+  EXPECT_EQ(scene::extreme_points(star, scene::group_by_position(star)), scanned_extremes(star));
 }
 
 // A sphere fills 85–92 % of the limiting dimension from any view, at any

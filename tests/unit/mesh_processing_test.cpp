@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <vector>
 
@@ -140,6 +142,26 @@ TEST(MeshProcessing, GroupByPositionMergesIdenticalCoordinatesOnly) {
   const std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {-0.0f, 0, 0}, {1, 0, 0}, {1, 0, 1e-7f}};
   const auto g = group_by_position(p);
   EXPECT_EQ(g, (std::vector<std::uint32_t>{0, 1, 0, 1, 2}));
+}
+
+// Many points, most of them written several times and some in both zeros:
+// the ids are those a map from coordinates to the next free number gives,
+// in order of first appearance, however the points crowd the table.
+TEST(MeshProcessing, GroupByPositionNumbersPointsInOrderOfFirstAppearance) {
+  std::vector<glm::vec3> p;
+  for (int i = 0; i < 60000; ++i) {
+    const int k = (i * 7919) % 20011;  // repeats, out of order
+    const float zero = i % 2 ? 0.0f : -0.0f;
+    p.emplace_back(static_cast<float>(k % 101), static_cast<float>(k / 101) * 0.5f, k % 3 == 0 ? zero : 1.0f);
+  }
+  std::map<std::array<float, 3>, std::uint32_t> seen;
+  std::vector<std::uint32_t> expected;
+  for (const glm::vec3& q : p) {
+    const std::array<float, 3> key = {q.x + 0.0f, q.y + 0.0f, q.z + 0.0f};
+    expected.push_back(seen.emplace(key, static_cast<std::uint32_t>(seen.size())).first->second);
+  }
+  ASSERT_LT(seen.size(), p.size());
+  EXPECT_EQ(group_by_position(p), expected);
 }
 
 TEST(MeshProcessing, OutlineNormalFallsBackWhereFacesCancel) {

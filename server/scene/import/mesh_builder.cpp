@@ -380,15 +380,32 @@ class Builder {
         corner_groups_by_angle(mesh.positions, position_class, mesh.indices, eligible, src_.smooth_angle_deg);
     constexpr std::uint32_t kNone = ~0u;
     std::vector<std::uint32_t> group_of_vertex(mesh.positions.size(), kNone);
-    FlatMap<std::uint64_t, std::uint32_t, std::hash<std::uint64_t>> copies;
+    // The copy of vertex v for corner group g. A corner group nearly always
+    // lies on one vertex, so the group keeps its first copy, and the map is
+    // asked only for a group over several vertices at one point (a seam's).
+    const std::size_t corner_groups =
+        corner_group.empty() ? 0 : *std::max_element(corner_group.begin(), corner_group.end()) + std::size_t{1};
+    std::vector<std::uint32_t> first_copied(corner_groups, kNone);  // by corner group: the vertex
+    std::vector<std::uint32_t> first_copy(corner_groups, kNone);    // and its copy
+    FlatMap<std::uint64_t, std::uint32_t, std::hash<std::uint64_t>> more_copies;
+    const auto copy_of = [&](std::uint32_t v, std::uint32_t g) -> std::pair<std::uint32_t, bool> {
+      const auto next = static_cast<std::uint32_t>(mesh.positions.size());
+      if (first_copied[g] == kNone) {
+        first_copied[g] = v;
+        first_copy[g] = next;
+        return {next, true};
+      }
+      if (first_copied[g] == v) return {first_copy[g], false};
+      const auto [copy, added] = more_copies.try_emplace((static_cast<std::uint64_t>(v) << 32) | g, next);
+      return {copy, added};
+    };
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
       if (!eligible[c]) continue;
       const std::uint32_t v = mesh.indices[c];
       const std::uint32_t g = corner_group[c];
       if (group_of_vertex[v] == kNone) group_of_vertex[v] = g;
       if (group_of_vertex[v] == g) continue;
-      const auto [copy, inserted] = copies.try_emplace((static_cast<std::uint64_t>(v) << 32) | g,
-                                                       static_cast<std::uint32_t>(mesh.positions.size()));
+      const auto [copy, inserted] = copy_of(v, g);
       if (inserted) {
         mesh.positions.push_back(mesh.positions[v]);
         mesh.normals.push_back(mesh.normals[v]);
@@ -404,6 +421,49 @@ class Builder {
       mesh.indices[c] = copy;
     }
     return group_of_vertex;
+  }
+
+  // The groups computed normals are averaged over, numbered in order of
+  // first appearance. A vertex that brought its own normal forms a group of
+  // its own (its computed normal is discarded anyway); the rest group by
+  // position and smoothing group, or (groups_by_angle) by the corner group
+  // normals by angle gave them.
+  static std::vector<std::uint32_t> groups_by_smoothing(const std::vector<std::uint32_t>& position_class,
+                                                        const std::vector<bool>& needs_normal,
+                                                        const std::vector<std::int64_t>& smoothing_of_vertex) {
+    FlatMap<GroupKey, std::uint32_t, GroupKeyHash> group_ids(needs_normal.size());
+    std::vector<std::uint32_t> groups(needs_normal.size());
+    for (std::size_t v = 0; v < groups.size(); ++v) {
+      const GroupKey key = !needs_normal[v]
+                               ? GroupKey{static_cast<std::uint32_t>(v), std::numeric_limits<std::int64_t>::min()}
+                               : GroupKey{position_class[v], smoothing_of_vertex[v]};
+      groups[v] = group_ids.try_emplace(key, static_cast<std::uint32_t>(group_ids.size())).first;
+    }
+    return groups;
+  }
+
+  // Corner groups are dense numbers, so they are renumbered through an
+  // array rather than a map.
+  static std::vector<std::uint32_t> groups_by_angle(const std::vector<std::uint32_t>& angle_group,
+                                                    const std::vector<bool>& needs_normal) {
+    constexpr std::uint32_t kNone = ~0u;
+    std::uint32_t highest = 0;
+    for (const std::uint32_t g : angle_group) {
+      if (g != kNone) highest = std::max(highest, g);
+    }
+    std::vector<std::uint32_t> id_of(std::size_t{highest} + 2, kNone);  // by corner group; the last for none
+    std::vector<std::uint32_t> groups(needs_normal.size());
+    std::uint32_t next = 0;
+    for (std::size_t v = 0; v < groups.size(); ++v) {
+      if (!needs_normal[v]) {
+        groups[v] = next++;
+        continue;
+      }
+      std::uint32_t& id = id_of[angle_group[v] == kNone ? id_of.size() - 1 : angle_group[v]];
+      if (id == kNone) id = next++;
+      groups[v] = id;
+    }
+    return groups;
   }
 
   void build() {
@@ -491,17 +551,9 @@ class Builder {
       const std::vector<std::uint32_t> angle_group =
           smoothing_in_use ? std::vector<std::uint32_t>{}
                            : split_by_angle(position_class, needs_normal, smoothing_of_vertex, file_tangents);
-      FlatMap<GroupKey, std::uint32_t, GroupKeyHash> group_ids(mesh.positions.size());
-      std::vector<std::uint32_t> groups(mesh.positions.size());
-      for (std::size_t v = 0; v < groups.size(); ++v) {
-        // A vertex that brought its own normal forms a group of its own
-        // (its computed normal is discarded anyway).
-        const GroupKey key = !needs_normal[v]
-                                 ? GroupKey{static_cast<std::uint32_t>(v), std::numeric_limits<std::int64_t>::min()}
-                             : !angle_group.empty() ? GroupKey{angle_group[v], kAngleGroup}
-                                                    : GroupKey{position_class[v], smoothing_of_vertex[v]};
-        groups[v] = group_ids.try_emplace(key, static_cast<std::uint32_t>(group_ids.size())).first;
-      }
+      const std::vector<std::uint32_t> groups =
+          angle_group.empty() ? groups_by_smoothing(position_class, needs_normal, smoothing_of_vertex)
+                              : groups_by_angle(angle_group, needs_normal);
       const auto computed = compute_grouped_normals(mesh.positions, mesh.indices, groups);
       for (std::size_t v = 0; v < groups.size(); ++v) {
         if (needs_normal[v]) mesh.normals[v] = computed[v];

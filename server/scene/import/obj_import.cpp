@@ -274,6 +274,11 @@ class Importer {
     attrib_ = tinyobj::attrib_t{};
 
     const auto position_count = static_cast<long long>(source.positions.size());
+    std::size_t triangles = 0;  // reserved at once: grown one by one, a large file's list was copied over and over
+    for (const auto& shape : shapes_) {
+      for (const auto count : shape.mesh.num_face_vertices) triangles += count > 2 ? count - 2u : 0u;
+    }
+    source.triangles.reserve(triangles);
     for (const auto& shape : shapes_) {
       std::size_t offset = 0;
       for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {

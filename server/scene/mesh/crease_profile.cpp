@@ -13,10 +13,10 @@ namespace {
 
 // The first triangle side seen on an edge, waiting for its neighbour.
 struct OpenSide {
-  glm::vec3 normal_at_low;   // shading normal at the edge's lower position group
-  glm::vec3 normal_at_high;  // and at its higher one
+  std::uint32_t at_low;   // the side's vertex at the edge's lower position group
+  std::uint32_t at_high;  // and at its higher one
+  std::uint32_t triangle;
   bool matched = false;
-  std::size_t triangle = 0;  // the side's triangle
 };
 
 double angle_deg(const glm::vec3& a, const glm::vec3& b) {
@@ -141,13 +141,13 @@ CreaseProfile measure_creases(std::span<const glm::vec3> positions, std::span<co
       if (group[a] == group[b]) continue;
       if (group[a] > group[b]) std::swap(a, b);
       const std::uint64_t key = static_cast<std::uint64_t>(group[a]) << 32 | group[b];
-      const auto [side, first] = sides.try_emplace(key, OpenSide{normals[a], normals[b], false, t / 3});
+      const auto [side, first] = sides.try_emplace(key, OpenSide{a, b, static_cast<std::uint32_t>(t / 3), false});
       // An edge counts once, with the first two sides met; further sides of
       // a non-manifold edge add nothing.
       if (first || side.matched) continue;
       side.matched = true;
       const double turn =
-          std::max(angle_deg(side.normal_at_low, normals[a]), angle_deg(side.normal_at_high, normals[b]));
+          std::max(angle_deg(normals[side.at_low], normals[a]), angle_deg(normals[side.at_high], normals[b]));
       const double length = glm::length(glm::dvec3(positions[a]) - glm::dvec3(positions[b]));
       total_length += length;
       if (!(turn > 0.0)) continue;

@@ -4,8 +4,6 @@
 #include <cstdint>
 #include <cstring>
 
-#include "scene/mesh/flat_map.h"
-
 namespace toond::scene {
 namespace {
 
@@ -38,27 +36,41 @@ TriangleKey triangle_key(const TriangleCorners& t) {
   return key;
 }
 
-struct TriangleKeyHash {
-  std::size_t operator()(const TriangleKey& key) const noexcept {
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (std::uint64_t word : key) {
-      h ^= word + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-    }
-    return static_cast<std::size_t>(h);
+std::uint64_t hash_of(const TriangleKey& key) {
+  std::uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (std::uint64_t word : key) {
+    h ^= word + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
   }
-};
+  return h * 0x9E3779B97F4A7C15ull;  // Fibonacci hashing: the slot is taken from the top bits
+}
 
 }  // namespace
 
 std::vector<bool> last_of_each_triangle(std::span<const TriangleCorners> triangles) {
   std::vector<bool> keep(triangles.size(), true);
-  FlatMap<TriangleKey, std::size_t, TriangleKeyHash> last_seen(triangles.size());
+  // Open addressing over triangle numbers, each slot the last triangle seen
+  // with some key and that key's hash. A key (nine words) is made again from
+  // the corners only where the hashes match, so the table is a tenth of what
+  // it would be with the keys in it, and stays in cache.
+  constexpr std::uint32_t kEmpty = ~0u;
+  struct Slot {
+    std::uint32_t hash = 0;  // the top bits of the key's
+    std::uint32_t last = kEmpty;
+  };
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 2 * triangles.size()) ++bits;
+  std::vector<Slot> slots(std::size_t{1} << bits);
+  const std::size_t mask = slots.size() - 1;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
-    auto [last, inserted] = last_seen.try_emplace(triangle_key(triangles[t]), t);
-    if (!inserted) {
-      keep[last] = false;
-      last = t;
+    const TriangleKey key = triangle_key(triangles[t]);
+    const std::uint64_t h = hash_of(key);
+    const auto tag = static_cast<std::uint32_t>(h >> 32);
+    std::size_t i = static_cast<std::size_t>(h >> (64 - bits));
+    while (slots[i].last != kEmpty && !(slots[i].hash == tag && triangle_key(triangles[slots[i].last]) == key)) {
+      i = (i + 1) & mask;
     }
+    if (slots[i].last != kEmpty) keep[slots[i].last] = false;
+    slots[i] = {tag, static_cast<std::uint32_t>(t)};
   }
   return keep;
 }

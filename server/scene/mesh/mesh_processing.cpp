@@ -304,38 +304,45 @@ glm::vec3 any_perpendicular(const glm::vec3& n_in) {
 
 std::vector<glm::vec4> compute_tangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                                         std::span<const glm::vec2> texcoords, std::span<const std::uint32_t> indices) {
-  std::vector<glm::dvec3> tangent_sum(positions.size(), glm::dvec3(0.0));
-  std::vector<glm::dvec3> bitangent_sum(positions.size(), glm::dvec3(0.0));
-  if (texcoords.size() >= positions.size()) {
-    for_each_shaded_triangle(
-        positions, indices,
-        [&](const std::uint32_t(&i)[3], const glm::dvec3(&p)[3], const glm::dvec3&, const glm::dvec3& angles) {
-          const glm::dvec2 uv[3] = {texcoords[i[0]], texcoords[i[1]], texcoords[i[2]]};
-          const glm::dvec2 d1 = uv[1] - uv[0];
-          const glm::dvec2 d2 = uv[2] - uv[0];
-          const glm::dvec2 d3 = uv[2] - uv[1];
-          // Twice the signed UV area; against the longest UV edge, as for
-          // positions, so the test does not depend on the texture's scale.
-          const double r = d1.x * d2.y - d2.x * d1.y;
-          const double longest = std::max({glm::dot(d1, d1), glm::dot(d2, d2), glm::dot(d3, d3)});
-          if (!(std::abs(r) > kDegenerateRatio * longest) || !std::isfinite(r)) return;
-          const glm::dvec3 e1 = p[1] - p[0];
-          const glm::dvec3 e2 = p[2] - p[0];
-          const glm::dvec3 t = glm::dvec3(to_unit_float((e1 * d2.y - e2 * d1.y) / r));
-          const glm::dvec3 b = glm::dvec3(to_unit_float((e2 * d1.x - e1 * d2.x) / r));
-          if (t == glm::dvec3(0.0) || b == glm::dvec3(0.0)) return;
-          for (int k = 0; k < 3; ++k) {
-            tangent_sum[i[k]] += t * angles[k];
-            bitangent_sum[i[k]] += b * angles[k];
-          }
-        });
+  // Made at the first triangle that gives a direction: a mesh without
+  // texture coordinates (all zero) gives none, and skips its triangles'
+  // normals and corner angles as well.
+  std::vector<glm::dvec3> tangent_sum;
+  std::vector<glm::dvec3> bitangent_sum;
+  for (std::size_t c = 0; texcoords.size() >= positions.size() && c + 2 < indices.size(); c += 3) {
+    const std::uint32_t i[3] = {indices[c], indices[c + 1], indices[c + 2]};
+    const glm::dvec2 uv[3] = {texcoords[i[0]], texcoords[i[1]], texcoords[i[2]]};
+    const glm::dvec2 d1 = uv[1] - uv[0];
+    const glm::dvec2 d2 = uv[2] - uv[0];
+    const glm::dvec2 d3 = uv[2] - uv[1];
+    // Twice the signed UV area; against the longest UV edge, as for
+    // positions, so the test does not depend on the texture's scale.
+    const double r = d1.x * d2.y - d2.x * d1.y;
+    const double longest = std::max({glm::dot(d1, d1), glm::dot(d2, d2), glm::dot(d3, d3)});
+    if (!(std::abs(r) > kDegenerateRatio * longest) || !std::isfinite(r)) continue;
+    const glm::dvec3 p[3] = {positions[i[0]], positions[i[1]], positions[i[2]]};
+    if (triangle_normal(p[0], p[1], p[2]) == glm::dvec3(0.0)) continue;  // no area to shade
+    const glm::dvec3 e1 = p[1] - p[0];
+    const glm::dvec3 e2 = p[2] - p[0];
+    const glm::dvec3 t = glm::dvec3(to_unit_float((e1 * d2.y - e2 * d1.y) / r));
+    const glm::dvec3 b = glm::dvec3(to_unit_float((e2 * d1.x - e1 * d2.x) / r));
+    if (t == glm::dvec3(0.0) || b == glm::dvec3(0.0)) continue;
+    if (tangent_sum.empty()) {
+      tangent_sum.assign(positions.size(), glm::dvec3(0.0));
+      bitangent_sum.assign(positions.size(), glm::dvec3(0.0));
+    }
+    const glm::dvec3 angles = triangle_angles(p[0], p[1], p[2]);
+    for (int k = 0; k < 3; ++k) {
+      tangent_sum[i[k]] += t * angles[k];
+      bitangent_sum[i[k]] += b * angles[k];
+    }
   }
 
   std::vector<glm::vec4> tangents(positions.size());
   for (std::size_t v = 0; v < positions.size(); ++v) {
     glm::dvec3 n = v < normals.size() ? glm::dvec3(to_unit_float(glm::dvec3(normals[v]))) : glm::dvec3(0.0);
     if (n == glm::dvec3(0.0)) n = glm::dvec3(0.0, 1.0, 0.0);
-    const glm::dvec3& sum = tangent_sum[v];
+    const glm::dvec3 sum = tangent_sum.empty() ? glm::dvec3(0.0) : tangent_sum[v];
     const glm::dvec3 t = sum - n * glm::dot(n, sum);
     const double len = glm::length(t);
     // Nearly along the normal, what is left after Gram-Schmidt is noise.
