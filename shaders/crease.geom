@@ -1,22 +1,22 @@
 #version 430 core
 // Crease lines along the model's crease edges (scene/mesh/crease_edges.h): each
-// edge becomes a quad of the outline's width centred on it, reaching half
-// a width past its ends so lines meeting at a corner join (the fragment
+// edge becomes one primitive of the outline's width centred on it, reaching
+// half a width past its ends so lines meeting at a corner join (the fragment
 // stage keeps only what lies within half the width of the segment itself:
-// round caps and joins), plus a pixel for the line's antialiased border.
-// The quad is drawn in two halves, each lying in the plane of the face on
-// its side of the edge: its depth where it covers that face is the face's
-// own, so the depth test against what the main pass left keeps the line
-// where its faces show and hides it where something nearer covers them.
-// The pass offsets each half toward the viewer by its own depth slope
-// (glPolygonOffset), which is its face's: a constant offset lets hidden
-// creases through behind faces seen at a grazing angle and cuts lines on
-// steep ones. A crease shows only where both its faces do: the fragment
-// stage also checks the face across the edge (crease.frag), for which each
-// line carries both faces' planes. Input: c1, a, b, c2 (face 1 is
-// (a, b, c1) in its winding). An edge whose faces fold over one another on
-// screen draws nothing: it is a silhouette, which the hull or wireframe
-// draws, or it lies behind its own faces.
+// round caps and joins), plus a margin for the line's antialiased border.
+// With WIDE_LINES it is a GL line as wide as the pass sets (glLineWidth),
+// else a quad of two triangles: a CPU rasterizer pays for a long thin
+// primitive by the blocks it crosses, and the two halves of a quad cross
+// each block twice. The depth a line is tested at is worked out by the
+// fragment stage (crease.frag) from the plane of the face on each side of
+// the edge, so the depth test against what the main pass left keeps the
+// line where its faces show and hides it where something nearer covers
+// them; a line carries both faces' planes for it. A crease shows only
+// where both its faces do: the fragment stage also checks the face across
+// the edge. Input: c1, a, b, c2 (face 1 is (a, b, c1) in its winding). An
+// edge whose faces fold over one another on screen draws nothing: it is a
+// silhouette, which the hull or wireframe draws, or it lies behind its own
+// faces.
 // A seam where two parts cross (u_seams, scene/mesh/intersection_lines.h) comes
 // as p1, a, b, p2, a point of each face's plane off the segment; both
 // planes go on past the segment to either side. The half of each that
@@ -29,7 +29,11 @@
 // plane, seen from its back), no seam shows. (a, b, p1) winds as face 1,
 // (a, b, p2) as face 2.
 layout(lines_adjacency) in;
-layout(triangle_strip, max_vertices = 6) out;
+#ifdef WIDE_LINES
+layout(line_strip, max_vertices = 2) out;
+#else
+layout(triangle_strip, max_vertices = 4) out;
+#endif
 
 flat out vec2 v_segment_a;  // the edge's ends in window coordinates
 flat out vec2 v_segment_b;
@@ -38,9 +42,6 @@ flat out float v_depth_a;   // NDC depth at a
 // side (xy) and on face 2's (zw).
 flat out vec4 v_depth_gradients;
 flat out vec2 v_toward_face1;  // unit, across the edge toward face 1's side
-// The window position, for the fragment stage to place each sample by
-// (interpolateAtSample).
-noperspective out vec2 v_window;
 
 #include "view.glsl"
 #include "outline_style.glsl"
@@ -53,17 +54,24 @@ uniform int u_culled_winding;
 uniform int u_seams;
 
 #ifdef SAMPLE_MASK
-// The quad reaches this far past the line's half width. Multisampled, the
-// samples are rasterised where they lie: a hair past the width will do.
+// The line reaches this far past its half width. Multisampled, the samples
+// are tested where they lie: a hair past the width will do.
 const float kCoverageMargin = 1.0 / 64.0;
 #else
 // One sample a pixel, the fragment stage's coverage of a pixel reaches half
 // a pixel (diagonally √½) past the width.
 const float kCoverageMargin = 1.0;
 #endif
+#ifdef WIDE_LINES
+// How far past the line's ends, in its reach, the GL line must go to hold
+// its round caps: a line drawn without multisampling ends across its major
+// axis (x or y), which at 45° lies 1/√2 of the way out.
+const float kEndReach = 1.41421356;
+#else
+const float kEndReach = 1.0;
+#endif
 
-// Window depth of what was drawn before the lines, one sample a pixel.
-layout(binding = 0) uniform sampler2D u_scene_depth;
+#include "scene_depth.glsl"
 
 vec2 to_window(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * u_viewport_px; }
 
@@ -93,11 +101,10 @@ vec2 depth_gradient(vec2 a, float za, vec2 b, float zb, vec2 c, float zc) {
 // out past it.
 bool edge_shows(vec2 a, float za, vec2 b, float zb, float slope) {
   int steps = int(clamp(ceil(distance(a, b) / 8.0), 1.0, 16.0));
-  ivec2 last = textureSize(u_scene_depth, 0) - 1;
   float slack = 1.5 * 0.5 * slope + 8.0 / 16777216.0;
   for (int i = 0; i < steps; ++i) {
     float t = (float(i) + 0.5) / float(steps);
-    float drawn = texelFetch(u_scene_depth, clamp(ivec2(floor(mix(a, b, t))), ivec2(0), last), 0).r;
+    float drawn = scene_depth(mix(a, b, t), 0);
     if (0.5 * mix(za, zb, t) + 0.5 <= drawn + slack) return true;
   }
   return false;
@@ -117,7 +124,6 @@ void emit(vec2 window, float depth) {
   v_depth_a = g_depth_a;
   v_depth_gradients = g_gradients;
   v_toward_face1 = g_toward_face1;
-  v_window = window;
   EmitVertex();
 }
 
@@ -168,17 +174,17 @@ void main() {
   g_toward_face1 = face1_left ? left : -left;
   g_depth_a = za;
   g_gradients = vec4(grad1, grad2);
-  vec2 toward1 = g_toward_face1 * reach;
-  vec2 start = g_a - along * reach;
-  vec2 end = g_b + along * reach;
-  // On the edge's own line both planes give the edge's depth.
-  float z_start = za - reach * (zb - za) / len;
-  float z_end = zb + reach * (zb - za) / len;
-  emit(start + toward1, z_start + dot(grad1, toward1));
-  emit(end + toward1, z_end + dot(grad1, toward1));
-  emit(start, z_start);
-  emit(end, z_end);
-  emit(start - toward1, z_start - dot(grad2, toward1));
-  emit(end - toward1, z_end - dot(grad2, toward1));
+  vec2 past = along * reach * kEndReach;
+  float z_past = reach * kEndReach * (zb - za) / len;
+#ifdef WIDE_LINES
+  emit(g_a - past, za - z_past);
+  emit(g_b + past, zb + z_past);
+#else
+  vec2 side = left * reach;
+  emit(g_a - past + side, za - z_past);
+  emit(g_b + past + side, zb + z_past);
+  emit(g_a - past - side, za - z_past);
+  emit(g_b + past - side, zb + z_past);
+#endif
   EndPrimitive();
 }

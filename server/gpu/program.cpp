@@ -129,6 +129,11 @@ void Program::set(std::string_view name, const glm::mat3& v) {
 void Program::set(std::string_view name, const glm::mat4& v) {
   glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
 }
+void Program::set_array(std::string_view name, const std::vector<glm::vec2>& v) {
+  if (v.empty()) return;
+  glProgramUniform2fv(id(), location(name), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
+}
+
 void Program::set_array(std::string_view name, const std::vector<glm::vec3>& v) {
   if (v.empty()) return;
   glProgramUniform3fv(id(), location(name), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));

@@ -47,6 +47,7 @@ class Program {
   void set(std::string_view name, const glm::vec4& v);
   void set(std::string_view name, const glm::mat3& v);
   void set(std::string_view name, const glm::mat4& v);
+  void set_array(std::string_view name, const std::vector<glm::vec2>& v);
   void set_array(std::string_view name, const std::vector<glm::vec3>& v);
   void set_array(std::string_view name, const std::vector<float>& v);
   void set_array(std::string_view name, const std::vector<int>& v);

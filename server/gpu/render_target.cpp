@@ -27,6 +27,21 @@ Renderbuffer make_storage(GLenum format, int width, int height, int samples) {
   return rb;
 }
 
+// Depth and stencil a pass may read (texelFetch) while it draws into a
+// framebuffer without them: every sample of it when multisampled.
+Texture make_depth_texture(int width, int height, int samples) {
+  if (samples > 1) {
+    Texture texture = Texture::create(GL_TEXTURE_2D_MULTISAMPLE);
+    glTextureStorage2DMultisample(texture.id(), samples, GL_DEPTH24_STENCIL8, width, height, GL_TRUE);
+    return texture;
+  }
+  Texture texture = Texture::create(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.id(), 1, GL_DEPTH24_STENCIL8, width, height);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return texture;
+}
+
 Texture single_sample_texture(int width, int height) {
   Texture texture = Texture::create(GL_TEXTURE_2D);
   glTextureStorage2D(texture.id(), 1, GL_SRGB8_ALPHA8, width, height);
@@ -71,9 +86,21 @@ void RenderTarget::make_drawing_framebuffer() {
     glGetNamedRenderbufferParameteriv(color_.id(), GL_RENDERBUFFER_SAMPLES, &given);
     samples_ = std::max(samples_, static_cast<int>(given));
   }
-  depth_stencil_ = make_storage(GL_DEPTH24_STENCIL8, width_, height_, samples_);
-  glNamedFramebufferRenderbuffer(draw_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_.id());
+  depth_stencil_ = make_depth_texture(width_, height_, samples_);
+  glNamedFramebufferTexture(draw_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil_.id(), 0);
   check_complete(draw_fbo_.id(), "draw");
+  find_sample_positions();
+}
+
+void RenderTarget::find_sample_positions() {
+  if (samples_ == 1) {
+    sample_positions_ = {glm::vec2(0.5f)};
+    return;
+  }
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw_fbo_.id());
+  sample_positions_.resize(static_cast<std::size_t>(samples_));
+  for (std::size_t k = 0; k < sample_positions_.size(); ++k)
+    glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(k), &sample_positions_[k].x);
 }
 
 GLuint RenderTarget::bind_line_coverage() {
@@ -83,8 +110,6 @@ GLuint RenderTarget::bind_line_coverage() {
     glTextureStorage2D(line_coverage_.id(), 1, GL_R8, width_, height_);
     line_coverage_fbo_ = Framebuffer::create();
     glNamedFramebufferTexture(line_coverage_fbo_.id(), GL_COLOR_ATTACHMENT0, line_coverage_.id(), 0);
-    glNamedFramebufferRenderbuffer(line_coverage_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                                   depth_stencil_.id());
     check_complete(line_coverage_fbo_.id(), "line coverage");
   }
   glBindFramebuffer(GL_FRAMEBUFFER, line_coverage_fbo_.id());
@@ -94,19 +119,15 @@ GLuint RenderTarget::bind_line_coverage() {
   return line_coverage_.id();
 }
 
-GLuint RenderTarget::copy_depth() {
-  if (!depth_copy_fbo_) {
-    depth_copy_ = Texture::create(GL_TEXTURE_2D);
-    glTextureStorage2D(depth_copy_.id(), 1, GL_DEPTH24_STENCIL8, width_, height_);
-    glTextureParameteri(depth_copy_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(depth_copy_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    depth_copy_fbo_ = Framebuffer::create();
-    glNamedFramebufferTexture(depth_copy_fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_copy_.id(), 0);
-    check_complete(depth_copy_fbo_.id(), "depth copy");
+void RenderTarget::bind_colour_alone() {
+  if (samples_ == 1) throw GpuError("RenderTarget: drawing the colour alone is for several samples a pixel");
+  if (!colour_alone_fbo_) {
+    colour_alone_fbo_ = Framebuffer::create();
+    glNamedFramebufferRenderbuffer(colour_alone_fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
+    check_complete(colour_alone_fbo_.id(), "colour alone");
   }
-  glBlitNamedFramebuffer(draw_fbo_.id(), depth_copy_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
-                         GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  return depth_copy_.id();
+  glBindFramebuffer(GL_FRAMEBUFFER, colour_alone_fbo_.id());
+  glViewport(0, 0, width_, height_);
 }
 
 // The samples resolve into what is read next: the texture the downsample

@@ -7,6 +7,9 @@
 // factor: its single-sample colour is a texture the downsample pass reads,
 // and only the shrunk image comes back.
 #include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "gpu/gl_object.h"
 #include "gpu/readback_buffer.h"
@@ -30,6 +33,10 @@ class RenderTarget {
   // The samples per pixel the driver gave: the request clamped to its
   // GL_MAX_SAMPLES, or rounded up to a count it has.
   int samples() const { return samples_; }
+  // Where each sample lies in its pixel (0..1 from the pixel's lower left
+  // corner), as the driver places them: a shader that tests the samples of
+  // a pixel itself, rather than by interpolation, reads them here.
+  const std::vector<glm::vec2>& sample_positions() const { return sample_positions_; }
   // Whether this target is what a request for these would get.
   bool matches(int width, int height, int samples, int shrink = 1) const {
     return width == width_ && height == height_ && samples == requested_samples_ && shrink == shrink_;
@@ -37,17 +44,21 @@ class RenderTarget {
 
   // Binds the drawing framebuffer and sets the viewport.
   void bind_for_drawing() const;
+  // The depth and stencil drawn so far, every sample of it (a multisample
+  // texture when the target has several): a pass that tests depth itself
+  // reads it while it draws through bind_line_coverage or
+  // bind_colour_alone, which leave it out (reading an attached buffer
+  // would be a feedback loop).
+  GLuint depth_texture() const { return depth_stencil_.id(); }
   // One sample a pixel only: binds a framebuffer of one channel (R8, made
-  // on first use), drawn with this target's depth and stencil, sets the
-  // viewport and clears it to 0; returns its texture. Where lines
-  // overlapping must darken a pixel once (render/passes/crease_pass.cpp),
-  // their coverage gathers here before it is laid over the image.
+  // on first use) without depth or stencil, sets the viewport and clears
+  // it to 0; returns its texture. Where lines overlapping must darken a
+  // pixel once (render/passes/crease_pass.cpp), their coverage gathers here
+  // before it is laid over the image.
   GLuint bind_line_coverage();
-  // The depth drawn so far, one sample a pixel (a multisampled target's
-  // samples reduced to one of them), copied into a texture (made on first
-  // use) that a pass may read while it draws into this target: reading
-  // the attached buffer itself would be a feedback loop. Returns it.
-  GLuint copy_depth();
+  // Several samples a pixel only: binds a framebuffer of this target's
+  // colour alone, without depth or stencil, and sets the viewport.
+  void bind_colour_alone();
 
   // Shrinking targets only. Resolves the samples (when multisampled) into
   // the single-sample colour texture and returns that texture.
@@ -69,6 +80,7 @@ class RenderTarget {
 
  private:
   void make_drawing_framebuffer();
+  void find_sample_positions();
   void make_resolve_framebuffer();
   void make_shrunk_framebuffer();
   // The framebuffer holding one sample a pixel: the multisampled drawing
@@ -81,16 +93,16 @@ class RenderTarget {
   int height_;
   int requested_samples_;
   int samples_;
+  std::vector<glm::vec2> sample_positions_;
   int shrink_;
-  Renderbuffer color_;  // multisampled, or without shrinking
-  Renderbuffer depth_stencil_;
+  Renderbuffer color_;     // multisampled, or without shrinking
+  Texture depth_stencil_;  // a texture, for depth_texture()
   Framebuffer draw_fbo_;
   Renderbuffer resolved_color_;  // only with samples > 1, without shrinking
   Framebuffer resolve_fbo_;      // only with samples > 1
   Texture line_coverage_;        // bind_line_coverage's, made on first use
   Framebuffer line_coverage_fbo_;
-  Texture depth_copy_;  // copy_depth's, made on first use
-  Framebuffer depth_copy_fbo_;
+  Framebuffer colour_alone_fbo_;                // bind_colour_alone's, made on first use
   Texture single_color_;                        // shrinking only: the resolve's target, or the drawn colour
   Renderbuffer shrunk_color_;                   // shrinking only
   Framebuffer shrunk_fbo_;                      // shrinking only

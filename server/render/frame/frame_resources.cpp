@@ -1,5 +1,7 @@
 #include "render/frame/frame_resources.h"
 
+#include <algorithm>
+
 namespace toond::render {
 namespace {
 
@@ -93,6 +95,17 @@ const GpuModel& FrameResources::floor_for(const scene::Bounds& b, const FloorPar
 void FrameResources::draw_fullscreen_triangle() const {
   glBindVertexArray(fullscreen_vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+float FrameResources::widest_line() {
+  if (!widest_line_) {
+    GLfloat aliased[2] = {1.0f, 1.0f};
+    GLfloat smooth[2] = {1.0f, 1.0f};
+    glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, aliased);
+    glGetFloatv(GL_SMOOTH_LINE_WIDTH_RANGE, smooth);
+    widest_line_ = std::min(aliased[1], smooth[1]);
+  }
+  return *widest_line_;
 }
 
 const gpu::Buffer& FrameResources::hull_indices(const std::vector<std::span<const std::uint32_t>>& parts) {

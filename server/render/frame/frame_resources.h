@@ -46,6 +46,10 @@ class FrameResources {
   // profile draws need one even when the vertex shader makes its own
   // positions) and draws it.
   void draw_fullscreen_triangle() const;
+  // The widest line, in pixels, the driver draws whether or not it is
+  // multisampled (the narrower of GL_ALIASED_LINE_WIDTH_RANGE's and
+  // GL_SMOOTH_LINE_WIDTH_RANGE's largest), asked once.
+  float widest_line();
   // Where the hull's faces that may show are written each frame
   // (render/cull/hull_cull.h), the parts one after the other, given fresh
   // storage every time so a frame still in flight keeps the last one's.
@@ -62,6 +66,7 @@ class FrameResources {
   std::optional<GpuModel> floor_;
   scene::Bounds floor_bounds_;
   float floor_size_ = 0;
+  std::optional<float> widest_line_;
   float floor_repeat_ = 0;
   glm::vec3 floor_color_{0.0f};
   std::shared_ptr<const scene::Texture> floor_image_;  // the image floor_ was built with

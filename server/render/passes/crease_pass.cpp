@@ -1,3 +1,5 @@
+#include <numbers>
+
 #include "render/frame/draw_pacing.h"
 #include "render/frame/texture_unit.h"
 #include "render/passes/passes.h"
@@ -54,6 +56,32 @@ void draw_crease_edges_of_objects(PassContext& context, gpu::Program& program) {
   }
 }
 
+// The width of GL line that holds every point crease.geom's line must
+// reach: half the outline's width and a margin to each side (kCoverageMargin
+// there). Multisampled, a GL line is a rectangle that wide; without, it
+// spans that width along its minor axis (x or y), which at 45° is 1/√2 of
+// it across.
+float gl_line_width(float outline_px, bool multisampled) {
+  const float reach = 0.5f * outline_px + (multisampled ? 1.0f / 64.0f : 1.0f);
+  return 2.0f * reach * (multisampled ? 1.0f : std::numbers::sqrt2_v<float>);
+}
+
+// The crease program for this target, in use: lines drawn as wide GL lines
+// where the driver draws them that wide (one primitive a line instead of
+// two triangles), and the target's sample positions.
+gpu::Program& use_crease_program(PassContext& context, bool multisampled) {
+  const float line_width = gl_line_width(context.frame.outline_px, multisampled);
+  const bool wide_lines = line_width <= context.resources.widest_line();
+  const CreaseVariant variant =
+      CreaseVariant{}.set(CreaseFeature::SampleMask, multisampled).set(CreaseFeature::WideLines, wide_lines);
+  gpu::Program& program =
+      context.programs.get(std::vector<std::string>{"crease.vert", "crease.geom", "crease.frag"}, variant.defines());
+  program.use();
+  if (multisampled) program.set_array("u_sample_positions", context.target->sample_positions());
+  if (wide_lines) glLineWidth(line_width);
+  return program;
+}
+
 // One sample a pixel: the pixels' coverage, gathered by crease.frag, laid
 // over the image in the outline's colour (in bands when paced, like any
 // full-screen pass).
@@ -85,10 +113,10 @@ void lay_line_coverage_over(PassContext& context, GLuint coverage) {
 // a point darken it once.
 void draw_crease_pass(PassContext& context) {
   const bool multisampled = context.target->samples() > 1;
-  glBindTextureUnit(texture_unit::kSceneDepth, context.target->copy_depth());
+  glBindTextureUnit(texture_unit::kSceneDepth, context.target->depth_texture());
   GLuint coverage = 0;
   if (multisampled) {
-    context.target->bind_for_drawing();
+    context.target->bind_colour_alone();
     glDisable(GL_BLEND);
   } else {
     coverage = context.target->bind_line_coverage();
@@ -97,26 +125,19 @@ void draw_crease_pass(PassContext& context) {
   }
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_CULL_FACE);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glDepthMask(GL_FALSE);
-  // Toward the viewer by one pixel's depth change along the line's own
-  // face, and the depth buffer's least step for faces seen face-on.
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(-1.0f, -1.0f);
-  const CreaseVariant variant = CreaseVariant{}.set(CreaseFeature::SampleMask, multisampled);
-  gpu::Program& program =
-      context.programs.get(std::vector<std::string>{"crease.vert", "crease.geom", "crease.frag"}, variant.defines());
-  program.use();
+  // crease.frag tests each sample against the copied depth itself.
+  glDisable(GL_DEPTH_TEST);
+  gpu::Program& program = use_crease_program(context, multisampled);
   draw_crease_edges_of_objects(context, program);
-  glDisable(GL_POLYGON_OFFSET_FILL);
-  glDepthMask(GL_TRUE);
+  glLineWidth(1.0f);
+  glEnable(GL_DEPTH_TEST);
   glBlendEquation(GL_FUNC_ADD);
   glDisable(GL_BLEND);
+  glBindTextureUnit(texture_unit::kSceneDepth, 0);
   const bool lines_drawn = context.crease_edges_drawn + context.intersection_segments_drawn > 0;
   if (!multisampled && lines_drawn)
     lay_line_coverage_over(context, coverage);
-  else if (!multisampled)
+  else
     context.target->bind_for_drawing();
 }
 

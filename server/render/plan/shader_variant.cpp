@@ -20,7 +20,8 @@ constexpr std::array<const char*, static_cast<std::size_t>(OutlineFeature::Count
     "OUTLINE_MATERIAL", "OUTLINE_TEXTURE", "LINE_SEGMENT", "ALPHA_MASK"};
 constexpr std::array<const char*, static_cast<std::size_t>(DepthFeature::Count)> kDepthDefines = {"ALPHA_MASK"};
 constexpr std::array<const char*, static_cast<std::size_t>(EdgeFeature::Count)> kEdgeDefines = {"CREASES_ONLY"};
-constexpr std::array<const char*, static_cast<std::size_t>(CreaseFeature::Count)> kCreaseDefines = {"SAMPLE_MASK"};
+constexpr std::array<const char*, static_cast<std::size_t>(CreaseFeature::Count)> kCreaseDefines = {"SAMPLE_MASK",
+                                                                                                    "WIDE_LINES"};
 constexpr std::array<const char*, static_cast<std::size_t>(DownsampleFeature::Count)> kDownsampleDefines = {
     "PREMULTIPLIED"};
 constexpr std::array<const char*, static_cast<std::size_t>(LayerFeature::Count)> kLayerDefines = {

@@ -111,7 +111,9 @@ using EdgeVariant = FeatureSet<EdgeFeature>;
 
 // crease.frag's: the target has several samples a pixel, which each line
 // writes by the samples it covers (else it writes each pixel's coverage).
-enum class CreaseFeature : std::size_t { SampleMask, Count };
+// crease.geom's: each line is drawn as a wide GL line (one primitive),
+// else as a quad (two triangles), where the driver's lines are too narrow.
+enum class CreaseFeature : std::size_t { SampleMask, WideLines, Count };
 const char* define_name(CreaseFeature feature);
 using CreaseVariant = FeatureSet<CreaseFeature>;
 
