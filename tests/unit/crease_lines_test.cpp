@@ -517,5 +517,64 @@ TEST_F(CreaseLines, ALineIsItsWidthAlongItsLengthAndAtItsJoins) {
   }
 }
 
+// The ridge turned about the view axis by `degrees`: its vertices (and
+// normals) turned in the image's plane.
+std::string turned_obj(const std::string& obj, double degrees) {
+  const double c = std::cos(glm::radians(degrees)), s = std::sin(glm::radians(degrees));
+  std::string out;
+  std::size_t start = 0;
+  while (start < obj.size()) {
+    const std::size_t end = obj.find('\n', start);
+    const std::string line = obj.substr(start, end - start);
+    start = end + 1;
+    double x = 0, y = 0, z = 0;
+    char kind[3] = {};
+    if (std::sscanf(line.c_str(), "%2s %lf %lf %lf", kind, &x, &y, &z) == 4 &&
+        (std::string(kind) == "v" || std::string(kind) == "vn")) {
+      out += std::string(kind) + " " + std::to_string(c * x - s * y) + " " + std::to_string(s * x + c * y) + " " +
+             std::to_string(z) + "\n";
+    } else {
+      out += line + "\n";
+    }
+  }
+  return out;
+}
+
+// A crease line across the image at a slant is its width too, measured
+// across it: a GL line drawn without multisampling spans its width along
+// x or y only, not across, so the pass must draw it wider there; with
+// multisampling it is a rectangle. Each column's line share, added up
+// over the rows about the image's middle, is the width over cos(angle).
+TEST_F(CreaseLines, ASlantedLineIsItsWidthAcrossIt) {
+  const int kSegments = 8, kSize = 256;
+  for (const double degrees : {30.0, 45.0}) {
+    const scene::Model ridge = model_of_obj(turned_obj(ridge_obj(0.5, kSegments), degrees));
+    for (const int msaa : {1, 4}) {
+      for (const double width : {2.0, 5.0, 9.0}) {
+        const json request = {{"width", kSize},
+                              {"height", kSize},
+                              {"msaa", msaa},
+                              {"background", {1, 1, 1}},
+                              {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}},
+                              {"lights", json::array()},
+                              {"shading", {{"mode", "flat"}, {"base", "white"}}},
+                              {"specular", {{"enabled", false}}},
+                              {"outline", {{"width", width}, {"color", {0, 0, 0}}, {"creases", "always"}}}};
+        const image::Image img = test::render_in_process(ridge, request);
+        const double slant = std::cos(glm::radians(degrees));
+        double worst = 0;
+        for (int x = kSize / 2 - 24; x <= kSize / 2 + 24; ++x) {
+          double measured = 0;
+          for (int y = kSize / 2 - 40; y <= kSize / 2 + 40; ++y) measured += 1.0 - luminance(img, x, y);
+          worst = std::max(worst, std::abs(measured * slant - width));
+        }
+        std::printf("[creases] ridge at %.0f° msaa %d width %.1f: worst error across the line %.3f px\n", degrees, msaa,
+                    width, worst);
+        EXPECT_LE(worst, 0.5) << degrees << "° msaa " << msaa << " width " << width;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace toond::render
