@@ -1,6 +1,7 @@
-// The window depth drawn before the crease lines, every sample of it
-// (RenderTarget::copy_depth): a multisample texture when the target is
-// multisampled (SAMPLE_MASK), else one sample a pixel.
+// The window depth drawn before the crease lines, every sample of it: the
+// target's own depth (RenderTarget::depth_texture), which the lines read
+// while they draw into a framebuffer without it; a multisample texture
+// when the target is multisampled (SAMPLE_MASK), else one sample a pixel.
 #ifdef SAMPLE_MASK
 layout(binding = 0) uniform sampler2DMS u_scene_depth;
 #else
