@@ -576,5 +576,36 @@ TEST_F(CreaseLines, ASlantedLineIsItsWidthAcrossIt) {
   }
 }
 
+// Where a driver's lines are too narrow the pass draws each line as a quad:
+// the same samples are written, since the fragment stage trims either to
+// the line's own width and caps. The windmill's default frame (crease
+// edges and seams) at one sample and four, and the slanted ridge.
+TEST_F(CreaseLines, ALineDrawnAsAQuadIsTheSameLine) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& entry : fs::directory_iterator(test::shared_models_dir() / "windmill")) {
+    const std::string ext = entry.path().extension().string();
+    if (ext == ".obj" || ext == ".mtl" || ext == ".jpg")
+      files.emplace_back(entry.path().filename().string(), test::read_file(entry.path()));
+  }
+  const scene::Model windmill = scene::import_bundle(scene::test_checks::make_bundle(files));
+  const scene::Model ridge = model_of_obj(turned_obj(ridge_obj(0.5, 8), 30.0));
+  for (const scene::Model* model : {&windmill, &ridge}) {
+    for (const int msaa : {1, 4}) {
+      test::InProcessScene scene({{model, glm::dmat4(1.0)}});
+      const RenderParams params = test::complete_params(
+          {{"width", 320}, {"height", 320}, {"msaa", msaa}, {"outline", {{"width", 5}, {"creases", "always"}}}});
+      const RenderOutput lines = scene.render(params);
+      scene.renderer().set_wide_lines(false);
+      const RenderOutput quads = scene.render(params);
+      ASSERT_NE(lines.plan.find("creases"), std::string::npos) << lines.plan;
+      std::size_t differing = 0;
+      for (std::size_t i = 0; i < lines.image.rgba.size(); ++i)
+        differing += std::abs(int(lines.image.rgba[i]) - int(quads.image.rgba[i])) > 2;
+      EXPECT_EQ(differing, 0u) << (model == &ridge ? "ridge" : "windmill") << " msaa " << msaa;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace toond::render

@@ -71,7 +71,7 @@ float gl_line_width(float outline_px, bool multisampled) {
 // two triangles), and the target's sample positions.
 gpu::Program& use_crease_program(PassContext& context, bool multisampled) {
   const float line_width = gl_line_width(context.frame.outline_px, multisampled);
-  const bool wide_lines = line_width <= context.resources.widest_line();
+  const bool wide_lines = context.wide_lines && line_width <= context.resources.widest_line();
   const CreaseVariant variant =
       CreaseVariant{}.set(CreaseFeature::SampleMask, multisampled).set(CreaseFeature::WideLines, wide_lines);
   gpu::Program& program =

@@ -39,6 +39,9 @@ struct PassContext {
   // Whether the main pass leaves out runs of faces that surely turn to the
   // side it culls (render/cull/facing_runs.h).
   bool skip_turned_away_runs = true;
+  // Whether crease lines may be drawn as wide GL lines (crease.geom's
+  // WIDE_LINES) where the driver draws them that wide; else as quads.
+  bool wide_lines = true;
   // Where work is handed off while the passes record (the hull cull).
   BackgroundThread& background;
   // Per object, the side of its hull the hull pass skips, worked out once

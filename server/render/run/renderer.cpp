@@ -82,6 +82,7 @@ std::unique_ptr<PendingFrame> Renderer::start(const std::vector<RenderObject>& o
                       .pacing = pacing,
                       .cull_hull = hull_cull_.value_or(!real_gpu()),
                       .skip_turned_away_runs = skip_runs_,
+                      .wide_lines = wide_lines_,
                       .background = background_};
   if (frame.plan.has(Pass::HullOutline)) start_hull_cull(context);
   for (Pass pass : frame.plan.passes) {

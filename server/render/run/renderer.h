@@ -35,6 +35,11 @@ class Renderer {
   // side it culls (render/cull/facing_runs.h). On by default; off for tests that
   // show it changes no byte.
   void set_skip_turned_away_runs(bool on) { skip_runs_ = on; }
+  // Whether crease lines are drawn as wide GL lines where the driver draws
+  // them that wide (render/passes/crease_pass.cpp). On by default; off draws
+  // each as a quad, as a driver with narrow lines gets: for tests that show
+  // both draw the same lines.
+  void set_wide_lines(bool on) { wide_lines_ = on; }
   // Returns once the work frames handed off so far is done (a model's cull
   // mesh, built after its first frame): for tests that need it in place.
   void settle() { background_.drain(); }
@@ -80,6 +85,7 @@ class Renderer {
   bool face_culling_ = true;
   std::optional<bool> hull_cull_;
   bool skip_runs_ = true;
+  bool wide_lines_ = true;
   bool frames_in_flight_ = false;
   // Asked of the context at the first render: whether it rasterizes on a
   // GPU or on this CPU's threads (gpu::software_rasterizer). That decides
