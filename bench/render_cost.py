@@ -130,7 +130,7 @@ def cost_fields(headers):
 TERMS = ("samples", "triangles", "tiles", "framebuffer", "frames", "edge_texels", "crease_edges")
 # render/plan/render_cost.h: kTriangleSamples, kTileSamples, kFramebufferSamples, kFrameSamples, kEdgeTexelSamples,
 # kCreaseEdgeSamples.
-DAEMON_WEIGHTS = (1, 40, 320, 1, 1.3e6, 4.5, 200)
+DAEMON_WEIGHTS = (1, 40, 320, 1, 1.3e6, 4.5, 300)
 
 
 def solve(matrix, vector):

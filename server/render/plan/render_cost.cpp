@@ -92,13 +92,13 @@ RenderCost crease_cost(const RenderParams& params, const PassPlan& plan, std::sp
   const double line_px = drawn_line_px(params, meshes, plan.supersample);
   const auto add = [&](const scene::TurnTally& lines) {
     cost.crease_edges += static_cast<double>(lines.creased_at(angle));
-    cost.samples += lines.length_at(angle) * std::min(width, height) * line_px * plan.samples;
+    cost.samples += lines.length_at(angle) * std::min(width, height) * line_px * plan.samples * kCreaseLineSampleShare;
   };
   for (const scene::Mesh* mesh : meshes) {
     add(mesh->crease_edges);
     add(mesh->intersections);
   }
-  if (plan.samples == 1) cost.framebuffer += 2 * width * height;
+  if (plan.samples == 1) cost.framebuffer += 2 * kLineCoveragePassSamples * width * height;
   return cost;
 }
 
