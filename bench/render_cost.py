@@ -3,6 +3,7 @@
 other clients fare while a costly model renders.
 
 Against a running toond started with --max-render-cost 0 --result-cache-mb 0
+--render-timeout 30
 (so nothing is refused and every request renders):
 
   prediction: uploads the shared models and costly constructs (stacked,
@@ -13,6 +14,14 @@ Against a running toond started with --max-render-cost 0 --result-cache-mb 0
   the prediction (median and worst |predicted/measured - 1|, and how many
   renders are off by more than 2x).
 
+  crease pass (--crease-pass): the crease pass's own time, each frame with
+  it less the same frame with creases never (medians of 5 interleaved
+  pairs), on the windmill, the Kenney dog and 3,375 separate cubes at
+  several sizes, MSAA settings and line widths, against the price's
+  difference; fits the pass's three weights (samples an edge, a line's
+  sample, a pixel of the one-sample coverage passes) and prints the error
+  of the daemon's weights and of the fitted ones.
+
   contention (--contention): one client renders the issue's constructs at
   512² (fresh bytes every time) while another renders the demo model at 128²
   over and over; prints the small renders' p50/p99/max and each costly
@@ -20,7 +29,7 @@ Against a running toond started with --max-render-cost 0 --result-cache-mb 0
   shared windmill's default request at 2048² instead (hard-edged: its crease
   lines are drawn along its crease edges).
 
-    bench/render_cost.py http://127.0.0.1:8080 [--shared ../shared/models] [--contention SECONDS [--edges]]
+    bench/render_cost.py http://127.0.0.1:8080 [--shared ../shared/models] [--crease-pass | --contention SECONDS [--edges]]
 """
 import argparse
 import http.client
@@ -130,7 +139,7 @@ def cost_fields(headers):
 TERMS = ("samples", "triangles", "tiles", "framebuffer", "frames", "edge_texels", "crease_edges")
 # render/plan/render_cost.h: kTriangleSamples, kTileSamples, kFramebufferSamples, kFrameSamples, kEdgeTexelSamples,
 # kCreaseEdgeSamples.
-DAEMON_WEIGHTS = (1, 40, 320, 1, 1.3e6, 4.5, 300)
+DAEMON_WEIGHTS = (1, 40, 320, 1, 1.3e6, 4.5, 275)
 
 
 def solve(matrix, vector):
@@ -210,14 +219,17 @@ def prediction(url, shared):
         size, msaa = params["width"], params["msaa"]
         client.render(params)  # model on the GPU
         runs = []
+        fields = {}
         for _ in range(3):
             status, _, headers, body = client.render(params)
             if status != 200:
+                # A render stopped at its deadline is left out: its time is the deadline's.
                 print(f"{name} {size}² msaa {msaa}: {status} {body[:200]!r}")
+                runs = []
                 break
             runs.append(timing(headers, "total") - (timing(headers, "png") or 0))
-        if runs:
             fields = cost_fields(headers)
+        if runs:
             rows.append((name, size, msaa, fields, statistics.median(runs)))
     data = [([f.get(t, 0.0) for t in TERMS], ms) for *_, f, ms in rows]
     # The daemon's figure, scaled by its best single factor (ms per Msample).
@@ -233,6 +245,61 @@ def prediction(url, shared):
     print("fitted weights, in surface samples: " +
           ", ".join(f"{t} {w / weights[0]:.4g}" for t, w in zip(TERMS, weights)) +
           f" (a surface sample {weights[0] * 1e6:.3f} ms per million)")
+
+# render/plan/render_cost.h: kCreaseEdgeSamples, a line's sample (counted as a surface's), 2 × kLineCoveragePassSamples.
+DAEMON_CREASE_WEIGHTS = (275, 1, 3.2)
+
+
+def crease_pass_rows(url, shared):
+    """(edges, line samples, coverage-pass pixels, ms) of the crease pass, one row a setting."""
+    client = Client(url)
+    bundles = shared_bundles(shared)
+    models = {name: client.upload(bundles[name])["id"] for name in ("windmill", "kenney-cube-pet-dog")}
+    models["cube_field_15"] = client.upload([("m.obj", cube_field(15))])["id"]
+    rows = []
+    for name, model in models.items():
+        for size, msaa in ((256, 1), (512, 4), (1024, 1), (1024, 4), (2048, 1)):
+            for width in (2, 8):
+                times = {"auto": [], "never": []}
+                fields = {}
+                for repeat in range(6):  # the first pair puts the model on the GPU
+                    for creases in ("auto", "never"):
+                        status, _, headers, body = client.render({
+                            "model": model, "width": size, "height": size, "msaa": msaa,
+                            "outline": {"width": width, "creases": creases}})
+                        if status != 200:
+                            raise SystemExit(f"{name} {size}² msaa {msaa}: {status} {body[:200]!r}")
+                        fields[creases] = cost_fields(headers)
+                        if repeat:
+                            times[creases].append(timing(headers, "total") - (timing(headers, "png") or 0))
+                ms = statistics.median(times["auto"]) - statistics.median(times["never"])
+                with_lines, without = fields["auto"], fields["never"]
+                # The lines' samples as the daemon counts them, before its share.
+                line_samples = (with_lines["samples"] - without["samples"]) / DAEMON_CREASE_WEIGHTS[1]
+                passes = 2 * size * size if msaa == 1 else 0
+                rows.append((with_lines.get("crease_edges", 0.0), line_samples, passes, ms))
+                print(f"{name:20} {size:5}² msaa {msaa} width {width}: crease pass {ms:6.1f} ms, "
+                      f"{with_lines.get('crease_edges', 0):.0f} edges, {line_samples / 1e6:.2f} M line samples", flush=True)
+    return rows
+
+
+def crease_pass(url, shared):
+    rows = crease_pass_rows(url, shared)
+    slope = 1.15e-6  # ms per sample: the whole price's fit (docs/performance.md)
+
+    def errors(weights):
+        return sorted(abs(sum(w * x for w, x in zip(weights, r[:3])) / r[3] - 1) for r in rows if r[3] > 0)
+
+    # Least squares on the relative error, three terms.
+    a = [[sum(r[i] * r[j] / r[3] ** 2 for r in rows if r[3] > 0) for j in range(3)] for i in range(3)]
+    b = [sum(r[i] / r[3] for r in rows if r[3] > 0) for i in range(3)]
+    fitted = solve(a, b)
+    for title, weights in (("daemon's weights", [w * slope for w in DAEMON_CREASE_WEIGHTS]), ("fitted", fitted)):
+        e = errors(weights)
+        print(f"{title}: |predicted/measured - 1| median {statistics.median(e):.2f}, "
+              f"p90 {e[int(0.9 * (len(e) - 1))]:.2f}, worst {e[-1]:.2f}")
+    print(f"fitted at {slope * 1e6:.2f} ms per Msample: {fitted[0] / slope:.0f} samples an edge, "
+          f"{fitted[1] / slope:.2f} a line sample, {fitted[2] / slope / 2:.2f} a pixel of each coverage pass")
 
 
 def contention(url, seconds, shared, edges):
@@ -291,8 +358,11 @@ def main():
     parser.add_argument("--shared", default=os.path.join(os.path.dirname(__file__), "..", "..", "shared", "models"))
     parser.add_argument("--contention", type=float, help="seconds of the contention run (instead of the fit)")
     parser.add_argument("--edges", action="store_true", help="contention beside the windmill at 2048² instead")
+    parser.add_argument("--crease-pass", action="store_true", help="fit the crease pass's weights to its own time")
     args = parser.parse_args()
-    if args.contention:
+    if args.crease_pass:
+        crease_pass(args.url, args.shared)
+    elif args.contention:
         contention(args.url, args.contention, args.shared, args.edges)
     else:
         prediction(args.url, args.shared)

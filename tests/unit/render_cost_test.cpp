@@ -250,8 +250,8 @@ TEST(RenderCost, TheEdgePassCountsTheTexelsItsWalksRead) {
 // the cube's twelve edges, and its creased length (12 edges of 2 over a
 // diagonal of 2√3) across the frame's side, the line's width wide. One
 // sample a pixel, their coverage is gathered and laid over the frame: two
-// more passes over it. A line's sample and those passes' pixels are
-// weighted as render_cost.h's fit found them.
+// more passes over it, whose pixels are weighted as render_cost.h's fit
+// found them.
 TEST(RenderCost, CreaseLinesArePricedByTheirEdgesNotThePixels) {
   scene::Model m = scene::import_obj_bundle(make_bundle({{"a.obj", kCube}}));
   scene::find_crease_edges(m.mesh);
@@ -270,7 +270,7 @@ TEST(RenderCost, CreaseLinesArePricedByTheirEdgesNotThePixels) {
   const render::RenderCost creased = priced(p), bare = priced(never);
   EXPECT_EQ(creased.edge_texels, 0.0);
   EXPECT_EQ(creased.crease_edges, 12.0);
-  const double line_samples = 12.0 * 2.0 / (2.0 * std::sqrt(3.0)) * 256 * 2 * 4 * render::kCreaseLineSampleShare;
+  const double line_samples = 12.0 * 2.0 / (2.0 * std::sqrt(3.0)) * 256 * 2 * 4;
   EXPECT_NEAR(creased.samples - bare.samples, line_samples, 1e-2);
   EXPECT_NEAR(creased.units() - bare.units(), (12.0 * render::kCreaseEdgeSamples + line_samples) / 1e6, 1e-9);
   EXPECT_NE(creased.describe().find("crease edges"), std::string::npos);

@@ -92,7 +92,7 @@ RenderCost crease_cost(const RenderParams& params, const PassPlan& plan, std::sp
   const double line_px = drawn_line_px(params, meshes, plan.supersample);
   const auto add = [&](const scene::TurnTally& lines) {
     cost.crease_edges += static_cast<double>(lines.creased_at(angle));
-    cost.samples += lines.length_at(angle) * std::min(width, height) * line_px * plan.samples * kCreaseLineSampleShare;
+    cost.samples += lines.length_at(angle) * std::min(width, height) * line_px * plan.samples;
   };
   for (const scene::Mesh* mesh : meshes) {
     add(mesh->crease_edges);

@@ -35,8 +35,7 @@ struct RenderCost {
   // Crease edges the crease pass draws (every edge creased at the
   // request's angle, of every mesh): each is four vertices posed, a
   // geometry stage and a line set up, whatever its length. The samples
-  // its lines cover are counted with the others, at kCreaseLineSampleShare
-  // of a surface's.
+  // its lines cover are counted with the others.
   double crease_edges = 0;
 
   // One figure, in millions of sample-equivalents ("Msamples"): a triangle
@@ -59,16 +58,15 @@ inline constexpr double kFramebufferSamples = 1;
 inline constexpr double kFrameSamples = 1.3e6;
 inline constexpr double kEdgeTexelSamples = 4.5;
 // The crease pass's weights were fitted to its own time (a frame with it
-// less the same with `creases: never`) on the shared windmill, the Kenney
-// dog and 3,375 separate cubes at 256² to 2048², MSAA 1 and 4, line widths 2
-// and 8 (docs/performance.md, "Crease lines"): 335 samples an edge, 0.40 a
-// sample its lines cover (a line's samples cost less than a surface's: no
-// texturing or lighting), and 2.5 framebuffer samples a pixel for each of
-// the two passes over the frame that gather and lay the lines' coverage
-// when there is one sample a pixel.
-inline constexpr double kCreaseEdgeSamples = 300;
-inline constexpr double kCreaseLineSampleShare = 0.5;
-inline constexpr double kLineCoveragePassSamples = 2.5;
+// less the same with `creases: never`; bench/render_cost.py --crease-pass)
+// on the shared windmill, the Kenney dog and 3,375 separate cubes at 256²
+// to 2048², MSAA 1 and 4, line widths 2 and 8, three runs: 203-335 samples
+// an edge, a sample its lines cover at 0.4-1.3 of a surface's (kept at 1:
+// counted with the surface's), and 1.25-2.5 framebuffer samples a pixel
+// for each of the two passes over the frame that gather and lay the lines'
+// coverage when there is one sample a pixel; the medians kept.
+inline constexpr double kCreaseEdgeSamples = 275;
+inline constexpr double kLineCoveragePassSamples = 1.6;
 // The screen tile a rasteriser bins triangles into (llvmpipe's is 64 pixels).
 inline constexpr double kTilePixels = 64;
 
