@@ -23,6 +23,22 @@ namespace {
 using json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
+// Half a second after a long render was sent, five small renders (each at
+// a yaw of its own, so none is answered from the cache) from `light`; how
+// many were answered while the long one still drew.
+int small_renders_answered_during(auto& light, const std::atomic<bool>& heavy_done) {
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  int answered = 0;
+  for (int i = 0; i < 5; ++i) {
+    auto res = post_json(light, "/render", {{"width", 128}, {"height", 128}, {"camera", {{"yaw", 7 + 13 * i}}}});
+    EXPECT_TRUE(res);
+    if (!res) continue;
+    EXPECT_EQ(res->status, 200) << res->body;
+    if (!heavy_done) ++answered;
+  }
+  return answered;
+}
+
 TEST(HeavyRender, ARepeatedTriangleUploadsAsOneWithAWarning) {
   Daemon daemon;
   auto client = daemon.client();
@@ -85,14 +101,7 @@ TEST(HeavyRender, ALongRenderHoldsUpNoOtherClientAndStopsAtItsDeadline) {
     heavy_done = true;
     return res;
   });
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  int answered_while_heavy_drew = 0;
-  for (int i = 0; i < 5; ++i) {
-    auto res = post_json(light_client, "/render", {{"width", 128}, {"height", 128}, {"camera", {{"yaw", 7 + 13 * i}}}});
-    ASSERT_TRUE(res);
-    EXPECT_EQ(res->status, 200) << res->body;
-    if (!heavy_done) ++answered_while_heavy_drew;
-  }
+  const int answered_while_heavy_drew = small_renders_answered_during(light_client, heavy_done);
   EXPECT_EQ(answered_while_heavy_drew, 5) << "the small renders waited for the long one";
 
   auto res = heavy.get();
@@ -153,14 +162,7 @@ TEST(HeavyRender, ManyCreaseEdgesHoldUpNoOtherClient) {
     heavy_done = true;
     return res;
   });
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  int answered_while_heavy_drew = 0;
-  for (int i = 0; i < 5; ++i) {
-    auto res = post_json(light_client, "/render", {{"width", 128}, {"height", 128}, {"camera", {{"yaw", 7 + 13 * i}}}});
-    ASSERT_TRUE(res);
-    EXPECT_EQ(res->status, 200) << res->body;
-    if (!heavy_done) ++answered_while_heavy_drew;
-  }
+  const int answered_while_heavy_drew = small_renders_answered_during(light_client, heavy_done);
   EXPECT_EQ(answered_while_heavy_drew, 5) << "the small renders waited for the crease lines";
   auto res = heavy.get();
   ASSERT_TRUE(res);

@@ -59,6 +59,17 @@ double line_share(const image::Image& bare, const image::Image& lined, int x, in
 
 class CreaseLines : public test::GlContextTest {};
 
+// The shared windmill, as its OBJ, MTL and textures upload.
+scene::Model shared_windmill() {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& entry : fs::directory_iterator(test::shared_models_dir() / "windmill")) {
+    const std::string ext = entry.path().extension().string();
+    if (ext == ".obj" || ext == ".mtl" || ext == ".jpg")
+      files.emplace_back(entry.path().filename().string(), test::read_file(entry.path()));
+  }
+  return scene::import_bundle(scene::test_checks::make_bundle(files));
+}
+
 // The windmill's default frame at 512²: the inner pixels the screen-space
 // pass darkened by a quarter of the line or more, and how many of them the
 // lines along the crease edges darken as much. What they do not draw are
@@ -70,13 +81,7 @@ constexpr double kLeastShareOfScreenSpaceLines = 0.6;
 
 TEST_F(CreaseLines, TheWindmillsLinesCoverMostOfWhatTheScreenSpacePassDrew) {
   TOOND_REQUIRE_SHARED_MODELS();
-  std::vector<std::pair<std::string, std::string>> files;
-  for (const auto& entry : fs::directory_iterator(test::shared_models_dir() / "windmill")) {
-    const std::string name = entry.path().filename().string();
-    const std::string ext = entry.path().extension().string();
-    if (ext == ".obj" || ext == ".mtl" || ext == ".jpg") files.emplace_back(name, test::read_file(entry.path()));
-  }
-  const scene::Model windmill = scene::import_bundle(scene::test_checks::make_bundle(files));
+  const scene::Model windmill = shared_windmill();
   test::InProcessScene scene({{&windmill, glm::dmat4(1.0)}});
   const json request = {{"width", 512}, {"height", 512}};
   RenderParams never = test::complete_params(request);
@@ -446,6 +451,20 @@ std::string ridge_obj(double rise, int segments) {
   return obj;
 }
 
+// The ridge seen from above, orthographic, white and unlit, with black
+// crease lines of `width`: every pixel's darkness is the line's share of it.
+json ridge_request(int size, int msaa, double width) {
+  return {{"width", size},
+          {"height", size},
+          {"msaa", msaa},
+          {"background", {1, 1, 1}},
+          {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}},
+          {"lights", json::array()},
+          {"shading", {{"mode", "flat"}, {"base", "white"}}},
+          {"specular", {{"enabled", false}}},
+          {"outline", {{"width", width}, {"color", {0, 0, 0}}, {"creases", "always"}}}};
+}
+
 // Seen from above (orthographic, white and unlit, black lines), the ridge's
 // crease line, measured across it column by column as the line's share of
 // each pixel added up: the requested width within half a pixel in every
@@ -460,16 +479,7 @@ TEST_F(CreaseLines, ALineIsItsWidthAlongItsLengthAndAtItsJoins) {
     ASSERT_EQ(ridge.mesh.crease_edges.creased_at(40), static_cast<std::size_t>(kSegments));
     for (const int msaa : {1, 4}) {
       for (const double width : {1.5, 2.0, 5.0}) {
-        const json request = {{"width", kSize},
-                              {"height", kSize},
-                              {"msaa", msaa},
-                              {"background", {1, 1, 1}},
-                              {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}},
-                              {"lights", json::array()},
-                              {"shading", {{"mode", "flat"}, {"base", "white"}}},
-                              {"specular", {{"enabled", false}}},
-                              {"outline", {{"width", width}, {"color", {0, 0, 0}}, {"creases", "always"}}}};
-        const image::Image img = test::render_in_process(ridge, request);
+        const image::Image img = test::render_in_process(ridge, ridge_request(kSize, msaa, width));
         // The ridge runs across the middle row; the model spans x -2..2
         // of the framed width. Columns well inside the ends.
         double worst = 0, joins = 0, between = 0;
@@ -551,16 +561,7 @@ TEST_F(CreaseLines, ASlantedLineIsItsWidthAcrossIt) {
     const scene::Model ridge = model_of_obj(turned_obj(ridge_obj(0.5, kSegments), degrees));
     for (const int msaa : {1, 4}) {
       for (const double width : {2.0, 5.0, 9.0}) {
-        const json request = {{"width", kSize},
-                              {"height", kSize},
-                              {"msaa", msaa},
-                              {"background", {1, 1, 1}},
-                              {"camera", {{"projection", "orthographic"}, {"yaw", 0}, {"pitch", 0}}},
-                              {"lights", json::array()},
-                              {"shading", {{"mode", "flat"}, {"base", "white"}}},
-                              {"specular", {{"enabled", false}}},
-                              {"outline", {{"width", width}, {"color", {0, 0, 0}}, {"creases", "always"}}}};
-        const image::Image img = test::render_in_process(ridge, request);
+        const image::Image img = test::render_in_process(ridge, ridge_request(kSize, msaa, width));
         const double slant = std::cos(glm::radians(degrees));
         double worst = 0;
         for (int x = kSize / 2 - 24; x <= kSize / 2 + 24; ++x) {
@@ -582,13 +583,7 @@ TEST_F(CreaseLines, ASlantedLineIsItsWidthAcrossIt) {
 // edges and seams) at one sample and four, and the slanted ridge.
 TEST_F(CreaseLines, ALineDrawnAsAQuadIsTheSameLine) {
   TOOND_REQUIRE_SHARED_MODELS();
-  std::vector<std::pair<std::string, std::string>> files;
-  for (const auto& entry : fs::directory_iterator(test::shared_models_dir() / "windmill")) {
-    const std::string ext = entry.path().extension().string();
-    if (ext == ".obj" || ext == ".mtl" || ext == ".jpg")
-      files.emplace_back(entry.path().filename().string(), test::read_file(entry.path()));
-  }
-  const scene::Model windmill = scene::import_bundle(scene::test_checks::make_bundle(files));
+  const scene::Model windmill = shared_windmill();
   const scene::Model ridge = model_of_obj(turned_obj(ridge_obj(0.5, 8), 30.0));
   for (const scene::Model* model : {&windmill, &ridge}) {
     for (const int msaa : {1, 4}) {
