@@ -44,7 +44,6 @@ flat out vec4 v_depth_gradients;
 flat out vec2 v_toward_face1;  // unit, across the edge toward face 1's side
 
 #include "view.glsl"
-#include "outline_style.glsl"
 
 // The side of its faces the main pass culled for this object, by winding
 // on screen: 0 none, 1 clockwise (GL's back faces), 2 counter-clockwise.
@@ -53,15 +52,10 @@ uniform int u_culled_winding;
 // Nonzero: the primitives are seams where parts cross, not crease edges.
 uniform int u_seams;
 
-#ifdef SAMPLE_MASK
-// The line reaches this far past its half width. Multisampled, the samples
-// are tested where they lie: a hair past the width will do.
-const float kCoverageMargin = 1.0 / 64.0;
-#else
-// One sample a pixel, the fragment stage's coverage of a pixel reaches half
-// a pixel (diagonally √½) past the width.
-const float kCoverageMargin = 1.0;
-#endif
+// How far the line's primitive reaches to each side of the edge, in pixels:
+// half the outline's width and a margin (render/passes/crease_pass.cpp's
+// line_reach, which also sizes the GL line).
+uniform float u_line_reach;
 #ifdef WIDE_LINES
 // How far past the line's ends, in its reach, the GL line must go to hold
 // its round caps: a line drawn without multisampling ends across its major
@@ -170,7 +164,7 @@ void main() {
 
   float slope = max(abs(grad1.x) + abs(grad1.y), abs(grad2.x) + abs(grad2.y));
   if (!edge_shows(g_a, za, g_b, zb, slope)) return;
-  float reach = 0.5 * u_width + kCoverageMargin;
+  float reach = u_line_reach;
   g_toward_face1 = face1_left ? left : -left;
   g_depth_a = za;
   g_gradients = vec4(grad1, grad2);

@@ -56,13 +56,19 @@ void draw_crease_edges_of_objects(PassContext& context, gpu::Program& program) {
   }
 }
 
-// The width of GL line that holds every point crease.geom's line must
-// reach: half the outline's width and a margin to each side (kCoverageMargin
-// there). Multisampled, a GL line is a rectangle that wide; without, it
-// spans that width along its minor axis (x or y), which at 45° is 1/√2 of
-// it across.
-float gl_line_width(float outline_px, bool multisampled) {
-  const float reach = 0.5f * outline_px + (multisampled ? 1.0f / 64.0f : 1.0f);
+// How far a crease line's primitive reaches to each side of its edge:
+// half the outline's width and a margin. Multisampled, the samples are
+// tested where they lie, so a hair past the width will do; one sample a
+// pixel, the fragment stage's coverage of a pixel reaches half a pixel
+// (diagonally √½) past the width.
+float line_reach(float outline_px, bool multisampled) {
+  return 0.5f * outline_px + (multisampled ? 1.0f / 64.0f : 1.0f);
+}
+
+// The width of GL line that holds every point within `reach` of the edge.
+// Multisampled, a GL line is a rectangle that wide; without, it spans that
+// width along its minor axis (x or y), which at 45° is 1/√2 of it across.
+float gl_line_width(float reach, bool multisampled) {
   return 2.0f * reach * (multisampled ? 1.0f : std::numbers::sqrt2_v<float>);
 }
 
@@ -70,13 +76,15 @@ float gl_line_width(float outline_px, bool multisampled) {
 // where the driver draws them that wide (one primitive a line instead of
 // two triangles), and the target's sample positions.
 gpu::Program& use_crease_program(PassContext& context, bool multisampled) {
-  const float line_width = gl_line_width(context.frame.outline_px, multisampled);
+  const float reach = line_reach(context.frame.outline_px, multisampled);
+  const float line_width = gl_line_width(reach, multisampled);
   const bool wide_lines = context.wide_lines && line_width <= context.resources.widest_line();
   const CreaseVariant variant =
       CreaseVariant{}.set(CreaseFeature::SampleMask, multisampled).set(CreaseFeature::WideLines, wide_lines);
   gpu::Program& program =
       context.programs.get(std::vector<std::string>{"crease.vert", "crease.geom", "crease.frag"}, variant.defines());
   program.use();
+  program.set("u_line_reach", reach);
   if (multisampled) program.set_array("u_sample_positions", context.target->sample_positions());
   if (wide_lines) glLineWidth(line_width);
   return program;
