@@ -4,8 +4,9 @@
 layout(std140, binding = 3) uniform Material {
   vec3 u_base_color;  // linear
   float u_opacity;    // the base colour's alpha
-  // glTF alphaMode MASK: below this alpha nothing is drawn; negative for
-  // every other material, so nothing fails it.
+  // Below this alpha nothing is drawn (a mask's cutoff; a blended
+  // material's outlines, shadows and layers cut at 0.5); negative where
+  // nothing is cut, so nothing fails it.
   float u_alpha_cutoff;
   int u_has_texture;
 };
@@ -16,7 +17,6 @@ layout(binding = 2) uniform sampler2D u_normal_map;   // linear, tangent space, 
 // shape (leaves, fences, hair cards) whatever colour the request gives the
 // surface. Every pass that draws masked materials tests the same way, so no
 // line or shadow lands where the model shows nothing.
-bool masked_out(vec2 uv) {
-  float alpha = u_opacity * (u_has_texture != 0 ? texture(u_diffuse_map, uv).a : 1.0);
-  return alpha < u_alpha_cutoff;
-}
+float material_alpha(vec2 uv) { return u_opacity * (u_has_texture != 0 ? texture(u_diffuse_map, uv).a : 1.0); }
+
+bool masked_out(vec2 uv) { return material_alpha(uv) < u_alpha_cutoff; }

@@ -4,7 +4,9 @@
 // highlights, cast shadows), stylize (rim, halftone) and contour lines.
 // Each module's head lists the #defines (chosen by the pass plan) it reads;
 // besides those, MODE_FLAT shows the surface colour unlit, and ALPHA_MASK
-// (glTF alphaMode MASK) draws nothing below the material's alpha cutoff.
+// (glTF alphaMode MASK) draws nothing below the material's alpha cutoff,
+// and ALPHA_BLEND (alphaMode BLEND) writes the material's alpha for the
+// pass to blend over what was drawn before.
 // An unlit material (glTF KHR_materials_unlit) is drawn with MODE_FLAT in
 // place of the request's mode, its other variants kept. LINES_ONLY (the
 // lines layer) writes the contour alone; the shading left unused is not
@@ -27,6 +29,13 @@ void main() {
 #ifdef ALPHA_MASK
   if (masked_out(v_texcoord)) discard;
 #endif
+#ifdef ALPHA_BLEND
+  float alpha = material_alpha(v_texcoord);
+  // Nothing at all: neither colour nor the stencil mark the hull keeps out of.
+  if (alpha < 1.0 / 255.0) discard;
+#else
+  float alpha = 1.0;
+#endif
   vec3 albedo = surface_albedo();
 #ifdef MODE_FLAT
   vec3 color = apply_halftone(albedo, albedo, 1.0);
@@ -43,6 +52,6 @@ void main() {
 #ifdef LINES_ONLY
   o_color = contour_alone(n_dot_v);
 #else
-  o_color = vec4(apply_contour(color, n_dot_v), 1.0);
+  o_color = vec4(apply_contour(color, n_dot_v), alpha);
 #endif
 }

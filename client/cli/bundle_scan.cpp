@@ -318,21 +318,67 @@ class Scanner {
   std::set<std::string> warned_;
 };
 
-// The one model file of a folder, for `toon upload FOLDER`.
-fs::path model_file_in(const fs::path& folder) {
+// The model files of a folder (not its subfolders), in name order.
+std::vector<fs::path> model_files_in(const fs::path& folder) {
   std::vector<fs::path> found;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
-    if (entry.is_regular_file(ec) && bundle_paths::is_model_file(name)) {
-      found.push_back(entry.path());
+    if (entry.is_regular_file(ec) && bundle_paths::is_model_file(name)) found.push_back(entry.path());
+  }
+  std::sort(found.begin(), found.end());
+  if (found.empty()) {
+    throw UsageError(folder.string() + " holds no model file (" + std::string(bundle_paths::kModelFormatsText) + ")");
+  }
+  return found;
+}
+
+// Whether a file beside the model travels with a folder's upload: images
+// (a game's skins, which its model files often do not name) and Quake's
+// .skin files.
+bool sent_with_folder(const std::string& name) {
+  static constexpr std::string_view kBeside[] = {".png", ".jpg", ".jpeg", ".webp", ".tga",
+                                                 ".bmp", ".gif", ".psd",  ".skin"};
+  return bundle_paths::has_any_extension(name, kBeside);
+}
+
+// `toon upload FOLDER`: each model file of the folder with the files it
+// names (the daemon tells the model from the files holding its clips
+// alone, and says so when it cannot), and every image beside them.
+BundleScan scan_folder(const fs::path& folder) {
+  BundleScan scan;
+  std::set<std::string> sent;
+  const auto merge = [&](BundleScan part) {
+    for (BundleFile& file : part.files) {
+      if (sent.insert(file.name).second) scan.files.push_back(std::move(file));
     }
+    for (std::string& warning : part.warnings) scan.warnings.push_back(std::move(warning));
+  };
+  for (const fs::path& model : model_files_in(folder)) merge(Scanner(model).run());
+  std::vector<fs::path> beside;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    if (entry.is_regular_file(ec) && sent_with_folder(entry.path().filename().string())) beside.push_back(entry.path());
   }
-  if (found.size() != 1) {
-    throw UsageError(folder.string() + " holds " + std::to_string(found.size()) + " model files (" +
-                     std::string(bundle_paths::kModelFormatsText) + "); name the one to upload");
+  std::sort(beside.begin(), beside.end());
+  for (const fs::path& path : beside) {
+    const std::string name = path.filename().string();
+    if (sent.count(name) != 0) continue;
+    if (std::any_of(name.begin(), name.end(),
+                    [](char c) { return c == '"' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }) ||
+        bundle_paths::unprintable_reason(name)) {
+      scan.warnings.push_back(path.string() + ": its name cannot be sent; not sent");
+      continue;
+    }
+    std::optional<std::string> content = read_file(path);
+    if (!content) {
+      scan.warnings.push_back(path.string() + " cannot be read (" + std::strerror(errno) + "); not sent");
+      continue;
+    }
+    sent.insert(name);
+    scan.files.push_back(BundleFile{name, path, std::move(*content)});
   }
-  return found.front();
+  return scan;
 }
 
 }  // namespace
@@ -348,7 +394,7 @@ bool is_texture_keyword(std::string_view keyword) {
 
 BundleScan scan_obj_bundle(const fs::path& obj_path) {
   std::error_code ec;
-  return Scanner(fs::is_directory(obj_path, ec) ? model_file_in(obj_path) : obj_path).run();
+  return fs::is_directory(obj_path, ec) ? scan_folder(obj_path) : Scanner(obj_path).run();
 }
 
 }  // namespace toond::cli

@@ -28,7 +28,10 @@ struct BundleScan {
 // .ply travels alone; an FBX, COLLADA or other file read through assimp
 // brings the images it names (bundle_paths/model_formats.h), found as the
 // daemon finds them: as written, else by file name beside the model. A
-// folder stands for its one model file (none or several is a UsageError).
+// folder sends each of its model files with the files it names (the daemon
+// tells a model from files holding its clips alone) and every image and
+// Quake .skin file beside them, which game models often leave unnamed; a
+// folder with no model file is a UsageError.
 BundleScan scan_obj_bundle(const std::filesystem::path& obj_path);
 
 // Whether a file name ends in .gltf or .glb (any case).

@@ -44,6 +44,7 @@ struct Options {
   std::string scene;         // a glTF scene's index (POST /models?scene=N); empty: the file's default
   std::string smooth_angle;  // POST /models?smooth_angle=D; empty: the daemon's default (30)
   std::string up;            // POST /models?up=y|z; empty: y
+  std::string textures;      // POST /models?textures=LIST: images on the materials; empty: none
   // render, info
   std::string model_id;
   std::string params_file;                                // "-" reads standard input

@@ -90,13 +90,20 @@ const Flag kFlags[] = {
        }
        t.options.smooth_angle = v;
      }},
-    {{"", "--up", "y|z", "the file's up axis (default: the format's, z for STL, PLY, 3MF, AMF)"},
+    {{"", "--up", "y|z", "the file's up axis (default: the format's, z for STL, PLY, 3MF, AMF, IQM)"},
      kUpload,
      false,
      [](FlagTarget& t, Value v) {
        if (v != "y" && v != "z") throw UsageError("--up '" + v + "': expected y or z");
        t.options.up = v;
      }},
+
+    {{"", "--textures", "A.png,B.png",
+      "put these images of the upload on the materials, in\nmaterial order or as MATERIAL:IMAGE, as a game sets\na "
+      "model's skins"},
+     kUpload,
+     false,
+     [](FlagTarget& t, Value v) { t.options.textures = required(v, "--textures needs a list of images"); }},
 
     {{"", "--model", "ID", "render a model stored earlier with `toon upload`"},
      kRender,
@@ -167,7 +174,7 @@ Exit status 0 when the status is "ok", 1 otherwise or when it cannot be reached.
 )"},
     {Verb::upload, "upload",
      "PATH.obj|PATH.glb|PATH.gltf|PATH.stl|PATH.ply|PATH.fbx|PATH.dae|...|FOLDER [-q]\n"
-     "[--scene N] [--smooth-angle D] [--up y|z]",
+     "[--scene N] [--smooth-angle D] [--up y|z] [--textures A.png,B.png]",
      "store a model with its textures (OBJ + MTL, glTF, STL, PLY, FBX,\nCOLLADA, 3DS, ...); prints the model id",
      R"(Sends an OBJ model to the daemon's store (POST /models) together with the
 MTL files its mtllib lines name and the textures those MTL files reference
@@ -178,17 +185,22 @@ folder are refused, missing files are reported and skipped. A .m mesh
 sent alone, and so are .stl and .ply files; a .gltf brings the .bin and image
 files its URIs name (inside its folder). An FBX, COLLADA (.dae), 3DS, 3MF,
 OFF or other file the daemon reads through assimp brings the images it
-names, found as written or by file name beside it. A folder stands for its
-one model file (.obj, .gltf, .glb, .stl, .ply, .fbx, .dae, .3ds, .3mf, .off,
-.m or another format assimp reads).
+names, found as written or by file name beside it. A folder sends its model
+files (.obj, .gltf, .glb, .stl, .ply, .iqm, .fbx, .dae, .3ds, .3mf, .off,
+.b3d, .md3, .md5mesh, .m or another format assimp reads) with what they
+name, and every image and .skin file beside them: a game model's skin, and
+the files holding its clips alone (.md5anim, an IQM of poses, a BVH, an
+animation-only FBX or glTF), whose clips the daemon adds to the model.
+--textures A.png,B.png puts those images on the model's materials in
+material order (or MATERIAL:IMAGE by name), as a game's code sets them.
 A glTF file's default scene is drawn; --scene N picks another (another model,
 with its own id). In a file without normals, faces meeting at more than 30
 degrees keep their own normals and shallower edges are smoothed (normals by
 angle, as Blender's Auto Smooth; OBJ smoothing groups decide where the file
 has them; glTF without normals is flat, as its specification says):
 --smooth-angle D changes the angle, and --up y|z says which of the file's
-axes is up (default: the format's convention, z for STL, PLY, 3MF and AMF,
-y for the rest). Each is part of the model's id.
+axes is up (default: the format's convention, z for STL, PLY, 3MF, AMF and
+IQM, y for the rest). Each is part of the model's id.
 Prints the daemon's answer (id, triangles, materials, textures, warnings).
 )"},
     {Verb::info, "info", "ID", "show what the daemon knows of a stored model, its animation clips too",

@@ -46,6 +46,7 @@ int upload(const Options& options) {
   if (!options.scene.empty()) query += "&scene=" + options.scene;
   if (!options.smooth_angle.empty()) query += "&smooth_angle=" + options.smooth_angle;
   if (!options.up.empty()) query += "&up=" + options.up;
+  if (!options.textures.empty()) query += "&textures=" + httplib::detail::encode_query_param(options.textures);
   const std::string path = query.empty() ? "/models" : "/models?" + query.substr(1);
   httplib::Result result = conn.post_multipart(path, bundle_parts(scan));
   if (!result) return conn.network_failure(result);

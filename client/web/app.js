@@ -8,6 +8,7 @@ import {
 } from './params.js';
 import { ApiError, LostServer, RenderLoop } from './render_loop.js';
 import { AnimationPanel } from './animation_panel.js';
+import { MaterialList } from './material_list.js';
 import { SheetPreview } from './sheet_preview.js';
 import { bundlePaths, filesFromDrop, filesFromInput, uploadBundle } from './upload.js';
 
@@ -33,6 +34,7 @@ const studio = {
   panel: null,
   sheetPanel: null,
   animation: null,
+  materials: null,
   loop: null,
   sheet: null,
   sheetUrl: null,
@@ -75,6 +77,10 @@ function sync() {
   view.style.maxWidth = `${shown.width}px`;
   for (const radio of document.querySelectorAll('#layers input')) radio.checked = radio.value === shown.output;
   syncSheet(shown);
+  if (studio.materials) {
+    studio.materials.sync();
+    studio.materials.showModel(studio.params.model ?? null);
+  }
   if (studio.animation) {
     studio.animation.sync();
     studio.animation.showModel(studio.params.model ?? null);
@@ -565,6 +571,13 @@ async function start() {
     set: (animation, final) => change('/animation', animation, final),
     sheetOfClip,
     clipsChanged: () => syncSheet(effective()),
+  });
+  studio.materials = new MaterialList($('materials'), {
+    get: (name) => studio.params.materials?.[name],
+    setAlpha: (name, alpha) => {
+      const escaped = name.replaceAll('~', '~0').replaceAll('/', '~1');
+      change(`/materials/${escaped}/alpha`, alpha, true);
+    },
   });
   installUpload();
   installOrbit();

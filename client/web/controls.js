@@ -9,8 +9,9 @@ import { buildClipList } from './clip_list_field.js';
 import { getPointer, isPlainObject } from './params.js';
 
 // Chosen elsewhere on the page: the model list, the preset menu, scenes
-// (curl or the CLI only), the layer switcher and the sprite-sheet section.
-const HANDLED_ELSEWHERE = new Set(['model', 'preset', 'objects', 'output', 'sheet', 'animation']);
+// (curl or the CLI only), the layer switcher, the sprite-sheet section and
+// the model's material list.
+const HANDLED_ELSEWHERE = new Set(['model', 'preset', 'objects', 'output', 'sheet', 'animation', 'materials']);
 // Top-level scalars that belong with a block rather than with the output.
 const GROUP_OF_SCALAR = { ambient: 'lights', light_combine: 'lights' };
 // Ranges this wide (model units up to 1e12) make a useless slider; such a
@@ -21,7 +22,7 @@ const AXIS_NAMES = ['x', 'y', 'z', 'w'];
 // groups is the page's: the reference viewers' order, then any new block,
 // then the output settings.
 const GROUP_ORDER = ['camera', 'lights', 'shading', 'specular', 'rim', 'halftone', 'outline', 'contour', 'shadows',
-  'floor'];
+  'floor', 'textures'];
 
 // The fields a block's other fields depend on (x-applies-when names them:
 // `enabled`, a light's `type`, the shading `mode`), when they are a toggle

@@ -41,11 +41,11 @@ export function filesFromInput(fileList) {
 // through assimp (server/bundle_paths/model_formats.cpp; a unit test keeps
 // the two lists equal).
 export const MODEL_EXTENSIONS = [
-  'obj', 'm', 'gltf', 'glb', 'stl', 'ply',
+  'obj', 'm', 'gltf', 'glb', 'stl', 'ply', 'iqm',
   'fbx', 'dae', 'zae', '3ds', '3mf', 'off', 'x', 'x3d', 'x3db', 'ase', 'ask',
-  'ac', 'ac3d', 'acc', 'amf', 'b3d', 'cob', 'dxf', 'hmp', 'ifc', 'ifczip',
-  'iqm', 'irrmesh', 'lwo', 'lxo', 'md2', 'md3', 'md5mesh', 'mdc', 'mdl', 'ms3d', 'ndo',
-  'nff', 'enff', 'ogex', 'pmx', 'q3o', 'q3s', 'sib', 'smd', 'xgl',
+  'ac', 'ac3d', 'acc', 'amf', 'b3d', 'cob', 'dxf', 'hmp', 'ifc', 'ifczip', 'irrmesh',
+  'lwo', 'lxo', 'md2', 'md3', 'md5mesh', 'md5anim', 'mdc', 'mdl', 'ms3d', 'ndo',
+  'nff', 'enff', 'ogex', 'pmx', 'q3o', 'q3s', 'sib', 'smd', 'xgl', 'bvh',
 ];
 const MODEL_FILE = new RegExp('\\.(' + MODEL_EXTENSIONS.join('|') + ')$', 'i');
 

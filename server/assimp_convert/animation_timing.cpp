@@ -144,7 +144,7 @@ std::vector<std::string> give_clips_a_speed(aiScene& scene) {
 
 std::vector<std::string> frame_rate_lines(const aiScene& scene, const std::string& format) {
   std::vector<std::string> lines;
-  if (format != "b3d" && format != "fbx" && format != "ms3d") return lines;
+  if (format != "b3d" && format != "fbx" && format != "ms3d" && format != "md5anim" && format != "bvh") return lines;
   for (unsigned a = 0; a < scene.mNumAnimations; ++a) {
     const double rate = scene.mAnimations[a]->mTicksPerSecond;
     if (std::isfinite(rate) && rate > 0.0) lines.push_back("frame_rate: " + std::to_string(a) + " " + number(rate));

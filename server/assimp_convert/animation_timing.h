@@ -35,7 +35,7 @@ std::vector<std::string> count_b3d_frames_from_zero(aiScene& scene);
 std::vector<std::string> give_clips_a_speed(aiScene& scene);
 
 // "frame_rate: INDEX FPS" for each clip whose ticks are the file's frames
-// (B3D, FBX, MilkShape 3D): what the daemon reports as the clip's
+// (B3D, FBX, MilkShape 3D, MD5 and BVH animations): what the daemon reports as the clip's
 // frame_rate. Other formats' ticks are not frames (COLLADA's are
 // milliseconds, ASE's a fraction of a frame) and get no line.
 std::vector<std::string> frame_rate_lines(const aiScene& scene, const std::string& format);

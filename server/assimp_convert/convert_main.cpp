@@ -94,6 +94,7 @@ int convert(const Options& options) {
   add(assimp_convert::make_upright_metres(*scene));
   if (options.format == "fbx") assimp_convert::let_textures_replace_colours(*scene);
   if (options.format == "3mf") assimp_convert::linearise_display_colours(*scene);
+  if (options.format == "md3") assimp_convert::name_md3_materials_by_surface(*scene);
   add(assimp_convert::not_carried(*scene, over_four));
   const std::string glb = assimp_convert::with_morph_weight_channels(as_glb(*scene), *scene, notes);
   if (!helper_process::write_all_stdout(glb)) return fail("cannot write the answer");

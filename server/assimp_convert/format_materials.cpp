@@ -1,6 +1,7 @@
 #include "assimp_convert/format_materials.h"
 
 #include <cmath>
+#include <string>
 
 #include <assimp/material.h>
 
@@ -39,6 +40,21 @@ void linearise_display_colours(aiScene& scene) {
     if (material.Get(AI_MATKEY_COLOR_DIFFUSE, colour) != AI_SUCCESS) continue;
     set_base_colour(material,
                     aiColor4D(srgb_to_linear(colour.r), srgb_to_linear(colour.g), srgb_to_linear(colour.b), colour.a));
+  }
+}
+
+void name_md3_materials_by_surface(aiScene& scene) {
+  for (unsigned m = 0; m < scene.mNumMaterials; ++m) {
+    aiMaterial& material = *scene.mMaterials[m];
+    aiString name;
+    if (material.Get(AI_MATKEY_NAME, name) != AI_SUCCESS) continue;
+    const std::string text = name.C_Str();
+    const std::size_t open = text.rfind('[');
+    if (!text.starts_with("MD3_[") || open == std::string::npos || text.back() != ']' || open + 2 > text.size())
+      continue;
+    const aiString surface(text.substr(open + 1, text.size() - open - 2));
+    material.RemoveProperty(AI_MATKEY_NAME);
+    material.AddProperty(&surface, AI_MATKEY_NAME);
   }
 }
 

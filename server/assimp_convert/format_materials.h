@@ -17,4 +17,8 @@ void let_textures_replace_colours(aiScene& scene);
 // keeps as the bytes over 255; glTF's base colour is linear. Decodes them.
 void linearise_display_colours(aiScene& scene);
 
+// MD3: assimp names a surface's material "MD3_[skin][surface]"; the
+// surface's own name is what a Quake `.skin` file and a request name it by.
+void name_md3_materials_by_surface(aiScene& scene);
+
 }  // namespace toond::assimp_convert

@@ -51,6 +51,22 @@ const aiScene& checked(const Assimp::Importer& importer) {
   return *scene;
 }
 
+// A file holding a skeleton's clips and no mesh (an animation-only FBX, as
+// Mixamo exports them): read without the validation that wants a mesh,
+// marked incomplete as assimp marks its own animation-only scenes (BVH,
+// MD5's .md5anim), and validated as one. The daemon adds its clips to the
+// model beside it, or says what it holds when it came alone.
+const aiScene& clips_alone(Assimp::Importer& importer, std::string_view bytes, const std::string& format,
+                           const std::string& reason) {
+  const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, format.c_str());
+  if (!scene || !scene->mRootNode || scene->mNumAnimations == 0) throw_reason(reason);
+  // The importer keeps its scene const to its callers; it is its own,
+  // made by this read.
+  const_cast<aiScene*>(scene)->mFlags |= AI_SCENE_FLAGS_INCOMPLETE;
+  if (!importer.ApplyPostProcessing(aiProcess_ValidateDataStructure)) throw_reason(importer.GetErrorString());
+  return checked(importer);
+}
+
 }  // namespace
 
 const aiScene& read_scene(Assimp::Importer& importer, std::string_view bytes, const std::string& format,
@@ -61,6 +77,7 @@ const aiScene& read_scene(Assimp::Importer& importer, std::string_view bytes, co
   const unsigned steps = aiProcess_Triangulate | aiProcess_ValidateDataStructure;
   if (importer.ReadFileFromMemory(bytes.data(), bytes.size(), steps, format.c_str())) return checked(importer);
   const std::string reason = importer.GetErrorString();
+  if (reason.find("mNumMeshes is 0") != std::string::npos) return clips_alone(importer, bytes, format, reason);
   if (!timing_refusal(reason)) throw_reason(reason);
   // Refused for a clip's timing alone: everything the validation checks
   // before the clips (nodes, meshes) passed. Read again unvalidated, mend

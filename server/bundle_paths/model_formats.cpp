@@ -7,13 +7,14 @@
 namespace toond::bundle_paths {
 namespace {
 
-constexpr std::array<std::string_view, 6> kOwn = {".obj", ".m", ".gltf", ".glb", ".stl", ".ply"};
+constexpr std::array<std::string_view, 7> kOwn = {".obj", ".m", ".gltf", ".glb", ".stl", ".ply", ".iqm"};
 
-constexpr std::array<std::string_view, 41> kAssimp = {
-    ".fbx",     ".dae",  ".zae", ".3ds", ".3mf", ".off",     ".x",   ".x3d", ".x3db", ".ase",    ".ask",
-    ".ac",      ".ac3d", ".acc", ".amf", ".b3d", ".cob",     ".dxf", ".hmp", ".ifc",  ".ifczip", ".iqm",
-    ".irrmesh", ".lwo",  ".lxo", ".md2", ".md3", ".md5mesh", ".mdc", ".mdl", ".ms3d", ".ndo",    ".nff",
-    ".enff",    ".ogex", ".pmx", ".q3o", ".q3s", ".sib",     ".smd", ".xgl"};
+// .md5anim and .bvh hold clips alone: read beside the model they animate.
+constexpr std::array<std::string_view, 42> kAssimp = {
+    ".fbx",  ".dae",  ".zae", ".3ds", ".3mf",     ".off",     ".x",   ".x3d", ".x3db", ".ase",    ".ask",
+    ".ac",   ".ac3d", ".acc", ".amf", ".b3d",     ".cob",     ".dxf", ".hmp", ".ifc",  ".ifczip", ".irrmesh",
+    ".lwo",  ".lxo",  ".md2", ".md3", ".md5mesh", ".md5anim", ".mdc", ".mdl", ".ms3d", ".ndo",    ".nff",
+    ".enff", ".ogex", ".pmx", ".q3o", ".q3s",     ".sib",     ".smd", ".xgl", ".bvh"};
 
 }  // namespace
 

@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -46,11 +48,38 @@ scene::ImportChoices::Up up_axis(const httplib::Request& req) {
   if (!req.has_param("up")) return scene::ImportChoices::Up::FormatDefault;
   const std::string text = req.get_param_value("up");
   if (text != "y" && text != "z") {
-    throw RequestError(400, "invalid_parameter",
-                       "?up: y or z (without it, the format's convention: z for STL, PLY, 3MF and AMF, y for the rest)",
-                       "?up");
+    throw RequestError(
+        400, "invalid_parameter",
+        "?up: y or z (without it, the format's convention: z for STL, PLY, 3MF, AMF and IQM, y for the rest)", "?up");
   }
   return text == "z" ? scene::ImportChoices::Up::Z : scene::ImportChoices::Up::Y;
+}
+
+// `?textures=a.png,b.png` (in material order) or `Body:a.png,...` (by
+// material name): the images a game would set as the model's skins.
+// Whether they are in the bundle and fit the materials is the import's to
+// say (scene/import/skins.h).
+std::vector<std::string> texture_list(const httplib::Request& req) {
+  if (!req.has_param("textures")) return {};
+  constexpr std::size_t kMostEntries = 256;
+  const std::string text = req.get_param_value("textures");
+  std::vector<std::string> entries;
+  std::size_t at = 0;
+  while (true) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    entries.push_back(text.substr(at, comma - at));
+    if (comma == text.size()) break;
+    at = comma + 1;
+  }
+  const bool empty = std::all_of(entries.begin(), entries.end(), [](const std::string& e) { return e.empty(); });
+  if (empty || entries.size() > kMostEntries || text.size() > 64 * 1024 || text.find('\0') != std::string::npos) {
+    throw RequestError(400, "invalid_parameter",
+                       "?textures: images of the upload, comma-separated, in material order (a.png,b.png) or by "
+                       "material name (Body:a.png,Tail:b.png), at most " +
+                           std::to_string(kMostEntries),
+                       "?textures");
+  }
+  return entries;
 }
 
 scene::ImportChoices import_choices(const httplib::Request& req) {
@@ -58,6 +87,7 @@ scene::ImportChoices import_choices(const httplib::Request& req) {
   choices.gltf_scene = gltf_scene(req);
   choices.smooth_angle = smooth_angle(req);
   choices.up = up_axis(req);
+  choices.textures = texture_list(req);
   return choices;
 }
 

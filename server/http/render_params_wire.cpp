@@ -193,6 +193,7 @@ void read_effects(const json& j, RenderParams& p) {
   p.specular.shininess = specular.at("shininess").get<float>();
   p.specular.threshold = specular.at("threshold").get<float>();
   p.specular.strength = specular.at("strength").get<float>();
+  p.specular.source = specular.at("source") == "all" ? SpecularSource::All : SpecularSource::Material;
 
   const json& rim = j.at("rim");
   p.rim.enabled = rim.at("enabled").get<bool>();
@@ -235,6 +236,25 @@ void read_ground(const json& j, RenderParams& p) {
   p.floor.texture_repeat = floor.at("texture_repeat").get<float>();
 }
 
+// Per-material drawing and how textures are sampled.
+void read_materials(const json& j, RenderParams& p) {
+  for (const auto& [name, m] : j.at("materials").items()) {
+    MaterialParams& given = p.materials[name];
+    if (m.contains("alpha")) {
+      const std::string alpha = m.at("alpha");
+      given.alpha = alpha == "mask"    ? scene::AlphaMode::Mask
+                    : alpha == "blend" ? scene::AlphaMode::Blend
+                                       : scene::AlphaMode::Opaque;
+    }
+    if (m.contains("alpha_cutoff")) given.alpha_cutoff = m.at("alpha_cutoff").get<float>();
+    if (m.contains("texture")) given.texture = m.at("texture").get<std::string>();
+  }
+  const std::string filter = j.at("textures").at("filter");
+  p.texture_filter = filter == "nearest"  ? TextureFilterChoice::Nearest
+                     : filter == "linear" ? TextureFilterChoice::Linear
+                                          : TextureFilterChoice::Auto;
+}
+
 void read_outline(const json& j, RenderParams& p) {
   const json& outline = j.at("outline");
   p.outline.enabled = outline.at("enabled").get<bool>();
@@ -272,6 +292,7 @@ RenderParams render_params_from_wire(const json& j) {
   read_shading(j, p);
   read_effects(j, p);
   read_ground(j, p);
+  read_materials(j, p);
   read_outline(j, p);
   p.msaa = j.at("msaa").get<int>();
   p.supersample = j.at("supersample").get<int>();

@@ -51,6 +51,34 @@ std::shared_ptr<const scene::Texture> bundle_image(scene::ModelLibrary& library,
   throw RequestError(422, "missing_file", pointer + ": the model's bundle has no file \"" + path + "\"", pointer);
 }
 
+// `name` as one token of a JSON pointer (RFC 6901: ~ as ~0, / as ~1).
+std::string pointer_token(const std::string& name) {
+  std::string token;
+  for (const char c : name) {
+    if (c == '~') {
+      token += "~0";
+    } else if (c == '/') {
+      token += "~1";
+    } else {
+      token += c;
+    }
+  }
+  return token;
+}
+
+// A `materials` entry names a material of some model of the request.
+void check_material_named(const Request& request, const std::string& name, const std::string& pointer) {
+  std::string names;
+  for (const render::JobObject& o : request.objects) {
+    for (const scene::Material& m : o.model->materials) {
+      if (m.name == name) return;
+      if (names.size() < 400) names += (names.empty() ? "'" : ", '") + m.name + "'";
+    }
+  }
+  throw RequestError(422, "unknown_material",
+                     pointer + ": the model has no material '" + name + "'; its materials are " + names, pointer);
+}
+
 // Turns the file names of a request into the images the render thread uses.
 void load_bundle_images(scene::ModelLibrary& library, Request& request) {
   render::RenderParams& params = request.params;
@@ -64,6 +92,12 @@ void load_bundle_images(scene::ModelLibrary& library, Request& request) {
   }
   if (params.floor.enabled && !params.floor.texture.empty()) {
     params.floor.image = bundle_image(library, request, params.floor.texture, "/floor/texture");
+  }
+  for (auto& [name, material] : params.materials) {
+    const std::string pointer = "/materials/" + pointer_token(name);
+    check_material_named(request, name, pointer);
+    if (!material.texture.empty())
+      material.image = bundle_image(library, request, material.texture, pointer + "/texture");
   }
 }
 

@@ -130,7 +130,7 @@ TEST_P(BadInputs, GetsTheCataloguedAnswer) {
   } else {
     auto res = [&]() -> httplib::Result {
       if (route == "POST /models" && row.contains("files")) {
-        return client.Post("/models", parts_of(row));
+        return client.Post("/models" + row.value("query", std::string()), parts_of(row));
       }
       if (route == "POST /render multipart") {
         return client.Post("/render", parts_of(row));

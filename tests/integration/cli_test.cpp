@@ -127,6 +127,39 @@ TEST_F(Cli, UploadsAnFbxCharacterWithItsClips) {
   EXPECT_EQ(info["animation"]["clips"][1]["name"], "Idle");
 }
 
+// A game's player in a folder: its model names no skin, so the folder's
+// images travel with it; --textures puts the mod's images on 3d_armor's
+// three materials.
+TEST_F(Cli, UploadsAGameFolderWithItsImagesAndTextures) {
+  namespace fs = std::filesystem;
+  const fs::path exported = TOOND_EXPORTED_DIR;
+  const fs::path player = out_dir() / "player";
+  fs::create_directories(player);
+  fs::copy_file(exported / "minetest/character.b3d", player / "character.b3d", fs::copy_options::overwrite_existing);
+  fs::copy_file(exported / "minetest/character.png", player / "character.png", fs::copy_options::overwrite_existing);
+  auto upload = toon({"upload", player.string(), "--server", daemon().url()});
+  ASSERT_EQ(upload.status, 0) << upload.err;
+  json info = json::parse(upload.out);
+  EXPECT_EQ(info["files"], json::array({"character.b3d", "character.png"}));
+  EXPECT_EQ(info["textures"], 1);
+
+  const fs::path armor = out_dir() / "armor";
+  fs::create_directories(armor);
+  fs::copy_file(exported / "3d_armor/3d_armor_character.b3d", armor / "3d_armor_character.b3d",
+                fs::copy_options::overwrite_existing);
+  fs::copy_file(exported / "minetest/character.png", armor / "character.png", fs::copy_options::overwrite_existing);
+  fs::copy_file(exported / "3d_armor/3d_armor_trans.png", armor / "3d_armor_trans.png",
+                fs::copy_options::overwrite_existing);
+  upload = toon({"upload", armor.string(), "--textures", "character.png,3d_armor_trans.png,3d_armor_trans.png",
+                 "--server", daemon().url()});
+  ASSERT_EQ(upload.status, 0) << upload.err;
+  info = json::parse(upload.out);
+  EXPECT_EQ(info["texture_map"], json::array({"character.png", "3d_armor_trans.png", "3d_armor_trans.png"}));
+  ASSERT_EQ(info["material_list"].size(), 3u);
+  EXPECT_EQ(info["material_list"][0]["texture"], "character.png");
+  EXPECT_EQ(info["material_list"][1]["texture"], "3d_armor_trans.png");
+}
+
 TEST_F(Cli, RenderWithParamsFileRendersTheDemo) {
   const auto params = out_dir() / "params.json";
   { std::ofstream(params) << json{{"width", 96}, {"height", 64}, {"shading", {{"steps", 4}}}}.dump(); }

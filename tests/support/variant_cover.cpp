@@ -45,7 +45,7 @@ std::vector<Dimension> dimensions() {
       {nothing(), features({F::HasTexture})},
       {nothing(), features({F::NormalMap})},
       {nothing(), features({F::ShadeColor})},
-      {nothing(), features({F::AlphaMask})},
+      {nothing(), features({F::AlphaMask}), features({F::AlphaBlend})},
       {nothing(), features({F::CombineSum})},
       {nothing(), features({F::HasPointLights})},
       {nothing(), features({F::Specular})},

@@ -535,14 +535,37 @@ TEST(BundleScan, GltfBringsTheFilesItsUrisNameAndAFolderItsModelFile) {
   dir.write("model/unrelated.png", "not named");
   dir.write("secret.png", "must never be sent");
   const BundleScan scan = scan_obj_bundle(dir.path() / "model");
-  EXPECT_EQ(names(scan), (std::vector<std::string>{"scene.gltf", "scene.bin", "tex/my skin.png"}));
+  // A folder also sends the images beside its model, named or not.
+  EXPECT_EQ(names(scan), (std::vector<std::string>{"scene.gltf", "scene.bin", "tex/my skin.png", "unrelated.png"}));
   EXPECT_TRUE(has_warning(scan, "'../secret.png' refused"));
+  EXPECT_EQ(names(scan_obj_bundle(dir.path() / "model" / "scene.gltf")),
+            (std::vector<std::string>{"scene.gltf", "scene.bin", "tex/my skin.png"}));
 
   dir.write("glb/only.glb", std::string("glTF\x02\0\0\0", 8));
   EXPECT_EQ(names(scan_obj_bundle(dir.path() / "glb" / "only.glb")), (std::vector<std::string>{"only.glb"}));
+  // Several model files travel together: the daemon tells a model from the
+  // files holding its clips alone.
   dir.write("two/a.obj", "");
   dir.write("two/b.glb", "");
-  EXPECT_THROW(scan_obj_bundle(dir.path() / "two"), UsageError);
+  EXPECT_EQ(names(scan_obj_bundle(dir.path() / "two")), (std::vector<std::string>{"a.obj", "b.glb"}));
+  EXPECT_THROW(scan_obj_bundle(dir.path() / "glb" / "none"), UsageError);
+}
+
+// A game's model names no skin (its game's code sets it): a folder sends
+// the images and the clip files beside it.
+TEST(BundleScan, AFolderSendsTheImagesAndClipFilesBesideItsModel) {
+  TempDir dir;
+  dir.write("player/character.b3d", "b3d");
+  dir.write("player/character.png", "skin");
+  dir.write("player/notes.txt", "not sent");
+  dir.write("flag/ffflag.md5mesh", "mesh");
+  dir.write("flag/ffflag.md5anim", "anim");
+  dir.write("flag/ffflag_cc.png", "skin");
+  dir.write("flag/lower_default.skin", "skin file");
+  EXPECT_EQ(names(scan_obj_bundle(dir.path() / "player")),
+            (std::vector<std::string>{"character.b3d", "character.png"}));
+  EXPECT_EQ(names(scan_obj_bundle(dir.path() / "flag")),
+            (std::vector<std::string>{"ffflag.md5anim", "ffflag.md5mesh", "ffflag_cc.png", "lower_default.skin"}));
 }
 
 // An FBX or COLLADA file names its textures by whatever path the artist's
@@ -557,7 +580,7 @@ TEST(BundleScan, AnFbxOrColladaFileBringsTheImagesItNames) {
   dir.write("hero/skin.png", "skin");
   dir.write("hero/textures/eyes.jpg", "eyes");
   dir.write("hero/unrelated.png", "not named");
-  const BundleScan scan = scan_obj_bundle(dir.path() / "hero");
+  const BundleScan scan = scan_obj_bundle(dir.path() / "hero" / "hero.fbx");
   EXPECT_EQ(names(scan), (std::vector<std::string>{"hero.fbx", "skin.png", "textures/eyes.jpg"}));
   EXPECT_TRUE(has_warning(scan, "'gone.tga' not found"));
 

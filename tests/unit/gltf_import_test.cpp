@@ -443,7 +443,9 @@ TEST(GltfImport, IgnoredFeaturesAreNamedInTheWarnings) {
   parts.json["animations"] = json::array({{{"channels", json::array()}, {"samplers", json::array()}}});
   parts.json["extensionsUsed"] = {"KHR_lights_punctual"};
   const Model m = import_files(test::pack_gltf(parts, GltfForm::Glb));
-  EXPECT_TRUE(has_warning(m, "alpha mode BLEND")) << warnings_of(m);
+  // BLEND is drawn blended now, so nothing about it is left unread.
+  EXPECT_FALSE(has_warning(m, "BLEND")) << warnings_of(m);
+  EXPECT_EQ(m.materials[0].alpha_mode, AlphaMode::Blend);
   EXPECT_TRUE(has_warning(m, "KHR_lights_punctual")) << warnings_of(m);
   // Animations are read now (an empty one is a clip of no length).
   EXPECT_FALSE(has_warning(m, "animations")) << warnings_of(m);
@@ -466,13 +468,15 @@ TEST(GltfImport, MaskMaterialsKeepTheirCutoffAndUnlitOnesAreMarked) {
   EXPECT_FALSE(has_warning(m, "alpha")) << warnings_of(m);
   EXPECT_FALSE(has_warning(m, "unlit")) << warnings_of(m);
 
-  // MASK without a cutoff takes glTF's 0.5; OPAQUE has none.
+  EXPECT_EQ(m.materials[0].alpha_mode, AlphaMode::Mask);
+
+  // MASK without a cutoff takes glTF's 0.5; OPAQUE cuts nothing.
   parts.json["materials"][0].erase("alphaCutoff");
   EXPECT_FLOAT_EQ(import_files(test::pack_gltf(parts, GltfForm::Glb)).materials[0].alpha_cutoff, 0.5f);
   parts.json["materials"][0]["alphaMode"] = "OPAQUE";
   parts.json["materials"][0].erase("extensions");
   const Model opaque = import_files(test::pack_gltf(parts, GltfForm::Glb));
-  EXPECT_LT(opaque.materials[0].alpha_cutoff, 0.0f);
+  EXPECT_EQ(opaque.materials[0].alpha_mode, AlphaMode::Opaque);
   EXPECT_FALSE(opaque.materials[0].unlit);
 }
 

@@ -25,6 +25,15 @@ OutlineBlock outline_block_for(const FrameContext& frame) {
   return outline;
 }
 
+MaterialBlock material_block(const scene::Material& material, const DrawnMaterial& drawn) {
+  MaterialBlock block;
+  block.base_color = material.diffuse;
+  block.opacity = material.opacity;
+  block.alpha_cutoff = drawn.tested_cutoff();
+  block.has_texture = drawn.has_texture() ? 1 : 0;
+  return block;
+}
+
 }  // namespace
 
 FrameBlocks::FrameBlocks(const FrameContext& frame, gpu::UniformArena& arena) : arena_(arena) {
@@ -37,6 +46,13 @@ FrameBlocks::FrameBlocks(const FrameContext& frame, gpu::UniformArena& arena) : 
         arena.add(ObjectBlock::placing(frame.model_matrices[i], frame.normal_matrices[i], frame.objects[i].skinned)));
   }
   frame_placement_ = arena.add(ObjectBlock{});
+  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+    const std::vector<scene::Material>& materials = frame.objects[i].model.materials;
+    std::vector<std::size_t>& offsets = materials_.emplace_back();
+    for (std::size_t m = 0; m < materials.size() && m < frame.materials[i].size(); ++m) {
+      offsets.push_back(arena.add(material_block(materials[m], frame.materials[i][m])));
+    }
+  }
   arena.upload();
   arena.bind(ViewBlock::kBinding, view, sizeof(ViewBlock));
   arena.bind(ShadingBlock::kBinding, shading, sizeof(ShadingBlock));
@@ -45,6 +61,10 @@ FrameBlocks::FrameBlocks(const FrameContext& frame, gpu::UniformArena& arena) : 
 
 void FrameBlocks::bind_object(std::size_t i) const {
   arena_.bind(ObjectBlock::kBinding, objects_[i], sizeof(ObjectBlock));
+}
+
+void FrameBlocks::bind_material(std::size_t i, int m) const {
+  arena_.bind(MaterialBlock::kBinding, materials_[i][static_cast<std::size_t>(m)], sizeof(MaterialBlock));
 }
 
 void FrameBlocks::bind_frame_placement() const {

@@ -2,7 +2,8 @@
 // The frame's uniform blocks, written into one buffer before the first pass
 // draws: the view, the shading, the outline's style, and the placement of
 // each object (bound per object as passes draw it). Materials carry their
-// own blocks (GpuModel::bind_material). Render thread only.
+// blocks too, made from the frame's materials (FrameContext::materials),
+// since a request may change how they are drawn. Render thread only.
 #include <cstddef>
 #include <vector>
 
@@ -21,10 +22,13 @@ class FrameBlocks {
   void bind_object(std::size_t i) const;
   // The placement of geometry made in frame coordinates (the floor).
   void bind_frame_placement() const;
+  // Object i's material m (shaders/material.glsl).
+  void bind_material(std::size_t i, int m) const;
 
  private:
   const gpu::UniformArena& arena_;
   std::vector<std::size_t> objects_;
+  std::vector<std::vector<std::size_t>> materials_;  // per object, per material
   std::size_t frame_placement_ = 0;
 };
 

@@ -94,6 +94,13 @@ FaceSkip FrameContext::hidden_from(std::size_t i, const glm::dmat4& view_to_clip
   return skip;
 }
 
+bool FrameContext::has_cutouts(std::size_t i) const {
+  for (const DrawnMaterial& m : materials[i]) {
+    if (m.cuts || m.blended) return true;
+  }
+  return false;
+}
+
 FrameContext build_frame_context(std::vector<FrameObject> objects, const FramePlan& plan, bool face_culling) {
   const RenderParams& params = plan.params;
   FrameContext frame{.objects = std::move(objects),
@@ -117,6 +124,7 @@ FrameContext build_frame_context(std::vector<FrameObject> objects, const FramePl
   frame.draw_height = params.height * frame.supersample;
   frame.outline_px = plan.outline_px;
   frame.lods = choose_levels(frame);
+  for (const FrameObject& o : frame.objects) frame.materials.push_back(drawn_materials(o.model, params));
   for (std::size_t i = 0; i < frame.objects.size(); ++i) {
     frame.main_faces.push_back(frame.culling_for(i, frame.clip, frame.viewer, true));
     frame.lods[i].culled = frame.main_faces[i].hidden;

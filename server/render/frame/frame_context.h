@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "render/plan/camera.h"
+#include "render/plan/drawn_materials.h"
 #include "render/plan/face_culling.h"
 #include "render/plan/frame_plan.h"
 #include "render/plan/pass_plan.h"
@@ -89,6 +90,8 @@ struct FrameContext {
   float outline_px = 0;                // every outline method draws this one width, in drawn pixels
   std::vector<LodUse> lods{};          // one per object; every pass draws an object at its level
   std::vector<FaceSkip> main_faces{};  // per object: of the main pass and the edge prepass
+  // Per object, its materials as this frame draws them (drawn_materials.h).
+  std::vector<std::vector<DrawnMaterial>> materials{};
   std::optional<ShadowFit> shadow{};
   ShadingLights lights{};
   // The colour ramp's stops as toon.frag's arrays take them.
@@ -97,6 +100,10 @@ struct FrameContext {
   bool face_culling = true;
 
   std::size_t lod_of(std::size_t i) const { return lods[i].level; }
+  const DrawnMaterial& material(std::size_t i, int m) const { return materials[i][static_cast<std::size_t>(m)]; }
+  // Whether some material of object i is cut out or blended: what follows
+  // its surface must go material by material and test the alpha.
+  bool has_cutouts(std::size_t i) const;
   bool orthographic() const { return viewer.orthographic; }
   glm::vec3 eye() const { return glm::vec3(camera.eye); }
   glm::vec3 view_dir() const { return glm::vec3(viewer.forward); }

@@ -176,11 +176,10 @@ GpuModel::GpuModel(const scene::Model& model) {
   }
   for (const scene::Texture& tex : model.textures) textures_.push_back(upload_texture(tex, gpu_bytes_));
   for (const scene::Material& m : model.materials) {
-    materials_.push_back({m.name, m.diffuse_texture, m.normal_texture, m.alpha_cutoff, m.unlit});
+    materials_.push_back({m.name, m.diffuse_texture, m.normal_texture, m.unlit});
     MaterialBlock block;
     block.base_color = m.diffuse;
     block.opacity = m.opacity;
-    block.alpha_cutoff = m.alpha_cutoff;
     block.has_texture = m.diffuse_texture >= 0 ? 1 : 0;
     material_blocks_.push_back(material_arena_.add(block));
   }
@@ -231,6 +230,20 @@ void GpuModel::pose_into_vertex_buffer(const scene::Model& model, const scene::P
   });
   glUnmapNamedBuffer(posed_vertices_.id());
   glVertexArrayVertexBuffer(vao_.id(), 0, posed_vertices_.id(), 0, sizeof(Vertex));
+}
+
+GLuint GpuModel::image_texture(const std::shared_ptr<const scene::Texture>& image) const {
+  constexpr std::size_t kKept = 8;
+  const auto it = std::find_if(image_textures_.begin(), image_textures_.end(),
+                               [&](const ImageTexture& kept) { return kept.image == image; });
+  if (it != image_textures_.end()) {
+    std::rotate(it, it + 1, image_textures_.end());
+    return image_textures_.back().texture.id();
+  }
+  if (image_textures_.size() >= kKept) image_textures_.erase(image_textures_.begin());
+  std::size_t bytes = 0;
+  image_textures_.push_back({image, upload_texture(*image, bytes)});
+  return image_textures_.back().texture.id();
 }
 
 void GpuModel::bind_material(int index) const {

@@ -33,10 +33,9 @@ namespace toond::render {
 // What the passes choose variants and textures by; the colours a shader
 // reads are in the material's uniform block (bind_material).
 struct GpuMaterial {
-  std::string name;            // as in the MTL, for per-material request parameters
-  int texture = -1;            // index into GpuModel::textures()
-  int normal_texture = -1;     // tangent-space normal map, linear
-  float alpha_cutoff = -1.0f;  // scene::Material::alpha_cutoff; negative: opaque
+  std::string name;         // as in the MTL, for per-material request parameters
+  int texture = -1;         // index into GpuModel::textures()
+  int normal_texture = -1;  // tangent-space normal map, linear
   bool unlit = false;
 };
 
@@ -115,13 +114,9 @@ class GpuModel {
   const std::vector<scene::Submesh>& submeshes(std::size_t lod = 0) const { return levels_[lod].submeshes; }
   const std::vector<GpuMaterial>& materials() const { return materials_; }
   GLuint texture(int index) const { return textures_[static_cast<std::size_t>(index)].id(); }
-  // Whether a material is drawn only where its alpha passes a cutoff
-  // (glTF alphaMode MASK).
-  bool has_masked_materials() const {
-    for (const GpuMaterial& m : materials_)
-      if (m.alpha_cutoff >= 0.0f) return true;
-    return false;
-  }
+  // A request's image for a material (`materials.<name>.texture`), uploaded
+  // the first time it is drawn and kept while it is among the last few.
+  GLuint image_texture(const std::shared_ptr<const scene::Texture>& image) const;
   bool has_normal_maps() const {
     for (const GpuMaterial& m : materials_)
       if (m.normal_texture >= 0) return true;
@@ -139,6 +134,13 @@ class GpuModel {
   gpu::Buffer posed_vertices_;                      // made by the first pose posed on the CPU
   gpu::Buffer indices_;
   std::vector<gpu::Texture> textures_;
+  // Request images, most recently drawn last; each keeps its image alive so
+  // its address stays its own.
+  struct ImageTexture {
+    std::shared_ptr<const scene::Texture> image;
+    gpu::Texture texture;
+  };
+  mutable std::vector<ImageTexture> image_textures_;
   std::vector<GpuMaterial> materials_;
   gpu::UniformArena material_arena_;
   std::vector<std::size_t> material_blocks_;  // each material's offset in the arena

@@ -18,7 +18,7 @@ void draw_floor_pass(PassContext& context) {
   program.use();
   // The floor is made in frame coordinates already.
   context.blocks.bind_frame_placement();
-  bind_material(floor, 0);
+  bind_own_material(floor, 0);
   if (frame.shadow) glBindTextureUnit(texture_unit::kShadowMap, context.resources.shadow_map().texture());
   floor.bind();
   const bool depth_only = frame.plan.output == Output::Lines;

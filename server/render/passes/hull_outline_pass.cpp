@@ -51,7 +51,7 @@ FaceSkip hull_face_skip(const FrameContext& frame, std::size_t i) {
 std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t i) {
   const FrameContext& frame = context.frame;
   const GpuModel& model = context.model(i);
-  if (!context.cull_hull || !frame.plan.stencil_mark || model.has_masked_materials()) return std::nullopt;
+  if (!context.cull_hull || !frame.plan.stencil_mark || context.frame.has_cutouts(i)) return std::nullopt;
   std::shared_ptr<const HullCullMesh> mesh = model.hull_cull_mesh(frame.lod_of(i), context.background);
   if (!mesh) return std::nullopt;
   const glm::dmat4& placement = frame.scene.matrices[i];
@@ -120,7 +120,7 @@ void draw_hull_of(const PassContext& context, const HullFaces& faces, std::size_
   }
   const auto draw_range = [&](const scene::Submesh& sub) {
     if (sub.index_count == 0) return;
-    bind_material(model, sub.material);
+    bind_material(context, i, sub.material);
     model.draw_from(*faces.buffer, sub.index_count, faces.first[i] + sub.first_index, context.pacing);
   };
   for (std::size_t k = 0; k < subset->submeshes.size(); ++k) {

@@ -40,7 +40,7 @@ void draw_layer_pass(PassContext& context) {
                                }
                                const GpuModel& model = context.model(i);
                                for (const scene::Submesh& sub : model.submeshes(frame.lod_of(i))) {
-                                 bind_material(model, sub.material);
+                                 bind_material(context, i, sub.material);
                                  if (numbered)
                                    program.set("u_layer_id", static_cast<float>(layer_id(frame, i, sub.material)));
                                  model.draw(sub, context.pacing);

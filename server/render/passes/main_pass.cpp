@@ -5,15 +5,18 @@ namespace toond::render {
 namespace {
 
 // The shading program's features for one material, on top of the frame's.
-ToonVariant material_variant(const FrameContext& frame, const GpuMaterial& material) {
+ToonVariant material_variant(const FrameContext& frame, const GpuMaterial& material, const DrawnMaterial& drawn) {
   ToonVariant variant = frame.plan.shading;
   // An unlit material shows its base colour as it is: the flat mode.
   if (material.unlit) variant.set_mode(ToonFeature::ModeFlat);
-  const bool masked = material.alpha_cutoff >= 0.0f;
-  // A masked material's texture gives its shape: it is sampled even where
-  // the request leaves textures out (base white).
-  variant.set(ToonFeature::HasTexture, (frame.plan.sample_textures || masked) && material.texture >= 0);
-  variant.set(ToonFeature::AlphaMask, masked);
+  const bool shaped = drawn.cuts || drawn.blended;
+  // A cut-out or blended material's texture gives its shape: it is sampled
+  // even where the request leaves textures out (base white).
+  variant.set(ToonFeature::HasTexture, (frame.plan.sample_textures || shaped) && drawn.has_texture());
+  variant.set(ToonFeature::AlphaMask, drawn.cuts);
+  variant.set(ToonFeature::AlphaBlend, drawn.blended);
+  // A matte material (specular.source: material) has no highlight.
+  if (!drawn.specular) variant.set(ToonFeature::Specular, false);
   variant.set(ToonFeature::NormalMap, frame.plan.use_normal_maps && material.normal_texture >= 0);
   // A shade colour changes nothing where nothing is lit to blend from.
   variant.set(ToonFeature::ShadeColor,
@@ -21,22 +24,28 @@ ToonVariant material_variant(const FrameContext& frame, const GpuMaterial& mater
   return variant;
 }
 
+// Which of an object's submeshes a draw takes: the opaque and cut-out ones
+// first, then, over them, the blended ones.
+enum class Layering { Solid, Blended };
+
 // Object i, submesh by submesh, each with its material's program and
 // block; a program is switched only where the variant changes. With
 // `viewer`, runs of faces that surely turn away from it are left out.
-void shade_object(PassContext& context, std::size_t i, const std::optional<MeshViewer>& viewer) {
+void shade_object(PassContext& context, std::size_t i, const std::optional<MeshViewer>& viewer, Layering layering) {
   const FrameContext& frame = context.frame;
   const GpuModel& model = context.model(i);
   const gpu::Program* in_use = nullptr;
   const std::vector<scene::Submesh>& submeshes = model.submeshes(frame.lod_of(i));
   for (std::size_t k = 0; k < submeshes.size(); ++k) {
     const scene::Submesh& sub = submeshes[k];
+    const DrawnMaterial& drawn = frame.material(i, sub.material);
+    if (drawn.blended != (layering == Layering::Blended)) continue;
     const GpuMaterial& material = model.materials()[static_cast<std::size_t>(sub.material)];
-    const ToonVariant variant = material_variant(frame, material);
+    const ToonVariant variant = material_variant(frame, material, drawn);
     gpu::Program& program = context.programs.get("toon.vert", "toon.frag", variant.defines());
     if (&program != in_use) program.use();
     in_use = &program;
-    bind_material(model, sub.material);
+    bind_material(context, i, sub.material);
     if (variant.has(ToonFeature::NormalMap)) {
       glBindTextureUnit(texture_unit::kNormalMap, model.texture(material.normal_texture));
     }
@@ -47,6 +56,33 @@ void shade_object(PassContext& context, std::size_t i, const std::optional<MeshV
     else
       model.draw(sub, context.pacing);
   }
+}
+
+// The blended materials, over everything solid: farthest object first,
+// both sides of their faces (one sees the far side through the near), the
+// depth tested but not written, so each shows what lies behind it.
+void draw_blended(PassContext& context) {
+  const FrameContext& frame = context.frame;
+  std::vector<std::pair<double, std::size_t>> order;
+  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+    const auto& materials = frame.materials[i];
+    if (std::none_of(materials.begin(), materials.end(), [](const DrawnMaterial& m) { return m.blended; })) continue;
+    const glm::dvec3 centre(frame.scene.matrices[i] * glm::dvec4(glm::dvec3(frame.objects[i].bounds().centre()), 1.0));
+    order.emplace_back(-glm::dot(centre - frame.camera.eye, glm::dvec3(frame.viewer.forward)), i);
+  }
+  if (order.empty()) return;
+  std::sort(order.begin(), order.end());
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  for (const auto& [distance, i] : order) {
+    context.blocks.bind_object(i);
+    context.model(i).bind();
+    cull(HiddenFaces::None);
+    shade_object(context, i, std::nullopt, Layering::Blended);
+  }
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
 }
 
 }  // namespace
@@ -89,10 +125,13 @@ void draw_main_pass(PassContext& context) {
   context.main_cap_checks.resize(frame.objects.size());
   if (frame.shadow) glBindTextureUnit(texture_unit::kShadowMap, context.resources.shadow_map().texture());
   // Where a cap shows, the side culled is drawn after all: whole.
-  draw_objects(context, {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
-                         .draw = [&](std::size_t i) { shade_object(context, i, turned_away_runs_viewer(context, i)); },
-                         .redraw = [&](std::size_t i) { shade_object(context, i, std::nullopt); },
-                         .cap_checks = &context.main_cap_checks});
+  draw_objects(
+      context,
+      {.faces = [&](std::size_t i) { return frame.main_faces[i]; },
+       .draw = [&](std::size_t i) { shade_object(context, i, turned_away_runs_viewer(context, i), Layering::Solid); },
+       .redraw = [&](std::size_t i) { shade_object(context, i, std::nullopt, Layering::Solid); },
+       .cap_checks = &context.main_cap_checks});
+  draw_blended(context);
 }
 
 }  // namespace toond::render

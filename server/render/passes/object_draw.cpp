@@ -75,7 +75,48 @@ void draw_whole_object(const PassContext& context, std::size_t i) {
   context.model(i).draw_all(context.frame.lod_of(i), context.pacing);
 }
 
-void bind_material(const GpuModel& model, int material) {
+namespace {
+
+GLint gl_wrap(scene::TextureWrap wrap) {
+  switch (wrap) {
+    case scene::TextureWrap::ClampToEdge:
+      return GL_CLAMP_TO_EDGE;
+    case scene::TextureWrap::MirroredRepeat:
+      return GL_MIRRORED_REPEAT;
+    case scene::TextureWrap::Repeat:
+      break;
+  }
+  return GL_REPEAT;
+}
+
+// A texture's sampling lives on the texture object, which materials may
+// share with other samplings: set before each material's draws.
+void sample_as(GLuint texture, const DrawnMaterial& drawn) {
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, drawn.nearest_magnification ? GL_NEAREST : GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER,
+                      drawn.nearest_minification ? GL_NEAREST_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, gl_wrap(drawn.wrap_s));
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, gl_wrap(drawn.wrap_t));
+}
+
+}  // namespace
+
+void bind_material(const PassContext& context, std::size_t i, int material) {
+  context.blocks.bind_material(i, material);
+  const DrawnMaterial& drawn = context.frame.material(i, material);
+  const GpuModel& model = context.model(i);
+  GLuint texture = 0;
+  if (drawn.image) {
+    texture = model.image_texture(drawn.image);
+  } else if (drawn.texture >= 0) {
+    texture = model.texture(drawn.texture);
+  }
+  if (texture == 0) return;
+  sample_as(texture, drawn);
+  glBindTextureUnit(texture_unit::kDiffuse, texture);
+}
+
+void bind_own_material(const GpuModel& model, int material) {
   model.bind_material(material);
   const int texture = model.materials()[static_cast<std::size_t>(material)].texture;
   if (texture >= 0) glBindTextureUnit(texture_unit::kDiffuse, model.texture(texture));
@@ -84,7 +125,7 @@ void bind_material(const GpuModel& model, int material) {
 void draw_by_material(const PassContext& context, std::size_t i) {
   const GpuModel& model = context.model(i);
   for (const scene::Submesh& sub : model.submeshes(context.frame.lod_of(i))) {
-    bind_material(model, sub.material);
+    bind_material(context, i, sub.material);
     model.draw(sub, context.pacing);
   }
 }

@@ -38,7 +38,12 @@ void draw_whole_object(const PassContext& context, std::size_t i);
 // bound: for passes whose colour or alpha test comes from the material.
 void draw_by_material(const PassContext& context, std::size_t i);
 
-// Binds a material's block and its colour texture (when it has one).
-void bind_material(const GpuModel& model, int material);
+// Binds object i's material as the frame draws it (FrameContext::material):
+// its block, and its colour texture (the model's or the request's), when it
+// has one, sampled as the frame says.
+void bind_material(const PassContext& context, std::size_t i, int material);
+
+// Binds a material of `model` as the model was uploaded (the floor's).
+void bind_own_material(const GpuModel& model, int material);
 
 }  // namespace toond::render

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "render/plan/drawn_materials.h"
 #include "render/plan/intersections_known.h"
 #include "render/plan/outline_width.h"
 
@@ -11,6 +12,7 @@ namespace {
 // What the pass plan needs to know about the objects' models.
 ModelTraits traits_of(const RenderParams& params, std::span<const PlannedObject> objects) {
   ModelTraits traits;
+  bool any_specular = false;
   for (const PlannedObject& o : objects) {
     const scene::Model& model = o.model;
     traits.has_textures |= !model.textures.empty();
@@ -20,12 +22,15 @@ ModelTraits traits_of(const RenderParams& params, std::span<const PlannedObject>
     const scene::IntersectionLines& seams =
         o.pose && model.rig && !o.pose->intersections.empty() ? o.pose->intersections[0] : model.mesh.intersections;
     traits.has_intersection_lines |= seams.creased_at(params.outline.crease_angle_deg) > 0;
-    for (const scene::Material& m : model.materials) {
-      traits.has_normal_maps |= m.normal_texture >= 0;
-      traits.has_masked_materials |= m.alpha_cutoff >= 0.0f;
+    for (const scene::Material& m : model.materials) traits.has_normal_maps |= m.normal_texture >= 0;
+    for (const DrawnMaterial& m : drawn_materials(model, params)) {
+      traits.has_textures |= m.has_texture();
+      traits.has_masked_materials |= m.cuts || m.blended;
+      any_specular |= m.specular;
     }
   }
   traits.intersections_unknown = !intersections_known(objects);
+  traits.has_specular_materials = any_specular;
   return traits;
 }
 

@@ -145,7 +145,8 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
     const bool any_point = std::any_of(params.lights.begin(), params.lights.end(),
                                        [](const Light& l) { return l.kind == LightKind::Point; });
     plan.shading.set(ToonFeature::HasPointLights, any_point);
-    plan.shading.set(ToonFeature::Specular, params.specular.enabled && params.specular.strength > 0.0f);
+    plan.shading.set(ToonFeature::Specular,
+                     params.specular.enabled && params.specular.strength > 0.0f && model.has_specular_materials);
   }
   if (params.mode != ShadingMode::Flat && params.rim.enabled && params.rim.strength > 0.0f) {
     plan.shading.set(ToonFeature::Rim);

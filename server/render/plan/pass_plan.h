@@ -40,7 +40,11 @@ struct ModelTraits {
   bool has_intersection_lines = false;
   // Parts may cross where import did not look (render/plan/intersections_known.h).
   bool intersections_unknown = false;
-  bool has_masked_materials = false;  // glTF alphaMode MASK
+  // Some material's alpha cuts it out or lets what is behind show
+  // (render/plan/drawn_materials.h): the passes that follow the surface test it.
+  bool has_masked_materials = false;
+  // Some material gets the highlight (specular.source, scene::Material::matte).
+  bool has_specular_materials = true;
 };
 
 // What an id layer numbers.

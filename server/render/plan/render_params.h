@@ -128,7 +128,12 @@ struct Light {
   LightSpace space = LightSpace::Model;
 };
 
+// Which materials get the highlight: those whose file gives them one
+// (scene::Material::matte is false), or every one.
+enum class SpecularSource { Material, All };
+
 struct SpecularParams {
+  SpecularSource source = SpecularSource::Material;
   bool enabled = true;
   glm::vec3 color{1.0f};  // linear
   float shininess = 48;
@@ -179,6 +184,21 @@ struct FloorParams {
   // before the job reaches the render thread; null for a plain floor.
   std::shared_ptr<const scene::Texture> image;
 };
+
+// A request's word on one material (`materials.<name>`); unset: as the
+// file and its format say.
+struct MaterialParams {
+  std::optional<scene::AlphaMode> alpha;
+  std::optional<float> alpha_cutoff;
+  std::string texture;  // bundle path; empty: the material's own
+  // The decoded `texture`, filled by the pipeline before the job reaches
+  // the render thread.
+  std::shared_ptr<const scene::Texture> image;
+};
+
+// `textures.filter`: magnification as the file says, else nearest for
+// small textures (Auto); or one filter for all.
+enum class TextureFilterChoice { Auto, Nearest, Linear };
 
 enum class OutlineColorMode { Fixed, Texture, Material };
 
@@ -261,6 +281,8 @@ struct RenderParams {
   std::string ramp_image;
   std::map<std::string, glm::vec3> shade_colors;  // material name → linear shade colour
   SpecularParams specular;
+  std::map<std::string, MaterialParams> materials;  // by material name
+  TextureFilterChoice texture_filter = TextureFilterChoice::Auto;
   RimParams rim;
   HalftoneParams halftone;
   ContourParams contour;

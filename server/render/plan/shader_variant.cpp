@@ -15,7 +15,7 @@ constexpr std::array<const char*, static_cast<std::size_t>(ToonFeature::Count)> 
     "HAS_TEXTURE",      "VERTEX_COLOR",    "NORMAL_MAP",    "SHADE_COLOR",      "COMBINE_SUM",
     "HAS_POINT_LIGHTS", "SPECULAR",        "RIM",           "RIM_MASK_LIT",     "RIM_MASK_SHADOW",
     "CONTOUR_EVEN",     "CONTOUR_FRESNEL", "HALFTONE_DOTS", "HALFTONE_CHECKER", "SHADOWS",
-    "ALPHA_MASK",       "LINES_ONLY"};
+    "ALPHA_MASK",       "LINES_ONLY",      "ALPHA_BLEND"};
 constexpr std::array<const char*, static_cast<std::size_t>(OutlineFeature::Count)> kOutlineDefines = {
     "OUTLINE_MATERIAL", "OUTLINE_TEXTURE", "LINE_SEGMENT", "ALPHA_MASK"};
 constexpr std::array<const char*, static_cast<std::size_t>(DepthFeature::Count)> kDepthDefines = {"ALPHA_MASK"};

@@ -40,6 +40,7 @@ enum class ToonFeature : std::size_t {
   Shadows,
   AlphaMask,
   LinesOnly,
+  AlphaBlend,
   Count
 };
 const char* define_name(ToonFeature feature);

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "bundle_paths/model_formats.h"
 #include "scene/import/bundle_import.h"
@@ -68,12 +69,11 @@ void add_notes(const std::string& errors, const std::string& path, std::vector<s
   }
 }
 
-// The helper's "frame_rate: CLIP FPS" lines, each clip's frames a second,
-// onto the clips read from its answer; a line that does not name one of
-// them with a rate a clip could have is not trusted.
-void add_frame_rates(const std::string& errors, Model& model) {
-  if (!model.rig) return;
-  std::vector<std::pair<std::size_t, double>> rates;
+// The helper's "frame_rate: CLIP FPS" lines, each clip's frames a second
+// by its index in the converted file; a line that does not name a clip with
+// a rate a clip could have is not trusted.
+std::map<std::size_t, double> frame_rates(const std::string& errors) {
+  std::map<std::size_t, double> rates;
   std::size_t at = 0;
   while (at < errors.size()) {
     const std::size_t end = std::min(errors.find('\n', at), errors.size());
@@ -88,25 +88,9 @@ void add_frame_rates(const std::string& errors, Model& model) {
     if (clip_error != std::errc() || space == last || *space != ' ') continue;
     const auto [end_of_rate, rate_error] = std::from_chars(space + 1, last, rate);
     if (rate_error != std::errc() || end_of_rate != last) continue;
-    if (clip < model.rig->clips.size() && std::isfinite(rate) && rate > 0.0 && rate <= kMaxFrameRate) {
-      rates.emplace_back(clip, rate);
-    }
+    if (std::isfinite(rate) && rate > 0.0 && rate <= kMaxFrameRate) rates[clip] = rate;
   }
-  if (rates.empty()) return;
-  auto rig = std::make_shared<Rig>(*model.rig);
-  for (const auto& [clip, rate] : rates) rig->clips[clip].frame_rate = rate;
-  model.rig = std::move(rig);
-}
-
-// The bundle with the model file's bytes replaced by the helper's glTF, so
-// the glTF importer names the original file in everything it says and finds
-// textures beside it.
-Bundle with_converted_file(const Bundle& bundle, const std::string& path, std::string glb) {
-  Bundle converted;
-  for (const auto& [name, content] : bundle.files()) {
-    converted.add(name, name == path ? std::move(glb) : content);
-  }
-  return converted;
+  return rates;
 }
 
 }  // namespace
@@ -117,8 +101,7 @@ std::filesystem::path assimp_converter_program() {
   return helper_program("TOOND_ASSIMP_CONVERTER", "toond-assimp-convert");
 }
 
-Model import_assimp_bundle(const Bundle& bundle, const std::string& path, const ImportLimits& limits,
-                           const ImportChoices& choices) {
+ConvertedFile convert_with_assimp(const Bundle& bundle, const std::string& path, const ImportLimits& limits) {
   const std::string* content = bundle.find(path);
   const std::string format = lower_extension(path);
   if (!content || format.empty()) throw ImportError(path, path + ": not a file read through assimp");
@@ -141,10 +124,30 @@ Model import_assimp_bundle(const Bundle& bundle, const std::string& path, const 
   if (!looks_like_gltf(result.output)) {
     throw ImportError(path, path + ": the " + upper(format) + " reader answered something other than glTF");
   }
-  Model model = import_gltf_bundle(with_converted_file(bundle, path, std::move(result.output)), path, limits, choices,
-                                   GltfOrigin::Converted);
-  add_notes(result.errors, path, model.warnings);
-  add_frame_rates(result.errors, model);
+  return {std::move(result.output), std::move(result.errors)};
+}
+
+void add_converter_notes(const ConvertedFile& converted, const std::string& path, Model& model, std::size_t first_clip,
+                         const std::vector<std::size_t>& clips) {
+  add_notes(converted.notes, path, model.warnings);
+  if (!model.rig) return;
+  const std::map<std::size_t, double> rates = frame_rates(converted.notes);
+  if (rates.empty()) return;
+  auto rig = std::make_shared<Rig>(*model.rig);
+  for (std::size_t k = 0; k < clips.size() && first_clip + k < rig->clips.size(); ++k) {
+    if (const auto it = rates.find(clips[k]); it != rates.end()) rig->clips[first_clip + k].frame_rate = it->second;
+  }
+  model.rig = std::move(rig);
+}
+
+Model import_assimp_bundle(const Bundle& bundle, const std::string& path, const ImportLimits& limits,
+                           const ImportChoices& choices) {
+  ConvertedFile converted = convert_with_assimp(bundle, path, limits);
+  Model model =
+      import_gltf_bundle(with_file(bundle, path, converted.glb), path, limits, choices, GltfOrigin::Converted);
+  std::vector<std::size_t> own(model.rig ? model.rig->clips.size() : 0);
+  for (std::size_t c = 0; c < own.size(); ++c) own[c] = c;
+  add_converter_notes(converted, path, model, 0, own);
   return model;
 }
 

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/import/bundle.h"
 #include "scene/import/import_choices.h"
@@ -30,6 +31,25 @@ inline constexpr std::chrono::milliseconds kAssimpTimeLimit{30000};
 // The helper program: $TOOND_ASSIMP_CONVERTER when set, else
 // toond-assimp-convert beside the running executable.
 std::filesystem::path assimp_converter_program();
+
+// What the helper made of one file: a binary glTF, and its notes (standard
+// error: "note: ..." and "frame_rate: CLIP FPS" lines).
+struct ConvertedFile {
+  std::string glb;
+  std::string notes;
+};
+
+// Converts bundle file `path` (one of assimp_extensions()) in the helper.
+// Throws ImportError naming the file when the helper fails or answers
+// something other than glTF.
+ConvertedFile convert_with_assimp(const Bundle& bundle, const std::string& path, const ImportLimits& limits = {});
+
+// The helper's notes about `path` as warnings of `model`, and its clips'
+// frame rates: `clips` lists, for each of the model's clips from index
+// `first_clip` on, its index in the converted file (the model's own clips:
+// 0, 1, ...).
+void add_converter_notes(const ConvertedFile& converted, const std::string& path, Model& model, std::size_t first_clip,
+                         const std::vector<std::size_t>& clips);
 
 // Imports bundle file `path` (one of assimp_extensions()) with the rest of
 // the bundle as its textures. What the helper reports the file held but the

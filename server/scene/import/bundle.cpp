@@ -75,4 +75,10 @@ std::size_t Bundle::total_bytes() const {
   return total;
 }
 
+Bundle with_file(const Bundle& bundle, const std::string& path, std::string content) {
+  Bundle out;
+  for (const auto& [name, bytes] : bundle.files()) out.add(name, name == path ? std::move(content) : bytes);
+  return out;
+}
+
 }  // namespace toond::scene

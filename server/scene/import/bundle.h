@@ -34,4 +34,8 @@ class Bundle {
   bundle_paths::NameIndex names_;
 };
 
+// `bundle` with file `path`'s bytes replaced by `content` (a converted
+// model file read under its own name, so messages name the file uploaded).
+Bundle with_file(const Bundle& bundle, const std::string& path, std::string content);
+
 }  // namespace toond::scene

@@ -4,15 +4,19 @@
 #include <chrono>
 #include <vector>
 
+#include "bundle_paths/bundle_path.h"
 #include "bundle_paths/model_formats.h"
 #include "scene/animation/motion_classes.h"
 #include "scene/import/assimp_import.h"
+#include "scene/import/clip_merge.h"
 #include "scene/import/gltf_container.h"
 #include "scene/import/gltf_import.h"
 #include "scene/import/import_error.h"
+#include "scene/import/iqm_import.h"
 #include "scene/import/m_import.h"
 #include "scene/import/obj_import.h"
 #include "scene/import/ply_import.h"
+#include "scene/import/skins.h"
 #include "scene/import/stl_import.h"
 #include "scene/mesh/crease_edges.h"
 #include "scene/mesh/enclosure.h"
@@ -44,8 +48,15 @@ std::string find_model_file(const Bundle& bundle, std::initializer_list<std::str
 }
 
 std::string find_model_file(const Bundle& bundle, std::span<const std::string_view> extensions, std::string_view noun) {
+  std::vector<std::string> paths;
+  for (const auto& [path, content] : bundle.files()) paths.push_back(path);
+  return find_model_file_among(bundle, paths, extensions, noun);
+}
+
+std::string find_model_file_among(const Bundle& bundle, const std::vector<std::string>& paths,
+                                  std::span<const std::string_view> extensions, std::string_view noun) {
   std::vector<std::string> found;
-  for (const auto& [path, content] : bundle.files()) {
+  for (const std::string& path : paths) {
     for (const std::string_view extension : extensions) {
       if (has_extension(path, extension)) {
         found.push_back(path);
@@ -92,30 +103,165 @@ std::vector<std::string> gltf_files(const Bundle& bundle) {
   return found;
 }
 
-// The file the bundle's model is read from, and whether it is glTF: its
-// one glTF file (known by content) when it holds no OBJ or .m, else its one
-// model file by extension.
+// The file the bundle's model is read from, and whether it is glTF; the
+// files beside it holding a skeleton's animation alone, whose clips it
+// takes (clip_merge.h, iqm_import.h).
 struct ModelFile {
   std::string path;
   bool gltf = false;
+  std::vector<std::string> clip_files;
 };
 
-ModelFile model_file(const Bundle& bundle) {
-  const std::vector<std::string> gltf = gltf_files(bundle);
-  if (gltf.size() == 1 && !std::any_of(bundle.files().begin(), bundle.files().end(), [](const auto& file) {
-        return has_extension(file.first, ".obj") || has_extension(file.first, ".m");
-      })) {
-    return {gltf.front(), true};
+bool is_gltf_path(std::string_view path) { return has_extension(path, ".gltf") || has_extension(path, ".glb"); }
+
+// Whether a file holds a skeleton's animation and no mesh, told from its
+// bytes without converting it: MD5's and BVH's animation files always; IQM
+// and glTF files by what they hold.
+bool holds_clips_alone(std::string_view path, std::string_view content) {
+  if (has_extension(path, ".md5anim") || has_extension(path, ".bvh")) return true;
+  if (has_extension(path, ".iqm")) {
+    const auto contents = iqm_contents(content);
+    return contents && contents->meshes == 0 && contents->clips > 0;
   }
-  std::string path = find_model_file(bundle, model_extensions(), kModelFileNoun);
-  const bool by_name = has_extension(path, ".gltf") || has_extension(path, ".glb");
-  return {std::move(path), by_name};
+  if (is_gltf_path(path) || looks_like_gltf(content)) {
+    const auto contents = gltf_contents(content);
+    return contents && !contents->meshes && !contents->clips.empty();
+  }
+  return false;
+}
+
+// What a file holding clips alone holds, in words for the answer to an
+// upload of it alone.
+std::string clips_alone_refusal(const std::string& path, std::string_view content) {
+  std::string what = "an animation";
+  if (const auto iqm = iqm_contents(content)) {
+    what = std::to_string(iqm->clips) + (iqm->clips == 1 ? " clip" : " clips") +
+           (iqm->clip_names.empty() ? "" : " ('" + iqm->clip_names.front() + "'") +
+           (iqm->clip_names.empty()      ? ""
+            : iqm->clip_names.size() > 1 ? ", ...)"
+                                         : ")") +
+           " for a skeleton of " + std::to_string(iqm->poses) + " joints";
+  } else if (const auto gltf = gltf_contents(content)) {
+    what = std::to_string(gltf->clips.size()) + (gltf->clips.size() == 1 ? " clip" : " clips") + " moving " +
+           std::to_string(gltf->nodes) + " joints";
+  }
+  return path + " holds only " + what +
+         " and no mesh to draw: upload it together with the model it animates (the file with the mesh and its "
+         "skeleton, e.g. a character's .iqm, .md5mesh, .fbx or .glb) in one upload, and its clips are added to "
+         "that model by joint name";
+}
+
+ModelFile model_file(const Bundle& bundle) {
+  ModelFile file;
+  std::vector<std::string> candidates;
+  for (const auto& [path, content] : bundle.files()) {
+    const bool model_like = bundle_paths::is_model_file(path) || has_extension(path, ".md5anim") ||
+                            has_extension(path, ".bvh") ||
+                            (!has_extension(path, ".obj") && !has_extension(path, ".mtl") &&
+                             !has_extension(path, ".m") && looks_like_gltf(content));
+    if (!model_like) continue;
+    if (holds_clips_alone(path, content)) {
+      file.clip_files.push_back(path);
+    } else {
+      candidates.push_back(path);
+    }
+  }
+  if (candidates.empty() && !file.clip_files.empty()) {
+    const std::string& first = file.clip_files.front();
+    throw ImportError(first, clips_alone_refusal(first, *bundle.find(first)));
+  }
+  const std::vector<std::string> gltf = gltf_files(bundle);
+  std::vector<std::string> gltf_models;
+  for (const std::string& path : gltf) {
+    if (std::find(candidates.begin(), candidates.end(), path) != candidates.end()) gltf_models.push_back(path);
+  }
+  const bool obj_or_m = std::any_of(candidates.begin(), candidates.end(), [](const std::string& path) {
+    return has_extension(path, ".obj") || has_extension(path, ".m");
+  });
+  if (gltf_models.size() == 1 && !obj_or_m) {
+    file.path = gltf_models.front();
+    file.gltf = true;
+    return file;
+  }
+  std::vector<std::string_view> extensions = model_extensions();
+  file.path = find_model_file_among(bundle, candidates, extensions, kModelFileNoun);
+  file.gltf = is_gltf_path(file.path);
+  return file;
+}
+
+// The bytes a glTF file of the bundle names by URI, relative to it.
+BufferFiles buffers_beside(const Bundle& bundle, const std::string& path) {
+  return [&bundle, path](const std::string& uri) -> std::optional<std::string> {
+    const auto found = bundle.resolve(path, bundle_paths::uri_reference(uri));
+    if (!found) return std::nullopt;
+    return *bundle.find(*found);
+  };
+}
+
+// The model read as glTF (as uploaded, or converted: by the assimp helper,
+// or from IQM), with the clips of the files beside it holding clips alone
+// added by joint name.
+Model import_with_clips(const Bundle& bundle, const ModelFile& file, const ImportLimits& limits,
+                        const ImportChoices& choices) {
+  const std::string& path = file.path;
+  const bool iqm = has_extension(path, ".iqm");
+  std::vector<std::string> iqm_clips;
+  std::vector<std::string> other_clips;
+  for (const std::string& clips : file.clip_files)
+    (has_extension(clips, ".iqm") ? iqm_clips : other_clips).push_back(clips);
+  if (file.gltf && other_clips.empty()) return import_gltf_bundle(bundle, path, limits, choices);
+  if (iqm && other_clips.empty()) return import_iqm_bundle(bundle, path, iqm_clips, limits, choices);
+  if (!iqm && !file.gltf && other_clips.empty()) return import_assimp_bundle(bundle, path, limits, choices);
+  std::vector<std::string> warnings;
+  for (const std::string& clips : iqm_clips) {
+    if (!iqm) warnings.push_back(clips + ": IQM clips go onto an IQM model only; not read");
+  }
+  std::optional<ConvertedFile> converted;
+  std::vector<double> iqm_rates;
+  std::string gltf;
+  if (file.gltf) {
+    gltf = *bundle.find(path);
+  } else if (iqm) {
+    gltf = iqm_glb(bundle, path, iqm_clips, warnings, iqm_rates, limits);
+  } else {
+    converted = convert_with_assimp(bundle, path, limits);
+    gltf = converted->glb;
+  }
+  std::vector<std::pair<ConvertedFile, std::vector<std::size_t>>> sources;
+  for (const std::string& clips : other_clips) {
+    ConvertedFile source = looks_like_gltf(*bundle.find(clips)) ? ConvertedFile{*bundle.find(clips), {}}
+                                                                : convert_with_assimp(bundle, clips, limits);
+    MergedClips merged = merge_clips(gltf, path, source.glb, clips, buffers_beside(bundle, clips), warnings);
+    gltf = std::move(merged.gltf);
+    sources.emplace_back(std::move(source), std::move(merged.added));
+  }
+  const GltfOrigin origin = file.gltf ? GltfOrigin::File : GltfOrigin::Converted;
+  Model model = import_gltf_bundle(with_file(bundle, path, std::move(gltf)), path, limits, choices, origin);
+  std::size_t own_clips = model.rig ? model.rig->clips.size() : 0;
+  for (const auto& [source, added] : sources) own_clips -= std::min(own_clips, added.size());
+  if (converted) {
+    std::vector<std::size_t> own(own_clips);
+    for (std::size_t c = 0; c < own.size(); ++c) own[c] = c;
+    add_converter_notes(*converted, path, model, 0, own);
+  }
+  std::size_t first = own_clips;
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    add_converter_notes(sources[k].first, other_clips[k], model, first, sources[k].second);
+    first += sources[k].second.size();
+  }
+  if (model.rig && !iqm_rates.empty()) {
+    auto rig = std::make_shared<Rig>(*model.rig);
+    for (std::size_t c = 0; c < iqm_rates.size() && c < rig->clips.size(); ++c) rig->clips[c].frame_rate = iqm_rates[c];
+    model.rig = std::move(rig);
+  }
+  model.warnings.insert(model.warnings.end(), warnings.begin(), warnings.end());
+  return model;
 }
 
 }  // namespace
 
 bool z_up_by_convention(std::string_view path) {
-  for (const std::string_view extension : {".stl", ".ply", ".3mf", ".amf"}) {
+  for (const std::string_view extension : {".stl", ".ply", ".3mf", ".amf", ".iqm"}) {
     if (has_extension(path, extension)) return true;
   }
   return false;
@@ -142,16 +288,22 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
     throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");
   }
   Model model;
-  if (file.gltf) {
-    model = import_gltf_bundle(bundle, path, limits, choices);
-  } else if (read_through_assimp(path)) {
-    model = import_assimp_bundle(bundle, path, limits, choices);
+  if (file.gltf || read_through_assimp(path) || has_extension(path, ".iqm")) {
+    model = import_with_clips(bundle, file, limits, choices);
   } else if (has_extension(path, ".stl") || has_extension(path, ".ply")) {
     model = has_extension(path, ".stl") ? import_stl_bundle(bundle, limits, choices)
                                         : import_ply_bundle(bundle, limits, choices);
   } else {
     model = has_extension(path, ".m") ? import_m_bundle(bundle, limits, choices)
                                       : import_obj_bundle(bundle, limits, choices);
+  }
+  put_skins(model, bundle, path, choices, limits);
+  apply_format_conventions(model, path);
+  warn_unused_images(model, bundle);
+  if (!file.clip_files.empty() && !model.rig && !file.gltf && !read_through_assimp(path) &&
+      !has_extension(path, ".iqm")) {
+    model.warnings.push_back(path + " has no skeleton: the clips of " + file.clip_files.front() +
+                             (file.clip_files.size() > 1 ? " and the others" : "") + " are not read");
   }
   check_import_time(limits, "reading the model");
   LodOptions lod;

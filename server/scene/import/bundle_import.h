@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/import/bundle.h"
 #include "scene/import/import_choices.h"
@@ -47,5 +48,8 @@ bool has_extension(std::string_view path, std::string_view extension);
 std::string find_model_file(const Bundle& bundle, std::initializer_list<std::string_view> extensions,
                             std::string_view noun);
 std::string find_model_file(const Bundle& bundle, std::span<const std::string_view> extensions, std::string_view noun);
+// The same among `paths` only (of `bundle`, which messages list when none fits).
+std::string find_model_file_among(const Bundle& bundle, const std::vector<std::string>& paths,
+                                  std::span<const std::string_view> extensions, std::string_view noun);
 
 }  // namespace toond::scene

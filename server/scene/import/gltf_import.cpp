@@ -19,7 +19,6 @@
 #include <nlohmann/json.hpp>
 
 #include "bundle_paths/bundle_path.h"
-#include "bundle_paths/statement_names.h"
 #include "scene/import/data_uri.h"
 #include "scene/import/gltf_accessor.h"
 #include "scene/import/gltf_container.h"
@@ -27,6 +26,7 @@
 #include "scene/import/gltf_json.h"
 #include "scene/import/gltf_meshopt.h"
 #include "scene/import/gltf_rig.h"
+#include "scene/import/image_lookup.h"
 #include "scene/import/import_error.h"
 #include "scene/import/mesh_builder.h"
 #include "scene/import/texture_decode.h"
@@ -200,10 +200,8 @@ class GltfImporter {
     // glTF 2.0 §3.7.2.1: without NORMAL, flat normals. A converted file's
     // missing normals were missing in the original, which said nothing.
     if (origin_ == GltfOrigin::File) source.smooth_angle_deg = kFlatSmoothAngle;
-    const bool has_texcoords = !source.texcoords.empty();
-    model_.mesh = build_mesh(source, warnings_, [this, has_texcoords](std::vector<SourceTriangle>& triangles) {
+    model_.mesh = build_mesh(source, warnings_, [this](std::vector<SourceTriangle>& triangles) {
       build_materials(triangles);
-      if (has_texcoords) skin_with_lone_image();
       check_import_time(limits_, "decoding textures");
     });
     if (rig_reader_->moves()) {
@@ -304,16 +302,12 @@ class GltfImporter {
   // original file wrote it, relative to the file, or else its file name
   // alone anywhere beside the file (with a warning).
   std::optional<std::string> find_converted_image(const std::string& written, const std::string& role) {
-    for (const bundle_paths::TextureName& candidate : bundle_paths::path_names(written)) {
-      auto path = bundle_.resolve(path_, candidate.name);
-      if (!path) continue;
-      if (candidate.file_name_only) {
-        warnings_.add(path_ + ": " + role + " " + in_quotes(written) + " was found by its file name alone, as " +
-                      in_quotes(*path));
-      }
-      return path;
+    const auto found = find_image(bundle_, path_, written);
+    if (!found) return std::nullopt;
+    if (found->match != ImageMatch::Path) {
+      warnings_.add(path_ + ": " + role + " " + in_quotes(written) + " " + describe_match(*found));
     }
-    return std::nullopt;
+    return found->path;
   }
 
   bool uses_extension(std::string_view name) const {
@@ -829,21 +823,78 @@ class GltfImporter {
           texture_for(index_or(member(info, "index"), -1), ColorSpace::Linear, label + "'s normal map");
       if (number_or(member(info, "scale"), 1.0) != 1.0) ++ignored_["normal map scales"];
     }
-    if (member(pbr, "metallicRoughnessTexture").is_object() || member(pbr, "metallicFactor").is_number() ||
-        member(pbr, "roughnessFactor").is_number()) {
+    // Roughness decides only whether the material is matte (is_matte); a
+    // metal is drawn as its base colour.
+    if (member(pbr, "metallicRoughnessTexture").is_object() || number_or(member(pbr, "metallicFactor"), 0.0) > 0.0) {
       ++ignored_["metallic-roughness (materials)"];
     }
     if (member(m, "occlusionTexture").is_object()) ++ignored_["occlusion textures"];
     if (member(m, "emissiveTexture").is_object()) ++ignored_["emissive textures (the emissive factor is added)"];
     const json& mode = member(m, "alphaMode");
     const std::string alpha_mode = mode.is_string() ? mode.get<std::string>() : "OPAQUE";
-    if (alpha_mode == "MASK") {
-      material.alpha_cutoff = static_cast<float>(std::clamp(number_or(member(m, "alphaCutoff"), 0.5), 0.0, 1.0));
-    } else if (alpha_mode == "BLEND") {
-      ++ignored_["alpha mode BLEND (drawn opaque)"];
-    }
+    material.alpha_cutoff = static_cast<float>(std::clamp(number_or(member(m, "alphaCutoff"), 0.5), 0.0, 1.0));
+    if (alpha_mode == "MASK") material.alpha_mode = AlphaMode::Mask;
+    if (alpha_mode == "BLEND") material.alpha_mode = AlphaMode::Blend;
     material.unlit = member(member(m, "extensions"), "KHR_materials_unlit").is_object();
+    material.matte = is_matte(m);
+    if (const json& info = member(pbr, "baseColorTexture"); info.is_object()) {
+      material.sampler = sampler_of(index_or(member(info, "index"), -1));
+    }
     return material;
+  }
+
+  // Whether the material says it has no highlight: a specular extension's
+  // zero specular (assimp writes KHR_materials_pbrSpecularGlossiness for the
+  // files it converts), or, without one, a surface fully rough everywhere
+  // (roughnessFactor 1, glTF's default, and no texture to vary it).
+  static bool is_matte(const json& m) {
+    const json& extensions = member(m, "extensions");
+    const auto all_zero = [](const json& factor, double absent) {
+      if (!factor.is_array()) return absent == 0.0;
+      for (const json& c : factor) {
+        if (!c.is_number() || c.get<double>() != 0.0) return false;
+      }
+      return true;
+    };
+    if (const json& gloss = member(extensions, "KHR_materials_pbrSpecularGlossiness"); gloss.is_object()) {
+      const bool no_texture = !member(gloss, "specularGlossinessTexture").is_object();
+      return (all_zero(member(gloss, "specularFactor"), 1.0) && no_texture) ||
+             (number_or(member(gloss, "glossinessFactor"), 1.0) <= 0.0 && no_texture);
+    }
+    if (const json& specular = member(extensions, "KHR_materials_specular"); specular.is_object()) {
+      return number_or(member(specular, "specularFactor"), 1.0) <= 0.0 &&
+             !member(specular, "specularTexture").is_object();
+    }
+    const json& pbr = member(m, "pbrMetallicRoughness");
+    return number_or(member(pbr, "roughnessFactor"), 1.0) >= 1.0 &&
+           !member(pbr, "metallicRoughnessTexture").is_object();
+  }
+
+  // glTF texture `index`'s sampler (glTF 2.0 §5.26), as far as toond draws
+  // it; a missing or unknown value is left to the request.
+  Sampler sampler_of(int index) const {
+    Sampler sampler;
+    const json& texture = element(member(doc_, "textures"), static_cast<std::size_t>(std::max(index, 0)));
+    const int id = index_or(member(texture, "sampler"), -1);
+    const json& s = element(member(doc_, "samplers"), static_cast<std::size_t>(std::max(id, 0)));
+    if (index < 0 || id < 0 || !s.is_object()) return sampler;
+    const auto filter = [](const json& value, bool minifying) {
+      const int code = index_or(value, -1);
+      if (code == 9728 || (minifying && (code == 9984 || code == 9986))) return TextureFilter::Nearest;
+      if (code == 9729 || (minifying && (code == 9985 || code == 9987))) return TextureFilter::Linear;
+      return TextureFilter::Unspecified;
+    };
+    const auto wrap = [](const json& value) {
+      const int code = index_or(value, 10497);
+      if (code == 33071) return TextureWrap::ClampToEdge;
+      if (code == 33648) return TextureWrap::MirroredRepeat;
+      return TextureWrap::Repeat;
+    };
+    sampler.magnification = filter(member(s, "magFilter"), false);
+    sampler.minification = filter(member(s, "minFilter"), true);
+    sampler.wrap_s = wrap(member(s, "wrapS"));
+    sampler.wrap_t = wrap(member(s, "wrapT"));
+    return sampler;
   }
 
   void build_materials(std::vector<SourceTriangle>& triangles) {
@@ -866,33 +917,6 @@ class GltfImporter {
       }
     }
     for (auto& tri : triangles) tri.material = slot.at(tri.material);
-  }
-
-  // Game models leave their skin to the game's code (Minetest's B3D player
-  // is given character.png by Lua; Quake's MD3 by a .skin file): a
-  // converted file none of whose materials names a texture, uploaded with
-  // one other file that it does not name, is drawn with that file as
-  // every material's texture when it decodes as an image.
-  void skin_with_lone_image() {
-    if (origin_ != GltfOrigin::Converted || !images_.empty() || bundle_.files().size() != 2) return;
-    for (const Material& material : model_.materials) {
-      if (material.diffuse_texture >= 0) return;
-    }
-    const auto other = std::find_if(bundle_.files().begin(), bundle_.files().end(),
-                                    [this](const auto& file) { return file.first != path_; });
-    try {
-      Texture decoded =
-          decode_model_texture(other->second, other->first, limits_.max_texture_pixels, texture_pixels_left_);
-      decoded.color_space = ColorSpace::Srgb;
-      model_.textures.push_back(std::move(decoded));
-    } catch (const ImportLimitError&) {
-      throw;
-    } catch (const std::exception&) {
-      return;  // not an image: the file was sent for something else
-    }
-    for (Material& material : model_.materials) material.diffuse_texture = static_cast<int>(model_.textures.size()) - 1;
-    warnings_.add(path_ + ": names no texture; drawn with " + in_quotes(other->first) +
-                  ", the upload's one image, as a game gives a model its skin");
   }
 
   void report_ignored() {

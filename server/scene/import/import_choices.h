@@ -5,6 +5,8 @@
 // model.
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace toond::scene {
 
@@ -24,6 +26,11 @@ struct ImportChoices {
   enum class Up : std::uint8_t { FormatDefault, Y, Z };
   Up up = Up::FormatDefault;
   bool z_up() const { return up == Up::Z; }
+  // `?textures`: images of the bundle put on the model's materials, as a
+  // game sets a model's skins from its code: in material order, or
+  // "material:image" by name; an empty entry leaves its material as the
+  // file made it (scene/import/skins.h).
+  std::vector<std::string> textures;
 
   bool operator==(const ImportChoices&) const = default;
 };

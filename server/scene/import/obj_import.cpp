@@ -15,9 +15,11 @@
 
 #include "bundle_paths/statement_names.h"
 #include "scene/import/bundle_import.h"
+#include "scene/import/image_lookup.h"
 #include "scene/import/import_error.h"
 #include "scene/import/mesh_builder.h"
 #include "scene/import/obj_text.h"
+#include "scene/import/skins.h"
 #include "scene/import/texture_decode.h"
 #include "text/trim.h"
 
@@ -36,8 +38,12 @@ std::string find_obj(const Bundle& bundle) { return find_model_file(bundle, {".o
 struct GivenStatements {
   bool kd = false;
   bool ns = false;
+  bool ks = false;
+  bool dissolve = false;  // d or Tr
+  bool illum = false;
   std::optional<std::string> map_kd;  // the text after the keyword
-  std::optional<std::string> bump;    // map_Bump, map_bump or bump
+  std::optional<std::string> map_d;
+  std::optional<std::string> bump;  // map_Bump, map_bump or bump
   std::optional<std::string> norm;
 };
 
@@ -70,6 +76,14 @@ std::map<std::string, GivenStatements> given_statements(std::string_view mtl) {
       given[current].kd = true;
     } else if (is("Ns")) {
       given[current].ns = true;
+    } else if (is("Ks")) {
+      given[current].ks = true;
+    } else if (is("d") || is("Tr")) {
+      given[current].dissolve = true;
+    } else if (is("illum")) {
+      given[current].illum = true;
+    } else if (is("map_d")) {
+      texture(given[current].map_d, 5);
     } else if (is("map_Kd")) {
       texture(given[current].map_kd, 6);
     } else if (is("map_Bump") || is("map_bump")) {
@@ -313,21 +327,27 @@ class Importer {
 
   // The texture `raw_name` of a material (decoded once per file and colour
   // space), or -1 with a warning when it cannot be used.
+  enum class MapRole { Colour, Normal, Alpha };
+
   int texture_for(const std::string& raw_name, const std::string& material_name, const std::string& mtl_path,
-                  ColorSpace space) {
-    const bool colour_map = space == ColorSpace::Srgb;
-    const std::string kind = colour_map ? "texture" : "normal map";
-    const std::string fallback =
-        colour_map ? "the material colour is used instead" : "the material is shaded without it";
+                  MapRole role) {
+    const ColorSpace space = role == MapRole::Colour ? ColorSpace::Srgb : ColorSpace::Linear;
+    const std::string kind = role == MapRole::Colour ? "texture" : role == MapRole::Normal ? "normal map" : "alpha map";
+    const std::string fallback = role == MapRole::Colour   ? "the material colour is used instead"
+                                 : role == MapRole::Normal ? "the material is shaded without it"
+                                                           : "the material is drawn whole";
     const std::vector<bundle_paths::TextureName> candidates = bundle_paths::texture_names(raw_name);
     if (candidates.empty()) return -1;
     const std::string& written = candidates.front().name;
     std::optional<std::string> path;
     for (const bundle_paths::TextureName& candidate : candidates) {
-      if (!(path = bundle_.resolve(mtl_path, candidate.name))) continue;
-      if (candidate.file_name_only) {
-        warnings_.add(mtl_path + ": " + kind + " " + quoted(written) + " of material " + quoted(material_name) +
-                      " was found by its file name alone, as " + quoted(*path));
+      const auto found = find_image(bundle_, mtl_path, candidate.name);
+      if (!found) continue;
+      path = found->path;
+      if (candidate.file_name_only || found->match != ImageMatch::Path) {
+        const FoundImage shown{found->path, found->match == ImageMatch::Path ? ImageMatch::FileName : found->match};
+        warnings_.add(mtl_path + ": " + kind + " " + quoted(written) + " of material " + quoted(material_name) + " " +
+                      describe_match(shown));
       }
       break;
     }
@@ -343,7 +363,7 @@ class Importer {
       Texture texture =
           decode_model_texture(*bundle_.find(*path), *path, limits_.max_texture_pixels, texture_pixels_left_);
       texture.color_space = space;
-      if (!colour_map && is_greyscale(texture)) {
+      if (role == MapRole::Normal && is_greyscale(texture)) {
         warnings_.add(*path + ": the bump map of material " + quoted(material_name) +
                       " is grey, a height map rather than a tangent-space normal map; the material is shaded "
                       "without it");
@@ -359,6 +379,62 @@ class Importer {
     }
     texture_slots_.emplace(key, slot);
     return slot;
+  }
+
+  // What the MTL says of the material's alpha: `d` (or `Tr`) below 1
+  // blends the whole surface; `map_d` cuts it out where the map is dark
+  // (its alpha where it has one, else its luminance), and so does a
+  // `map_Kd` image with alpha, as Minetest's and most games' OBJ props are
+  // drawn.
+  void read_alpha(Material& material, const tinyobj::material_t& source, const GivenStatements& given,
+                  const std::string& mtl_path) {
+    if (given.dissolve && std::isfinite(source.dissolve) && source.dissolve < 1.0) {
+      material.opacity = static_cast<float>(std::clamp(static_cast<double>(source.dissolve), 0.0, 1.0));
+      material.alpha_mode = AlphaMode::Blend;
+    }
+    if (given.map_d) {
+      const int map = texture_for(*given.map_d, source.name, mtl_path, MapRole::Alpha);
+      if (map >= 0) {
+        material.diffuse_texture = with_alpha_map(material.diffuse_texture, map);
+        if (material.alpha_mode == AlphaMode::Opaque) material.alpha_mode = AlphaMode::Mask;
+      }
+      return;
+    }
+    if (material.alpha_mode == AlphaMode::Opaque && material.diffuse_texture >= 0) {
+      material.alpha_mode = alpha_of_image(model_.textures[static_cast<std::size_t>(material.diffuse_texture)]);
+    }
+  }
+
+  // A colour texture whose alpha is alpha map `map`'s (sampled nearest
+  // where the sizes differ): a new texture, since the colour texture may
+  // be another material's too; the map alone, white, without one.
+  int with_alpha_map(int colour, int map) {
+    const Texture alpha = model_.textures[static_cast<std::size_t>(map)];
+    Texture combined;
+    if (colour >= 0) {
+      combined = model_.textures[static_cast<std::size_t>(colour)];
+    } else {
+      combined.path = alpha.path;
+      combined.width = alpha.width;
+      combined.height = alpha.height;
+      combined.rgba.assign(alpha.rgba.size(), 255);
+    }
+    const bool has_alpha = alpha.min_alpha < 255;
+    combined.min_alpha = 255;
+    for (int y = 0; y < combined.height; ++y) {
+      const int ay = static_cast<int>(static_cast<long long>(y) * alpha.height / combined.height);
+      for (int x = 0; x < combined.width; ++x) {
+        const int ax = static_cast<int>(static_cast<long long>(x) * alpha.width / combined.width);
+        const std::uint8_t* a = &alpha.rgba[(static_cast<std::size_t>(ay) * alpha.width + ax) * 4];
+        const auto value =
+            has_alpha ? a[3] : static_cast<std::uint8_t>((a[0] * 54 + a[1] * 183 + a[2] * 19 + 128) >> 8);
+        combined.rgba[(static_cast<std::size_t>(y) * combined.width + x) * 4 + 3] = value;
+        combined.min_alpha = std::min(combined.min_alpha, value);
+      }
+    }
+    combined.color_space = ColorSpace::Srgb;
+    model_.textures.push_back(std::move(combined));
+    return static_cast<int>(model_.textures.size()) - 1;
   }
 
   void build_materials(std::vector<SourceTriangle>& triangles) {
@@ -384,7 +460,7 @@ class Importer {
       material.diffuse = sanitize_colour(source.diffuse, 0.8f);
       const std::string diffuse_name = given.map_kd.value_or(source.diffuse_texname);
       if (!diffuse_name.empty()) {
-        material.diffuse_texture = texture_for(diffuse_name, source.name, mtl_path, ColorSpace::Srgb);
+        material.diffuse_texture = texture_for(diffuse_name, source.name, mtl_path, MapRole::Colour);
       }
       if (!given.kd) {
         // Without Kd a texture or the vertex colours show as painted
@@ -398,11 +474,14 @@ class Importer {
       const std::string normal_name = given.norm.value_or(
           given.bump.value_or(!source.normal_texname.empty() ? source.normal_texname : source.bump_texname));
       if (!normal_name.empty()) {
-        material.normal_texture = texture_for(normal_name, source.name, mtl_path, ColorSpace::Linear);
+        material.normal_texture = texture_for(normal_name, source.name, mtl_path, MapRole::Normal);
       }
       // nvdiffrec MTLs (spot, bob) misuse Ks as (unused, roughness,
       // metalness), e.g. "Ks 0 0.25 0"; kept as written.
       material.specular = sanitize_colour(source.specular, 0.0f);
+      material.matte = (given.ks && material.specular == glm::vec3(0.0f)) ||
+                       (given.illum && (source.illum == 0 || source.illum == 1));
+      read_alpha(material, source, given, mtl_path);
       if (given.ns && std::isfinite(source.shininess)) {
         material.shininess = static_cast<float>(std::clamp(static_cast<double>(source.shininess), 0.0, 1000.0));
       }

@@ -66,12 +66,22 @@ Texture decode_webp(std::string_view bytes, const std::string& path, const Textu
   return texture;
 }
 
+std::uint8_t lowest_alpha(const std::vector<std::uint8_t>& rgba) {
+  std::uint8_t lowest = 255;
+  for (std::size_t i = 3; i < rgba.size(); i += 4) lowest = std::min(lowest, rgba[i]);
+  return lowest;
+}
+
 }  // namespace
 
 Texture decode_texture(std::string_view bytes, const std::string& path, const TextureLimits& limits) {
   if (bytes.empty()) throw std::runtime_error("the file is empty");
   if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw std::runtime_error("the file is too large");
-  if (is_webp(bytes)) return decode_webp(bytes, path, limits);
+  if (is_webp(bytes)) {
+    Texture texture = decode_webp(bytes, path, limits);
+    texture.min_alpha = lowest_alpha(texture.rgba);
+    return texture;
+  }
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int length = static_cast<int>(bytes.size());
 
@@ -104,6 +114,7 @@ Texture decode_texture(std::string_view bytes, const std::string& path, const Te
   texture.height = height;
   texture.rgba.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
   std::memcpy(texture.rgba.data(), pixels.get(), texture.rgba.size());
+  texture.min_alpha = lowest_alpha(texture.rgba);
   return texture;
 }
 

@@ -31,6 +31,30 @@ struct Texture {
   int height = 0;
   std::vector<std::uint8_t> rgba;
   ColorSpace color_space = ColorSpace::Srgb;
+  // The least alpha of any texel (255: opaque), so a mask that would cut
+  // nothing costs nothing (texture_alpha.h).
+  std::uint8_t min_alpha = 255;
+};
+
+// How a material's alpha (opacity × its colour texture's alpha) is drawn:
+// ignored, as a cut-out (below the cutoff nothing is drawn: leaves, fences,
+// a hat layer's empty texels) or blended over what lies behind.
+enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };
+
+// How a texture is sampled, as the file says (glTF samplers); Unspecified
+// leaves it to the request (`textures.filter`, auto: nearest magnification
+// for small textures, as pixel-art games draw them).
+enum class TextureFilter : std::uint8_t { Unspecified, Nearest, Linear };
+enum class TextureWrap : std::uint8_t { Repeat, ClampToEdge, MirroredRepeat };
+struct Sampler {
+  TextureFilter magnification = TextureFilter::Unspecified;
+  // Minification: Nearest picks texels without blending between them (glTF
+  // NEAREST and NEAREST_MIPMAP_*), Linear blends; mipmaps as the request
+  // draws them either way.
+  TextureFilter minification = TextureFilter::Unspecified;
+  TextureWrap wrap_s = TextureWrap::Repeat;
+  TextureWrap wrap_t = TextureWrap::Repeat;
+  bool operator==(const Sampler&) const = default;
 };
 
 struct Material {
@@ -51,13 +75,23 @@ struct Material {
   // Ns, the Phong exponent, clamped to 0..1000 (the MTL range); 32 when the
   // MTL gives none. Blender writes 0 for fully rough materials.
   float shininess = 32.0f;
-  // The base colour's alpha (glTF baseColorFactor.a; 1 for OBJ).
+  // The base colour's alpha (glTF baseColorFactor.a; MTL d, 1 - Tr).
   float opacity = 1.0f;
-  // glTF alphaMode MASK: a fragment whose alpha (opacity × the base colour
-  // texture's alpha) is below this is not drawn. Negative: opaque.
-  float alpha_cutoff = -1.0f;
+  // What the alpha means (glTF alphaMode; MTL d, Tr, map_d and the alpha
+  // of map_Kd; the format's engine's convention where the file says
+  // nothing: docs/formats.md, "Game files").
+  AlphaMode alpha_mode = AlphaMode::Opaque;
+  // Mask: a fragment whose alpha (opacity × the base colour texture's
+  // alpha) is below this is not drawn (glTF alphaCutoff, 0.5 by default).
+  float alpha_cutoff = 0.5f;
   // glTF KHR_materials_unlit: the base colour as it is, no bands or light.
   bool unlit = false;
+  // The file says the surface has no highlight (MTL Ks 0 0 0 or illum 0
+  // or 1, glTF fully rough without a specular extension, a converted
+  // file's zero specular): `specular.source: material` draws no spot on it.
+  bool matte = false;
+  // How the colour texture is sampled, where the file says (glTF).
+  Sampler sampler;
 };
 
 // A run of triangles drawn with one material.

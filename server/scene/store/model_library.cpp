@@ -4,6 +4,7 @@
 
 #include "scene/import/bundle_import.h"
 #include "scene/import/demo_model.h"
+#include "scene/import/image_lookup.h"
 #include "scene/import/obj_import.h"
 #include "scene/import/texture_decode.h"
 #include "scene/mesh/crease_edges.h"
@@ -102,9 +103,9 @@ std::shared_ptr<const scene::Texture> ModelLibrary::bundle_image(const std::stri
   const std::optional<scene::Bundle> bundle =
       model_key == "demo" ? std::optional<scene::Bundle>(scene::make_demo_bundle()) : store_.load(model_key);
   if (!bundle) return nullptr;
-  const std::optional<std::string> resolved = bundle->resolve("", path);
-  if (!resolved) return nullptr;
-  auto image = std::make_shared<const scene::Texture>(scene::decode_texture(*bundle->find(*resolved), *resolved));
+  const std::optional<FoundImage> found = find_image(*bundle, "", path);
+  if (!found) return nullptr;
+  auto image = std::make_shared<const scene::Texture>(scene::decode_texture(*bundle->find(found->path), found->path));
   std::lock_guard lock(mutex_);
   insert_bounded(images_, image_order_, key, image, image_capacity);
   return image;

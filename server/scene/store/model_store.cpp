@@ -146,6 +146,28 @@ ImportChoices::Up stored_up(const nlohmann::json& j, const std::vector<std::stri
   return three_mf ? ImportChoices::Up::Z : ImportChoices::Up::Y;
 }
 
+const char* alpha_name(AlphaMode mode) {
+  switch (mode) {
+    case AlphaMode::Mask:
+      return "mask";
+    case AlphaMode::Blend:
+      return "blend";
+    case AlphaMode::Opaque:
+      break;
+  }
+  return "opaque";
+}
+
+std::vector<ModelInfo::MaterialEntry> material_entries(const Model& model) {
+  std::vector<ModelInfo::MaterialEntry> entries;
+  for (const Material& m : model.materials) {
+    const bool textured = m.diffuse_texture >= 0 && static_cast<std::size_t>(m.diffuse_texture) < model.textures.size();
+    entries.push_back({m.name, textured ? model.textures[static_cast<std::size_t>(m.diffuse_texture)].path : "",
+                       alpha_name(m.alpha_mode), m.alpha_cutoff, m.matte});
+  }
+  return entries;
+}
+
 }  // namespace
 
 nlohmann::json ModelInfo::to_json() const {
@@ -170,6 +192,18 @@ nlohmann::json ModelInfo::to_json() const {
   if (choices.gltf_scene) j["scene"] = *choices.gltf_scene;
   if (choices.smooth_angle) j["smooth_angle"] = *choices.smooth_angle;
   if (choices.up != ImportChoices::Up::FormatDefault) j["up"] = choices.z_up() ? "z" : "y";
+  if (!choices.textures.empty()) j["texture_map"] = choices.textures;
+  if (!material_list.empty()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const MaterialEntry& m : material_list) {
+      list.push_back({{"name", m.name},
+                      {"texture", m.texture},
+                      {"alpha", m.alpha},
+                      {"alpha_cutoff", m.alpha_cutoff},
+                      {"matte", m.matte}});
+    }
+    j["material_list"] = std::move(list);
+  }
   return j;
 }
 
@@ -209,6 +243,19 @@ ModelInfo ModelInfo::from_json(const nlohmann::json& j) {
     info.choices.smooth_angle = angle->get<double>();
   }
   info.choices.up = stored_up(j, info.files);
+  if (const auto textures = j.find("texture_map"); textures != j.end() && textures->is_array()) {
+    for (const nlohmann::json& entry : *textures) {
+      if (entry.is_string()) info.choices.textures.push_back(entry.get<std::string>());
+    }
+  }
+  if (const auto list = j.find("material_list"); list != j.end() && list->is_array()) {
+    for (const nlohmann::json& m : *list) {
+      if (!m.is_object()) continue;
+      info.material_list.push_back({m.value("name", std::string()), m.value("texture", std::string()),
+                                    m.value("alpha", std::string("opaque")), m.value("alpha_cutoff", 0.5),
+                                    m.value("matte", false)});
+    }
+  }
   return info;
 }
 
@@ -241,6 +288,14 @@ std::string bundle_id(const Bundle& bundle, const ImportChoices& choices) {
     feed(angle);
   }
   if (choices.z_up()) feed(std::string_view("\0up\0z", 6));
+  // Entries hold no NUL either: each is cut off by one.
+  if (!choices.textures.empty()) {
+    feed(std::string_view("\0textures\0", 10));
+    for (const std::string& entry : choices.textures) {
+      feed(entry);
+      feed(std::string_view("\0", 1));
+    }
+  }
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   if (EVP_DigestFinal_ex(ctx.get(), digest, &length) != 1) throw std::runtime_error("SHA-256 failed");
@@ -292,6 +347,7 @@ ModelStore::PutResult ModelStore::put(const Bundle& bundle, const ImportLimits& 
   info.triangles = model.mesh.triangle_count();
   info.materials = model.materials.size();
   info.textures = model.textures.size();
+  info.material_list = material_entries(model);
   info.bytes = bundle.total_bytes();
   for (const auto& [path, content] : bundle.files()) info.files.push_back(path);
   info.warnings = model.warnings;

@@ -77,6 +77,18 @@ struct ModelInfo {
   // What the upload asked of the import (a glTF scene), kept so that a
   // re-import makes the same model.
   ImportChoices choices;
+  // Each material as it is drawn: its colour texture's bundle path ("" for
+  // none; an embedded image is named by its file and index), its alpha mode
+  // ("opaque", "mask", "blend") and cutoff, and whether the file says it is
+  // matte. Models stored before this was kept have none listed.
+  struct MaterialEntry {
+    std::string name;
+    std::string texture;
+    std::string alpha;
+    double alpha_cutoff = 0.5;
+    bool matte = false;
+  };
+  std::vector<MaterialEntry> material_list;
 
   nlohmann::json to_json() const;
   static ModelInfo from_json(const nlohmann::json& j);
