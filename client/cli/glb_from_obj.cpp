@@ -27,6 +27,9 @@ using nlohmann::json;
 // toond's colour for an MTL material without Kd and no texture, and for
 // faces without a material (server/scene/import/obj_import.cpp).
 constexpr float kPlainGrey = 0.8f;
+// The roughness of a material with a highlight: under 1, the daemon reads
+// the material as having one (scene::Material::matte).
+constexpr double kGlossyRoughness = 0.5;
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -42,7 +45,7 @@ std::string folder_of(const std::string& bundle_path) {
 // tinyobj cannot say whether Kd was written (it makes up 0.6 beside a
 // map_Kd), and toond's colour for a material without one differs; so the
 // MTL text is asked directly.
-std::set<std::string> materials_with_kd(const std::string& mtl_text) {
+std::set<std::string> materials_with(const std::string& mtl_text, const std::string& wanted) {
   std::set<std::string> named;
   std::string current;
   std::istringstream lines(mtl_text);
@@ -53,7 +56,7 @@ std::set<std::string> materials_with_kd(const std::string& mtl_text) {
     if (keyword == "newmtl") {
       std::getline(words >> std::ws, current);
       while (!current.empty() && std::isspace(static_cast<unsigned char>(current.back()))) current.pop_back();
-    } else if (keyword == "Kd") {
+    } else if (keyword == wanted) {
       named.insert(current);
     }
   }
@@ -76,10 +79,18 @@ class ScannedMaterials : public tinyobj::MaterialReader {
     const std::size_t first = materials->size();
     std::istringstream in(mtl->content);
     tinyobj::LoadMtl(by_name, materials, &in, warn, err);
-    const std::set<std::string> with_kd = materials_with_kd(mtl->content);
+    const std::set<std::string> with_kd = materials_with(mtl->content, "Kd");
+    const std::set<std::string> with_ks = materials_with(mtl->content, "Ks");
+    const std::set<std::string> with_illum = materials_with(mtl->content, "illum");
     for (std::size_t i = first; i < materials->size(); ++i) {
+      const tinyobj::material_t& material = (*materials)[i];
       folders.push_back(folder_of(mtl->name));
-      kd_given.push_back(with_kd.count((*materials)[i].name) > 0);
+      kd_given.push_back(with_kd.count(material.name) > 0);
+      // As the daemon reads an MTL (scene::Material::matte).
+      const bool no_ks = with_ks.count(material.name) > 0 && material.specular[0] == 0 &&
+                         material.specular[1] == 0 && material.specular[2] == 0;
+      const bool flat_illum = with_illum.count(material.name) > 0 && (material.illum == 0 || material.illum == 1);
+      matte.push_back(no_ks || flat_illum);
     }
     return true;
   }
@@ -98,9 +109,11 @@ class ScannedMaterials : public tinyobj::MaterialReader {
     return nullptr;
   }
 
-  // Per material, in tinyobj's order: its MTL's folder and whether it had Kd.
+  // Per material, in tinyobj's order: its MTL's folder, whether it had Kd,
+  // and whether it says it has no highlight.
   std::vector<std::string> folders;
   std::vector<bool> kd_given;
+  std::vector<bool> matte;
 
  private:
   const BundleScan& scan_;
@@ -254,8 +267,13 @@ std::string glb_from_obj(const BundleScan& scan) {
 
   json mesh_primitives = json::array();
   for (const auto& [material_id, p] : primitives) {
-    json pbr = json::object();
+    // Not metal; fully rough only where the MTL says the material has no
+    // highlight, so the daemon draws the .glb's highlights as the OBJ's.
+    json pbr = {{"metallicFactor", 0.0}, {"roughnessFactor", kGlossyRoughness}};
     std::array<float, 3> factor{kPlainGrey, kPlainGrey, kPlainGrey};
+    if (material_id >= 0 && materials_reader.matte[static_cast<std::size_t>(material_id)]) {
+      pbr["roughnessFactor"] = 1.0;
+    }
     if (material_id >= 0) {
       const auto m = static_cast<std::size_t>(material_id);
       const tinyobj::material_t& source = materials[m];

@@ -9,7 +9,11 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "glb/glb_container.h"
 #include "model_checks.h"
+#include "pose_checks.h"
 #include "render/plan/drawn_materials.h"
 #include "render/plan/pass_plan.h"
 #include "scene/import/image_lookup.h"
@@ -273,6 +277,55 @@ TEST_F(GameFormats, AnMd5AnimsClipGoesOntoItsMeshByJointName) {
   } catch (const ImportError& e) {
     EXPECT_NE(std::string(e.what()).find("upload it together with the model it animates"), std::string::npos)
         << e.what();
+  }
+}
+
+// The player's twin split in two as Mixamo-style exports come: the
+// character without its clip, and a file of the clip alone (no mesh, no
+// skin). Uploaded together, the clip goes back onto the character by
+// joint name and poses it as the whole file does.
+TEST(ClipFiles, AnAnimationOnlyGltfAddsItsClipToTheModelByJointName) {
+  const std::string whole = test::read_file(kGameFiles / "minetest/character_twin.glb");
+  const auto chunks = glb::glb_chunks(whole);
+  ASSERT_TRUE(chunks);
+  nlohmann::json model = nlohmann::json::parse(chunks->json);
+  nlohmann::json clips = model;
+  model.erase("animations");
+  clips.erase("meshes");
+  clips.erase("skins");
+  for (nlohmann::json& node : clips["nodes"]) {
+    node.erase("mesh");
+    node.erase("skin");
+  }
+  const std::string png = test::read_file(kGameFiles / "minetest/character.png");
+  const Model original = import_bundle(make_bundle({{"character.glb", whole}, {"character.png", png}}));
+  const Model joined = import_bundle(make_bundle({{"character.glb", glb::glb_container(model.dump(), chunks->bin)},
+                                                  {"walk.glb", glb::glb_container(clips.dump(), chunks->bin)},
+                                                  {"character.png", png}}));
+  ASSERT_TRUE(original.rig && joined.rig);
+  ASSERT_EQ(joined.rig->clips.size(), 1u) << game_warnings(joined);
+  for (const double time : {0.5, 2.95, 3.0}) {
+    EXPECT_LT(test_checks::farthest_from(test_checks::posed_points(joined, 0, time),
+                                         test_checks::posed_points(original, 0, time)),
+              1e-5)
+        << "at " << time << " s";
+  }
+  // A clip whose joints the model lacks is left out, naming them.
+  for (nlohmann::json& node : clips["nodes"]) {
+    if (node.contains("name")) node["name"] = "other " + node["name"].get<std::string>();
+  }
+  const Model refused = import_bundle(make_bundle({{"character.glb", glb::glb_container(model.dump(), chunks->bin)},
+                                                   {"walk.glb", glb::glb_container(clips.dump(), chunks->bin)},
+                                                   {"character.png", png}}));
+  EXPECT_TRUE(!refused.rig || refused.rig->clips.empty());
+  EXPECT_TRUE(game_warns(refused, "walk.glb: clip")) << game_warnings(refused);
+  EXPECT_TRUE(game_warns(refused, "is left out: the model has no joint named 'other ")) << game_warnings(refused);
+  // Alone, it is said to hold a clip and no mesh.
+  try {
+    import_bundle(make_bundle({{"walk.glb", glb::glb_container(clips.dump(), chunks->bin)}}));
+    ADD_FAILURE() << "a clip alone was taken for a model";
+  } catch (const ImportError& e) {
+    EXPECT_NE(std::string(e.what()).find("walk.glb holds only 1 clip"), std::string::npos) << e.what();
   }
 }
 

@@ -126,6 +126,16 @@ TEST(GlbFromObj, TheDaemonReadsTheSameTrianglesAndMaterialsAsFromTheObj) {
   EXPECT_TRUE(from_glb.warnings.empty()) << from_glb.warnings.front();
   EXPECT_EQ(from_glb.mesh.triangle_count(), 5u);
   EXPECT_EQ(triangles_of(from_glb), triangles_of(from_obj));
+  // A highlight where the OBJ's material has one, none where it says so.
+  ASSERT_EQ(from_glb.materials.size(), from_obj.materials.size());
+  for (std::size_t m = 0; m < from_obj.materials.size(); ++m) {
+    EXPECT_EQ(from_glb.materials[m].matte, from_obj.materials[m].matte) << from_obj.materials[m].name;
+  }
+  const BundleScan matte = scan_of("mtllib mats/m.mtl\nusemtl flat\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+                                   "newmtl flat\nKd 1 1 1\nKs 0 0 0\n");
+  scene::Bundle matte_bundle;
+  matte_bundle.add("model.glb", glb_from_obj(matte));
+  EXPECT_TRUE(scene::import_gltf_bundle(matte_bundle, "model.glb").materials[0].matte);
 }
 
 TEST(GlbFromObj, APrimitivePerMaterialAndNormalsOnlyWhereEveryCornerHasOne) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "bundle_paths/bundle_path.h"
 #include "scene/import/bundle_import.h"
 #include "scene/import/demo_model.h"
 #include "scene/import/image_lookup.h"
@@ -103,6 +104,9 @@ std::shared_ptr<const scene::Texture> ModelLibrary::bundle_image(const std::stri
   const std::optional<scene::Bundle> bundle =
       model_key == "demo" ? std::optional<scene::Bundle>(scene::make_demo_bundle()) : store_.load(model_key);
   if (!bundle) return nullptr;
+  // A request names a bundle path: one that would leave the bundle names
+  // nothing, whatever file of its name the bundle holds.
+  if (bundle_paths::resolve_reference("", path).refusal != bundle_paths::Refusal::none) return nullptr;
   const std::optional<FoundImage> found = find_image(*bundle, "", path);
   if (!found) return nullptr;
   auto image = std::make_shared<const scene::Texture>(scene::decode_texture(*bundle->find(found->path), found->path));
