@@ -87,8 +87,8 @@ class ScannedMaterials : public tinyobj::MaterialReader {
       folders.push_back(folder_of(mtl->name));
       kd_given.push_back(with_kd.count(material.name) > 0);
       // As the daemon reads an MTL (scene::Material::matte).
-      const bool no_ks = with_ks.count(material.name) > 0 && material.specular[0] == 0 &&
-                         material.specular[1] == 0 && material.specular[2] == 0;
+      const bool no_ks = with_ks.count(material.name) > 0 && material.specular[0] == 0 && material.specular[1] == 0 &&
+                         material.specular[2] == 0;
       const bool flat_illum = with_illum.count(material.name) > 0 && (material.illum == 0 || material.illum == 1);
       matte.push_back(no_ks || flat_illum);
     }
