@@ -280,6 +280,36 @@ TEST_F(GameFormats, AnMd5AnimsClipGoesOntoItsMeshByJointName) {
   }
 }
 
+// Mixamo-style FBX files: the walker with its mesh (make_walker.py), and its
+// armature's two actions alone (make_walker_clips.py: Blender's FBX of the
+// armature, no mesh). Uploaded together, the second file's clips go onto
+// the walker by joint name and pose it as its own clips do; alone, it is
+// said to hold clips and no mesh.
+TEST_F(GameFormats, AnAnimationOnlyFbxAddsItsClipsToTheCharacterBesideIt) {
+  const fs::path blender = fs::path(TOOND_EXPORTED_DIR) / "blender";
+  const std::string walker = test::read_file(blender / "walker.fbx");
+  const std::string clips = test::read_file(blender / "walker_clips.fbx");
+  const Model both = import_bundle(make_bundle({{"walker.fbx", walker}, {"walker_clips.fbx", clips}}));
+  ASSERT_TRUE(both.rig);
+  ASSERT_EQ(both.rig->clips.size(), 4u) << game_warnings(both);
+  EXPECT_EQ(both.rig->clips[0].name, "Walk");
+  const auto walk = both.rig->find_clip("Armature|Armature|Walk");
+  ASSERT_TRUE(walk);
+  EXPECT_EQ(both.rig->clips[*walk].frame_rate, 24.0);
+  for (const double time : {0.0, 0.25, 0.5}) {
+    EXPECT_LT(test_checks::farthest_from(test_checks::posed_points(both, *walk, time),
+                                         test_checks::posed_points(both, 0, time)),
+              1e-3)
+        << "at " << time << " s";
+  }
+  try {
+    import_bundle(make_bundle({{"walker_clips.fbx", clips}}));
+    ADD_FAILURE() << "a clip file alone was taken for a model";
+  } catch (const ImportError& e) {
+    EXPECT_NE(std::string(e.what()).find("walker_clips.fbx holds only 2 clips"), std::string::npos) << e.what();
+  }
+}
+
 // The player's twin split in two as Mixamo-style exports come: the
 // character without its clip, and a file of the clip alone (no mesh, no
 // skin). Uploaded together, the clip goes back onto the character by

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <vector>
 
 #include "bundle_paths/bundle_path.h"
@@ -151,7 +152,37 @@ std::string clips_alone_refusal(const std::string& path, std::string_view conten
          "that model by joint name";
 }
 
-ModelFile model_file(const Bundle& bundle) {
+// The assimp helper's answers for files of the bundle, kept so that a file
+// converted to tell what it holds is not converted again to read it.
+using Conversions = std::map<std::string, ConvertedFile>;
+
+const ConvertedFile& converted(const Bundle& bundle, const std::string& path, const ImportLimits& limits,
+                               Conversions& conversions) {
+  const auto it = conversions.find(path);
+  if (it != conversions.end()) return it->second;
+  return conversions.emplace(path, convert_with_assimp(bundle, path, limits)).first->second;
+}
+
+// Several model files none of whose bytes say which holds clips alone (an
+// FBX character and its animation-only FBX files): those of the assimp
+// helper's formats are converted, and their glTF says.
+void sort_by_conversion(const Bundle& bundle, std::vector<std::string>& candidates,
+                        std::vector<std::string>& clip_files, const ImportLimits& limits, Conversions& conversions) {
+  std::vector<std::string> models;
+  for (const std::string& path : candidates) {
+    bool clips_alone = false;
+    if (read_through_assimp(path) && !has_extension(path, ".gltf") && !has_extension(path, ".glb")) {
+      const auto contents = gltf_contents(converted(bundle, path, limits, conversions).glb);
+      clips_alone = contents && !contents->meshes && !contents->clips.empty();
+    }
+    (clips_alone ? clip_files : models).push_back(path);
+  }
+  candidates = std::move(models);
+}
+
+// `conversions` given, several candidates are told apart by converting
+// them (sort_by_conversion); without, only by their bytes.
+ModelFile model_file(const Bundle& bundle, const ImportLimits& limits = {}, Conversions* conversions = nullptr) {
   ModelFile file;
   std::vector<std::string> candidates;
   for (const auto& [path, content] : bundle.files()) {
@@ -166,6 +197,8 @@ ModelFile model_file(const Bundle& bundle) {
       candidates.push_back(path);
     }
   }
+  if (candidates.size() > 1 && conversions)
+    sort_by_conversion(bundle, candidates, file.clip_files, limits, *conversions);
   if (candidates.empty() && !file.clip_files.empty()) {
     const std::string& first = file.clip_files.front();
     throw ImportError(first, clips_alone_refusal(first, *bundle.find(first)));
@@ -202,7 +235,7 @@ BufferFiles buffers_beside(const Bundle& bundle, const std::string& path) {
 // or from IQM), with the clips of the files beside it holding clips alone
 // added by joint name.
 Model import_with_clips(const Bundle& bundle, const ModelFile& file, const ImportLimits& limits,
-                        const ImportChoices& choices) {
+                        const ImportChoices& choices, Conversions& conversions) {
   const std::string& path = file.path;
   const bool iqm = has_extension(path, ".iqm");
   std::vector<std::string> iqm_clips;
@@ -211,7 +244,6 @@ Model import_with_clips(const Bundle& bundle, const ModelFile& file, const Impor
     (has_extension(clips, ".iqm") ? iqm_clips : other_clips).push_back(clips);
   if (file.gltf && other_clips.empty()) return import_gltf_bundle(bundle, path, limits, choices);
   if (iqm && other_clips.empty()) return import_iqm_bundle(bundle, path, iqm_clips, limits, choices);
-  if (!iqm && !file.gltf && other_clips.empty()) return import_assimp_bundle(bundle, path, limits, choices);
   std::vector<std::string> warnings;
   for (const std::string& clips : iqm_clips) {
     if (!iqm) warnings.push_back(clips + ": IQM clips go onto an IQM model only; not read");
@@ -224,13 +256,17 @@ Model import_with_clips(const Bundle& bundle, const ModelFile& file, const Impor
   } else if (iqm) {
     gltf = iqm_glb(bundle, path, iqm_clips, warnings, iqm_rates, limits);
   } else {
-    converted = convert_with_assimp(bundle, path, limits);
+    converted = scene::converted(bundle, path, limits, conversions);
     gltf = converted->glb;
+    // A file of clips alone, uploaded alone: what the helper made of it says so.
+    if (const auto contents = gltf_contents(gltf); contents && !contents->meshes && !contents->clips.empty()) {
+      throw ImportError(path, clips_alone_refusal(path, gltf));
+    }
   }
   std::vector<std::pair<ConvertedFile, std::vector<std::size_t>>> sources;
   for (const std::string& clips : other_clips) {
     ConvertedFile source = looks_like_gltf(*bundle.find(clips)) ? ConvertedFile{*bundle.find(clips), {}}
-                                                                : convert_with_assimp(bundle, clips, limits);
+                                                                : scene::converted(bundle, clips, limits, conversions);
     MergedClips merged = merge_clips(gltf, path, source.glb, clips, buffers_beside(bundle, clips), warnings);
     gltf = std::move(merged.gltf);
     sources.emplace_back(std::move(source), std::move(merged.added));
@@ -258,6 +294,20 @@ Model import_with_clips(const Bundle& bundle, const ModelFile& file, const Impor
   return model;
 }
 
+// The model file whose format's convention settles `up`: told from the
+// bytes, or, where only converting would tell (several FBX files), the
+// first model file (such files say their axes themselves).
+std::string model_path_for_up(const Bundle& bundle) {
+  try {
+    return model_file(bundle).path;
+  } catch (const ImportError&) {
+    for (const auto& [path, content] : bundle.files()) {
+      if (bundle_paths::is_model_file(path)) return path;
+    }
+    throw;
+  }
+}
+
 }  // namespace
 
 bool z_up_by_convention(std::string_view path) {
@@ -269,7 +319,7 @@ bool z_up_by_convention(std::string_view path) {
 
 ImportChoices with_format_up(const Bundle& bundle, ImportChoices choices) {
   if (choices.up == ImportChoices::Up::FormatDefault) {
-    choices.up = z_up_by_convention(model_file(bundle).path) ? ImportChoices::Up::Z : ImportChoices::Up::Y;
+    choices.up = z_up_by_convention(model_path_for_up(bundle)) ? ImportChoices::Up::Z : ImportChoices::Up::Y;
   }
   return choices;
 }
@@ -282,14 +332,15 @@ Model import_bundle(const Bundle& bundle, const ImportLimits& given_limits, cons
         std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                                std::chrono::duration<double>(limits.max_seconds));
   }
-  const ModelFile file = model_file(bundle);
+  Conversions conversions;
+  const ModelFile file = model_file(bundle, limits, &conversions);
   const std::string& path = file.path;
   if (choices.gltf_scene && !file.gltf) {
     throw ImportError(path, path + ": a scene was asked for, but only glTF files have scenes");
   }
   Model model;
   if (file.gltf || read_through_assimp(path) || has_extension(path, ".iqm")) {
-    model = import_with_clips(bundle, file, limits, choices);
+    model = import_with_clips(bundle, file, limits, choices, conversions);
   } else if (has_extension(path, ".stl") || has_extension(path, ".ply")) {
     model = has_extension(path, ".stl") ? import_stl_bundle(bundle, limits, choices)
                                         : import_ply_bundle(bundle, limits, choices);
