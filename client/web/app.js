@@ -10,7 +10,7 @@ import { ApiError, LostServer, RenderLoop } from './render_loop.js';
 import { AnimationPanel } from './animation_panel.js';
 import { MaterialList } from './material_list.js';
 import { SheetPreview } from './sheet_preview.js';
-import { bundlePaths, filesFromDrop, filesFromInput, uploadBundle } from './upload.js';
+import { MODEL_FILE, bundlePaths, filesFromDrop, filesFromInput, uploadBundle } from './upload.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -189,7 +189,7 @@ function lostServer(retryAfterSeconds) {
 // ---- models and upload ------------------------------------------------------
 
 function modelLabel(model) {
-  const obj = (model.files ?? []).find((f) => /\.(obj|m|gltf|glb|stl|ply)$/i.test(f)) ?? 'model';
+  const obj = (model.files ?? []).find((f) => MODEL_FILE.test(f)) ?? 'model';
   return `${obj} · ${model.triangles} triangles · ${model.id.slice(0, 8)}`;
 }
 

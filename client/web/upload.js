@@ -47,7 +47,7 @@ export const MODEL_EXTENSIONS = [
   'lwo', 'lxo', 'md2', 'md3', 'md5mesh', 'md5anim', 'mdc', 'mdl', 'ms3d', 'ndo',
   'nff', 'enff', 'ogex', 'pmx', 'q3o', 'q3s', 'sib', 'smd', 'xgl', 'bvh',
 ];
-const MODEL_FILE = new RegExp('\\.(' + MODEL_EXTENSIONS.join('|') + ')$', 'i');
+export const MODEL_FILE = new RegExp('\\.(' + MODEL_EXTENSIONS.join('|') + ')$', 'i');
 
 export function bundlePaths(files) {
   const objs = files.filter((f) => MODEL_FILE.test(f.path));

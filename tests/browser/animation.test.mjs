@@ -4,8 +4,9 @@
 // slider and the play button posing the render through `animation`, a
 // range of the clip in seconds (glTF keys by seconds) and, for Minetest's
 // player (a B3D, 60 frames a second), in frames, into the render and into a
-// sheet whose clip row takes a range and plays once; and gone again (with
-// the state's `animation`) for a model without clips.
+// sheet whose clip row takes a range and plays once; the player's material
+// list (its image and alpha, an alpha chosen there rendered); and gone again
+// (with the state's `animation`) for a model without clips.
 //   node animation.test.mjs --toond PATH --exported DIR --artifacts DIR
 // Exit 0: every check passed; 1: a check failed. Screenshots go to --artifacts.
 import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -189,6 +190,22 @@ try {
   rendered = await rendersShown(page);
   await page.selectOption('#model-select', player);
   await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  // Its material list: the skin the upload gave it and its alpha as
+  // Minetest draws it; a choice there is the request's `materials`.
+  await page.locator('#materials').waitFor({ state: 'visible', timeout: STEP_TIMEOUT_MS });
+  const row = (await page.locator('#material-table tr').nth(1).allTextContents()).join(' ');
+  check(/Character/.test(row) && /character\.png/.test(row) && /mask 0\.5 \(file\)/.test(row),
+    'the material list shows the material, its image and its alpha', row);
+  rendered = await rendersShown(page);
+  await page.selectOption('#material-table select', 'opaque');
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  check(lastRender(requests)?.materials?.Character?.alpha === 'opaque', 'choosing an alpha renders with it',
+    JSON.stringify(lastRender(requests)?.materials));
+  rendered = await rendersShown(page);
+  await page.selectOption('#material-table select', '');
+  await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
+  check(lastRender(requests)?.materials === undefined, 'the file\'s alpha again drops the override',
+    JSON.stringify(lastRender(requests)?.materials));
   rendered = await rendersShown(page);
   await page.selectOption('#clip-select', 'anim');
   await waitForFullRender(page, rendered, STEP_TIMEOUT_MS);
