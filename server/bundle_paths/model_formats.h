@@ -26,6 +26,6 @@ bool is_model_file(std::string_view path);
 
 // How messages name the formats ("model (.obj, .gltf, ...)").
 inline constexpr std::string_view kModelFormatsText =
-    ".obj, .gltf, .glb, .stl, .ply, .fbx, .dae, .3ds, .3mf, .off, .m or another format assimp reads";
+    ".obj, .gltf, .glb, .stl, .ply, .iqm, .fbx, .dae, .3ds, .3mf, .off, .m or another format assimp reads";
 
 }  // namespace toond::bundle_paths

@@ -1,4 +1,4 @@
-// libFuzzer target: a bundle (OBJ or .m, MTL, textures) through the importer
+// libFuzzer target: a bundle (OBJ or .m, MTL, textures, IQM with clip files) through the importer
 // the daemon runs on every upload. Refusals (ImportError) are fine; any other
 // exception, a crash, or a mesh with NaN/Inf or an index out of range (what
 // would reach the GPU) is a finding.

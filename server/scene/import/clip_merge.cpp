@@ -228,7 +228,7 @@ MergedClips merge_clips(std::string_view model_bytes, const std::string& model_p
     merged.added.push_back(a);
   }
   model.doc["buffers"][0]["byteLength"] = model.bin.size();
-  merged.gltf = glb::glb_container(model.doc.dump(), model.bin);
+  merged.gltf = glb::glb_container(model.doc.dump(-1, ' ', false, json::error_handler_t::replace), model.bin);
   return merged;
 }
 

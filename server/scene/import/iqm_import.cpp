@@ -405,7 +405,8 @@ class GlbWriter {
 
   std::string glb() {
     doc["buffers"] = json::array({{{"byteLength", bin_.size()}}});
-    return glb::glb_container(doc.dump(), bin_);
+    // Names come from the file's strings, which need not be UTF-8.
+    return glb::glb_container(doc.dump(-1, ' ', false, json::error_handler_t::replace), bin_);
   }
 
  private:
