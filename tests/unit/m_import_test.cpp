@@ -215,8 +215,8 @@ TEST(BundleImport, PicksTheImporterByExtension) {
   EXPECT_EQ(import_bundle(make_bundle({{"Tri.OBJ", obj}})).mesh.triangle_count(), 1u);
   // Names that only contain the extensions are not model files.
   expect_import_error(import_any, make_bundle({{"a.mtl", "newmtl a\n"}, {"b.obj.txt", obj}, {"c.mm", ""}}), "",
-                      "no model (.obj, .gltf, .glb, .stl, .ply, .fbx", "'a.mtl'");
-  expect_import_error(import_any, Bundle{}, "", "no model (.obj, .gltf, .glb, .stl, .ply, .fbx", "empty");
+                      "no model (.obj, .gltf, .glb, .stl, .ply, .iqm, .fbx", "'a.mtl'");
+  expect_import_error(import_any, Bundle{}, "", "no model (.obj, .gltf, .glb, .stl, .ply, .iqm, .fbx", "empty");
 }
 
 TEST(BundleImport, ExactlyOneModelFile) {

@@ -1,5 +1,7 @@
 #include "scene/import/bundle.h"
 
+#include <algorithm>
+
 #include "bundle_paths/bundle_path.h"
 #include "scene/import/import_error.h"
 
@@ -56,6 +58,27 @@ void Bundle::add(std::string_view path, std::string content) {
   }
   files_.emplace(name, std::move(content));
   names_.add(name);
+  const std::string_view file_name = std::string_view(name).substr(name.find_last_of('/') + 1);
+  const std::size_t dot = file_name.rfind('.');
+  const std::string_view stem = dot == std::string_view::npos || dot == 0 ? file_name : file_name.substr(0, dot);
+  // Files are added in any order; the lists stay in path order so a
+  // look-up's answer does not depend on it.
+  for (const auto& [index, key] : {std::pair{&by_file_name_, file_name}, std::pair{&by_stem_, stem}}) {
+    std::vector<std::string>& paths = (*index)[bundle_paths::case_folded(key)];
+    paths.insert(std::upper_bound(paths.begin(), paths.end(), name), name);
+  }
+}
+
+const std::vector<std::string>& Bundle::paths_named(std::string_view name) const {
+  static const std::vector<std::string> kNone;
+  const auto it = by_file_name_.find(bundle_paths::case_folded(name));
+  return it == by_file_name_.end() ? kNone : it->second;
+}
+
+const std::vector<std::string>& Bundle::paths_with_stem(std::string_view stem) const {
+  static const std::vector<std::string> kNone;
+  const auto it = by_stem_.find(bundle_paths::case_folded(stem));
+  return it == by_stem_.end() ? kNone : it->second;
 }
 
 std::optional<std::string> Bundle::resolve(std::string_view from, std::string_view reference) const {

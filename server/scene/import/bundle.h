@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "bundle_paths/name_index.h"
 
@@ -24,6 +25,13 @@ class Bundle {
   // nullopt when the reference names no file of the bundle or would leave it.
   std::optional<std::string> resolve(std::string_view from, std::string_view reference) const;
 
+  // The paths whose file name (folders left out) is `name`, and whose file
+  // name less its last extension is `stem`, ignoring ASCII case, in path
+  // order: how games find a texture by name (image_lookup.h), one look-up
+  // per reference however many files the bundle holds.
+  const std::vector<std::string>& paths_named(std::string_view name) const;
+  const std::vector<std::string>& paths_with_stem(std::string_view stem) const;
+
   const std::string* find(std::string_view path) const;
   const std::map<std::string, std::string>& files() const { return files_; }
   std::size_t total_bytes() const;
@@ -32,6 +40,8 @@ class Bundle {
  private:
   std::map<std::string, std::string> files_;
   bundle_paths::NameIndex names_;
+  std::map<std::string, std::vector<std::string>, std::less<>> by_file_name_;  // folded file name → paths
+  std::map<std::string, std::vector<std::string>, std::less<>> by_stem_;       // folded stem → paths
 };
 
 // `bundle` with file `path`'s bytes replaced by `content` (a converted

@@ -24,18 +24,15 @@ std::string_view stem_of(std::string_view file_name) {
   return dot == std::string_view::npos || dot == 0 ? file_name : file_name.substr(0, dot);
 }
 
-// The bundle files `wanted` matches by `key` (the file name, or its
-// stem among images), ignoring case: those beside `from` when there are
-// any, else all of them.
+// The bundle files `wanted` names, by file name or (`by_stem`) among images
+// by file name less its extension, ignoring case: those beside `from` when
+// there are any, else all of them.
 std::vector<std::string> matching(const Bundle& bundle, std::string_view from, std::string_view wanted, bool by_stem) {
-  const std::string folded = bundle_paths::case_folded(wanted);
   const std::string_view folder = bundle_paths::folder_of(from);
   std::vector<std::string> beside;
   std::vector<std::string> anywhere;
-  for (const auto& [path, content] : bundle.files()) {
-    const std::string_view name = file_name_of(path);
+  for (const std::string& path : by_stem ? bundle.paths_with_stem(wanted) : bundle.paths_named(wanted)) {
     if (by_stem && !has_image_extension(path)) continue;
-    if (bundle_paths::case_folded(by_stem ? stem_of(name) : name) != folded) continue;
     anywhere.push_back(path);
     if (bundle_paths::folder_of(path) == folder) beside.push_back(path);
   }

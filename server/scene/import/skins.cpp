@@ -35,8 +35,8 @@ std::vector<std::string> material_names(const Model& model) {
 
 bool is_game_format(std::string_view path) { return read_through_assimp(path) || has_extension(path, ".iqm"); }
 
-// The model's texture of bundle image `path` as a colour map, decoded
-// once; throws `failure` when it cannot be.
+// The model's textures of bundle images as colour maps, each decoded once
+// and within what the model's other textures left of kModelTexturePixels.
 class SkinTextures {
  public:
   SkinTextures(Model& model, const Bundle& bundle, const ImportLimits& limits)
