@@ -256,6 +256,20 @@ TEST_F(GameFiles, MinetestsDoorShowsThroughItsWindows) {
     }
   }
   EXPECT_GT(through, 1000u) << "pixels of the background seen through the windows";
+  // The id and depth layers hold nothing there either: the windows' empty
+  // texels are no surface.
+  for (const char* layer : {"id", "depth"}) {
+    const image::Image data = render_ok(client, {{"model", game["id"]}, {"output", layer}});
+    ASSERT_EQ(data.width, front.width);
+    const Rgb empty = rgb_at(data, 0, 0);
+    std::size_t surface = 0;
+    for (int y = top + margin; y < bottom - margin; ++y) {
+      for (int x = left + margin; x < right - margin; ++x) {
+        if (!figure[static_cast<std::size_t>(y) * front.width + x] && rgb_at(data, x, y) != empty) ++surface;
+      }
+    }
+    EXPECT_EQ(surface, 0u) << layer << " layer pixels where the windows show the background";
+  }
 }
 
 // A desk fan whose B3D names an image ("fan-uv.png") the mod does not ship
