@@ -60,6 +60,12 @@ TEST(ParamSchema, ErrorPathsPointAtTheField) {
   EXPECT_EQ(error_path({{"lights", {{{"direction", {0, 0, -1}}}}}}), "/lights/0") << "type is required";
   EXPECT_EQ(error_path({{"outline", {{"color", {0, 0}}}}}), "/outline/color");
   EXPECT_EQ(error_path({{"msaa", 4}}), "(accepted)");
+  EXPECT_EQ(error_path({{"materials", {{"Hat", {{"alpha", "glass"}}}}}}), "/materials/Hat/alpha");
+  EXPECT_EQ(error_path({{"materials", {{"Hat", {{"alpha_cutoff", -0.1}}}}}}), "/materials/Hat/alpha_cutoff");
+  EXPECT_EQ(error_path({{"materials", {{"Hat", {{"texture", ""}}}}}}), "/materials/Hat/texture");
+  EXPECT_EQ(error_path({{"textures", {{"filter", "cubic"}}}}), "/textures/filter");
+  EXPECT_EQ(error_path({{"specular", {{"source", "some"}}}}), "/specular/source");
+  EXPECT_EQ(error_path({{"materials", {{"Hat", {{"alpha", "mask"}, {"alpha_cutoff", 0.3}}}}}}), "(accepted)");
 }
 
 // x-applies-when is read by the page alone, so nothing else would notice a
@@ -241,6 +247,27 @@ TEST(RenderParams, ColoursBecomeLinearAndLightsCarryIntensity) {
   EXPECT_FLOAT_EQ(p.lights[0].color.r, 2.0f);
   EXPECT_EQ(p.mode, render::ShadingMode::Cel);
   EXPECT_EQ(p.rounding, render::Rounding::Ceil);
+}
+
+TEST(RenderParams, MaterialsTexturesAndTheHighlightsSourceAreRead) {
+  json request = {{"materials",
+                   {{"Hat", {{"alpha", "blend"}, {"alpha_cutoff", 0.25}, {"texture", "skins/a.png"}}},
+                    {"Body", {{"alpha", "opaque"}}}}},
+                  {"textures", {{"filter", "nearest"}}},
+                  {"specular", {{"source", "all"}}}};
+  const auto p = http::render_params_from_wire(schema().validate_and_complete(request));
+  ASSERT_EQ(p.materials.size(), 2u);
+  EXPECT_EQ(p.materials.at("Hat").alpha, scene::AlphaMode::Blend);
+  EXPECT_EQ(p.materials.at("Hat").alpha_cutoff, 0.25f);
+  EXPECT_EQ(p.materials.at("Hat").texture, "skins/a.png");
+  EXPECT_EQ(p.materials.at("Body").alpha, scene::AlphaMode::Opaque);
+  EXPECT_FALSE(p.materials.at("Body").alpha_cutoff);
+  EXPECT_EQ(p.texture_filter, render::TextureFilterChoice::Nearest);
+  EXPECT_EQ(p.specular.source, render::SpecularSource::All);
+  const auto defaults = http::render_params_from_wire(schema().validate_and_complete(json::object()));
+  EXPECT_TRUE(defaults.materials.empty());
+  EXPECT_EQ(defaults.texture_filter, render::TextureFilterChoice::Auto);
+  EXPECT_EQ(defaults.specular.source, render::SpecularSource::Material);
 }
 
 TEST(RenderParams, SrgbTransferIsMonotonicAndHitsTheEnds) {

@@ -60,6 +60,9 @@ TEST(RenderParamsDefaults, EveryInitialValueIsTheSchemasDefault) {
   m.check("specular.shininess", schema.specular.shininess, initial.specular.shininess);
   m.check("specular.threshold", schema.specular.threshold, initial.specular.threshold);
   m.check("specular.strength", schema.specular.strength, initial.specular.strength);
+  m.check("specular.source", schema.specular.source, initial.specular.source);
+  m.check("textures.filter", schema.texture_filter, initial.texture_filter);
+  m.check("materials", schema.materials.size(), initial.materials.size());
   m.check("rim.enabled", schema.rim.enabled, initial.rim.enabled);
   m.check("rim.color", schema.rim.color, initial.rim.color);
   m.check("rim.power", schema.rim.power, initial.rim.power);
