@@ -418,6 +418,36 @@ TEST_F(GameFiles, AGltfSamplersMagnificationFilterIsHonoured) {
   EXPECT_LE(image_differing(asked, soft, 8.0), 0.01);
 }
 
+// An MTL's `d 0.5`: the red square is drawn half over the background
+// behind it (in linear light, as the sRGB target blends), after the opaque
+// surfaces, and in flat shading its colour is exactly that mix.
+TEST_F(GameFiles, AnMtlsDissolveBlendsOverWhatIsBehind) {
+  auto client = daemon().client();
+  const std::string quad = "mtllib q.mtl\nusemtl glass\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n";
+  const json glass = upload(client, {{"q.obj", quad}, {"q.mtl", "newmtl glass\nKd 1 0 0\nd 0.5\n"}});
+  ASSERT_EQ(glass["material_list"][0]["alpha"], "blend");
+  const json request = {{"model", glass["id"]},
+                        {"width", 64},
+                        {"height", 64},
+                        {"shading", {{"mode", "flat"}}},
+                        {"outline", {{"enabled", false}}}};
+  const image::Image img = render_ok(client, request);
+  const auto linear = [](double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); };
+  const auto srgb = [](double c) { return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055; };
+  const Rgb background = rgb_at(img, 0, 0);
+  const Rgb centre = rgb_at(img, 32, 32);
+  const double expected_r = 255.0 * srgb(0.5 * linear(background.r / 255.0) + 0.5);
+  const double expected_g = 255.0 * srgb(0.5 * linear(background.g / 255.0));
+  EXPECT_NEAR(centre.r, expected_r, 3.0);
+  EXPECT_NEAR(centre.g, expected_g, 3.0);
+  // Opaque on request: red.
+  json opaque = request;
+  opaque["materials"] = {{"glass", {{"alpha", "opaque"}}}};
+  const Rgb solid = rgb_at(render_ok(client, opaque), 32, 32);
+  EXPECT_GE(solid.r, 250);
+  EXPECT_LE(solid.g, 5);
+}
+
 // A two-colour image, as PNG bytes: left half red, right half blue.
 std::string two_colour_png() {
   image::Image img;
