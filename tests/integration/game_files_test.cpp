@@ -126,6 +126,20 @@ class GameFiles : public SharedDaemonTest {
       EXPECT_LE(share, 0.02) << name << " at yaw " << yaw;
     }
   }
+
+  // Close up, at 0.8 of the default framing's distance (about 20 px a
+  // texel for these skins): at most 1 % of the image differs by more than
+  // 8 levels.
+  void expect_like_twin_close_up(const std::string& game_id, const std::string& twin_id, const std::string& name) {
+    auto client = daemon().client();
+    const double close = 0.8 * framing_distance(client, game_id);
+    const image::Image game = render_ok(client, {{"model", game_id}, {"camera", {{"distance", close}}}});
+    const image::Image twin = render_ok(client, {{"model", twin_id}, {"camera", {{"distance", close}}}});
+    keep(game, name + "_close");
+    const double share = image_differing(game, twin, 8.0);
+    std::printf("%s close up: %.2f %% of the image differs by > 8 levels\n", name.c_str(), 100.0 * share);
+    EXPECT_LE(share, 0.01) << name;
+  }
 };
 
 json minetest_player(httplib::Client& client) {
@@ -161,16 +175,7 @@ TEST_F(GameFiles, MinetestsPlayerLooksLikeItsTwinFromBothSidesAndCloseUp) {
   EXPECT_GT(figure_differing(render_ok(client_before, before), render_ok(client_before, {{"model", twin["id"]}}), 24.0),
             0.02);
 
-  const double close = 0.8 * framing_distance(client, game["id"]);
-  const json request = {{"model", game["id"]}, {"camera", {{"distance", close}}}};
-  const image::Image near_game = render_ok(client, request);
-  json twin_request = request;
-  twin_request["model"] = twin["id"];
-  const image::Image near_twin = render_ok(client, twin_request);
-  keep(near_game, "minetest_player_close");
-  const double share = image_differing(near_game, near_twin, 8.0);
-  std::printf("close up: %.2f %% of the image differs by > 8 levels\n", 100.0 * share);
-  EXPECT_LE(share, 0.01);
+  expect_like_twin_close_up(game["id"], twin["id"], "minetest_player");
 
   // The face: the head's top quarter of the figure is not a black box.
   const image::Image front = render_ok(client, {{"model", game["id"]}});
@@ -238,6 +243,7 @@ TEST_F(GameFiles, MinetestsDoorShowsThroughItsWindows) {
   const json twin = upload(client, {file_of("door_a_twin.glb", kExported / "minetest/door_a_twin.glb"),
                                     file_of("doors_door_wood.png", kExported / "minetest/doors_door_wood.png")});
   expect_like_twin(game["id"], twin["id"], "minetest_door");
+  expect_like_twin_close_up(game["id"], twin["id"], "minetest_door");
   const image::Image front = render_ok(client, {{"model", game["id"]}});
   const std::vector<bool> figure = foreground_mask(front);
   int left = front.width, right = 0, top = front.height, bottom = 0;
@@ -284,6 +290,7 @@ TEST_F(GameFiles, AHomedecorDeskFanTakesTheUploadsOneImage) {
   EXPECT_TRUE(warns(game, "the upload's one image")) << warnings_of(game);
   EXPECT_EQ(game["textures"], 1);
   expect_like_twin(game["id"], twin["id"], "homedecor_desk_fan");
+  expect_like_twin_close_up(game["id"], twin["id"], "homedecor_desk_fan");
 }
 
 // OpenArena's red armour: its MD3 names `models/powerups/armor/redArmor`,
