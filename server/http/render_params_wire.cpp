@@ -145,10 +145,7 @@ void read_lights(const json& j, RenderParams& p) {
     if (l.contains("position")) light.position = dvec3_of(l.at("position"));
     light.radius = l.at("radius").get<double>();
     light.color = srgb_to_linear(vec3_of(l.at("color"))) * l.at("intensity").get<float>();
-    // Absent, a sheet's lights turn with its camera, so that every
-    // direction is lit alike; a single image's stay with the model.
-    const std::string space = l.value("space", j.contains("sheet") ? "view" : "model");
-    light.space = space == "view" ? LightSpace::View : LightSpace::Model;
+    light.space = l.at("space") == "view" ? LightSpace::View : LightSpace::Model;
     p.lights.push_back(light);
   }
   p.light_combine = j.at("light_combine") == "sum" ? LightCombine::Sum : LightCombine::Max;

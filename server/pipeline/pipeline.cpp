@@ -49,8 +49,8 @@ std::vector<render::RenderJob> frame_jobs(const Request& request, const std::vec
 }  // namespace
 
 nlohmann::ordered_json sheet_atlas(const Request& request, Services& services) {
-  const ObjectPoses poses = pose_frames(request, services.framings, services.renderer.skinning()).front();
-  return atlas_of(request, *render::frame_scene_of(planned_objects(request, poses)));
+  const std::vector<ObjectPoses> poses = pose_frames(request, services.framings, services.renderer.skinning());
+  return atlas_of(request, plan_frames(request, poses));
 }
 
 Rendered render(Request request, const std::string& client, Services& services) {
@@ -62,10 +62,10 @@ Rendered render(Request request, const std::string& client, Services& services) 
   // A sheet's atlas frames it as its frames are; an animation's goes out
   // with ?atlas=json alone.
   std::optional<nlohmann::ordered_json> atlas;
-  if (request.layout && !request.params.sheet->animate) atlas = atlas_of(request, *plans.front().scene);
+  if (request.layout && !request.params.sheet->animate) atlas = atlas_of(request, plans);
 
   rendered.price = price_of(plans);
-  check_render_cost(request, rendered.price, services.limits);
+  check_render_cost(request, poses, rendered.price, services.limits);
   rendered.long_lane = services.renderer.is_long(rendered.price.total.units());
   const auto submitted = Clock::now();
   // Past the deadline the render thread skips the job instead of drawing

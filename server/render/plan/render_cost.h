@@ -8,6 +8,8 @@
 #include <span>
 #include <string>
 
+#include <glm/glm.hpp>
+
 #include "render/plan/pass_plan.h"
 #include "render/plan/render_params.h"
 #include "scene/mesh/model.h"
@@ -87,11 +89,21 @@ double edge_texels_per_pixel(double line_px, bool creases_only);
 // turned by its transform: priced at their densest direction).
 enum class ViewKnown { Camera, Any };
 
-// The cost of one frame drawn with `params` (the parameters as drawn: a
-// pixel-art frame's reduced size, a sheet frame's yaw and pitch) under
-// `plan`. Every mesh is assumed to fill the frame, at full detail; the
-// shadow pass sees them from its light's direction.
-RenderCost predict_frame_cost(const RenderParams& params, const PassPlan& plan,
-                              std::span<const scene::Mesh* const> meshes, ViewKnown view = ViewKnown::Camera);
+// What a frame's price reads of its plan (frame_plan.h): the parameters it
+// is drawn with (a pixel-art frame's reduced size, a sheet frame's yaw and
+// pitch), its passes, the width its lines are drawn at and, where it casts
+// a shadow, the way the shadow's light travels (scene coordinates, a
+// view-space light already turned with the camera).
+struct PricedFrame {
+  const RenderParams& params;
+  const PassPlan& passes;
+  double line_px = 0;
+  glm::dvec3 shadow_direction{0.0, 0.0, -1.0};
+};
+
+// The cost of one frame. Every mesh is assumed to fill the frame, at full
+// detail; the shadow pass sees them from its light's direction.
+RenderCost predict_frame_cost(const PricedFrame& frame, std::span<const scene::Mesh* const> meshes,
+                              ViewKnown view = ViewKnown::Camera);
 
 }  // namespace toond::render
