@@ -12,8 +12,8 @@
 #include "limit_error.h"
 #include "render/run/render_service.h"
 #include "request_error.h"
-#include "scene/import/import_error.h"
-#include "scene/import/import_limits.h"
+#include "scene/reading/import_error.h"
+#include "scene/reading/import_limits.h"
 #include "scene/store/store_error.h"
 
 namespace toond::http {

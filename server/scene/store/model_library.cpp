@@ -5,9 +5,9 @@
 #include "scene/import/bundle_import.h"
 #include "scene/import/demo_model.h"
 #include "scene/import/obj_import.h"
-#include "scene/import/texture_decode.h"
 #include "scene/mesh/crease_edges.h"
 #include "scene/mesh/intersection_lines.h"
+#include "scene/reading/texture_decode.h"
 
 namespace toond::scene {
 namespace {

@@ -28,9 +28,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scene/import/bundle.h"
-#include "scene/import/import_choices.h"
-#include "scene/import/import_limits.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_choices.h"
+#include "scene/reading/import_limits.h"
 #include "scene/store/store_error.h"
 #include "scene/store/store_scan.h"
 

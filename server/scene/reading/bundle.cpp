@@ -1,0 +1,78 @@
+#include "scene/reading/bundle.h"
+
+#include "bundle_paths/bundle_path.h"
+#include "scene/reading/import_error.h"
+
+namespace toond::scene {
+namespace {
+
+// The name as a message may show it: bytes outside printable ASCII as \xNN.
+std::string printable(std::string_view name) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (const char ch : name.substr(0, 200)) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c < 0x7f) {
+      out += ch;
+    } else {
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 0xf];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+void Bundle::add(std::string_view path, std::string content) {
+  const auto normal = bundle_paths::normalize_path(path);
+  // The raw name may hold a NUL or worse; keep the reported name printable.
+  const std::string shown = printable(path);
+  if (const auto reason = bundle_paths::unprintable_reason(path)) {
+    throw ImportError(shown, "file name '" + shown + "' is not a safe relative path inside the bundle: it holds " +
+                                 *reason + "; names must be printable UTF-8");
+  }
+  if (!normal) {
+    throw ImportError(shown, "file name '" + shown +
+                                 "' is not a safe relative path inside the bundle "
+                                 "(absolute, drive letter, '..' above the root, NUL byte or empty)");
+  }
+  const std::string& name = *normal;
+  if (files_.count(name) != 0) {
+    throw ImportError(name, "file '" + name + "' appears twice in the bundle");
+  }
+  // A path cannot be both a file and a folder once the store writes it out.
+  for (std::string_view parent = bundle_paths::folder_of(name); !parent.empty();
+       parent = bundle_paths::folder_of(parent)) {
+    if (files_.count(std::string(parent)) != 0) {
+      throw ImportError(name, "file '" + name + "' would lie inside file '" + std::string(parent) + "'");
+    }
+  }
+  const std::string as_folder = name + '/';
+  const auto next = files_.lower_bound(as_folder);
+  if (next != files_.end() && next->first.compare(0, as_folder.size(), as_folder) == 0) {
+    throw ImportError(name, "file '" + name + "' is also a folder holding '" + next->first + "'");
+  }
+  files_.emplace(name, std::move(content));
+  names_.add(name);
+}
+
+std::optional<std::string> Bundle::resolve(std::string_view from, std::string_view reference) const {
+  const bundle_paths::Reading reading = bundle_paths::resolve_reference(from, reference);
+  if (reading.refusal != bundle_paths::Refusal::none) return std::nullopt;
+  return names_.find(reading.path);
+}
+
+const std::string* Bundle::find(std::string_view path) const {
+  const auto it = files_.find(std::string(path));
+  return it == files_.end() ? nullptr : &it->second;
+}
+
+std::size_t Bundle::total_bytes() const {
+  std::size_t total = 0;
+  for (const auto& [name, content] : files_) total += content.size();
+  return total;
+}
+
+}  // namespace toond::scene
