@@ -104,8 +104,9 @@ void add_frame_rates(const std::string& errors, Model& model) {
 Bundle with_converted_file(const Bundle& bundle, const std::string& path, std::string glb) {
   Bundle converted;
   for (const auto& [name, content] : bundle.files()) {
-    converted.add(name, name == path ? std::move(glb) : content);
+    if (name != path) converted.add(name, content);
   }
+  converted.add(path, std::move(glb));
   return converted;
 }
 

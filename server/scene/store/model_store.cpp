@@ -24,6 +24,7 @@
 
 namespace toond::scene {
 namespace fs = std::filesystem;
+using namespace std::string_view_literals;
 namespace {
 
 constexpr std::string_view kTempPrefix = ".tmp-";
@@ -237,10 +238,10 @@ std::string bundle_id(const Bundle& bundle, const ImportChoices& choices) {
   if (choices.smooth_angle) {
     char angle[32];
     std::snprintf(angle, sizeof angle, "%.17g", *choices.smooth_angle);
-    feed(std::string_view("\0smooth_angle\0", 14));
+    feed("\0smooth_angle\0"sv);
     feed(angle);
   }
-  if (choices.z_up()) feed(std::string_view("\0up\0z", 6));
+  if (choices.z_up()) feed("\0up\0z"sv);
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   if (EVP_DigestFinal_ex(ctx.get(), digest, &length) != 1) throw std::runtime_error("SHA-256 failed");
@@ -254,9 +255,7 @@ std::string bundle_id(const Bundle& bundle, const ImportChoices& choices) {
 }
 
 ModelStore::ModelStore(fs::path data_dir, StoreOptions options)
-    : root_(std::move(data_dir) / "models"),
-      options_(options),
-      holder_(std::to_string(::getpid()) + "-" + random_suffix()) {
+    : root_(data_dir / "models"), options_(options), holder_(std::to_string(::getpid()) + "-" + random_suffix()) {
   fs::create_directories(root_);
   const auto stale_before = fs::file_time_type::clock::now() - kStaleTempAge;
   for (const auto& entry : fs::directory_iterator(root_)) {
