@@ -21,6 +21,7 @@ ROOMS = [
     "server/helper_process",  # what the helper programs share
     "server/glb",             # the .glb container writer
     "server/image",           # PNG, sRGB, palettes, WebP
+    "server/sheet_files",     # a sheet's other files: packed tiles, .aseprite, Godot SpriteFrames
     "server/bundle_paths",    # how the files of an upload name each other
     "server/draco_decode",    # the Draco helper and its answer's wire format
     "server/assimp_convert",  # the assimp helper program
