@@ -59,8 +59,9 @@ export class SheetPreview {
     this.onBusy(true);
     const started = performance.now();
     try {
-      // The atlas alone is cheap (no render), and asking for it with the
-      // very same body keeps its tiles and the image in step.
+      // The atlas alone is cheap (no render; a packed sheet's is drawn,
+      // since its trims are the pixels'), and asking for it with the very
+      // same body keeps its tiles and the image in step.
       const [blob, atlas] = await Promise.all([post('/render', body), post('/render?atlas=json', body, 'json')]);
       // Dropped if the sheet was switched off or changed meanwhile.
       const now = this.bodyFor();
