@@ -1,5 +1,7 @@
 #include "pipeline/sheet_answer.h"
 
+#include <chrono>
+
 #include "pipeline/encode.h"
 #include "pipeline/request.h"
 #include "render/plan/pass_plan.h"
@@ -79,8 +81,11 @@ bool needs_drawing(const Request& request) {
 }
 
 void pack_sheet_output(render::RenderOutput& out, nlohmann::ordered_json& atlas, const Request& request) {
+  const auto start = std::chrono::steady_clock::now();
   const render::SheetParams& sheet = *request.params.sheet;
   sheet_files::pack_sheet(out.image, atlas, {.padding = sheet.padding, .power_of_two = sheet.power_of_two});
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  out.timings.push_back({"pack", ms, false, ms});
 }
 
 Encoded encode_sheet_file(const render::RenderOutput* out, const Request& request,

@@ -39,7 +39,7 @@ bool needs_drawing(const Request& request);
 
 // sheet.pack: `out.image` trimmed and packed, and `atlas` rewritten to
 // match (sheet_files/packed_sheet.h), with the sheet's padding between
-// tiles and its power_of_two.
+// tiles and its power_of_two; its time goes into out.timings as `pack`.
 void pack_sheet_output(render::RenderOutput& out, nlohmann::ordered_json& atlas, const Request& request);
 
 // The answer's bytes when it is a file and not the image: the atlas as JSON
