@@ -40,9 +40,12 @@ async function upload(url, file) {
 // Every answer of one sheet request: its PNG decoded by Chromium, its atlas,
 // its .aseprite file and its Godot resource.
 async function sheetFiles(url, page, request) {
-  const [png, json, aseprite, godot] = await Promise.all([
-    post(`${url}/render`, request), post(`${url}/render?atlas=json`, request),
-    post(`${url}/render?atlas=aseprite`, request), post(`${url}/render?atlas=godot`, request)]);
+  // One at a time: each may draw the whole sheet, and the daemon's queue
+  // holds a few sheets' frames at most.
+  const png = await post(`${url}/render`, request);
+  const json = await post(`${url}/render?atlas=json`, request);
+  const aseprite = await post(`${url}/render?atlas=aseprite`, request);
+  const godot = await post(`${url}/render?atlas=godot`, request);
   const decoded = await page.evaluate(decodePngInPage, png.toString('base64'));
   return { image: { ...decoded, rgba: Buffer.from(decoded.rgba, 'base64') }, atlas: JSON.parse(json), aseprite,
     godot: godot.toString('utf8') };
