@@ -240,7 +240,11 @@ async function checkSheetFiles(page, requests) {
   const atlas = requests.find((r) => r.url.endsWith('?atlas=json') && r.body.sheet?.pack === true);
   check(atlas && await shown(page, '/sheet/power_of_two') && await page.locator('#sheet-tiles .tile').count() === 6,
     'pack sends sheet.pack with the sheet and its atlas; the tiles are still outlined');
+  // Back to the grid, and the sheet of it shown before the next check.
+  const packedSheets = Number(await page.getAttribute('#sheet-view', 'data-sheets'));
   await page.uncheck('[data-path="/sheet/pack"] input[type=checkbox]');
+  await page.waitForFunction((n) => Number(document.getElementById('sheet-view').dataset.sheets) > n
+    && !document.getElementById('sheet').classList.contains('busy'), packedSheets, { timeout: STEP_TIMEOUT_MS });
 }
 
 async function checkSheet(page, requests) {
