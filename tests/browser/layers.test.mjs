@@ -237,9 +237,12 @@ async function checkSheetFiles(page, requests) {
   await page.check('[data-path="/sheet/pack"] input[type=checkbox]');
   await page.waitForFunction((n) => Number(document.getElementById('sheet-view').dataset.sheets) > n
     && !document.getElementById('sheet').classList.contains('busy'), sheets, { timeout: STEP_TIMEOUT_MS });
-  const atlas = requests.find((r) => r.url.endsWith('?atlas=json') && r.body.sheet?.pack === true);
-  check(atlas && await shown(page, '/sheet/power_of_two') && await page.locator('#sheet-tiles .tile').count() === 6,
-    'pack sends sheet.pack with the sheet and its atlas; the tiles are still outlined');
+  const packed = requests.filter((r) => r.body.sheet?.pack === true);
+  const tiles = await page.locator('#sheet-tiles .tile').count();
+  check(packed.length === 1 && !packed[0].url.includes('?') && await shown(page, '/sheet/power_of_two') && tiles === 6
+        && /6 frames/.test(await page.textContent('#sheet-status')),
+  'pack sends sheet.pack; the atlas is read from the packed PNG (no second draw) and outlines its 6 frames',
+  `${packed.map((r) => r.url).join(', ')}; ${tiles} tiles`);
   // Back to the grid, and the sheet of it shown before the next check.
   const packedSheets = Number(await page.getAttribute('#sheet-view', 'data-sheets'));
   await page.uncheck('[data-path="/sheet/pack"] input[type=checkbox]');
