@@ -6,7 +6,7 @@ import { installKeyboard } from './keyboard.js';
 import {
   clone, effectiveParams, getPointer, paramsFromHash, paramsToHash, schemaDefaults, setPointer, withPreset,
 } from './params.js';
-import { ApiError, LostServer, RenderLoop } from './render_loop.js';
+import { ApiError, LostServer, RenderLoop, answerFailure } from './render_loop.js';
 import { AnimationPanel } from './animation_panel.js';
 import { SheetPreview } from './sheet_preview.js';
 import { bundlePaths, filesFromDrop, filesFromInput, uploadBundle } from './upload.js';
@@ -393,12 +393,53 @@ function syncSheet(shown) {
   $('sheet-toggle').checked = sheetOn();
   $('sheet-controls').hidden = !sheetOn();
   $('sheet-frame').hidden = !sheetOn() || !studio.sheetUrl;
+  for (const id of ['sheet-format', 'sheet-format-label']) $(id).hidden = !sheetOn();
   if (!sheetOn()) {
     $('sheet-status').textContent = '';
     $('sheet-error').textContent = '';
-    for (const id of ['sheet-download', 'atlas-download']) $(id).hidden = true;
+    for (const id of ['sheet-download', 'atlas-download', 'file-download']) $(id).hidden = true;
   }
   studio.sheetPanel.render(shown);
+}
+
+// The sheet's files besides its PNG and atlas, asked for with the body of
+// the sheet shown when their button is pressed. The Godot resource names
+// the PNG by the name the sheet's download gives it, so the two saved side
+// by side belong together.
+const SHEET_FILES = {
+  aseprite: { query: '?atlas=aseprite', name: 'toond-sheet.aseprite', label: 'Download .aseprite' },
+  godot: { query: '?atlas=godot&texture=toond-sheet.png', name: 'toond-sheet.tres', label: 'Download .tres' },
+};
+
+// The download buttons the format select asks for, once a sheet is shown.
+function syncSheetFormat() {
+  const format = $('sheet-format').value;
+  const shown = Boolean(studio.sheetUrl) && sheetOn();
+  $('sheet-download').hidden = !shown || format === 'aseprite';
+  $('atlas-download').hidden = !shown || format !== 'png';
+  const file = $('file-download');
+  file.hidden = !shown || format === 'png';
+  file.textContent = SHEET_FILES[format]?.label ?? '';
+}
+
+async function downloadSheetFile() {
+  const file = SHEET_FILES[$('sheet-format').value];
+  const body = studio.sheet.shownBody;
+  if (!file || !body) return;
+  $('file-download').disabled = true;
+  try {
+    const res = await fetch(`/render${file.query}`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body });
+    if (!res.ok) throw await answerFailure(res);
+    const link = document.createElement('a');
+    link.href = URL.createObjectURL(await res.blob());
+    link.download = file.name;
+    link.click();
+    setTimeout(() => URL.revokeObjectURL(link.href), 60000);
+  } catch (e) {
+    showSheetError(e);
+  } finally {
+    $('file-download').disabled = false;
+  }
 }
 
 function replaceUrl(key, url) {
@@ -443,13 +484,10 @@ function showSheet({ blob, atlas, ms }) {
   studio.sheetPanel.clearErrors();
   $('sheet-error').textContent = '';
   $('sheet-status').textContent = `${count} frames · ${size?.w}×${size?.h} px · ${Math.round(ms)} ms`;
-  const png = $('sheet-download');
-  png.href = studio.sheetUrl;
-  png.hidden = false;
-  const json = $('atlas-download');
-  json.href = replaceUrl('atlasUrl', URL.createObjectURL(new Blob([JSON.stringify(atlas, null, 2)],
+  $('sheet-download').href = studio.sheetUrl;
+  $('atlas-download').href = replaceUrl('atlasUrl', URL.createObjectURL(new Blob([JSON.stringify(atlas, null, 2)],
     { type: 'application/json' })));
-  json.hidden = false;
+  syncSheetFormat();
 }
 
 // The sheet's request: the page's state, except that an animated sheet
@@ -496,6 +534,8 @@ function installSheet() {
     // The single image is already current: the sheet need not wait for it.
     if (sheetOn()) studio.sheet.schedule(0);
   });
+  $('sheet-format').addEventListener('change', syncSheetFormat);
+  $('file-download').addEventListener('click', downloadSheetFile);
   $('sheet').hidden = false;
 }
 

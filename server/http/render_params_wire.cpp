@@ -88,6 +88,8 @@ SheetParams sheet_of(const json& s, const CameraParams& camera) {
   if (s.contains("pixel_art")) sheet.pixel_art = pixel_art_of(s.at("pixel_art"));
   sheet.animate = s.at("animate").get<bool>();
   sheet.frame_ms = s.at("frame_ms").get<int>();
+  sheet.pack = s.at("pack").get<bool>();
+  sheet.power_of_two = s.at("power_of_two").get<bool>();
   if (s.contains("animation")) {
     const json& a = s.at("animation");
     sheet.clip_list = a.is_array();

@@ -1,7 +1,8 @@
 // POST /render: JSON parameters → PNG; or multipart (bundle files + a
 // `params` part) to upload and render in one call. With `sheet`: a sprite
 // sheet with its atlas in a tEXt chunk, or (?atlas=json) the atlas alone, or
-// (sheet.animate) its frames as an animated WebP. The route parses the
+// (?atlas=aseprite, ?atlas=godot) an .aseprite file or a Godot SpriteFrames
+// resource, or (sheet.animate) its frames as an animated WebP. The route parses the
 // request, hands it to the render pipeline (server/pipeline/pipeline.h),
 // and answers; the result cache sits between the pipeline's resolve stage
 // and the rest.
@@ -15,6 +16,7 @@
 #include "http/render_params_wire.h"
 #include "http/request_limits.h"
 #include "http/routes.h"
+#include "http/sheet_query.h"
 #include "http/store_upload.h"
 #include "param_schema.h"
 #include "pipeline/pipeline.h"
@@ -119,19 +121,6 @@ nlohmann::json complete_request(const nlohmann::json& request, const RequestLimi
   return schema.validate_and_complete(proto::Presets::builtin().expand(request));
 }
 
-// `?atlas=json` answers a sheet's atlas alone, without rendering; the
-// query names nothing else.
-bool wants_atlas_only(const httplib::Request& req, const render::RenderParams& params) {
-  if (!req.has_param("atlas")) return false;
-  if (req.get_param_value("atlas") != "json") {
-    throw RequestError(400, "invalid_parameter", "?atlas: the only value is json (the sheet's atlas alone)", "?atlas");
-  }
-  if (!params.sheet) {
-    throw RequestError(400, "invalid_parameter", "?atlas=json needs a `sheet` in the parameters", "/sheet");
-  }
-  return true;
-}
-
 pipeline::Services services_of(ServiceContext& context) {
   return {context.library, context.renderer, context.clip_framings, context.limits.render, context.render_deadline};
 }
@@ -182,14 +171,19 @@ void register_render_routes(httplib::Server& server, ServiceContext& context) {
     scene::ModelPins pins(context.store);
     pipeline::Request request =
         pipeline::resolve(render_params_from_wire(completed), context.library, pins, context.limits.render);
-    if (wants_atlas_only(req, request.params)) {
+    request.answer = sheet_answer_of(req);
+    pipeline::check_sheet_answer(request);
+    if (!pipeline::needs_drawing(request)) {
       pipeline::Services services = services_of(context);
-      res.set_content(pipeline::sheet_atlas(request, services).dump(2), "application/json");
+      const pipeline::Encoded file = pipeline::sheet_file(request, services);
+      for (const auto& [name, value] : file.headers) res.set_header(name, value);
+      res.set_content(file.body, file.content_type);
       return;
     }
     // Completed parameters name content-addressed models (and bundle files
-    // inside them): they decide every byte of the answer.
-    const std::string cache_key = completed.dump();
+    // inside them): they decide every byte of the answer, with the query
+    // that says which file of the sheet it is.
+    const std::string cache_key = completed.dump() + sheet_answer_key(request.answer);
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
     pipeline::Rendered rendered = render_counted(std::move(request), req.remote_addr, context);
     answer_rendered(req, res, rendered, cache_key, started, context);

@@ -6,6 +6,7 @@
 #include "pipeline/atlas.h"
 #include "pipeline/plan.h"
 #include "pipeline/queue.h"
+#include "pipeline/sheet_answer.h"
 
 namespace toond::pipeline {
 namespace {
@@ -53,6 +54,10 @@ nlohmann::ordered_json sheet_atlas(const Request& request, Services& services) {
   return atlas_of(request, plan_frames(request, poses));
 }
 
+Encoded sheet_file(const Request& request, Services& services) {
+  return encode_sheet_file(nullptr, request, sheet_atlas(request, services));
+}
+
 Rendered render(Request request, const std::string& client, Services& services) {
   Rendered rendered;
   const auto posing = Clock::now();
@@ -77,7 +82,8 @@ Rendered render(Request request, const std::string& client, Services& services) 
   if (request.pins) request.pins->lease();
   Assembly assembly(request.params, request.layout);
   queue_frames(services.renderer, frame_jobs(request, poses, std::move(plans), schedule), services.deadline, assembly);
-  const render::RenderOutput out = assembly.finish();
+  render::RenderOutput out = assembly.finish();
+  if (atlas && request.params.sheet->pack) pack_sheet_output(out, *atlas, request);
   rendered.render_ms = render_thread_ms(out);
   rendered.queue_ms = std::max(0.0, ms_since(submitted) - rendered.render_ms);
 

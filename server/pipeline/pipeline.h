@@ -55,6 +55,10 @@ struct Rendered {
 // A sheet's atlas alone (?atlas=json): posed and framed, nothing drawn.
 nlohmann::ordered_json sheet_atlas(const Request& request, Services& services);
 
+// A sheet's atlas as the file the request asks for (?atlas=json or godot,
+// sheet_answer.h), when it needs nothing drawn (needs_drawing is false).
+Encoded sheet_file(const Request& request, Services& services);
+
 // Poses, prices, queues, assembles and encodes a resolved request. `client`
 // (the connection's address) takes turns with other clients in the queue.
 // Throws CostRefused over --max-render-cost, QueueFull when the lane is

@@ -20,6 +20,7 @@
 #include "help_checks.h"
 #include "param_schema.h"
 #include "reply.h"
+#include "sheet_output.h"
 #include "support/shared_models.h"
 
 namespace toond::cli {
@@ -681,6 +682,23 @@ TEST(Reply, PngSizeAndHelpers) {
   EXPECT_EQ(content_type_for("Textures/a.JPG"), "image/jpeg");
   EXPECT_EQ(content_type_for("spot.obj"), "text/plain");
   EXPECT_EQ(human_bytes(1500000), "1.5 MB");
+}
+
+// -o picks the sheet's file by its extension; anything else is the image.
+TEST(RenderAnswer, TheExtensionOfOutPicksTheSheetsFile) {
+  EXPECT_EQ(render_answer_for("walk.aseprite").query, "?atlas=aseprite");
+  EXPECT_EQ(render_answer_for("out/WALK.ASE").query, "?atlas=aseprite");
+  EXPECT_EQ(render_answer_for("walk.json").query, "?atlas=json");
+  const RenderAnswer godot = render_answer_for("sprites/walk cycle.tres");
+  EXPECT_EQ(godot.query, "?atlas=godot&texture=walk%20cycle.png") << "the PNG beside it, by name";
+  EXPECT_EQ(godot.companion_png, "sprites/walk cycle.png");
+  for (const char* image : {"walk.png", "turn.webp", "-", "noext"}) {
+    const RenderAnswer answer = render_answer_for(image);
+    EXPECT_EQ(answer.query, "") << image;
+    EXPECT_EQ(answer.companion_png, "") << image;
+    EXPECT_EQ(answer.content_types, (std::vector<std::string>{"image/png", "image/webp"})) << image;
+  }
+  EXPECT_EQ(percent_encoded("a b/ü"), "a%20b%2F%C3%BC");
 }
 
 }  // namespace

@@ -100,7 +100,12 @@ struct SheetParams {
   };
   std::optional<PixelArt> pixel_art;
   bool animate = false;  // answer an animated WebP of the frames instead of the sheet's PNG
-  int frame_ms = 100;    // how long each animation frame shows
+  // `sheet.pack`: each tile cut to its visible pixels and packed, `padding`
+  // apart (pipeline/sheet_answer.h); `power_of_two`: the packed sheet's
+  // sides powers of two.
+  bool pack = false;
+  bool power_of_two = false;
+  int frame_ms = 100;  // how long each animation frame shows
   // An animated sheet: per clip, per pitch, a row per direction (`frames`
   // yaws) of the clip's frames. Empty: a turntable.
   std::vector<SheetClip> clips;
