@@ -35,6 +35,7 @@ ROOMS = [
     "server/render/passes",   # one file per pass, and the object loop they share
     "server/render/run",      # the renderer running a plan, the render threads, the fair queue
     "server/render/atlas",    # a sheet's atlas (Aseprite JSON)
+    "server/render/vector",   # line drawings as vectors: exact visibility, strokes, SVG
     "server/pipeline",        # a request's way from parameters to the answer's bytes
     "server/http",            # parse, call the pipeline, answer
     "server/app",             # toond's main and its flags

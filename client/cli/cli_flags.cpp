@@ -46,7 +46,7 @@ void set_output(FlagTarget& t, Value v) {
 // parameters); a file name there is the old spelling of -o.
 void set_output_layer(FlagTarget& t, Value v) {
   if (v.empty() || v == "-" || v.find_first_of("./") != std::string::npos) {
-    throw UsageError("--output '" + v + "': --output names the layer (color, lines, depth, normal or id); " +
+    throw UsageError("--output '" + v + "': --output names the layer (color, lines, depth, normal, id or svg); " +
                      "the file is -o FILE or --out FILE");
   }
   t.options.sets.emplace_back("output", v);
@@ -124,13 +124,14 @@ const Flag kFlags[] = {
      }},
     {{"", "--output", "LAYER",
       "the layer to render: color (default), lines, depth,\n"
-      "normal or id; the same as --set output=LAYER"},
+      "normal, id or svg; the same as --set output=LAYER"},
      kRender,
      false,
      set_output_layer},
     {{"-o", "--out", "FILE",
-      "where to write the answer: a PNG, or an animated WebP\n"
-      "for sheet.animate (required; - for standard output)"},
+      "where to write the answer: a PNG, an animated WebP\n"
+      "for sheet.animate, or an SVG for output svg (a name\n"
+      "ending .svg asks for it; required; - for standard output)"},
      kRender,
      false,
      set_output},
@@ -201,7 +202,7 @@ joint and morph-target counts. A clip is rendered with
 with --set animation.range=START,END (see toon render --help).
 )"},
     {Verb::render, "render",
-     "[PATH.obj|PATH.m | --model ID] [--params FILE.json]\n[--set key.sub=value ...] -o OUT.png|OUT.webp",
+     "[PATH.obj|PATH.m | --model ID] [--params FILE.json]\n[--set key.sub=value ...] -o OUT.png|OUT.webp|OUT.svg",
      "render a PNG of a local OBJ, a stored model or the demo model",
      R"(Renders a PNG (POST /render), or an animated WebP when the parameters ask
 for sheet.animate. With PATH.obj (or a .m, .gltf or .glb model) the model and

@@ -187,12 +187,14 @@ int render(const Options& options) {
   if (!result) return conn.network_failure(result);
   if (result->status != 200) return error_reply(*result);
 
-  // A PNG, or with sheet.animate an animated WebP: written as it came,
-  // whatever -o is called (the caller names the file).
+  // A PNG, with sheet.animate an animated WebP, with output svg (or -o
+  // NAME.svg) an SVG: written as it came, whatever -o is called (the caller
+  // names the file).
   const std::string type = result->get_header_value("Content-Type");
   const bool webp = type.rfind("image/webp", 0) == 0;
-  if (type.rfind("image/png", 0) != 0 && !webp) {
-    std::cerr << "toon: expected image/png or image/webp from toond, got '" << type << "'\n";
+  const bool svg = type.rfind("image/svg+xml", 0) == 0;
+  if (type.rfind("image/png", 0) != 0 && !webp && !svg) {
+    std::cerr << "toon: expected image/png, image/webp or image/svg+xml from toond, got '" << type << "'\n";
     return 1;
   }
   if (std::string problem = output.commit(result->body); !problem.empty()) {
@@ -203,6 +205,8 @@ int render(const Options& options) {
   std::cerr << "toon: wrote " << (options.output == "-" ? "standard output" : options.output);
   if (webp)
     std::cerr << " (animated WebP";
+  else if (svg)
+    std::cerr << " (SVG line drawing";
   else if (auto size = png_size(result->body))
     std::cerr << " (" << size->first << "x" << size->second;
   else

@@ -290,6 +290,19 @@ TEST(RenderParams, RepeatedSetsMergeAndLaterOnesWin) {
                                "shading":{"steps":5}})"));
 }
 
+// -o NAME.svg asks for the lines as vectors; parameters that ask for
+// another output contradict it.
+TEST(RenderParams, AnSvgFileNameAsksForOutputSvg) {
+  EXPECT_EQ(build_render_params(parse({"render", "-o", "lines.SVG"}), schema()), json::parse(R"({"output":"svg"})"));
+  EXPECT_EQ(build_render_params(parse({"render", "-o", "x.svg", "--set", "svg.hidden=true"}), schema()),
+            json::parse(R"({"output":"svg","svg":{"hidden":true}})"));
+  EXPECT_EQ(build_render_params(parse({"render", "-o", "x.png"}), schema()), json::object());
+  const std::string message =
+      usage_error([&] { build_render_params(parse({"render", "-o", "x.svg", "--output", "lines"}), schema()); });
+  EXPECT_TRUE(contains(message, "x.svg")) << message;
+  EXPECT_TRUE(contains(message, "\"lines\"")) << message;
+}
+
 // Keys as users type them, driven by the schema: a path through objects
 // and through fields that are an object or a list of them
 // (sheet.animation), a comma list where the field takes a list, a name or

@@ -1,0 +1,63 @@
+#pragma once
+// What may hide a line, found by where it lies on screen: every triangle
+// that may hide something (ViewMesh::hides) with the planes that say which
+// points it hides, binned over a grid of screen cells by its box, so that
+// a segment meets only the triangles whose boxes share a cell with it.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/vector/screen_map.h"
+#include "render/vector/view_mesh.h"
+
+namespace toond::render::vector {
+
+// A triangle hides the points of view space that its cone from the eye
+// holds (the three planes through the eye and its sides, or along the view
+// direction in an orthographic view) and that lie behind its own plane: four
+// half-spaces, each plane.xyz · p + plane.w > 0 (unit normals, so the
+// value is a distance). Along a segment each is linear, so the part of it
+// a triangle hides is one interval.
+struct Occluder {
+  std::array<glm::dvec4, 4> planes;
+  std::array<std::uint32_t, 3> groups;  // its corners' welded positions
+  float near_depth = 0;                 // the least depth (-z) of its corners
+  glm::vec2 box_min{0.0f}, box_max{0.0f};  // on screen, pixels
+};
+
+class OccluderGrid {
+ public:
+  // `margin`: pixels around the image where lines are still drawn.
+  OccluderGrid(const ViewMesh& mesh, const ScreenMap& screen, double margin);
+
+  // The occluders whose boxes share a cell with the segment from p to q
+  // (pixels), each once, in `out` (cleared first).
+  void gather(glm::dvec2 p, glm::dvec2 q, std::vector<std::uint32_t>& out) const;
+  const Occluder& occluder(std::uint32_t i) const { return occluders_[i]; }
+  // The depth (-z) where the ray through pixel `px` first meets an
+  // occluder; negative where it meets none. `nearby`: scratch space.
+  double first_depth(glm::dvec2 px, const ScreenMap& screen, std::vector<std::uint32_t>& nearby) const;
+  std::size_t size() const { return occluders_.size(); }
+
+ private:
+  void bin(const ViewMesh& mesh);
+  // The cells' columns and rows a box covers, clamped to the grid.
+  glm::ivec4 cell_range(glm::dvec2 lo, glm::dvec2 hi) const;
+
+  std::vector<Occluder> occluders_;
+  std::vector<std::uint32_t> everywhere_;  // occluders reaching behind the eye: their boxes are unbounded
+  glm::dvec2 origin_{0.0};                 // the grid's corner, pixels
+  double cell_ = 1;                        // a cell's side, pixels
+  int columns_ = 1, rows_ = 1;
+  std::vector<std::uint32_t> cell_start_;  // per cell, into cell_items_ (one more at the end)
+  std::vector<std::uint32_t> cell_items_;
+};
+
+// The occluder of the triangle (a, b, c) in view space, or false where it
+// hides nothing (no area, or seen edge-on).
+bool make_occluder(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, bool orthographic,
+                   Occluder& out);
+
+}  // namespace toond::render::vector
