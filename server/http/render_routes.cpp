@@ -137,8 +137,8 @@ bool wants_atlas_only(const httplib::Request& req, const render::RenderParams& p
 }
 
 pipeline::Services services_of(ServiceContext& context) {
-  return {context.library,         context.renderer,         context.clip_framings,
-          context.limits.render,   context.render_deadline,  context.line_drawings};
+  return {context.library,       context.renderer,        context.clip_framings,
+          context.limits.render, context.render_deadline, context.line_drawings};
 }
 
 // The pipeline's render, with what /metrics counts of it.

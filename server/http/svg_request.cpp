@@ -18,7 +18,8 @@ std::vector<std::string> accepted_types(const std::string& accept) {
   for (std::string item; std::getline(items, item, ',');) {
     std::string lower;
     for (char c : item) {
-      if (!std::isspace(static_cast<unsigned char>(c))) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (!std::isspace(static_cast<unsigned char>(c)))
+        lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     }
     const std::size_t semicolon = lower.find(';');
     const std::size_t q = lower.find(";q=", semicolon == std::string::npos ? lower.size() : semicolon);
@@ -46,10 +47,9 @@ void check_svg_fields(const nlohmann::json& sent, const nlohmann::json& complete
   if (!svg && sent.is_object() && sent.contains("svg")) {
     const nlohmann::json& block = sent["svg"];
     const std::string path = block.is_object() && !block.empty() ? "/svg/" + block.begin().key() : "/svg";
-    throw RequestError(400, "invalid_parameter",
-                       path + ": applies to output svg alone; this request's output is " +
-                           completed.value("output", "color"),
-                       path);
+    throw RequestError(
+        400, "invalid_parameter",
+        path + ": applies to output svg alone; this request's output is " + completed.value("output", "color"), path);
   }
   if (svg && completed.contains("sheet")) {
     throw RequestError(400, "invalid_parameter", "/sheet: output svg draws one image, not a sheet", "/sheet");

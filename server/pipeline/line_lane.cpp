@@ -18,9 +18,9 @@ std::unique_ptr<LineLane::Turn> LineLane::wait_turn(const std::string& client, C
   if (!granted_.wait_until(lock, deadline, [&] { return ticket->granted; })) {
     ticket->abandoned = true;  // dropped when its turn comes
     --waiting_;
-    throw RequestError(503, "deadline_exceeded",
-                       "the line drawing did not start within the limit --render-timeout = " +
-                           std::to_string(limit.count()) + " ms");
+    throw RequestError(
+        503, "deadline_exceeded",
+        "the line drawing did not start within the limit --render-timeout = " + std::to_string(limit.count()) + " ms");
   }
   --waiting_;
   return std::make_unique<Turn>(this);

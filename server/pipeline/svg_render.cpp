@@ -47,9 +47,9 @@ std::string stats_header(const render::vector::LineStats& s) {
 }
 
 // The frame drawn as vectors, its objects in their poses.
-render::vector::LineDrawing draw_frame(const Request& request, const ObjectPoses& poses,
-                                       const render::FramePlan& plan, render::vector::EdgeCache& edges,
-                                       Clock::time_point deadline, std::vector<render::LodUse>& lods) {
+render::vector::LineDrawing draw_frame(const Request& request, const ObjectPoses& poses, const render::FramePlan& plan,
+                                       render::vector::EdgeCache& edges, Clock::time_point deadline,
+                                       std::vector<render::LodUse>& lods) {
   std::vector<render::FrameObject> objects;
   std::vector<std::shared_ptr<const scene::Model>> models;
   for (std::size_t i = 0; i < request.objects.size(); ++i) {

@@ -82,7 +82,8 @@ class SvgOutput : public SharedDaemonTest {
   static SvgFile svg_of(const json& params) {
     auto res = post(params);
     if (!res || res->status != 200) {
-      ADD_FAILURE() << params.dump() << " answered " << (res ? std::to_string(res->status) + ": " + res->body : "nothing");
+      ADD_FAILURE() << params.dump() << " answered "
+                    << (res ? std::to_string(res->status) + ": " + res->body : "nothing");
       return {};
     }
     EXPECT_EQ(res->get_header_value("Content-Type"), "image/svg+xml");
@@ -146,8 +147,8 @@ void expect_lines_match(const SvgFile& svg, const std::vector<ExactLine>& lines,
   for (std::size_t i = 0; i < lines.size(); ++i) {
     if (sampled[i].seen_share() < 0.5) continue;
     const double covered = covered_share(sampled[i], segments_of(all_strokes(svg, {lines[i].layer})), 1.0);
-    EXPECT_GE(covered, 0.98) << what << ": line " << i << " is " << 100 * sampled[i].seen_share()
-                             << " % seen but only " << 100 * covered << " % of that drawn in " << lines[i].layer;
+    EXPECT_GE(covered, 0.98) << what << ": line " << i << " is " << 100 * sampled[i].seen_share() << " % seen but only "
+                             << 100 * covered << " % of that drawn in " << lines[i].layer;
   }
   std::size_t hidden_samples = 0, hidden_drawn = 0;
   for (const SampledLine& line : sampled) {
@@ -316,7 +317,9 @@ TEST_F(SvgOutput, ATorusContourIsItsSilhouette) {
   for (const char* projection : {"perspective", "orthographic"}) {
     for (const char* method : {"wireframe", "hull"}) {
       const std::string what = std::string(projection) + ", " + method;
-      const SvgFile svg = svg_of({{"model", id}, {"output", "svg"}, {"outline", {{"method", method}}},
+      const SvgFile svg = svg_of({{"model", id},
+                                  {"output", "svg"},
+                                  {"outline", {{"method", method}}},
                                   {"camera", {{"yaw", 20}, {"pitch", 35}, {"projection", projection}}}});
       ASSERT_FALSE(svg.camera.is_null()) << what;
       const MetaCamera camera = camera_from_metadata(svg.camera);
@@ -358,7 +361,8 @@ struct InkAgreement {
 std::vector<bool> ink_of(const image::Image& image) {
   std::vector<bool> ink(static_cast<std::size_t>(image.width) * image.height);
   for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width; ++x) ink[static_cast<std::size_t>(y) * image.width + x] = image.pixel(x, y)[3] >= 128;
+    for (int x = 0; x < image.width; ++x)
+      ink[static_cast<std::size_t>(y) * image.width + x] = image.pixel(x, y)[3] >= 128;
   }
   return ink;
 }
@@ -475,8 +479,8 @@ TEST_F(SvgOutput, AcceptHeaderAsksForSvgWhenNoOutputIsGiven) {
 TEST_F(SvgOutput, HiddenLayerHoldsTheHiddenEdges) {
   const Box cube{{-1, -1, -1}, {1, 1, 1}};
   const std::string id = upload(boxes_obj({cube}), "cube.obj");
-  const SvgFile svg = svg_of({{"model", id}, {"output", "svg"}, {"svg", {{"hidden", true}}},
-                              {"camera", {{"yaw", 30}, {"pitch", 25}}}});
+  const SvgFile svg =
+      svg_of({{"model", id}, {"output", "svg"}, {"svg", {{"hidden", true}}}, {"camera", {{"yaw", 30}, {"pitch", 25}}}});
   ASSERT_EQ(svg.layers.count("hidden"), 1u);
   const SvgLayer& hidden = svg.layers.at("hidden");
   EXPECT_TRUE(hidden.attributes.count("stroke-dasharray"));

@@ -297,8 +297,9 @@ TEST(RenderParams, AnSvgFileNameAsksForOutputSvg) {
   EXPECT_EQ(build_render_params(parse({"render", "-o", "x.svg", "--set", "svg.hidden=true"}), schema()),
             json::parse(R"({"output":"svg","svg":{"hidden":true}})"));
   EXPECT_EQ(build_render_params(parse({"render", "-o", "x.png"}), schema()), json::object());
-  const std::string message =
-      usage_error([&] { build_render_params(parse({"render", "-o", "x.svg", "--output", "lines"}), schema()); });
+  const std::string message = usage_error([&] {
+    build_render_params(parse({"render", "-o", "x.svg", "--output", "lines"}), schema());
+  });
   EXPECT_TRUE(contains(message, "x.svg")) << message;
   EXPECT_TRUE(contains(message, "\"lines\"")) << message;
 }

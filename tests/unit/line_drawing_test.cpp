@@ -98,8 +98,8 @@ TEST(LineDrawingPenOrder, ShortensTravelAndKeepsEveryStroke) {
   EXPECT_LT(pen_up_travel(ordered), 0.25 * before);
   // The same strokes, some turned end for end.
   const auto key = [](const Polyline& p) {
-    const auto [lo, hi] = std::minmax({std::pair(p.points.front().x, p.points.front().y),
-                                       std::pair(p.points.back().x, p.points.back().y)});
+    const auto [lo, hi] = std::minmax(
+        {std::pair(p.points.front().x, p.points.front().y), std::pair(p.points.back().x, p.points.back().y)});
     return std::pair(lo, hi);
   };
   std::vector<std::pair<std::pair<double, double>, std::pair<double, double>>> a, b;

@@ -101,12 +101,12 @@ LineDrawing draw_lines(const FramePlan& plan, const FrameContext& frame,
   const ScreenMap screen = ScreenMap::of(plan.camera.projection, plan.params.width, plan.params.height);
   const double margin = drawing.svg.stroke_px + 1.0;
   const OccluderGrid grid(mesh, screen, margin);
-  const Visibility visibility = split_by_visibility(
-      candidates.segments, mesh, grid, screen,
-      {.hidden_pieces = choice.keep_hidden, .margin_px = margin, .deadline = deadline});
+  const Visibility visibility =
+      split_by_visibility(candidates.segments, mesh, grid, screen,
+                          {.hidden_pieces = choice.keep_hidden, .margin_px = margin, .deadline = deadline});
   // Judged just past the stroke's edge, where the hull's ring would show.
-  const std::vector<Piece> drawn =
-      keep_drawn_contours(visibility.pieces, candidates.segments, grid, screen, choice, 0.5 * drawing.svg.stroke_px + 1.0);
+  const std::vector<Piece> drawn = keep_drawn_contours(visibility.pieces, candidates.segments, grid, screen, choice,
+                                                       0.5 * drawing.svg.stroke_px + 1.0);
   const LayerPieces pieces = layer_pieces(candidates, drawn, screen);
   for (LineKind kind : kAllLineKinds) {
     const std::size_t k = static_cast<std::size_t>(kind);

@@ -13,7 +13,7 @@ enum class LineKind : std::uint8_t {
 };
 inline constexpr std::size_t kLineKinds = 4;
 inline constexpr std::array<LineKind, kLineKinds> kAllLineKinds{LineKind::Silhouette, LineKind::Crease,
-                                                                 LineKind::Intersection, LineKind::Boundary};
+                                                                LineKind::Intersection, LineKind::Boundary};
 
 // The layer's id in the SVG: silhouette, creases, intersections, boundary.
 const char* layer_id(LineKind kind);

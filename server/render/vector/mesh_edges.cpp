@@ -66,8 +66,7 @@ ModelEdges model_edges(const scene::Model& model, std::size_t level) {
   return edges;
 }
 
-std::shared_ptr<const ModelEdges> EdgeCache::get(const std::shared_ptr<const scene::Model>& model,
-                                                 std::size_t level) {
+std::shared_ptr<const ModelEdges> EdgeCache::get(const std::shared_ptr<const scene::Model>& model, std::size_t level) {
   {
     std::lock_guard lock(mutex_);
     std::erase_if(recent_, [](const Entry& e) { return e.model.expired(); });

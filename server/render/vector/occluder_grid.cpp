@@ -38,8 +38,7 @@ bool screen_box(const glm::dvec3 (&v)[3], const ScreenMap& screen, glm::dvec2& l
 
 }  // namespace
 
-bool make_occluder(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, bool orthographic,
-                   Occluder& out) {
+bool make_occluder(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, bool orthographic, Occluder& out) {
   const glm::dvec3 v[3] = {a, b, c};
   const glm::dvec3 n = glm::cross(b - a, c - a);
   const double area2 = glm::length(n);
@@ -156,7 +155,8 @@ void OccluderGrid::gather(glm::dvec2 p, glm::dvec2 q, std::vector<std::uint32_t>
       x0 = p.x + (q.x - p.x) * (std::max(y0, p.y) - p.y) / (q.y - p.y);
       x1 = p.x + (q.x - p.x) * (std::min(y1, q.y) - p.y) / (q.y - p.y);
     }
-    const glm::ivec4 cols = cell_range(glm::dvec2(std::min(x0, x1) - 1e-6, y0), glm::dvec2(std::max(x0, x1) + 1e-6, y0));
+    const glm::ivec4 cols =
+        cell_range(glm::dvec2(std::min(x0, x1) - 1e-6, y0), glm::dvec2(std::max(x0, x1) + 1e-6, y0));
     for (int col = cols.x; col <= cols.z; ++col) {
       const std::size_t cell = static_cast<std::size_t>(row) * columns_ + col;
       out.insert(out.end(), cell_items_.begin() + cell_start_[cell], cell_items_.begin() + cell_start_[cell + 1]);

@@ -22,8 +22,8 @@ namespace toond::render::vector {
 // a triangle hides is one interval.
 struct Occluder {
   std::array<glm::dvec4, 4> planes;
-  std::array<std::uint32_t, 3> groups;  // its corners' welded positions
-  float near_depth = 0;                 // the least depth (-z) of its corners
+  std::array<std::uint32_t, 3> groups;     // its corners' welded positions
+  float near_depth = 0;                    // the least depth (-z) of its corners
   glm::vec2 box_min{0.0f}, box_max{0.0f};  // on screen, pixels
 };
 
@@ -57,7 +57,6 @@ class OccluderGrid {
 
 // The occluder of the triangle (a, b, c) in view space, or false where it
 // hides nothing (no area, or seen edge-on).
-bool make_occluder(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, bool orthographic,
-                   Occluder& out);
+bool make_occluder(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, bool orthographic, Occluder& out);
 
 }  // namespace toond::render::vector

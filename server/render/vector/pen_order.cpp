@@ -25,7 +25,8 @@ class EntryGrid {
     }
     origin_ = lo;
     const glm::dvec2 extent = glm::max(hi - lo, glm::dvec2(1.0));
-    cell_ = std::max(std::sqrt(extent.x * extent.y / static_cast<double>(std::max<std::size_t>(entries_.size(), 1))), 1.0);
+    cell_ =
+        std::max(std::sqrt(extent.x * extent.y / static_cast<double>(std::max<std::size_t>(entries_.size(), 1))), 1.0);
     columns_ = static_cast<int>(extent.x / cell_) + 1;
     rows_ = static_cast<int>(extent.y / cell_) + 1;
     cells_.resize(static_cast<std::size_t>(columns_) * rows_);

@@ -51,8 +51,8 @@ void add_pieces(std::uint32_t segment, double lo, double hi, const std::vector<s
 // The stretches of one segment, each hidden one the union of what its
 // occluders hide, in `out`.
 std::size_t split_segment(std::uint32_t index, const Segment& s, const ViewMesh& mesh, const OccluderGrid& grid,
-                          const ScreenMap& screen, const VisibilityOptions& options,
-                          std::vector<std::uint32_t>& nearby, std::vector<Piece>& out) {
+                          const ScreenMap& screen, const VisibilityOptions& options, std::vector<std::uint32_t>& nearby,
+                          std::vector<Piece>& out) {
   const auto [lo, hi] = clip_to_view(s.a, s.b, screen, options.margin_px);
   if (!(lo < hi)) return 0;
   if (s.surely_hidden) {
@@ -132,8 +132,8 @@ Visibility split_by_visibility(const std::vector<Segment>& segments, const ViewM
     }
     std::vector<std::uint32_t> nearby;
     for (std::size_t i = first; i < end; ++i) {
-      tests[run] += split_segment(static_cast<std::uint32_t>(i), segments[i], mesh, grid, screen, options, nearby,
-                                  pieces[run]);
+      tests[run] +=
+          split_segment(static_cast<std::uint32_t>(i), segments[i], mesh, grid, screen, options, nearby, pieces[run]);
     }
   });
   Visibility visibility;

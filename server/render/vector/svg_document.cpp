@@ -12,8 +12,8 @@ namespace {
 void append_coordinate(std::string& out, double value) {
   const double rounded = std::round(value * 100.0) / 100.0;
   char buffer[64];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, rounded == 0 ? 0.0 : rounded,
-                                 std::chars_format::fixed, 2).ptr;
+  const auto end =
+      std::to_chars(buffer, buffer + sizeof buffer, rounded == 0 ? 0.0 : rounded, std::chars_format::fixed, 2).ptr;
   std::string_view text(buffer, static_cast<std::size_t>(end - buffer));
   while (text.back() == '0') text.remove_suffix(1);
   if (text.back() == '.') text.remove_suffix(1);
@@ -107,7 +107,8 @@ std::string write_svg(const SvgDrawing& drawing) {
   std::string out =
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" "
-      "version=\"1.1\" width=\"" + w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+      "version=\"1.1\" width=\"" +
+      w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
   out += "<metadata id=\"toond-camera\">" + camera_json(drawing) + "</metadata>\n";
   if (drawing.hidden) append_layer(out, "hidden", *drawing.hidden, drawing, true);
   for (LineKind kind : kAllLineKinds) {

@@ -19,7 +19,8 @@ std::span<const glm::vec3> positions_of(const FrameObject& object, std::vector<g
   posed.resize(mesh.positions.size());
   const scene::PoseSums& sums = *object.pose->cpu_sums;
   for_each_run(posed.size(), kRun, [&](std::size_t, std::size_t first, std::size_t end) {
-    for (std::size_t v = first; v < end; ++v) posed[v] = scene::pose_vertex(mesh, *object.model.rig, sums, v, false).position;
+    for (std::size_t v = first; v < end; ++v)
+      posed[v] = scene::pose_vertex(mesh, *object.model.rig, sums, v, false).position;
   });
   return posed;
 }
@@ -102,7 +103,8 @@ ViewMesh view_mesh_of(const FrameContext& frame, std::span<const std::shared_ptr
   ViewMesh mesh;
   mesh.orthographic = frame.orthographic();
   mesh.tolerance = 1e-6 * std::max(static_cast<double>(frame.scene.bounds.radius()), 1e-300);
-  for (std::size_t i = 0; i < frame.objects.size(); ++i) add_object(frame, i, edges.get(models[i], frame.lod_of(i)), mesh);
+  for (std::size_t i = 0; i < frame.objects.size(); ++i)
+    add_object(frame, i, edges.get(models[i], frame.lod_of(i)), mesh);
   face_triangles(mesh);
   return mesh;
 }

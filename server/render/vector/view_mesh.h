@@ -41,9 +41,9 @@ struct ViewMesh {
   std::vector<glm::dvec3> points;     // every object's vertices, view space
   std::vector<std::uint32_t> groups;  // per point: its welded position, numbered over every object
   std::uint32_t group_count = 0;
-  std::vector<std::uint32_t> corners; // three points a triangle, every object's drawn level
-  std::vector<Facing> facing;         // per triangle
-  std::vector<std::uint8_t> hides;    // per triangle: 1 where it may hide something
+  std::vector<std::uint32_t> corners;  // three points a triangle, every object's drawn level
+  std::vector<Facing> facing;          // per triangle
+  std::vector<std::uint8_t> hides;     // per triangle: 1 where it may hide something
   std::vector<ViewObject> objects;
   // How far a point may stray from a surface and still count as on it: a
   // millionth of the scene's size (floats' rounding of the vertices is ten
