@@ -126,38 +126,68 @@ std::vector<SvgStroke> all_strokes(const SvgFile& svg, const std::vector<std::st
 const std::vector<std::string> kVisibleLayers = {"silhouette", "creases", "intersections", "boundary"};
 
 // The exact lines of a scene laid over a drawing: every drawn point within
-// 1 px of a seen stretch of one, every seen line (more than half of it
-// seen) at least 98 % covered by its layer's strokes within 1 px, and no
-// stroke within 1 px of a hidden stretch that lies 2 px or more from every
-// seen one.
+// 1 px of a seen stretch of one, every line that ought to be drawn (more
+// than half of it) at least 98 % covered by its layer's strokes within
+// 1 px, and no stroke within 1 px of a hidden stretch that lies 2 px or
+// more from every seen one. A silhouette ought to be drawn where it is the
+// outline, as the default hull draws it: the ray 2 px beyond it (half the
+// stroke and a pixel), away from its face turned toward the eye, meets
+// nothing (`meets`); elsewhere it is not drawn.
 struct ExactLine {
   glm::dvec3 a, b;
-  std::string layer;  // where it belongs while seen
+  std::string layer;     // where it belongs while seen
+  glm::dvec3 face{0.0};  // a silhouette's: a point of its face turned toward the eye
 };
+using Meets = std::function<bool(glm::dvec2)>;
+
+// Per sample of a line, whether it ought to be drawn.
+std::vector<bool> ought_drawn(const ExactLine& line, const SampledLine& sampled, const MetaCamera& camera,
+                              const Meets& meets) {
+  std::vector<bool> ought = sampled.seen;
+  if (line.layer != "silhouette") return ought;
+  const glm::dvec2 a = camera.project(line.a), b = camera.project(line.b);
+  glm::dvec2 away = glm::normalize(glm::dvec2(a.y - b.y, b.x - a.x));
+  if (glm::dot(away, camera.project(line.face) - a) > 0) away = -away;
+  for (std::size_t k = 0; k < ought.size(); ++k) ought[k] = ought[k] && !meets(sampled.at[k] + 2.0 * away);
+  return ought;
+}
+
 void expect_lines_match(const SvgFile& svg, const std::vector<ExactLine>& lines,
-                        const std::function<bool(const glm::dvec3&)>& seen, const std::string& what) {
+                        const std::function<bool(const glm::dvec3&)>& seen, const Meets& meets,
+                        const std::string& what) {
   const MetaCamera camera = camera_from_metadata(svg.camera);
-  std::vector<SampledLine> sampled;
-  for (const ExactLine& line : lines) sampled.push_back(sample_line(camera, line.a, line.b, seen, 400));
-  const Segments seen_parts = seen_stretches(sampled);
+  std::vector<SampledLine> sampled, ought;
+  for (const ExactLine& line : lines) {
+    sampled.push_back(sample_line(camera, line.a, line.b, seen, 400));
+    ought.push_back(sampled.back());
+    ought.back().seen = ought_drawn(line, sampled.back(), camera, meets);
+  }
+  const Segments seen_parts = seen_stretches(sampled), ought_parts = seen_stretches(ought);
   const Segments drawn = segments_of(all_strokes(svg, kVisibleLayers));
   const Stray stray = stray_of(points_along(all_strokes(svg, kVisibleLayers), 0.5), seen_parts, 1.0);
   EXPECT_EQ(stray.outliers, 0u) << what << ": of " << stray.points << " drawn points " << stray.outliers
                                 << " lie over 1 px from every seen line, the farthest " << stray.worst << " px";
+  std::size_t not_outline = 0, not_outline_drawn = 0, hidden_samples = 0, hidden_drawn = 0;
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (sampled[i].seen_share() < 0.5) continue;
-    const double covered = covered_share(sampled[i], segments_of(all_strokes(svg, {lines[i].layer})), 1.0);
-    EXPECT_GE(covered, 0.98) << what << ": line " << i << " is " << 100 * sampled[i].seen_share() << " % seen but only "
-                             << 100 * covered << " % of that drawn in " << lines[i].layer;
-  }
-  std::size_t hidden_samples = 0, hidden_drawn = 0;
-  for (const SampledLine& line : sampled) {
-    for (std::size_t k = 0; k < line.at.size(); ++k) {
-      if (line.seen[k] || distance_to(seen_parts, line.at[k]) < 2.0) continue;
-      ++hidden_samples;
-      hidden_drawn += distance_to(drawn, line.at[k]) <= 1.0;
+    if (ought[i].seen_share() >= 0.5) {
+      const double covered = covered_share(ought[i], segments_of(all_strokes(svg, {lines[i].layer})), 1.0);
+      EXPECT_GE(covered, 0.98) << what << ": line " << i << " ought to be drawn along " << 100 * ought[i].seen_share()
+                               << " % but only " << 100 * covered << " % of that is, in " << lines[i].layer;
+    }
+    for (std::size_t k = 0; k < sampled[i].at.size(); ++k) {
+      const glm::dvec2 p = sampled[i].at[k];
+      if (sampled[i].seen[k] && !ought[i].seen[k] && distance_to(ought_parts, p) >= 3.0) {
+        ++not_outline;
+        not_outline_drawn += distance_to(drawn, p) <= 1.0;
+      }
+      if (!sampled[i].seen[k] && distance_to(seen_parts, p) >= 2.0) {
+        ++hidden_samples;
+        hidden_drawn += distance_to(drawn, p) <= 1.0;
+      }
     }
   }
+  EXPECT_EQ(not_outline_drawn, 0u) << what << ": " << not_outline_drawn << " of " << not_outline
+                                   << " seen silhouette samples off the outline (3 px or more from it) are drawn";
   EXPECT_EQ(hidden_drawn, 0u) << what << ": " << hidden_drawn << " of " << hidden_samples
                               << " hidden samples (2 px or more from any seen line) have a stroke within 1 px";
 }
@@ -169,14 +199,25 @@ std::vector<ExactLine> box_lines(const Box& box, const MetaCamera& camera) {
   const glm::dvec3 centre = 0.5 * (box.lo + box.hi);
   for (const auto& [a, b] : box_edges(box)) {
     int turned_away = 0;
+    glm::dvec3 face(0.0);
+    // The edge's two faces: in the planes across the two axes it does not run along.
     for (int k = 0; k < 3; ++k) {
-      if (a[k] != b[k]) continue;  // the edge runs along axis k
+      if (a[k] != b[k]) continue;
       glm::dvec3 n(0.0);
       n[k] = a[k] > centre[k] ? 1.0 : -1.0;
       const glm::dvec3 toward_eye = camera.orthographic ? -camera.forward : camera.eye - a;
-      turned_away += glm::dot(n, toward_eye) <= 0;
+      if (glm::dot(n, toward_eye) <= 0) {
+        ++turned_away;
+        continue;
+      }
+      // That face's middle along the edge: the edge's middle moved across
+      // the face (along its other axis) to the box's centre.
+      face = 0.5 * (a + b);
+      for (int j = 0; j < 3; ++j) {
+        if (j != k && a[j] == b[j]) face[j] = centre[j];
+      }
     }
-    lines.push_back({a, b, turned_away == 1 ? "silhouette" : "creases"});
+    lines.push_back({a, b, turned_away == 1 ? "silhouette" : "creases", face});
   }
   return lines;
 }
@@ -193,14 +234,16 @@ TEST_F(SvgOutput, ACubesNineVisibleEdgesAndNotItsThreeHiddenOnes) {
     const auto seen = [&](const glm::dvec3& p) { return seen_among_boxes(camera, {cube}, p); };
     std::size_t outline = 0, inner = 0, hidden = 0;
     for (const ExactLine& line : lines) {
+      // A hidden edge's ends may be seen (a corner on the outline).
       const double share = sample_line(camera, line.a, line.b, seen, 100).seen_share();
-      if (share == 0) ++hidden;
-      if (share == 1) ++(line.layer == "silhouette" ? outline : inner);
+      if (share < 0.05) ++hidden;
+      if (share > 0.95) ++(line.layer == "silhouette" ? outline : inner);
     }
     ASSERT_EQ(outline, 6u) << projection;
     ASSERT_EQ(inner, 3u) << projection;
     ASSERT_EQ(hidden, 3u) << projection;
-    expect_lines_match(svg, lines, seen, std::string("cube, ") + projection);
+    const Meets meets = [&](glm::dvec2 px) { return ray_meets_boxes(camera, {cube}, px); };
+    expect_lines_match(svg, lines, seen, meets, std::string("cube, ") + projection);
     EXPECT_LE(svg.path_data.size(), 6u) << projection;
     EXPECT_EQ(svg.layers.at("silhouette").attributes.at("inkscape:groupmode"), "layer");
     EXPECT_EQ(svg.layers.at("silhouette").strokes.size(), 1u) << projection << ": the outline is one loop";
@@ -226,7 +269,8 @@ TEST_F(SvgOutput, ABoxInFrontHidesTheLinesBehindIt) {
     std::vector<ExactLine> lines = box_lines(big, camera);
     const std::vector<ExactLine> front = box_lines(small, camera);
     lines.insert(lines.end(), front.begin(), front.end());
-    expect_lines_match(svg, lines, seen, "yaw " + std::to_string(yaw));
+    const Meets meets = [&](glm::dvec2 px) { return ray_meets_boxes(camera, {big, small}, px); };
+    expect_lines_match(svg, lines, seen, meets, "yaw " + std::to_string(yaw));
     // Inside the small box's outline (1.5 px in from it), every drawn point
     // is the small box's own.
     std::vector<SampledLine> own;
@@ -273,7 +317,8 @@ TEST_F(SvgOutput, TwoCrossingBoxesDrawTheirSeam) {
     EXPECT_GE(seams_seen, 2u) << projection << ": the front square's near sides show";
     // The rod's long edges run through the big box: the stretch inside it
     // is no line (ray casting sees it hidden; it lies inside a solid).
-    expect_lines_match(svg, lines, seen, std::string("crossing boxes, ") + projection);
+    const Meets meets = [&](glm::dvec2 px) { return ray_meets_boxes(camera, {big, rod}, px); };
+    expect_lines_match(svg, lines, seen, meets, std::string("crossing boxes, ") + projection);
     EXPECT_FALSE(svg.layers.at("intersections").strokes.empty());
   }
 }
@@ -283,14 +328,25 @@ TEST_F(SvgOutput, TwoCrossingBoxesDrawTheirSeam) {
 // every seen piece of it is the silhouette layer; with the default hull,
 // those where nothing lies just beyond them (the outer outline and the
 // hole's), not those over the torus's own far side.
+// Within kCuspReach px of a seen cusp the contour of the facets parts from
+// the smooth one (a 256 × 128 torus: 1.9 px at most, 3.4 at 128 × 64):
+// there neither is held to the other.
+constexpr double kCuspReach = 4.0;
 struct TorusContour {
-  std::vector<glm::dvec2> seen, outline, over_itself;
+  std::vector<glm::dvec2> seen, outline, over_itself, cusps;
 };
 TorusContour torus_contour_seen(const MetaCamera& camera, const Torus& torus, double reach_px) {
   TorusContour c;
-  for (const glm::dvec3& p : torus_contour(camera, torus, 4000)) {
+  const TorusContourPoints contour = torus_contour(camera, torus, 4000);
+  for (const glm::dvec3& p : contour.cusps) {
+    if (seen_on_torus(camera, torus, p)) c.cusps.push_back(camera.project(p));
+  }
+  for (const glm::dvec3& p : contour.points) {
     if (!seen_on_torus(camera, torus, p)) continue;
     const glm::dvec2 at = camera.project(p);
+    bool near_cusp = false;
+    for (const glm::dvec2& cusp : c.cusps) near_cusp |= glm::length(cusp - at) < kCuspReach;
+    if (near_cusp) continue;
     const glm::dvec2 out = camera.project(p + 1e-3 * torus_normal(torus, p)) - at;
     c.seen.push_back(at);
     const bool beyond = ray_meets_torus(camera, torus, at + reach_px * out / glm::length(out));
@@ -313,21 +369,29 @@ double share_within(const std::vector<glm::dvec2>& points, const Segments& drawn
 
 TEST_F(SvgOutput, ATorusContourIsItsSilhouette) {
   const Torus torus;
-  const std::string id = upload(torus_obj(torus, 128, 64), "torus.obj");
+  const std::string id = upload(torus_obj(torus, 256, 128), "torus.obj");
   for (const char* projection : {"perspective", "orthographic"}) {
     for (const char* method : {"wireframe", "hull"}) {
       const std::string what = std::string(projection) + ", " + method;
       const SvgFile svg = svg_of({{"model", id},
                                   {"output", "svg"},
                                   {"outline", {{"method", method}}},
-                                  {"camera", {{"yaw", 20}, {"pitch", 35}, {"projection", projection}}}});
+                                  {"camera", {{"yaw", 20}, {"pitch", 20}, {"projection", projection}}}});
       ASSERT_FALSE(svg.camera.is_null()) << what;
       const MetaCamera camera = camera_from_metadata(svg.camera);
       const TorusContour contour = torus_contour_seen(camera, torus, 2.0);
       ASSERT_GT(contour.outline.size(), 2000u) << what;
       ASSERT_GT(contour.over_itself.size(), 200u) << what << ": the view shows contour over the torus itself";
       const std::vector<SvgStroke>& strokes = svg.layers.at("silhouette").strokes;
-      const Stray stray = stray_of(points_along(strokes, 0.5), as_points(contour.seen), 1.0);
+      std::vector<glm::dvec2> clear_of_cusps;
+      for (const glm::dvec2& p : points_along(strokes, 0.5)) {
+        if (distance_to(as_points(contour.cusps), p) >= kCuspReach) clear_of_cusps.push_back(p);
+      }
+      const std::size_t drawn_points = points_along(strokes, 0.5).size();
+      EXPECT_GT(clear_of_cusps.size(), drawn_points * 95 / 100) << what << ": the cusps' neighbourhoods are small";
+      std::cout << what << ": " << contour.cusps.size() << " seen cusps; " << drawn_points - clear_of_cusps.size()
+                << " of " << drawn_points << " drawn points within " << kCuspReach << " px of one\n";
+      const Stray stray = stray_of(clear_of_cusps, as_points(contour.seen), 1.0);
       EXPECT_EQ(stray.outliers, 0u) << what << ": of " << stray.points << " drawn points " << stray.outliers
                                     << " lie over 1 px from the seen contour, the farthest " << stray.worst << " px";
       const Segments drawn = segments_of(strokes);
@@ -398,13 +462,15 @@ InkAgreement agreement(const image::Image& svg_raster, const image::Image& png) 
   return out;
 }
 
-bool have_rsvg() { return run_process({"/bin/sh", "-c", "command -v rsvg-convert"}).status == 0; }
+constexpr const char* kRsvgConvert = "/usr/bin/rsvg-convert";
+
+bool have_rsvg() { return std::filesystem::exists(kRsvgConvert); }
 
 // The SVG through librsvg's rsvg-convert, at its own size.
 image::Image rasterise(const std::string& svg) {
   const auto dir = make_temp_dir("toond-svg");
   std::ofstream(dir / "lines.svg", std::ios::binary) << svg;
-  const auto r = run_process({"rsvg-convert", "-o", (dir / "lines.png").string(), (dir / "lines.svg").string()});
+  const auto r = run_process({kRsvgConvert, "-o", (dir / "lines.png").string(), (dir / "lines.svg").string()});
   EXPECT_EQ(r.status, 0) << r.err;
   std::ifstream in(dir / "lines.png", std::ios::binary);
   const std::string png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -490,7 +556,7 @@ TEST_F(SvgOutput, HiddenLayerHoldsTheHiddenEdges) {
   std::size_t hidden_edges = 0;
   for (const ExactLine& line : box_lines(cube, camera)) {
     const SampledLine sampled = sample_line(camera, line.a, line.b, seen, 200);
-    if (sampled.seen_share() > 0) continue;
+    if (sampled.seen_share() > 0.05) continue;  // its ends may be seen
     ++hidden_edges;
     std::size_t near = 0;
     for (const glm::dvec2& p : sampled.at) near += distance_to(dashed, p) <= 1.0;
@@ -519,7 +585,7 @@ TEST_F(SvgOutput, SvgFieldsOnAnotherOutputNameTheField) {
 // A drawing priced over --max-render-cost is refused as any render is,
 // with what would fit.
 TEST(SvgOutputLimits, PricedOverTheLimitIsRefusedWithWhatWouldFit) {
-  Daemon daemon({}, {"--max-render-cost", "0.5"});
+  Daemon daemon({}, {"--max-render-cost", "1"});
   auto client = daemon.client();
   const std::string id = upload_obj_text(client, sphere_obj(256, 128), "dense.obj");
   auto res = client.Post("/render", json{{"model", id}, {"output", "svg"}}.dump(), "application/json");

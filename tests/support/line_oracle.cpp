@@ -56,6 +56,24 @@ std::vector<std::pair<glm::dvec3, glm::dvec3>> box_edges(const Box& box) {
   return edges;
 }
 
+bool ray_meets_boxes(const MetaCamera& camera, const std::vector<Box>& boxes, glm::dvec2 px) {
+  const auto [origin, dir] = camera.ray_through(px);
+  for (const Box& box : boxes) {
+    double enter = 0, leave = std::numeric_limits<double>::max();
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(dir[k]) < 1e-15) {
+        if (origin[k] < box.lo[k] || origin[k] > box.hi[k]) leave = -1;
+        continue;
+      }
+      const double t0 = (box.lo[k] - origin[k]) / dir[k], t1 = (box.hi[k] - origin[k]) / dir[k];
+      enter = std::max(enter, std::min(t0, t1));
+      leave = std::min(leave, std::max(t0, t1));
+    }
+    if (enter <= leave) return true;
+  }
+  return false;
+}
+
 bool seen_among_boxes(const MetaCamera& camera, const std::vector<Box>& boxes, const glm::dvec3& p) {
   const glm::dvec3 origin = camera.ray_origin(p, 1e3);
   const glm::dvec3 d = p - origin;  // p at t = 1
@@ -114,39 +132,78 @@ glm::dvec3 torus_normal(const Torus& torus, const glm::dvec3& p) {
   return glm::normalize(p - ring);
 }
 
-std::vector<glm::dvec3> torus_contour(const MetaCamera& camera, const Torus& torus, int around) {
+namespace {
+
+// The tube angles v at ring angle u where the torus turns edge-on to the eye.
+std::vector<double> edge_on_angles(const MetaCamera& camera, const Torus& torus, double u) {
   const double pi = std::acos(-1.0);
-  std::vector<glm::dvec3> points;
-  const auto point = [&](double u, double v) {
-    return glm::dvec3((torus.major + torus.minor * std::cos(v)) * std::cos(u), torus.minor * std::sin(v),
-                      (torus.major + torus.minor * std::cos(v)) * std::sin(u));
-  };
-  // Where the surface's normal is perpendicular to the ray.
-  const auto edge_on = [&](double u, double v) {
+  const auto edge_on = [&](double v) {
     const glm::dvec3 n(std::cos(v) * std::cos(u), std::sin(v), std::cos(v) * std::sin(u));
-    const glm::dvec3 p = point(u, v);
+    const glm::dvec3 p = glm::dvec3(torus.major * std::cos(u), 0, torus.major * std::sin(u)) + torus.minor * n;
     return glm::dot(n, camera.orthographic ? camera.forward : p - camera.eye);
   };
+  std::vector<double> angles;
   const int steps = 720;
+  for (int k = 0; k < steps; ++k) {
+    double v0 = 2 * pi * k / steps, v1 = 2 * pi * (k + 1) / steps;
+    double f0 = edge_on(v0);
+    if ((f0 < 0) == (edge_on(v1) < 0)) continue;
+    for (int b = 0; b < 50; ++b) {
+      const double vm = 0.5 * (v0 + v1), fm = edge_on(vm);
+      if ((fm < 0) == (f0 < 0)) {
+        v0 = vm;
+        f0 = fm;
+      } else {
+        v1 = vm;
+      }
+    }
+    angles.push_back(0.5 * (v0 + v1));
+  }
+  return angles;
+}
+
+glm::dvec3 torus_point(const Torus& torus, double u, double v) {
+  return glm::dvec3((torus.major + torus.minor * std::cos(v)) * std::cos(u), torus.minor * std::sin(v),
+                    (torus.major + torus.minor * std::cos(v)) * std::sin(u));
+}
+
+}  // namespace
+
+TorusContourPoints torus_contour(const MetaCamera& camera, const Torus& torus, int around) {
+  const double pi = std::acos(-1.0);
+  TorusContourPoints out;
+  std::vector<std::vector<double>> rows(static_cast<std::size_t>(around));
   for (int i = 0; i < around; ++i) {
     const double u = 2 * pi * i / around;
-    for (int k = 0; k < steps; ++k) {
-      double v0 = 2 * pi * k / steps, v1 = 2 * pi * (k + 1) / steps;
-      double f0 = edge_on(u, v0), f1 = edge_on(u, v1);
-      if ((f0 < 0) == (f1 < 0)) continue;
-      for (int b = 0; b < 50; ++b) {
-        const double vm = 0.5 * (v0 + v1), fm = edge_on(u, vm);
-        if ((fm < 0) == (f0 < 0)) {
-          v0 = vm;
-          f0 = fm;
-        } else {
-          v1 = vm;
-        }
+    rows[i] = edge_on_angles(camera, torus, u);
+    for (double v : rows[i]) out.points.push_back(torus_point(torus, u, v));
+  }
+  // Each branch followed through three rows: the nearest angle in the next
+  // row continues it; where its two steps on screen point apart, a cusp.
+  const auto nearest = [&](const std::vector<double>& row, double v) {
+    double best = v, gap = 1e9;
+    for (double w : row) {
+      const double d = std::abs(std::remainder(w - v, 2 * pi));
+      if (d < gap) {
+        gap = d;
+        best = w;
       }
-      points.push_back(point(u, 0.5 * (v0 + v1)));
+    }
+    return best;
+  };
+  for (int i = 0; i < around; ++i) {
+    const int j = (i + 1) % around, k = (i + 2) % around;
+    const double u0 = 2 * pi * i / around, u1 = 2 * pi * j / around, u2 = 2 * pi * k / around;
+    for (double v0 : rows[i]) {
+      if (rows[j].empty() || rows[k].empty()) continue;
+      const double v1 = nearest(rows[j], v0), v2 = nearest(rows[k], v1);
+      const glm::dvec2 a = camera.project(torus_point(torus, u0, v0));
+      const glm::dvec2 b = camera.project(torus_point(torus, u1, v1));
+      const glm::dvec2 c = camera.project(torus_point(torus, u2, v2));
+      if (glm::dot(b - a, c - b) < 0) out.cusps.push_back(torus_point(torus, u1, v1));
     }
   }
-  return points;
+  return out;
 }
 
 double SampledLine::seen_share() const {

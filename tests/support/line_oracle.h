@@ -35,6 +35,8 @@ struct Box {
 };
 // The 12 edges of a box.
 std::vector<std::pair<glm::dvec3, glm::dvec3>> box_edges(const Box& box);
+// Whether the ray through pixel px meets a box.
+bool ray_meets_boxes(const MetaCamera& camera, const std::vector<Box>& boxes, glm::dvec2 px);
 // Whether p, on a box's surface, is seen: no box is entered on the way to it.
 bool seen_among_boxes(const MetaCamera& camera, const std::vector<Box>& boxes, const glm::dvec3& p);
 
@@ -49,8 +51,16 @@ bool seen_on_torus(const MetaCamera& camera, const Torus& torus, const glm::dvec
 bool ray_meets_torus(const MetaCamera& camera, const Torus& torus, glm::dvec2 px);
 // The torus's normal at a point of its surface.
 glm::dvec3 torus_normal(const Torus& torus, const glm::dvec3& p);
-// Points of the torus's contour, `around` values of the ring's angle apart.
-std::vector<glm::dvec3> torus_contour(const MetaCamera& camera, const Torus& torus, int around);
+// Points of the torus's contour, `around` values of the ring's angle apart,
+// and its cusps: where the contour, followed from one ring angle to the
+// next, turns back on screen (there a surface of facets, whose contour
+// runs along its edges, parts from the smooth one by more than its facets'
+// error elsewhere).
+struct TorusContourPoints {
+  std::vector<glm::dvec3> points;
+  std::vector<glm::dvec3> cusps;
+};
+TorusContourPoints torus_contour(const MetaCamera& camera, const Torus& torus, int around);
 
 // A 3D line sampled evenly: each sample on screen and whether it is seen.
 struct SampledLine {

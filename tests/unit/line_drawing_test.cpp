@@ -83,6 +83,22 @@ TEST(LineDrawingChains, CutEndsJoinNothing) {
   EXPECT_EQ(chain_strokes(cut, 4).size(), 2u);
 }
 
+TEST(LineDrawingChains, StitchesEndsWithinTheGapAndNoOthers) {
+  // Two halves of a line cut 0.4 px apart where another passed in front,
+  // one of them drawn backwards, and a stroke 3 px off.
+  const std::vector<Polyline> strokes = {
+      {{{0, 0}, {10, 0}}, false}, {{{20, 0}, {10.4, 0}}, false}, {{{23, 0}, {30, 0}}, false}};
+  const std::vector<Polyline> stitched = stitch_strokes(strokes, 1.0);
+  ASSERT_EQ(stitched.size(), 2u);
+  EXPECT_EQ(stitched[0].points.size(), 4u);
+  EXPECT_EQ(stitched[1].points.size(), 2u);
+  // A loop cut once closes.
+  const std::vector<Polyline> loop = {{{{0.5, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0.3}}, false}};
+  const std::vector<Polyline> closed = stitch_strokes(loop, 1.0);
+  ASSERT_EQ(closed.size(), 1u);
+  EXPECT_TRUE(closed[0].closed);
+}
+
 TEST(LineDrawingPenOrder, ShortensTravelAndKeepsEveryStroke) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> at(0, 500);
@@ -127,6 +143,32 @@ TEST(LineDrawingVisibility, ATriangleHidesTheStretchBehindIt) {
     ASSERT_TRUE(make_occluder({-2, -1, -20}, {2, -1, -20}, {0, 2, -20}, ortho, behind));
     const auto none = hidden_interval(behind, a, b - a, 0, 1, 1e-9);
     EXPECT_GE(none.first, none.second);
+  }
+}
+
+// Two triangles of a square, side by side, and a segment behind them that
+// crosses their shared side at a grazing angle: widened there, they hide
+// all of it between them; narrowed (as a rim is), a sliver slips through.
+TEST(LineDrawingVisibility, NeighboursSharingASideLeaveNoGap) {
+  const glm::dvec3 a(-0.5, -0.5 - 2e-6, -10), b(0.5, 0.5 + 2e-6, -10);
+  const double tolerance = 1e-6;
+  for (bool shared : {true, false}) {
+    Occluder lower, upper;
+    ASSERT_TRUE(make_occluder({-1, -1, -5}, {1, -1, -5}, {1, 1, -5}, true, lower));
+    ASSERT_TRUE(make_occluder({-1, -1, -5}, {1, 1, -5}, {-1, 1, -5}, true, upper));
+    // The diagonal is lower's side 2 (corner 2 to 0) and upper's side 0.
+    lower.shared_sides = shared ? 4 : 0;
+    upper.shared_sides = shared ? 1 : 0;
+    const auto h1 = hidden_interval(lower, a, b - a, 0, 1, tolerance);
+    const auto h2 = hidden_interval(upper, a, b - a, 0, 1, tolerance);
+    const auto [first, second] = std::minmax(h1, h2);
+    EXPECT_EQ(first.first, 0.0);
+    EXPECT_EQ(second.second, 1.0);
+    if (shared) {
+      EXPECT_GE(first.second, second.first) << "no gap between them";
+    } else {
+      EXPECT_LT(first.second, second.first) << "narrowed, they leave a gap";
+    }
   }
 }
 

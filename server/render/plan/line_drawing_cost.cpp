@@ -6,6 +6,8 @@ namespace toond::render {
 
 RenderCost line_drawing_cost(const RenderParams& params, std::span<const scene::Mesh* const> meshes) {
   RenderCost cost;
+  // Without an outline or contour lines there is nothing to look for.
+  if (!params.outline.any() && !params.contour.enabled) return cost;
   const double angle = params.outline.crease_angle_deg;
   for (const scene::Mesh* mesh : meshes) {
     const double triangles = static_cast<double>(mesh->triangle_count());

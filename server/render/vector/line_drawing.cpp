@@ -46,8 +46,8 @@ LayerPieces layer_pieces(const Candidates& candidates, const std::vector<Piece>&
   return out;
 }
 
-std::vector<Polyline> strokes_of(const std::vector<StrokePiece>& pieces, std::uint32_t node_count) {
-  std::vector<Polyline> strokes = chain_strokes(pieces, node_count);
+std::vector<Polyline> strokes_of(const std::vector<StrokePiece>& pieces, std::uint32_t node_count, double gap) {
+  std::vector<Polyline> strokes = stitch_strokes(chain_strokes(pieces, node_count), gap);
   order_for_pen(strokes);
   return strokes;
 }
@@ -64,6 +64,7 @@ SvgDrawing blank_drawing(const FramePlan& plan) {
   // The frame's coordinates are the scene's less its origin.
   svg.view = plan.camera.view * glm::translate(glm::dmat4(1.0), -plan.scene->origin);
   svg.projection = plan.camera.projection;
+  if (p.svg.hidden) svg.hidden.emplace();
   return svg;
 }
 
@@ -95,8 +96,9 @@ LineDrawing draw_lines(const FramePlan& plan, const FrameContext& frame,
                        std::chrono::steady_clock::time_point deadline) {
   LineDrawing drawing;
   drawing.svg = blank_drawing(plan);
-  const ViewMesh mesh = view_mesh_of(frame, models, edges);
   const LineChoice choice = line_choice(plan);
+  if (!choice.silhouettes && !choice.creases) return drawing;  // no line to look for
+  const ViewMesh mesh = view_mesh_of(frame, models, edges);
   const Candidates candidates = line_candidates(mesh, choice);
   const ScreenMap screen = ScreenMap::of(plan.camera.projection, plan.params.width, plan.params.height);
   const double margin = drawing.svg.stroke_px + 1.0;
@@ -108,13 +110,15 @@ LineDrawing draw_lines(const FramePlan& plan, const FrameContext& frame,
   const std::vector<Piece> drawn = keep_drawn_contours(visibility.pieces, candidates.segments, grid, screen, choice,
                                                        0.5 * drawing.svg.stroke_px + 1.0);
   const LayerPieces pieces = layer_pieces(candidates, drawn, screen);
+  // Ends nearer than half the stroke's width are one to the eye and the pen.
+  const double stitch_gap = std::min(1.0, 0.5 * drawing.svg.stroke_px);
   for (LineKind kind : kAllLineKinds) {
     const std::size_t k = static_cast<std::size_t>(kind);
-    drawing.svg.layers[k] = strokes_of(pieces.visible[k], pieces.node_count);
+    drawing.svg.layers[k] = strokes_of(pieces.visible[k], pieces.node_count, stitch_gap);
     drawing.stats.paths += drawing.svg.layers[k].size();
   }
   if (choice.keep_hidden) {
-    drawing.svg.hidden = strokes_of(pieces.hidden, pieces.node_count);
+    drawing.svg.hidden = strokes_of(pieces.hidden, pieces.node_count, stitch_gap);
     drawing.stats.paths += drawing.svg.hidden->size();
   }
   drawing.stats.candidates = candidates.segments.size();

@@ -79,6 +79,7 @@ OccluderGrid::OccluderGrid(const ViewMesh& mesh, const ScreenMap& screen, double
     Occluder o;
     if (!make_occluder(v[0], v[1], v[2], mesh.orthographic, o)) continue;
     for (int k = 0; k < 3; ++k) o.groups[k] = mesh.groups[mesh.corners[3 * t + k]];
+    o.shared_sides = mesh.shared_sides[t];
     glm::dvec2 lo, hi;
     if (screen_box(v, screen, lo, hi)) {
       const glm::ivec4 range = cell_range(lo, hi);

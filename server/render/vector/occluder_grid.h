@@ -23,6 +23,7 @@ namespace toond::render::vector {
 struct Occluder {
   std::array<glm::dvec4, 4> planes;
   std::array<std::uint32_t, 3> groups;     // its corners' welded positions
+  std::uint8_t shared_sides = 0;           // ViewMesh::shared_sides
   float near_depth = 0;                    // the least depth (-z) of its corners
   glm::vec2 box_min{0.0f}, box_max{0.0f};  // on screen, pixels
 };

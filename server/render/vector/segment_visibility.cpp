@@ -14,7 +14,7 @@ constexpr std::size_t kSegmentRun = 512;
 // shared side of two triangles that both hide it is not seen between them.
 constexpr double kJoinPx = 0.02;
 
-// Keeps the part of [lo, hi] where alpha + beta t >= 0 (`strict`: > tolerance).
+// Keeps the part of [lo, hi] where alpha + beta t >= 0.
 void keep_where_positive(double alpha, double beta, double& lo, double& hi) {
   if (beta == 0) {
     if (alpha < 0) hi = lo;
@@ -88,6 +88,9 @@ std::size_t split_segment(std::uint32_t index, const Segment& s, const ViewMesh&
       joined.push_back(h);
     }
   }
+  // Nor does a stretch that short hide anything one could see: left, it
+  // would only cut a line at a corner where a face touching it begins.
+  std::erase_if(joined, [&](const auto& h) { return h.second - h.first < join; });
   add_pieces(index, lo, hi, joined, options.hidden_pieces, out);
   return nearby.size();
 }
@@ -113,9 +116,17 @@ std::pair<double, double> clip_to_view(const glm::dvec3& a, const glm::dvec3& b,
 
 std::pair<double, double> hidden_interval(const Occluder& o, const glm::dvec3& a, const glm::dvec3& d, double lo,
                                           double hi, double tolerance) {
-  for (const glm::dvec4& plane : o.planes) {
-    const glm::dvec3 n(plane);
-    keep_where_positive(glm::dot(n, a) + plane.w - tolerance, glm::dot(n, d), lo, hi);
+  // A side the occluder shares with another that hides widened by the
+  // tolerance, its other sides and its plane narrowed: a point on a shared
+  // side is hidden by both, however nearly the segment runs along it
+  // (narrowed, a grazing segment would slip between them); a point on the
+  // rim of what hides (a fold, a silhouette's fan of faces) or on the
+  // occluder's own surface is hidden by neither.
+  for (int k = 0; k < 4; ++k) {
+    const glm::dvec3 n(o.planes[k]);
+    const bool shared = k < 3 && (o.shared_sides >> k & 1u) != 0;
+    const double slack = shared ? tolerance : -tolerance;
+    keep_where_positive(glm::dot(n, a) + o.planes[k].w + slack, glm::dot(n, d), lo, hi);
     if (!(lo < hi)) break;
   }
   return {lo, hi};

@@ -48,7 +48,9 @@ std::pair<double, double> clip_to_view(const glm::dvec3& a, const glm::dvec3& b,
 
 // The interval of the segment from a (a + t d) that the occluder hides,
 // within [lo, hi]; empty (first >= second) where it hides none. `tolerance`:
-// a point this near the occluder's planes is not hidden by it.
+// a point this near the occluder's own plane, or the sides of its cone on
+// the rim of what hides, is not hidden by it; one this near a side it
+// shares with another that hides is.
 std::pair<double, double> hidden_interval(const Occluder& o, const glm::dvec3& a, const glm::dvec3& d, double lo,
                                           double hi, double tolerance);
 

@@ -1,6 +1,8 @@
 #include "render/vector/stroke_chains.h"
 
+#include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace toond::render::vector {
 namespace {
@@ -112,7 +114,90 @@ class Walker {
   std::vector<bool> used_;
 };
 
+// The open strokes' ends in cells `gap` wide, for the ones near a point.
+class EndIndex {
+ public:
+  EndIndex(const std::vector<Polyline>& strokes, double gap) : strokes_(strokes), gap_(gap) {
+    for (std::uint32_t i = 0; i < strokes.size(); ++i) {
+      if (strokes[i].closed || strokes[i].points.size() < 2) continue;
+      cells_[key(strokes[i].points.front())].push_back(2 * i);
+      cells_[key(strokes[i].points.back())].push_back(2 * i + 1);
+    }
+  }
+
+  // The nearest end (2 × stroke + 1 for its last point) within the gap of
+  // p of a stroke not `used`; -1 where there is none.
+  std::int64_t nearest(glm::dvec2 p, const std::vector<bool>& used) const {
+    std::int64_t best = -1;
+    double best_d = gap_;
+    const auto [cx, cy] = cell(p);
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        const auto it = cells_.find(pack(cx + dx, cy + dy));
+        if (it == cells_.end()) continue;
+        for (std::uint32_t end : it->second) {
+          if (used[end / 2]) continue;
+          const Polyline& s = strokes_[end / 2];
+          const double d = glm::length((end % 2 ? s.points.back() : s.points.front()) - p);
+          if (d <= best_d && (best < 0 || d < best_d || end < best)) {
+            best_d = d;
+            best = end;
+          }
+        }
+      }
+    }
+    return best;
+  }
+
+ private:
+  std::pair<std::int64_t, std::int64_t> cell(glm::dvec2 p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x / gap_)), static_cast<std::int64_t>(std::floor(p.y / gap_))};
+  }
+  static std::int64_t pack(std::int64_t x, std::int64_t y) { return x * 1000003 + y; }
+  std::int64_t key(glm::dvec2 p) const {
+    const auto [x, y] = cell(p);
+    return pack(x, y);
+  }
+
+  const std::vector<Polyline>& strokes_;
+  double gap_;
+  std::unordered_map<std::int64_t, std::vector<std::uint32_t>> cells_;
+};
+
+// Appends strokes to `line`'s end while one starts or ends near it.
+void extend_end(Polyline& line, std::vector<Polyline>& strokes, const EndIndex& index, std::vector<bool>& used) {
+  for (std::int64_t end = index.nearest(line.points.back(), used); end >= 0;
+       end = index.nearest(line.points.back(), used)) {
+    used[static_cast<std::size_t>(end / 2)] = true;
+    std::vector<glm::dvec2>& next = strokes[static_cast<std::size_t>(end / 2)].points;
+    if (end % 2) std::reverse(next.begin(), next.end());
+    line.points.insert(line.points.end(), next.begin(), next.end());
+  }
+}
+
 }  // namespace
+
+std::vector<Polyline> stitch_strokes(std::vector<Polyline> strokes, double gap) {
+  const EndIndex index(strokes, gap);
+  std::vector<bool> used(strokes.size(), false);
+  std::vector<Polyline> out;
+  for (std::size_t i = 0; i < strokes.size(); ++i) {
+    if (used[i]) continue;
+    used[i] = true;
+    Polyline line = std::move(strokes[i]);
+    if (!line.closed && line.points.size() >= 2) {
+      extend_end(line, strokes, index, used);
+      std::reverse(line.points.begin(), line.points.end());
+      extend_end(line, strokes, index, used);
+      if (line.points.size() > 3 && glm::length(line.points.back() - line.points.front()) <= gap) {
+        line.closed = true;
+        line.points.pop_back();
+      }
+    }
+    out.push_back(std::move(line));
+  }
+  return out;
+}
 
 std::vector<Polyline> chain_strokes(const std::vector<StrokePiece>& pieces, std::uint32_t node_count) {
   return Walker(pieces, node_count).walk_all();

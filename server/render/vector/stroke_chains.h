@@ -29,4 +29,11 @@ struct Polyline {
 // `node_count`: every id is below it.
 std::vector<Polyline> chain_strokes(const std::vector<StrokePiece>& pieces, std::uint32_t node_count);
 
+// Open strokes whose ends lie within `gap` pixels of each other joined into
+// one (an end that comes back to its own start closes it): where a line
+// passes behind another, the visible pieces on either side meet at the
+// occluding line only to within the stroke's width, and a pen need not
+// lift for that.
+std::vector<Polyline> stitch_strokes(std::vector<Polyline> strokes, double gap);
+
 }  // namespace toond::render::vector

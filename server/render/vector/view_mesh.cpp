@@ -87,6 +87,35 @@ void face_triangles(ViewMesh& mesh) {
   }
 }
 
+// The side of triangle t (0: corners 0 to 1, 1: 1 to 2, 2: 2 to 0) between
+// the welded positions ga and gb.
+int side_between(const ViewMesh& mesh, std::uint32_t t, std::uint32_t ga, std::uint32_t gb) {
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t g0 = mesh.groups[mesh.corners[3 * t + k]];
+    const std::uint32_t g1 = mesh.groups[mesh.corners[3 * t + (k + 1) % 3]];
+    if ((g0 == ga && g1 == gb) || (g0 == gb && g1 == ga)) return k;
+  }
+  return -1;
+}
+
+// Marks the sides two hiding triangles share.
+void mark_shared_sides(ViewMesh& mesh) {
+  mesh.shared_sides.assign(mesh.triangle_count(), 0);
+  for (const ViewObject& object : mesh.objects) {
+    for (const MeshEdge& edge : object.edges->edges) {
+      if (edge.face1 == kNoFace) continue;
+      const std::uint32_t f0 = object.first_triangle + edge.face0, f1 = object.first_triangle + edge.face1;
+      if (!mesh.hides[f0] || !mesh.hides[f1]) continue;
+      const std::uint32_t ga = mesh.groups[object.first_vertex + edge.a];
+      const std::uint32_t gb = mesh.groups[object.first_vertex + edge.b];
+      for (std::uint32_t f : {f0, f1}) {
+        const int k = side_between(mesh, f, ga, gb);
+        if (k >= 0) mesh.shared_sides[f] |= static_cast<std::uint8_t>(1u << k);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 Facing facing_of(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, bool orthographic) {
@@ -106,6 +135,7 @@ ViewMesh view_mesh_of(const FrameContext& frame, std::span<const std::shared_ptr
   for (std::size_t i = 0; i < frame.objects.size(); ++i)
     add_object(frame, i, edges.get(models[i], frame.lod_of(i)), mesh);
   face_triangles(mesh);
+  mark_shared_sides(mesh);
   return mesh;
 }
 

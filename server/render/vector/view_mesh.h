@@ -44,6 +44,9 @@ struct ViewMesh {
   std::vector<std::uint32_t> corners;  // three points a triangle, every object's drawn level
   std::vector<Facing> facing;          // per triangle
   std::vector<std::uint8_t> hides;     // per triangle: 1 where it may hide something
+  // Per triangle, bit k: its side from corner k to the next borders another
+  // triangle that hides (what both hide meets there, with no gap between).
+  std::vector<std::uint8_t> shared_sides;
   std::vector<ViewObject> objects;
   // How far a point may stray from a surface and still count as on it: a
   // millionth of the scene's size (floats' rounding of the vertices is ten
