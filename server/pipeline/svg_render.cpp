@@ -41,8 +41,11 @@ std::string drawn_kinds(const render::FramePlan& plan) {
 
 std::string stats_header(const render::vector::LineStats& s) {
   std::ostringstream out;
-  out << "candidates=" << s.candidates << "; occluder_tests=" << s.occluder_tests << "; pieces=" << s.pieces
-      << "; paths=" << s.paths;
+  out << "candidates=" << s.candidates << "; occluders=" << s.occluders << "; occluder_tests=" << s.occluder_tests
+      << "; pieces=" << s.pieces << "; paths=" << s.paths;
+  out.precision(3);
+  out << std::fixed << "; view_ms=" << s.view_ms << "; grid_ms=" << s.grid_ms << "; visibility_ms=" << s.visibility_ms
+      << "; strokes_ms=" << s.strokes_ms;
   return out.str();
 }
 

@@ -22,7 +22,7 @@ class ContourJudge {
   }
 
   bool drawn_at(const glm::dvec3& point) {
-    const double beyond = grid_.first_depth(screen_.to_pixels(point) + reach_ * away_, screen_, nearby_);
+    const double beyond = grid_.first_depth(screen_.to_pixels(point) + reach_ * away_, screen_, nearby_, scratch_);
     if (beyond < 0) return true;  // the outline: nothing there
     return choice_.contours == ContourRule::DepthJump && beyond - (-point.z) > choice_.depth_jump;
   }
@@ -34,6 +34,7 @@ class ContourJudge {
   double reach_;
   glm::dvec2 away_{0.0};
   std::vector<std::uint32_t> nearby_;
+  GatherScratch scratch_;
 };
 
 // The piece cut into runs of steps, about a pixel each, that the judge keeps.

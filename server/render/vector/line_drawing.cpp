@@ -98,32 +98,45 @@ LineDrawing draw_lines(const FramePlan& plan, const FrameContext& frame,
   drawing.svg = blank_drawing(plan);
   const LineChoice choice = line_choice(plan);
   if (!choice.silhouettes && !choice.creases) return drawing;  // no line to look for
+  LineStats& stats = drawing.stats;
+  auto lap = std::chrono::steady_clock::now();
+  const auto lap_ms = [&lap] {
+    const auto now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - lap).count();
+    lap = now;
+    return ms;
+  };
   const ViewMesh mesh = view_mesh_of(frame, models, edges);
   const Candidates candidates = line_candidates(mesh, choice);
+  stats.view_ms = lap_ms();
   const ScreenMap screen = ScreenMap::of(plan.camera.projection, plan.params.width, plan.params.height);
   const double margin = drawing.svg.stroke_px + 1.0;
   const OccluderGrid grid(mesh, screen, margin);
+  stats.occluders = grid.size();
+  stats.grid_ms = lap_ms();
   const Visibility visibility =
       split_by_visibility(candidates.segments, mesh, grid, screen,
                           {.hidden_pieces = choice.keep_hidden, .margin_px = margin, .deadline = deadline});
   // Judged just past the stroke's edge, where the hull's ring would show.
   const std::vector<Piece> drawn = keep_drawn_contours(visibility.pieces, candidates.segments, grid, screen, choice,
                                                        0.5 * drawing.svg.stroke_px + 1.0);
+  stats.visibility_ms = lap_ms();
   const LayerPieces pieces = layer_pieces(candidates, drawn, screen);
   // Ends nearer than half the stroke's width are one to the eye and the pen.
   const double stitch_gap = std::min(1.0, 0.5 * drawing.svg.stroke_px);
   for (LineKind kind : kAllLineKinds) {
     const std::size_t k = static_cast<std::size_t>(kind);
     drawing.svg.layers[k] = strokes_of(pieces.visible[k], pieces.node_count, stitch_gap);
-    drawing.stats.paths += drawing.svg.layers[k].size();
+    stats.paths += drawing.svg.layers[k].size();
   }
   if (choice.keep_hidden) {
     drawing.svg.hidden = strokes_of(pieces.hidden, pieces.node_count, stitch_gap);
-    drawing.stats.paths += drawing.svg.hidden->size();
+    stats.paths += drawing.svg.hidden->size();
   }
-  drawing.stats.candidates = candidates.segments.size();
-  drawing.stats.occluder_tests = visibility.occluder_tests;
-  drawing.stats.pieces = visibility.pieces.size();
+  stats.strokes_ms = lap_ms();
+  stats.candidates = candidates.segments.size();
+  stats.occluder_tests = visibility.occluder_tests;
+  stats.pieces = visibility.pieces.size();
   return drawing;
 }
 

@@ -31,6 +31,10 @@ struct LineStats {
   std::size_t occluder_tests = 0;  // triangles a segment was tested against
   std::size_t pieces = 0;          // visible and hidden pieces
   std::size_t paths = 0;           // strokes written, every layer
+  std::size_t occluders = 0;       // triangles that may hide something, binned
+  // Milliseconds: the triangles placed and the candidates found; the
+  // occluders made and binned; visibility and the silhouettes kept; strokes.
+  double view_ms = 0, grid_ms = 0, visibility_ms = 0, strokes_ms = 0;
 };
 
 struct LineDrawing {

@@ -1,5 +1,7 @@
 #include "render/vector/occluder_grid.h"
 
+#include "render/vector/parallel_runs.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -22,14 +24,29 @@ bool plane_through(glm::dvec3 n, double d_per_unit, const glm::dvec3& inside, gl
   return true;
 }
 
+// Every point on screen, in pixels; NaN where it lies at or behind the eye
+// (a triangle with such a corner has no box on screen).
+std::vector<glm::dvec2> points_on_screen(const ViewMesh& mesh, const ScreenMap& screen) {
+  std::vector<glm::dvec2> pixels(mesh.points.size());
+  for_each_run(pixels.size(), 16384, [&](std::size_t, std::size_t first, std::size_t end) {
+    for (std::size_t v = first; v < end; ++v) {
+      const glm::dvec4 c = screen.clip(mesh.points[v]);
+      pixels[v] = c.w > 1e-12 * std::abs(c.z)
+                      ? glm::dvec2((c.x / c.w * 0.5 + 0.5) * screen.width, (0.5 - c.y / c.w * 0.5) * screen.height)
+                      : glm::dvec2(std::numeric_limits<double>::quiet_NaN());
+    }
+  });
+  return pixels;
+}
+
 // A triangle's screen box; false where a corner lies at or behind the eye.
-bool screen_box(const glm::dvec3 (&v)[3], const ScreenMap& screen, glm::dvec2& lo, glm::dvec2& hi) {
+bool screen_box(const ViewMesh& mesh, const std::vector<glm::dvec2>& pixels, std::size_t t, glm::dvec2& lo,
+                glm::dvec2& hi) {
   lo = glm::dvec2(std::numeric_limits<double>::max());
   hi = -lo;
-  for (const glm::dvec3& p : v) {
-    const glm::dvec4 c = screen.clip(p);
-    if (!(c.w > 1e-12 * std::abs(c.z))) return false;
-    const glm::dvec2 s = screen.to_pixels(p);
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec2 s = pixels[mesh.corners[3 * t + k]];
+    if (std::isnan(s.x)) return false;
     lo = glm::min(lo, s);
     hi = glm::max(hi, s);
   }
@@ -71,30 +88,55 @@ OccluderGrid::OccluderGrid(const ViewMesh& mesh, const ScreenMap& screen, double
   cell_ = std::clamp(std::sqrt(extent.x * extent.y / static_cast<double>(std::max<std::size_t>(hiders, 1))), 2.0, 64.0);
   columns_ = std::max(1, static_cast<int>(std::ceil(extent.x / cell_)));
   rows_ = std::max(1, static_cast<int>(std::ceil(extent.y / cell_)));
-  occluders_.reserve(hiders);
-  std::vector<glm::ivec4> ranges;  // per occluder, its cells; x > z: everywhere
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    if (!mesh.hides[t]) continue;
-    const glm::dvec3 v[3] = {mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)};
-    Occluder o;
-    if (!make_occluder(v[0], v[1], v[2], mesh.orthographic, o)) continue;
-    for (int k = 0; k < 3; ++k) o.groups[k] = mesh.groups[mesh.corners[3 * t + k]];
-    o.shared_sides = mesh.shared_sides[t];
-    glm::dvec2 lo, hi;
-    if (screen_box(v, screen, lo, hi)) {
-      const glm::ivec4 range = cell_range(lo, hi);
-      if (range.x > range.z || range.y > range.w) continue;  // off the drawn area
-      o.box_min = glm::vec2(lo);
-      o.box_max = glm::vec2(hi);
-      ranges.push_back(range);
-    } else {
-      o.box_min = glm::vec2(-std::numeric_limits<float>::max());
-      o.box_max = glm::vec2(std::numeric_limits<float>::max());
-      everywhere_.push_back(static_cast<std::uint32_t>(occluders_.size()));
-      ranges.push_back(glm::ivec4(1, 0, 0, 0));
-    }
-    occluders_.push_back(o);
+  bin(place(mesh, screen));
+}
+
+std::vector<glm::ivec4> OccluderGrid::place(const ViewMesh& mesh, const ScreenMap& screen) {
+  constexpr std::size_t kRun = 8192;
+  // Each hiding triangle's place in the list, counted ahead so that the runs
+  // write their own stretch of it; one that hides nothing after all keeps
+  // its place with no cells.
+  const std::size_t runs = (mesh.triangle_count() + kRun - 1) / kRun;
+  std::vector<std::size_t> first_of_run(runs + 1, 0);
+  for (std::size_t run = 0; run < runs; ++run) {
+    std::size_t hiders = 0;
+    for (std::size_t t = run * kRun; t < std::min(mesh.triangle_count(), (run + 1) * kRun); ++t)
+      hiders += mesh.hides[t];
+    first_of_run[run + 1] = first_of_run[run] + hiders;
   }
+  occluders_.resize(first_of_run.back());
+  std::vector<glm::ivec4> ranges(first_of_run.back(), glm::ivec4(1, 0, 0, 0));
+  std::vector<std::uint8_t> unbounded(first_of_run.back(), 0);
+  const std::vector<glm::dvec2> pixels = points_on_screen(mesh, screen);
+  for_each_run(mesh.triangle_count(), kRun, [&](std::size_t run, std::size_t first, std::size_t end) {
+    std::size_t at = first_of_run[run];
+    for (std::size_t t = first; t < end; ++t) {
+      if (!mesh.hides[t]) continue;
+      const std::size_t i = at++;
+      const glm::dvec3 v[3] = {mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)};
+      Occluder& o = occluders_[i];
+      if (!make_occluder(v[0], v[1], v[2], mesh.orthographic, o)) continue;
+      for (int k = 0; k < 3; ++k) o.groups[k] = mesh.groups[mesh.corners[3 * t + k]];
+      o.shared_sides = mesh.shared_sides[t];
+      glm::dvec2 lo, hi;
+      if (screen_box(mesh, pixels, t, lo, hi)) {
+        ranges[i] = cell_range(lo, hi);  // empty off the drawn area
+        o.box_min = glm::vec2(lo);
+        o.box_max = glm::vec2(hi);
+      } else {
+        unbounded[i] = 1;
+        o.box_min = glm::vec2(-std::numeric_limits<float>::max());
+        o.box_max = glm::vec2(std::numeric_limits<float>::max());
+      }
+    }
+  });
+  for (std::uint32_t i = 0; i < unbounded.size(); ++i) {
+    if (unbounded[i]) everywhere_.push_back(i);
+  }
+  return ranges;
+}
+
+void OccluderGrid::bin(const std::vector<glm::ivec4>& ranges) {
   // Counted, then filled: one flat list of every cell's occluders.
   cell_start_.assign(static_cast<std::size_t>(columns_) * rows_ + 1, 0);
   for (const glm::ivec4& r : ranges) {
@@ -124,8 +166,9 @@ glm::ivec4 OccluderGrid::cell_range(glm::dvec2 lo, glm::dvec2 hi) const {
                     std::min(rows_ - 1, cell_of(hi.y, origin_.y, rows_)));
 }
 
-double OccluderGrid::first_depth(glm::dvec2 px, const ScreenMap& screen, std::vector<std::uint32_t>& nearby) const {
-  gather(px, px, nearby);
+double OccluderGrid::first_depth(glm::dvec2 px, const ScreenMap& screen, std::vector<std::uint32_t>& nearby,
+                                 GatherScratch& scratch) const {
+  gather(px, px, nearby, scratch);
   const glm::dvec3 from = screen.unproject(px, -1.0);
   const glm::dvec3 along = screen.unproject(px, 1.0) - from;
   double nearest = -1;
@@ -142,9 +185,19 @@ double OccluderGrid::first_depth(glm::dvec2 px, const ScreenMap& screen, std::ve
   return nearest;
 }
 
-void OccluderGrid::gather(glm::dvec2 p, glm::dvec2 q, std::vector<std::uint32_t>& out) const {
+void OccluderGrid::gather(glm::dvec2 p, glm::dvec2 q, std::vector<std::uint32_t>& out, GatherScratch& scratch) const {
   out.clear();
-  out.insert(out.end(), everywhere_.begin(), everywhere_.end());
+  if (scratch.seen.size() != occluders_.size() || scratch.mark == std::numeric_limits<std::uint32_t>::max()) {
+    scratch.seen.assign(occluders_.size(), 0);
+    scratch.mark = 0;
+  }
+  ++scratch.mark;
+  const auto take = [&](std::uint32_t i) {
+    if (scratch.seen[i] == scratch.mark) return;
+    scratch.seen[i] = scratch.mark;
+    out.push_back(i);
+  };
+  for (std::uint32_t i : everywhere_) take(i);
   if (p.y > q.y) std::swap(p, q);
   const glm::ivec4 span = cell_range(glm::min(p, q), glm::max(p, q));
   // Row by row, the columns the segment crosses within the row's height.
@@ -153,18 +206,16 @@ void OccluderGrid::gather(glm::dvec2 p, glm::dvec2 q, std::vector<std::uint32_t>
     const double y1 = std::min(q.y, origin_.y + (row + 1) * cell_);
     double x0 = p.x, x1 = q.x;
     if (q.y - p.y > 1e-12) {
-      x0 = p.x + (q.x - p.x) * (std::max(y0, p.y) - p.y) / (q.y - p.y);
-      x1 = p.x + (q.x - p.x) * (std::min(y1, q.y) - p.y) / (q.y - p.y);
+      x0 = p.x + (q.x - p.x) * (y0 - p.y) / (q.y - p.y);
+      x1 = p.x + (q.x - p.x) * (y1 - p.y) / (q.y - p.y);
     }
     const glm::ivec4 cols =
         cell_range(glm::dvec2(std::min(x0, x1) - 1e-6, y0), glm::dvec2(std::max(x0, x1) + 1e-6, y0));
     for (int col = cols.x; col <= cols.z; ++col) {
       const std::size_t cell = static_cast<std::size_t>(row) * columns_ + col;
-      out.insert(out.end(), cell_items_.begin() + cell_start_[cell], cell_items_.begin() + cell_start_[cell + 1]);
+      for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) take(cell_items_[k]);
     }
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 }  // namespace toond::render::vector

@@ -28,6 +28,13 @@ struct Occluder {
   glm::vec2 box_min{0.0f}, box_max{0.0f};  // on screen, pixels
 };
 
+// What a caller of OccluderGrid::gather keeps between calls (one a thread):
+// which occluders it has taken for the current segment.
+struct GatherScratch {
+  std::vector<std::uint32_t> seen;
+  std::uint32_t mark = 0;
+};
+
 class OccluderGrid {
  public:
   // `margin`: pixels around the image where lines are still drawn.
@@ -35,15 +42,22 @@ class OccluderGrid {
 
   // The occluders whose boxes share a cell with the segment from p to q
   // (pixels), each once, in `out` (cleared first).
-  void gather(glm::dvec2 p, glm::dvec2 q, std::vector<std::uint32_t>& out) const;
+  void gather(glm::dvec2 p, glm::dvec2 q, std::vector<std::uint32_t>& out, GatherScratch& scratch) const;
   const Occluder& occluder(std::uint32_t i) const { return occluders_[i]; }
   // The depth (-z) where the ray through pixel `px` first meets an
-  // occluder; negative where it meets none. `nearby`: scratch space.
-  double first_depth(glm::dvec2 px, const ScreenMap& screen, std::vector<std::uint32_t>& nearby) const;
+  // occluder; negative where it meets none. `nearby`, `scratch`: scratch space.
+  double first_depth(glm::dvec2 px, const ScreenMap& screen, std::vector<std::uint32_t>& nearby,
+                     GatherScratch& scratch) const;
   std::size_t size() const { return occluders_.size(); }
 
  private:
-  void bin(const ViewMesh& mesh);
+  // Each hiding triangle's occluder, worked out over the cores, kept in the
+  // triangles' order; returns the cells each covers (none where it hides
+  // nothing after all, or lies off the drawn area, or reaches behind the
+  // eye: then it is in everywhere_).
+  std::vector<glm::ivec4> place(const ViewMesh& mesh, const ScreenMap& screen);
+  // The occluders listed in the cells they cover.
+  void bin(const std::vector<glm::ivec4>& ranges);
   // The cells' columns and rows a box covers, clamped to the grid.
   glm::ivec4 cell_range(glm::dvec2 lo, glm::dvec2 hi) const;
 

@@ -52,7 +52,7 @@ void add_pieces(std::uint32_t segment, double lo, double hi, const std::vector<s
 // occluders hide, in `out`.
 std::size_t split_segment(std::uint32_t index, const Segment& s, const ViewMesh& mesh, const OccluderGrid& grid,
                           const ScreenMap& screen, const VisibilityOptions& options, std::vector<std::uint32_t>& nearby,
-                          std::vector<Piece>& out) {
+                          GatherScratch& scratch, std::vector<Piece>& out) {
   const auto [lo, hi] = clip_to_view(s.a, s.b, screen, options.margin_px);
   if (!(lo < hi)) return 0;
   if (s.surely_hidden) {
@@ -67,7 +67,7 @@ std::size_t split_segment(std::uint32_t index, const Segment& s, const ViewMesh&
   const glm::vec2 box_min = glm::vec2(glm::min(p, q));
   const glm::vec2 box_max = glm::vec2(glm::max(p, q));
   const float far_depth = static_cast<float>(std::max(-a.z, -b.z) + mesh.tolerance);
-  grid.gather(p, q, nearby);
+  grid.gather(p, q, nearby, scratch);
   std::vector<std::pair<double, double>> hidden;
   for (std::uint32_t i : nearby) {
     const Occluder& o = grid.occluder(i);
@@ -142,9 +142,10 @@ Visibility split_by_visibility(const std::vector<Segment>& segments, const ViewM
       throw RenderAborted("the line drawing passed its deadline");
     }
     std::vector<std::uint32_t> nearby;
+    GatherScratch scratch;
     for (std::size_t i = first; i < end; ++i) {
-      tests[run] +=
-          split_segment(static_cast<std::uint32_t>(i), segments[i], mesh, grid, screen, options, nearby, pieces[run]);
+      tests[run] += split_segment(static_cast<std::uint32_t>(i), segments[i], mesh, grid, screen, options, nearby,
+                                  scratch, pieces[run]);
     }
   });
   Visibility visibility;

@@ -63,9 +63,11 @@ void add_object(const FrameContext& frame, std::size_t i, std::shared_ptr<const 
       mesh.points[view.first_vertex + v] = glm::dvec3(view.to_view * glm::dvec4(glm::dvec3(positions[v]), 1.0));
     }
   });
+  mesh.groups.reserve(mesh.groups.size() + view.edges->group.size());
   for (std::uint32_t g : view.edges->group) mesh.groups.push_back(view.group_offset + g);
   mesh.group_count += view.edges->group_count;
   const std::vector<std::uint32_t>& indices = level_indices(object.model.mesh, view.level);
+  mesh.corners.reserve(mesh.corners.size() + indices.size());
   for (std::uint32_t index : indices) mesh.corners.push_back(view.first_vertex + index);
   view.triangle_count = static_cast<std::uint32_t>(indices.size() / 3);
   mesh.objects.push_back(std::move(view));
