@@ -289,38 +289,45 @@ TEST_F(SvgOutput, ABoxInFrontHidesTheLinesBehindIt) {
   }
 }
 
-// Two boxes of one model passing through each other: where the thin one
-// goes into the big one's faces, the seams (two squares) are drawn in
-// `intersections`, the one in front where the thin box does not hide it,
-// the one behind not at all.
+// Two boxes passing through each other: where the thin one goes into the
+// big one's faces, the seams (two squares) are drawn in `intersections`,
+// the one in front where the thin box does not hide it, the one behind not
+// at all. As one model (its seams found at import) and as two objects of a
+// scene (found for the frame: no import saw them cross).
 TEST_F(SvgOutput, TwoCrossingBoxesDrawTheirSeam) {
   const Box big{{-1, -1, -1}, {1, 1, 1}};
   const Box rod{{-0.4, -0.4, -1.7}, {0.4, 0.4, 1.7}};
-  const std::string id = upload(boxes_obj({big, rod}), "crossing.obj");
-  for (const char* projection : {"perspective", "orthographic"}) {
-    const SvgFile svg = svg_of(
-        {{"model", id}, {"output", "svg"}, {"camera", {{"yaw", 30}, {"pitch", 25}, {"projection", projection}}}});
-    ASSERT_FALSE(svg.camera.is_null());
-    const MetaCamera camera = camera_from_metadata(svg.camera);
-    const auto seen = [&](const glm::dvec3& p) { return seen_among_boxes(camera, {big, rod}, p); };
-    std::vector<ExactLine> lines = box_lines(big, camera);
-    const std::vector<ExactLine> rod_lines = box_lines(rod, camera);
-    lines.insert(lines.end(), rod_lines.begin(), rod_lines.end());
-    std::size_t seams_seen = 0;
-    for (double z : {-1.0, 1.0}) {
-      const glm::dvec3 c[4] = {{-0.4, -0.4, z}, {0.4, -0.4, z}, {0.4, 0.4, z}, {-0.4, 0.4, z}};
-      for (int k = 0; k < 4; ++k) {
-        lines.push_back({c[k], c[(k + 1) % 4], "intersections"});
-        seams_seen += sample_line(camera, c[k], c[(k + 1) % 4], seen, 100).seen_share() > 0.5;
+  const json one_model = {{"model", upload(boxes_obj({big, rod}), "crossing.obj")}};
+  const std::string cube = upload(boxes_obj({big}), "unit_cube.obj");
+  const json scene = {{"objects", {{{"model", cube}}, {{"model", cube}, {"transform", {{"scale", {0.4, 0.4, 1.7}}}}}}}};
+  for (const auto& [form, drawn] : {std::pair("one model", one_model), std::pair("a scene", scene)})
+    for (const char* projection : {"perspective", "orthographic"}) {
+      json request = drawn;
+      request["output"] = "svg";
+      request["camera"] = {{"yaw", 30}, {"pitch", 25}, {"projection", projection}};
+      const SvgFile svg = svg_of(request);
+      ASSERT_FALSE(svg.camera.is_null()) << form;
+      const MetaCamera camera = camera_from_metadata(svg.camera);
+      const auto seen = [&](const glm::dvec3& p) { return seen_among_boxes(camera, {big, rod}, p); };
+      std::vector<ExactLine> lines = box_lines(big, camera);
+      const std::vector<ExactLine> rod_lines = box_lines(rod, camera);
+      lines.insert(lines.end(), rod_lines.begin(), rod_lines.end());
+      std::size_t seams_seen = 0;
+      for (double z : {-1.0, 1.0}) {
+        const glm::dvec3 c[4] = {{-0.4, -0.4, z}, {0.4, -0.4, z}, {0.4, 0.4, z}, {-0.4, 0.4, z}};
+        for (int k = 0; k < 4; ++k) {
+          lines.push_back({c[k], c[(k + 1) % 4], "intersections"});
+          seams_seen += sample_line(camera, c[k], c[(k + 1) % 4], seen, 100).seen_share() > 0.5;
+        }
       }
+      EXPECT_GE(seams_seen, 2u) << projection << ": the front square's near sides show";
+      const std::string what = std::string(form) + ", " + projection;
+      // The rod's long edges run through the big box: the stretch inside it
+      // is no line (ray casting sees it hidden; it lies inside a solid).
+      const Meets meets = [&](glm::dvec2 px) { return ray_meets_boxes(camera, {big, rod}, px); };
+      expect_lines_match(svg, lines, seen, meets, what);
+      EXPECT_FALSE(svg.layers.at("intersections").strokes.empty()) << what;
     }
-    EXPECT_GE(seams_seen, 2u) << projection << ": the front square's near sides show";
-    // The rod's long edges run through the big box: the stretch inside it
-    // is no line (ray casting sees it hidden; it lies inside a solid).
-    const Meets meets = [&](glm::dvec2 px) { return ray_meets_boxes(camera, {big, rod}, px); };
-    expect_lines_match(svg, lines, seen, meets, std::string("crossing boxes, ") + projection);
-    EXPECT_FALSE(svg.layers.at("intersections").strokes.empty());
-  }
 }
 
 // A smooth torus, whose contour (where its surface turns edge-on to the eye)
@@ -524,6 +531,35 @@ TEST_F(SvgAgainstLines, Fandisk) {
   auto res = upload_files(client, TOOND_EXPORTED_DIR "/cgal", {"fandisk.off"});
   ASSERT_TRUE(res && res->status / 100 == 2) << (res ? res->body : "no answer");
   expect_agreement(json::parse(res->body)["id"], "fandisk");
+}
+
+// A pose: Blender's walking character (tests/exported/blender/make_walker.py)
+// at two times of its Walk, each SVG against its own PNG lines layer: the
+// drawing follows the posed vertices, not the rest ones.
+TEST_F(SvgAgainstLines, PosedWalker) {
+  if (!have_rsvg()) GTEST_SKIP() << "rsvg-convert (librsvg2-bin) is not installed";
+  auto client = daemon().client();
+  auto res = upload_files(client, TOOND_EXPORTED_DIR "/blender", {"walker.glb"});
+  ASSERT_TRUE(res && res->status / 100 == 2) << (res ? res->body : "no answer");
+  const std::string id = json::parse(res->body)["id"];
+  std::vector<std::string> drawings;
+  for (double time : {0.1, 0.5}) {
+    const json request = {
+        {"model", id}, {"camera", {{"yaw", 60}, {"pitch", 10}}}, {"animation", {{"clip", "Walk"}, {"time", time}}}};
+    json as_svg = request, as_lines = request;
+    as_svg["output"] = "svg";
+    as_lines["output"] = "lines";
+    auto svg = post(as_svg);
+    ASSERT_TRUE(svg && svg->status == 200) << (svg ? svg->body : "no answer");
+    const InkAgreement a = agreement(rasterise(svg->body), render_ok(client, as_lines));
+    EXPECT_GE(a.svg_near_png, 0.95) << "time " << time << ": SVG ink " << a.svg_ink << " px";
+    EXPECT_GE(a.png_near_svg, 0.95) << "time " << time << ": PNG ink " << a.png_ink << " px";
+    std::cout << "walker at " << time << " s: " << 100 * a.svg_near_png << " % of the SVG's " << a.svg_ink
+              << " ink px near the PNG's, " << 100 * a.png_near_svg << " % of the PNG's " << a.png_ink
+              << " near the SVG's\n";
+    drawings.push_back(svg->body);
+  }
+  EXPECT_NE(drawings[0], drawings[1]) << "two times of the walk draw alike";
 }
 
 TEST_F(SvgOutput, AcceptHeaderAsksForSvgWhenNoOutputIsGiven) {

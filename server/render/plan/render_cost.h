@@ -74,10 +74,15 @@ inline constexpr double kEdgeTexelSamples = 4.5;
 // coverage when there is one sample a pixel; the medians kept.
 inline constexpr double kCreaseEdgeSamples = 275;
 inline constexpr double kLineCoveragePassSamples = 1.6;
-// A line drawing's weights (render/plan/line_drawing_cost.h), fitted to its
-// time by bench/line_drawing.py.
-inline constexpr double kLineTriangleSamples = 60;
-inline constexpr double kLineEdgeSamples = 600;
+// A line drawing's weights (render/plan/line_drawing_cost.h), fitted by
+// bench/line_drawing.py --fit to its own time (Server-Timing `lines`) on
+// the shared models and fandisk, two views each, at 1.4 ms a Msample: 497
+// and 2416 (2026-12-07, a 2-core machine shared with other builds). They
+// over-price the small closed models (2 ms drawn, 6-15 ms priced) and
+// under-price the windmill's many crease edges by up to half; the price
+// only refuses (--max-render-cost), so erring high is the safe side.
+inline constexpr double kLineTriangleSamples = 500;
+inline constexpr double kLineEdgeSamples = 2400;
 inline constexpr double kSilhouetteEdgesPerRootTriangle = 8;
 // The screen tile a rasteriser bins triangles into (llvmpipe's is 64 pixels).
 inline constexpr double kTilePixels = 64;

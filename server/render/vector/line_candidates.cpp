@@ -3,6 +3,8 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "render/vector/scene_seams.h"
+
 namespace toond::render::vector {
 namespace {
 
@@ -138,6 +140,17 @@ Candidates line_candidates(const ViewMesh& mesh, const LineChoice& choice) {
     if (choice.silhouettes || choice.boundaries) add_mesh_edges(mesh, object, choice, candidates.segments);
     if (choice.creases) add_creases(mesh, object, choice, candidates.segments);
     if (choice.intersections) add_seams(object, choice, seam_nodes, candidates.segments);
+  }
+  if (choice.intersections && mesh.objects.size() > 1) {
+    for (const auto& [a, b] : scene_seams(mesh, choice.crease_angle_deg)) {
+      Segment s;
+      s.a = a;
+      s.b = b;
+      s.node_a = seam_nodes.at(a);
+      s.node_b = seam_nodes.at(b);
+      s.kind = LineKind::Intersection;
+      candidates.segments.push_back(s);
+    }
   }
   candidates.node_count = seam_nodes.next();
   return candidates;

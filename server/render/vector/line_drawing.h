@@ -6,7 +6,8 @@
 // work on the frame's plan and context (frame_context.h, no GL): the
 // pipeline runs it on the request's thread, its runs spread over the cores.
 //   view_mesh          the triangles in view space, which way each faces
-//   line_candidates    silhouettes, creases, seams, open edges
+//   line_candidates    silhouettes, creases, seams, open edges (scene_seams:
+//                      where a scene's objects cross)
 //   occluder_grid      what may hide each, binned on screen
 //   segment_visibility each cut into visible and hidden pieces
 //   contour_filter     the silhouettes the outline methods draw
