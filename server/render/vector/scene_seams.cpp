@@ -15,7 +15,9 @@ struct Box {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
-  bool overlaps(const Box& o) const { return glm::all(glm::lessThanEqual(lo, o.hi)) && glm::all(glm::lessThanEqual(o.lo, hi)); }
+  bool overlaps(const Box& o) const {
+    return glm::all(glm::lessThanEqual(lo, o.hi)) && glm::all(glm::lessThanEqual(o.lo, hi));
+  }
 };
 
 Box triangle_box(const ViewMesh& mesh, std::size_t t) {
