@@ -101,7 +101,9 @@ class SeamNodes {
   };
   struct KeyHash {
     std::size_t operator()(const Key& k) const {
-      return static_cast<std::size_t>((k.x * 73856093LL) ^ (k.y * 19349663LL) ^ (k.z * 83492791LL));
+      // Unsigned: wrapping is the mixing, not an overflow.
+      const auto u = [](long long v) { return static_cast<std::uint64_t>(v); };
+      return static_cast<std::size_t>((u(k.x) * 73856093u) ^ (u(k.y) * 19349663u) ^ (u(k.z) * 83492791u));
     }
   };
   std::unordered_map<Key, std::uint32_t, KeyHash> ids_;

@@ -153,7 +153,10 @@ class EndIndex {
   std::pair<std::int64_t, std::int64_t> cell(glm::dvec2 p) const {
     return {static_cast<std::int64_t>(std::floor(p.x / gap_)), static_cast<std::int64_t>(std::floor(p.y / gap_))};
   }
-  static std::int64_t pack(std::int64_t x, std::int64_t y) { return x * 1000003 + y; }
+  static std::int64_t pack(std::int64_t x, std::int64_t y) {
+    // Unsigned: wrapping is the mixing, not an overflow.
+    return static_cast<std::int64_t>(static_cast<std::uint64_t>(x) * 1000003u + static_cast<std::uint64_t>(y));
+  }
   std::int64_t key(glm::dvec2 p) const {
     const auto [x, y] = cell(p);
     return pack(x, y);
