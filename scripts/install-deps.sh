@@ -42,6 +42,9 @@ test_packages=(
   nginx-light
   # the web page's browser test: Debian's chromium driven by playwright-core from npm
   chromium
+  # output svg's drawings rasterised by an independent reader, librsvg
+  # (tests/integration/svg_output_test.cpp)
+  librsvg2-bin
 )
 
 if ! $build_only; then packages+=("${test_packages[@]}"); fi

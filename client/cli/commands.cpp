@@ -195,12 +195,15 @@ int write_answer(OutputFile& file, const std::string& name, const httplib::Respo
     std::cerr << "toon: " << problem << "\n";
     return 1;
   }
-  const bool webp = res.get_header_value("Content-Type").rfind("image/webp", 0) == 0;
+  const std::string type = res.get_header_value("Content-Type");
+  const bool webp = type.rfind("image/webp", 0) == 0;
   std::cerr << "toon: wrote " << (name == "-" ? "standard output" : name);
   if (!answer.what.empty())
     std::cerr << " (" << answer.what;
   else if (webp)
     std::cerr << " (animated WebP";
+  else if (type.rfind("image/svg+xml", 0) == 0)
+    std::cerr << " (SVG line drawing";
   else if (auto size = png_size(res.body))
     std::cerr << " (" << size->first << "x" << size->second;
   else

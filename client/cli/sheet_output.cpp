@@ -44,7 +44,9 @@ RenderAnswer render_answer_for(const std::string& output) {
     const std::string name = std::filesystem::path(png).filename().string();
     return {"?atlas=godot&texture=" + percent_encoded(name), "a Godot SpriteFrames resource", {"text/plain"}, png};
   }
-  return {"", "", {"image/png", "image/webp"}, ""};
+  // The image as it comes: a PNG, sheet.animate's WebP, output svg's SVG
+  // (which -o NAME.svg asks for, cli_args.h).
+  return {"", "", {"image/png", "image/webp", "image/svg+xml"}, ""};
 }
 
 }  // namespace toond::cli

@@ -2,8 +2,8 @@
 // What `toon render -o FILE` asks the daemon for, by FILE's extension: a
 // sheet's .aseprite file (.aseprite, .ase), its Godot SpriteFrames resource
 // (.tres, with the sheet's PNG written beside it under the same name), its
-// atlas alone (.json), or the image as it comes (anything else: a PNG, or
-// the WebP of sheet.animate). No network here: the unit tests check it.
+// atlas alone (.json), or the image as it comes (anything else: a PNG, the
+// WebP of sheet.animate, or the SVG of output svg). No network here: the unit tests check it.
 #include <string>
 #include <string_view>
 #include <vector>

@@ -91,6 +91,8 @@ function bodyFor(kind) {
   const body = clone(studio.params);
   // The live loop renders one image; the sheet section asks for the sheet.
   delete body.sheet;
+  // The svg block means something to output svg alone (the SVG button's).
+  if (body.output !== 'svg') delete body.svg;
   if (kind === 'quick') {
     const shown = effective();
     const scale = Math.min(1, QUICK_SIDE / Math.max(shown.width, shown.height));
@@ -364,13 +366,15 @@ function toggleHelp() {
 
 // ---- layers ---------------------------------------------------------------------
 
-// One button per value of the schema's `output` (a daemon without it shows none).
+// One button per raster value of the schema's `output` (a daemon without it
+// shows none); its vector drawing, svg, is a download beside them.
 function installLayers() {
   const schema = studio.schema.properties.output;
   if (!Array.isArray(schema?.enum)) return;
   const box = $('layers');
   box.title = schema.description ?? '';
   for (const value of schema.enum) {
+    if (value === 'svg') continue;
     const id = `layer-${value}`;
     const radio = Object.assign(document.createElement('input'), { type: 'radio', name: 'layer', id, value });
     const label = Object.assign(document.createElement('label'), { htmlFor: id, textContent: value });
@@ -379,7 +383,56 @@ function installLayers() {
     });
     box.append(radio, label);
   }
+  if (schema.enum.includes('svg')) installSvgDownload(box);
   box.hidden = false;
+}
+
+// ---- the lines as vectors -------------------------------------------------------
+
+function installSvgDownload(box) {
+  const button = Object.assign(document.createElement('button'), {
+    type: 'button', id: 'svg-download', textContent: 'SVG',
+    title: 'Download the lines of this view as an SVG drawing (output svg): a layer per kind of line, '
+      + 'for a pen plotter or a vector editor',
+  });
+  const hidden = Object.assign(document.createElement('input'), { type: 'checkbox', id: 'svg-hidden' });
+  const label = Object.assign(document.createElement('label'), {
+    htmlFor: 'svg-hidden', textContent: 'hidden lines', title: 'Add the hidden parts of the lines, dashed (svg.hidden)',
+  });
+  button.addEventListener('click', () => downloadSvg(button, hidden.checked));
+  const tools = Object.assign(document.createElement('span'), { className: 'svg-tools' });
+  tools.append(button, hidden, label);
+  box.append(tools);
+}
+
+// The full-quality request of the view shown, but for its output: the
+// drawing comes back as a file to save.
+async function downloadSvg(button, withHidden) {
+  const body = bodyFor('full');
+  body.output = 'svg';
+  if (withHidden) body.svg = { hidden: true };
+  button.disabled = true;
+  try {
+    let res;
+    try {
+      res = await fetch('/render', { method: 'POST', headers: { 'Content-Type': 'application/json' },
+        body: JSON.stringify(body) });
+    } catch (e) {
+      throw new LostServer(e.message);
+    }
+    if (!res.ok) throw await answerFailure(res);
+    const url = URL.createObjectURL(await res.blob());
+    const link = Object.assign(document.createElement('a'), { href: url, download: 'toond-lines.svg' });
+    document.body.append(link);
+    link.click();
+    link.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 60000);
+    button.dataset.downloads = String(Number(button.dataset.downloads || 0) + 1);
+  } catch (error) {
+    showRenderError(error);
+  } finally {
+    button.disabled = false;
+  }
 }
 
 // ---- sprite sheet ---------------------------------------------------------------

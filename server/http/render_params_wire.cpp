@@ -103,6 +103,7 @@ Output output_of(const std::string& name) {
   if (name == "depth") return Output::Depth;
   if (name == "normal") return Output::Normal;
   if (name == "id") return Output::Id;
+  if (name == "svg") return Output::Svg;
   return Output::Color;
 }
 
@@ -280,6 +281,7 @@ RenderParams render_params_from_wire(const json& j) {
   if (j.contains("sheet")) p.sheet = sheet_of(j.at("sheet"), p.camera);
   if (j.contains("animation")) p.animation = animation_of(j.at("animation"));
   p.output = output_of(j.at("output").get<std::string>());
+  p.svg.hidden = j.at("svg").at("hidden").get<bool>();
   return p;
 }
 

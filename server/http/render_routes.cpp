@@ -1,4 +1,5 @@
-// POST /render: JSON parameters → PNG; or multipart (bundle files + a
+// POST /render: JSON parameters → PNG (output svg, or Accept:
+// image/svg+xml without an output: SVG); or multipart (bundle files + a
 // `params` part) to upload and render in one call. With `sheet`: a sprite
 // sheet with its atlas in a tEXt chunk, or (?atlas=json) the atlas alone, or
 // (?atlas=aseprite, ?atlas=godot) an .aseprite file or a Godot SpriteFrames
@@ -18,6 +19,7 @@
 #include "http/routes.h"
 #include "http/sheet_query.h"
 #include "http/store_upload.h"
+#include "http/svg_request.h"
 #include "param_schema.h"
 #include "pipeline/pipeline.h"
 #include "presets.h"
@@ -65,7 +67,8 @@ std::string lod_header(const std::vector<render::LodUse>& lods) {
 }
 
 // "cost=12.3; frames=1; samples=…; triangles=…; tiles=…; framebuffer=…;
-// edge_texels=…; crease_edges=…":
+// edge_texels=…; crease_edges=…" (and a line drawing's "line_triangles=…;
+// line_edges=…"):
 // the predicted Msamples and what they are made of, for clients that size
 // their requests and for the cost benchmark, which fits the weights.
 std::string cost_header(const pipeline::RenderPrice& price) {
@@ -75,6 +78,7 @@ std::string cost_header(const pipeline::RenderPrice& price) {
   s << "cost=" << c.units() << "; frames=" << price.frames << "; samples=" << c.samples << "; triangles=" << c.triangles
     << "; tiles=" << c.tiles << "; framebuffer=" << c.framebuffer << "; edge_texels=" << c.edge_texels
     << "; crease_edges=" << c.crease_edges;
+  if (c.line_triangles > 0) s << "; line_triangles=" << c.line_triangles << "; line_edges=" << c.line_edges;
   return s.str();
 }
 
@@ -122,7 +126,8 @@ nlohmann::json complete_request(const nlohmann::json& request, const RequestLimi
 }
 
 pipeline::Services services_of(ServiceContext& context) {
-  return {context.library, context.renderer, context.clip_framings, context.limits.render, context.render_deadline};
+  return {context.library,       context.renderer,        context.clip_framings,
+          context.limits.render, context.render_deadline, context.line_drawings};
 }
 
 // The pipeline's render, with what /metrics counts of it.
@@ -166,7 +171,10 @@ void answer_rendered(const httplib::Request& req, httplib::Response& res, pipeli
 void register_render_routes(httplib::Server& server, ServiceContext& context) {
   const auto render = [&context](const httplib::Request& req, httplib::Response& res) {
     const auto started = Clock::now();
-    const nlohmann::json completed = complete_request(read_request(req, context), context.limits);
+    nlohmann::json sent = read_request(req, context);
+    apply_svg_accept(req.get_header_value("Accept"), sent);
+    const nlohmann::json completed = complete_request(sent, context.limits);
+    check_svg_fields(sent, completed);
     // Held until the answer is sent: the store lets none of these models go.
     scene::ModelPins pins(context.store);
     pipeline::Request request =

@@ -59,6 +59,7 @@ Encoded sheet_file(const Request& request, Services& services) {
 }
 
 Rendered render(Request request, const std::string& client, Services& services) {
+  if (request.params.output == render::Output::Svg) return render_svg(std::move(request), client, services);
   Rendered rendered;
   const auto posing = Clock::now();
   const std::vector<ObjectPoses> poses = pose_frames(request, services.framings, services.renderer.skinning());

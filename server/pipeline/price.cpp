@@ -80,6 +80,8 @@ RenderCost RenderPrice::per_frame() const {
   one.frames /= n;
   one.edge_texels /= n;
   one.crease_edges /= n;
+  one.line_triangles /= n;
+  one.line_edges /= n;
   return one;
 }
 

@@ -1,7 +1,8 @@
 // The page's output tools in a real browser (Debian's chromium through
 // playwright-core, a real toond on 127.0.0.1:0): controls shown only where
 // the schema's x-applies-when says they matter, the layer switcher
-// (`output`), and the sprite-sheet preview with its atlas.
+// (`output`), the SVG download beside it, and the sprite-sheet preview with
+// its atlas.
 //   node layers.test.mjs --toond PATH --artifacts DIR
 // Exit 0: every check passed; 1: a check failed. Screenshots go to --artifacts.
 import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -250,6 +251,61 @@ async function checkSheetFiles(page, requests) {
     && !document.getElementById('sheet').classList.contains('busy'), packedSheets, { timeout: STEP_TIMEOUT_MS });
 }
 
+// The drawing as Chromium reads it: its layers' ids (DOMParser), its
+// size and how many pixels its strokes ink, drawn from an <img> into a canvas.
+async function readSvgInPage(page, text) {
+  return page.evaluate(async (svg) => {
+    const doc = new DOMParser().parseFromString(svg, 'image/svg+xml');
+    const ids = [...doc.documentElement.children].filter((e) => e.localName === 'g').map((g) => g.id);
+    const strokes = doc.querySelectorAll('g#silhouette path').length;
+    const url = URL.createObjectURL(new Blob([svg], { type: 'image/svg+xml' }));
+    const img = new Image();
+    img.src = url;
+    await img.decode();
+    const canvas = Object.assign(document.createElement('canvas'), { width: img.naturalWidth, height: img.naturalHeight });
+    const ctx = canvas.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const { data } = ctx.getImageData(0, 0, canvas.width, canvas.height);
+    let ink = 0;
+    for (let i = 3; i < data.length; i += 4) ink += data[i] > 127 ? 1 : 0;
+    URL.revokeObjectURL(url);
+    return { ids, strokes, width: img.naturalWidth, height: img.naturalHeight, ink,
+      parseError: doc.querySelector('parsererror') !== null };
+  }, text);
+}
+
+async function downloadSvg(page, name) {
+  const [download] = await Promise.all([page.waitForEvent('download', { timeout: STEP_TIMEOUT_MS }),
+    page.click('#svg-download')]);
+  const file = path.join(artifacts, name);
+  await download.saveAs(file);
+  return { file, suggested: download.suggestedFilename(), text: readFileSync(file, 'utf8') };
+}
+
+// The SVG button beside the layers: the view's lines downloaded as an SVG
+// drawing, which Chromium opens with its layers and draws with ink.
+async function checkSvg(page, requests) {
+  check(await page.isVisible('#svg-download'), 'an SVG button beside the layer buttons');
+  requests.length = 0;
+  const plain = await downloadSvg(page, 'toond-lines.svg');
+  check(plain.suggested === 'toond-lines.svg', 'the drawing downloads as toond-lines.svg', plain.suggested);
+  const asked = lastRender(requests);
+  check(asked?.output === 'svg' && !('svg' in asked), 'it asks for output "svg"', JSON.stringify(asked));
+  const read = await readSvgInPage(page, plain.text);
+  check(!read.parseError, 'Chromium parses the drawing as SVG');
+  check(JSON.stringify(read.ids) === JSON.stringify(['silhouette', 'creases', 'intersections', 'boundary']),
+    'with a layer per kind of line', read.ids.join(' '));
+  check(read.strokes > 0, 'the silhouette layer has strokes', String(read.strokes));
+  check(read.width === 192 && read.height === 192, 'an <img> of it is the view\'s size', `${read.width}×${read.height}`);
+  check(read.ink > 100 && read.ink < 0.25 * read.width * read.height, 'and Chromium draws its lines',
+    `${read.ink} inked pixels`);
+  await page.check('#svg-hidden');
+  const withHidden = await downloadSvg(page, 'toond-lines-hidden.svg');
+  check(lastRender(requests)?.svg?.hidden === true, 'the hidden-lines box asks for svg.hidden');
+  const again = await readSvgInPage(page, withHidden.text);
+  check(again.ids[0] === 'hidden', 'and the drawing gets a hidden layer first', again.ids.join(' '));
+}
+
 async function checkSheet(page, requests) {
   check(await page.locator('#sheet-toggle').isVisible() && !(await shown(page, '/sheet/frames')),
     'a sprite-sheet switch, its controls hidden while off');
@@ -354,7 +410,8 @@ try {
   const start = encodeURIComponent(JSON.stringify({ width: 192, height: 192 }));
   for (const [name, part] of [['light type', (p) => checkLightType(p, requests)],
     ['light space and fov', (p) => checkLightSpaceAndFov(p, requests)], ['group switches', checkGroupSwitches],
-    ['layers', (p) => checkLayers(p, requests)], ['sprite sheet', (p) => checkSheet(p, requests)]]) {
+    ['layers', (p) => checkLayers(p, requests)], ['svg download', (p) => checkSvg(p, requests)],
+    ['sprite sheet', (p) => checkSheet(p, requests)]]) {
     try {
       await page.goto('about:blank');
       await page.goto(`${daemon.url}/#${start}`);

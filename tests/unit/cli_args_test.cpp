@@ -291,6 +291,20 @@ TEST(RenderParams, RepeatedSetsMergeAndLaterOnesWin) {
                                "shading":{"steps":5}})"));
 }
 
+// -o NAME.svg asks for the lines as vectors; parameters that ask for
+// another output contradict it.
+TEST(RenderParams, AnSvgFileNameAsksForOutputSvg) {
+  EXPECT_EQ(build_render_params(parse({"render", "-o", "lines.SVG"}), schema()), json::parse(R"({"output":"svg"})"));
+  EXPECT_EQ(build_render_params(parse({"render", "-o", "x.svg", "--set", "svg.hidden=true"}), schema()),
+            json::parse(R"({"output":"svg","svg":{"hidden":true}})"));
+  EXPECT_EQ(build_render_params(parse({"render", "-o", "x.png"}), schema()), json::object());
+  const std::string message = usage_error([&] {
+    build_render_params(parse({"render", "-o", "x.svg", "--output", "lines"}), schema());
+  });
+  EXPECT_TRUE(contains(message, "x.svg")) << message;
+  EXPECT_TRUE(contains(message, "\"lines\"")) << message;
+}
+
 // Keys as users type them, driven by the schema: a path through objects
 // and through fields that are an object or a list of them
 // (sheet.animation), a comma list where the field takes a list, a name or
@@ -692,11 +706,12 @@ TEST(RenderAnswer, TheExtensionOfOutPicksTheSheetsFile) {
   const RenderAnswer godot = render_answer_for("sprites/walk cycle.tres");
   EXPECT_EQ(godot.query, "?atlas=godot&texture=walk%20cycle.png") << "the PNG beside it, by name";
   EXPECT_EQ(godot.companion_png, "sprites/walk cycle.png");
-  for (const char* image : {"walk.png", "turn.webp", "-", "noext"}) {
+  // The image as it comes: output svg (which a .svg name asks for) answers an SVG.
+  for (const char* image : {"walk.png", "turn.webp", "lines.svg", "-", "noext"}) {
     const RenderAnswer answer = render_answer_for(image);
     EXPECT_EQ(answer.query, "") << image;
     EXPECT_EQ(answer.companion_png, "") << image;
-    EXPECT_EQ(answer.content_types, (std::vector<std::string>{"image/png", "image/webp"})) << image;
+    EXPECT_EQ(answer.content_types, (std::vector<std::string>{"image/png", "image/webp", "image/svg+xml"})) << image;
   }
   EXPECT_EQ(percent_encoded("a b/ü"), "a%20b%2F%C3%BC");
 }

@@ -1,6 +1,7 @@
 #include "render/plan/render_cost.h"
 
 #include "render/plan/camera.h"
+#include "render/plan/line_drawing_cost.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,7 +95,8 @@ double edge_texels_per_pixel(double line_px, bool creases_only) {
 
 double RenderCost::units() const {
   return (samples + triangles * kTriangleSamples + tiles * kTileSamples + framebuffer * kFramebufferSamples +
-          frames * kFrameSamples + edge_texels * kEdgeTexelSamples + crease_edges * kCreaseEdgeSamples) /
+          frames * kFrameSamples + edge_texels * kEdgeTexelSamples + crease_edges * kCreaseEdgeSamples +
+          line_triangles * kLineTriangleSamples + line_edges * kLineEdgeSamples) /
          1e6;
 }
 
@@ -105,6 +107,8 @@ std::string RenderCost::describe() const {
     << " M, tile samples crossed " << tiles / 1e6 << " M, frame samples " << framebuffer / 1e6 << " M";
   if (edge_texels > 0) s << ", edge pass texels " << edge_texels / 1e6 << " M";
   if (crease_edges > 0) s << ", crease edges " << crease_edges / 1e6 << " M";
+  if (line_triangles > 0) s << ", line drawing's triangles " << line_triangles / 1e6 << " M";
+  if (line_edges > 0) s << ", line drawing's edges " << line_edges / 1e6 << " M";
   s << ")";
   return s.str();
 }
@@ -117,12 +121,15 @@ RenderCost& RenderCost::operator+=(const RenderCost& other) {
   frames += other.frames;
   edge_texels += other.edge_texels;
   crease_edges += other.crease_edges;
+  line_triangles += other.line_triangles;
+  line_edges += other.line_edges;
   return *this;
 }
 
 RenderCost predict_frame_cost(const PricedFrame& frame, std::span<const scene::Mesh* const> meshes, ViewKnown view) {
   const RenderParams& params = frame.params;
   const PassPlan& plan = frame.passes;
+  if (params.output == Output::Svg) return line_drawing_cost(params, meshes);
   const double width = static_cast<double>(params.width) * plan.supersample;
   const double height = static_cast<double>(params.height) * plan.supersample;
   const bool known = view == ViewKnown::Camera;
