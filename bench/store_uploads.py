@@ -1,10 +1,12 @@
 #!/usr/bin/python3
 """What an upload costs through the daemon as the store fills, with and
-without a bound (issue 55): starts TOOND twice on a fresh data directory,
-unbounded and with --max-store-mb, and POSTs the same UPLOADS distinct small
-OBJ files (~2 KB, one triangle and a comment) to each over one kept-alive
-connection, then prints the median and 90th percentile of the last LAST
-request times of each, the models kept, and the ratio bounded / unbounded.
+without a bound (issue 55): starts TOOND twice, each on a fresh data
+directory, unbounded and with --max-store-mb, and POSTs the same UPLOADS
+distinct small OBJ files (~2 KB, one triangle and a comment) to both in
+turn (so that a busy moment of the machine, or of its disk, falls on both
+alike), each over one kept-alive connection; then prints the median and
+90th percentile of the last LAST request times of each, the models kept,
+and the ratio bounded / unbounded.
 
     bench/store_uploads.py [--toond build/server/app/toond] [--uploads 3000]
                            [--last 300] [--max-store-mb 2] [--data DIR]
@@ -43,29 +45,31 @@ def start(toond, data, extra):
     raise SystemExit(f"{toond} did not start")
 
 
-def run(toond, data, extra, uploads):
-    """Request times (ms) of `uploads` uploads, and /healthz's store at the end."""
-    proc, url = start(toond, data, extra)
-    try:
+class Daemon:
+    def __init__(self, toond, data, extra):
+        self.proc, url = start(toond, data, extra)
         host, port = url.replace("http://", "").split(":")
-        conn = http.client.HTTPConnection(host, int(port))
+        self.conn = http.client.HTTPConnection(host, int(port))
+        self.times = []
+
+    def upload(self, n):
         headers = {"Content-Type": f"multipart/form-data; boundary={BOUNDARY}"}
-        times = []
-        for n in range(uploads):
-            body = multipart(obj(n))
-            started = time.perf_counter()
-            conn.request("POST", "/models", body, headers)
-            res = conn.getresponse()
-            answer = res.read()
-            times.append(1000 * (time.perf_counter() - started))
-            if res.status != 201:
-                raise SystemExit(f"upload {n} answered {res.status}: {answer[:200]}")
-        conn.request("GET", "/healthz")
-        store = json.loads(conn.getresponse().read())["store"]
-        return times, store
-    finally:
-        proc.terminate()
-        proc.wait()
+        body = multipart(obj(n))
+        started = time.perf_counter()
+        self.conn.request("POST", "/models", body, headers)
+        res = self.conn.getresponse()
+        answer = res.read()
+        self.times.append(1000 * (time.perf_counter() - started))
+        if res.status != 201:
+            raise SystemExit(f"upload {n} answered {res.status}: {answer[:200]}")
+
+    def store(self):
+        self.conn.request("GET", "/healthz")
+        return json.loads(self.conn.getresponse().read())["store"]
+
+    def stop(self):
+        self.proc.terminate()
+        self.proc.wait()
 
 
 def main():
@@ -77,20 +81,27 @@ def main():
     parser.add_argument("--data", help="where the data directories go (default: a temporary folder)")
     args = parser.parse_args()
     root = tempfile.mkdtemp(prefix="toond-store-uploads-", dir=args.data)
+    daemons = {}
     try:
-        medians = {}
         for name, extra in (("unbounded", []), (f"--max-store-mb {args.max_store_mb}",
                                                 ["--max-store-mb", args.max_store_mb])):
             data = os.path.join(root, name.replace(" ", "_").strip("-"))
-            times, store = run(args.toond, data, extra, args.uploads)
-            last = times[-args.last:]
-            medians[name] = statistics.median(last)
+            daemons[name] = Daemon(args.toond, data, extra)
+        for n in range(args.uploads):
+            for daemon in daemons.values():
+                daemon.upload(n)
+        medians = []
+        for name, daemon in daemons.items():
+            last = daemon.times[-args.last:]
+            medians.append(statistics.median(last))
             p90 = statistics.quantiles(last, n=10)[-1]
-            print(f"{name:>20}: median {medians[name]:.2f} ms, p90 {p90:.2f} ms of the last {args.last} "
+            store = daemon.store()
+            print(f"{name:>20}: median {medians[-1]:.2f} ms, p90 {p90:.2f} ms of the last {args.last} "
                   f"of {args.uploads} uploads; {store['models']} models kept, {store['bytes']} bytes")
-        bounded, unbounded = list(medians.values())[1], list(medians.values())[0]
-        print(f"bounded / unbounded: {bounded / unbounded:.2f}")
+        print(f"bounded / unbounded: {medians[1] / medians[0]:.2f}")
     finally:
+        for daemon in daemons.values():
+            daemon.stop()
         shutil.rmtree(root, ignore_errors=True)
 
 

@@ -6,11 +6,16 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
 #include "scene/import/bundle.h"
+#include "scene/import/bundle_import.h"
+#include "scene/store/model_store.h"
+#include "scene/store/model_use.h"
 #include "scene/store/store_scan.h"
 
 namespace toond::test {
@@ -24,6 +29,47 @@ inline scene::Bundle padded_model(const std::string& tag, std::size_t bytes = 10
   scene::Bundle bundle;
   bundle.add("m.obj", obj);
   return bundle;
+}
+
+// The id the store gives a bundle uploaded with no choices.
+inline std::string stored_id(const scene::Bundle& bundle) {
+  return scene::bundle_id(bundle, scene::with_format_up(bundle, {}));
+}
+
+// `n` padded models of about `bytes` ("stored-0", "stored-1", …, the oldest
+// first, a second apart) written straight into DATA/models as the store
+// lays models out, each with the info.json a real upload of one wrote: a
+// large store made in seconds, without an import or an fsync per model.
+// The store's index is left to be built when a store next opens. Without
+// `files`, each model is its folder and info.json alone: what letting it go
+// and counting it need, in fewer files to write and delete.
+inline void fill_store(const std::filesystem::path& data_dir, std::size_t n, std::size_t bytes, bool files = true) {
+  namespace fs = std::filesystem;
+  scene::ModelInfo info;
+  const fs::path seed_dir = data_dir / "seed";
+  {
+    scene::StoreOptions quiet;
+    quiet.log = [](const std::string&) {};
+    scene::ModelStore seed(seed_dir, quiet);
+    info = seed.put(padded_model("seed", bytes)).info;
+  }
+  fs::remove_all(seed_dir);
+  const fs::path root = data_dir / "models";
+  fs::create_directories(root);
+  const std::timespec now = scene::wall_clock_now();
+  for (std::size_t i = 0; i < n; ++i) {
+    const scene::Bundle bundle = padded_model("stored-" + std::to_string(i), bytes);
+    info.id = stored_id(bundle);
+    const fs::path dir = root / info.id;
+    fs::create_directory(dir);
+    if (files) {
+      fs::create_directory(dir / "files");
+      fs::create_directory(dir / scene::kLeaseFolder);
+      std::ofstream(dir / "files" / "m.obj", std::ios::binary) << *bundle.find("m.obj");
+    }
+    std::ofstream(dir / "info.json", std::ios::binary) << info.to_json().dump(2) << "\n";
+    scene::stamp_use(dir, {now.tv_sec - static_cast<std::time_t>(n - i), 0});
+  }
 }
 
 // Every model folder under DATA/models and its bytes (temporary folders

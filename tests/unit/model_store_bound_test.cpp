@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <chrono>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -80,11 +81,19 @@ class StoreBound : public ::testing::Test {
     return ids;
   }
 
+  // Temporary folders left, once the store's sweeper thread has had a
+  // moment to delete the models let go (it does so just after the upload
+  // that let them go is answered).
   std::set<std::string> temporary_folders() const {
     std::set<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir_ / "models")) {
-      const std::string name = e.path().filename().string();
-      if (name.starts_with(".tmp-")) names.insert(name);
+    for (int tries = 0; tries < 500; ++tries) {
+      names.clear();
+      for (const auto& e : fs::directory_iterator(dir_ / "models")) {
+        const std::string name = e.path().filename().string();
+        if (name.starts_with(".tmp-")) names.insert(name);
+      }
+      if (names.empty()) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     return names;
   }

@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <iostream>
 #include <random>
@@ -55,12 +54,15 @@ std::optional<std::string> read_stored_file(const fs::path& path) {
 }
 
 std::string random_suffix() {
-  static std::atomic<std::uint64_t> counter{0};
-  std::random_device device;
-  const std::uint64_t value = (static_cast<std::uint64_t>(device()) << 32) ^ device() ^ (counter++ << 48) ^
-                              static_cast<std::uint64_t>(::getpid());
+  // Seeded once per thread: opening the random device for every name cost
+  // more than the rename the name is for.
+  thread_local std::mt19937_64 random = [] {
+    std::random_device device;
+    std::seed_seq seed{device(), device(), device(), static_cast<unsigned>(::getpid())};
+    return std::mt19937_64(seed);
+  }();
   std::ostringstream ss;
-  ss << std::hex << value;
+  ss << std::hex << random();
   return ss.str();
 }
 
@@ -153,7 +155,7 @@ ModelStore::PutResult ModelStore::land(const fs::path& temp, ModelInfo info, std
   PutResult result{std::move(info), true, {}};
   std::vector<fs::path> doomed;
   const auto delete_doomed = [&] {
-    for (const fs::path& folder : doomed) remove_quietly(folder);
+    for (fs::path& folder : doomed) sweeper_.sweep(std::move(folder));
   };
   try {
     StoreCatalog::Pass pass = catalog_.pass();

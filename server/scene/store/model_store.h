@@ -41,6 +41,7 @@
 #include "scene/import/bundle.h"
 #include "scene/import/import_choices.h"
 #include "scene/import/import_limits.h"
+#include "scene/store/folder_sweeper.h"
 #include "scene/store/store_catalog.h"
 #include "scene/store/store_error.h"
 #include "scene/store/store_journal.h"
@@ -220,6 +221,7 @@ class ModelStore {
   std::unordered_map<std::string, int> pins_;
   std::unordered_map<std::string, int> leases_;
   std::atomic<std::uint64_t> evictions_{0};
+  FolderSweeper sweeper_;  // last: its thread deletes before the rest goes
 };
 
 }  // namespace toond::scene

@@ -95,7 +95,8 @@ class StoreCatalog::Pass {
   // A model found gone that no intent covers (removed by hand).
   void forget(const std::string& id);
   // Records what the disk shows of every model intended in this pass (its
-  // renames made durable first).
+  // renames made durable first). Best effort: what cannot be recorded now
+  // stays an intent, which the next pass settles.
   void settle();
 
  private:

@@ -20,6 +20,10 @@ namespace {
 
 constexpr std::string_view kHeader = "toond-model-index 1\n";
 constexpr std::size_t kCrcDigits = 8;
+// Room kept allocated past the end of the file (not counted in its size),
+// so that the records of a deletion still fit when the volume is full:
+// deleting models is how room comes back. About 900 records.
+constexpr std::uint64_t kReserve = 64 * 1024;
 
 std::uint32_t crc_of(std::string_view text) {
   return static_cast<std::uint32_t>(
@@ -96,6 +100,7 @@ void StoreJournal::close() {
   fd_ = -1;
   offset_ = 0;
   records_ = 0;
+  reserved_to_ = 0;
 }
 
 StoreJournal::News StoreJournal::read() {
@@ -170,6 +175,7 @@ void StoreJournal::append(const std::vector<JournalRecord>& records, bool durabl
   if (fd_ < 0) throw std::logic_error("the store index is appended to before it is read");
   std::string text;
   for (const JournalRecord& record : records) text += format_record(record);
+  reserve(offset_ + text.size());
   try {
     write_all_at(fd_, text, offset_, path_);
   } catch (...) {
@@ -200,6 +206,16 @@ void StoreJournal::rewrite(const std::vector<JournalRecord>& records) {
   if (fd_ < 0) throw_errno("cannot open", path_);
   offset_ = text.size();
   records_ = records.size();
+  reserve(offset_);
+}
+
+void StoreJournal::reserve(std::uint64_t end) {
+  if (end + kReserve / 2 <= reserved_to_) return;
+  // Best effort: a file system without fallocate() (some NFS servers) keeps
+  // no reserve, and a full volume then refuses a deletion's records too.
+  if (::fallocate(fd_, FALLOC_FL_KEEP_SIZE, static_cast<off_t>(end), static_cast<off_t>(kReserve)) == 0) {
+    reserved_to_ = end + kReserve;
+  }
 }
 
 }  // namespace toond::scene

@@ -76,12 +76,15 @@ class StoreJournal {
  private:
   // Reads from offset_ to the end, dropping a torn last line.
   News read_from_offset();
+  // Keeps room allocated beyond `end` once little is left.
+  void reserve(std::uint64_t end);
   void close();
 
   std::filesystem::path path_;
   int fd_ = -1;
   std::uint64_t offset_ = 0;  // the end of the last whole record read or written
   std::size_t records_ = 0;
+  std::uint64_t reserved_to_ = 0;  // allocated up to here, as far as this replica knows
 };
 
 }  // namespace toond::scene
