@@ -1,5 +1,8 @@
 #include "scene/store/folder_sweeper.h"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <system_error>
 #include <utility>
 
@@ -25,6 +28,9 @@ void FolderSweeper::sweep(std::filesystem::path folder) {
 }
 
 void FolderSweeper::run() {
+  // Deleting can wait; the upload that queued a folder should not. At its
+  // own priority a woken sweeper would take the core from that upload.
+  ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 10);
   std::unique_lock lock(mutex_);
   while (true) {
     wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
