@@ -80,7 +80,7 @@ ROOMS = {
                    ["common/bundle_paths", "common/glb", "common/image", "common/text", "proto/cpp"]),
     "bench": ("the benchmarks, run by hand",
               ["common/image", "server/gpu", "server/scene/gltf", "server/scene/import", "server/scene/mesh",
-               "server/scene/reading", "tests/support"]),
+               "server/scene/reading", "server/scene/store", "tests/support"]),
     # Not fenced itself: the test harness the benchmarks share.
     "tests/support": ("the tests' daemon harness and generated models", None),
 }

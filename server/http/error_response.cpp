@@ -62,6 +62,13 @@ void write_store_error(httplib::Response& res, const scene::StoreError& e) {
                       ": nothing was stored; stored models still render (the operator frees or grows the volume, "
                       "or bounds the store below its size with --max-store-mb)");
       return;
+    case Kind::Busy:
+      // The pass that holds the lock is a few file operations long; one
+      // that outlasts StoreOptions::lock_wait is a hung replica's.
+      std::cerr << "toond: model store: " << e.what() << "\n";
+      res.set_header("Retry-After", "5");
+      write_error(res, 503, "busy", std::string(e.what()) + "; nothing was stored, retry shortly");
+      return;
     case Kind::Failed:
       break;
   }

@@ -92,15 +92,15 @@ OccluderGrid::OccluderGrid(const ViewMesh& mesh, const ScreenMap& screen, double
 }
 
 std::vector<glm::ivec4> OccluderGrid::place(const ViewMesh& mesh, const ScreenMap& screen) {
-  constexpr std::size_t kRun = 8192;
+  constexpr std::size_t kTrianglesPerRun = 8192;
   // Each hiding triangle's place in the list, counted ahead so that the runs
   // write their own stretch of it; one that hides nothing after all keeps
   // its place with no cells.
-  const std::size_t runs = (mesh.triangle_count() + kRun - 1) / kRun;
+  const std::size_t runs = (mesh.triangle_count() + kTrianglesPerRun - 1) / kTrianglesPerRun;
   std::vector<std::size_t> first_of_run(runs + 1, 0);
   for (std::size_t run = 0; run < runs; ++run) {
     std::size_t hiders = 0;
-    for (std::size_t t = run * kRun; t < std::min(mesh.triangle_count(), (run + 1) * kRun); ++t)
+    for (std::size_t t = run * kTrianglesPerRun; t < std::min(mesh.triangle_count(), (run + 1) * kTrianglesPerRun); ++t)
       hiders += mesh.hides[t];
     first_of_run[run + 1] = first_of_run[run] + hiders;
   }
@@ -108,7 +108,7 @@ std::vector<glm::ivec4> OccluderGrid::place(const ViewMesh& mesh, const ScreenMa
   std::vector<glm::ivec4> ranges(first_of_run.back(), glm::ivec4(1, 0, 0, 0));
   std::vector<std::uint8_t> unbounded(first_of_run.back(), 0);
   const std::vector<glm::dvec2> pixels = points_on_screen(mesh, screen);
-  for_each_run(mesh.triangle_count(), kRun, [&](std::size_t run, std::size_t first, std::size_t end) {
+  for_each_run(mesh.triangle_count(), kTrianglesPerRun, [&](std::size_t run, std::size_t first, std::size_t end) {
     std::size_t at = first_of_run[run];
     for (std::size_t t = first; t < end; ++t) {
       if (!mesh.hides[t]) continue;

@@ -8,7 +8,7 @@
 namespace toond::render::vector {
 namespace {
 
-constexpr std::size_t kRun = 16384;
+constexpr std::size_t kVerticesPerRun = 16384;
 
 // The object's vertices where its pose puts them (posed on the CPU by the
 // pipeline); its own when it is not posed.
@@ -18,7 +18,7 @@ std::span<const glm::vec3> positions_of(const PlannedObject& object, std::vector
   if (!object.pose->cpu_sums) throw std::logic_error("a line drawing needs its poses' vertices posed on the CPU");
   posed.resize(mesh.positions.size());
   const scene::PoseSums& sums = *object.pose->cpu_sums;
-  for_each_run(posed.size(), kRun, [&](std::size_t, std::size_t first, std::size_t end) {
+  for_each_run(posed.size(), kVerticesPerRun, [&](std::size_t, std::size_t first, std::size_t end) {
     for (std::size_t v = first; v < end; ++v)
       posed[v] = scene::pose_vertex(mesh, *object.model.rig, sums, v, false).position;
   });
@@ -59,7 +59,7 @@ void add_object(const FramePlan& plan, std::span<const PlannedObject> objects, s
   std::vector<glm::vec3> posed;
   const std::span<const glm::vec3> positions = positions_of(object, posed);
   mesh.points.resize(view.first_vertex + positions.size());
-  for_each_run(positions.size(), kRun, [&](std::size_t, std::size_t first, std::size_t end) {
+  for_each_run(positions.size(), kVerticesPerRun, [&](std::size_t, std::size_t first, std::size_t end) {
     for (std::size_t v = first; v < end; ++v) {
       mesh.points[view.first_vertex + v] = glm::dvec3(view.to_view * glm::dvec4(glm::dvec3(positions[v]), 1.0));
     }
@@ -80,7 +80,7 @@ void face_triangles(ViewMesh& mesh) {
   mesh.facing.resize(mesh.triangle_count());
   mesh.hides.resize(mesh.triangle_count());
   for (const ViewObject& object : mesh.objects) {
-    for_each_run(object.triangle_count, kRun, [&](std::size_t, std::size_t first, std::size_t end) {
+    for_each_run(object.triangle_count, kVerticesPerRun, [&](std::size_t, std::size_t first, std::size_t end) {
       for (std::size_t t = object.first_triangle + first; t < object.first_triangle + end; ++t) {
         const Facing f = facing_of(mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2), mesh.orthographic);
         mesh.facing[t] = f;
