@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include "scene/import/bundle.h"
+#include "scene/gltf/gltf_import.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/gltf_import.h"
 #include "scene/import/obj_import.h"
+#include "scene/reading/bundle.h"
 #include "stats.h"
 #include "support/generated_models.h"
 #include "support/gltf_twin.h"

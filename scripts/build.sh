@@ -9,5 +9,7 @@ shift || true
 # JSON, gtest and std templates they share are compiled once per batch, not
 # once per file; a clean build takes half the time (CI builds three trees).
 # For one-file-at-a-time incremental work pass -DCMAKE_UNITY_BUILD=OFF.
-cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_UNITY_BUILD=ON "$@" >/dev/null
+# compile_commands.json: for scripts/tidy.sh and editors.
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_UNITY_BUILD=ON -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+  "$@" >/dev/null
 cmake --build "$build_dir" -j "$(nproc)"

@@ -34,12 +34,17 @@ test_packages=(
   libgtest-dev libgmock-dev glslang-tools libbenchmark-dev python3-pil
   # libFuzzer targets (scripts/fuzz.sh): clang and its fuzzer runtime
   clang libclang-rt-14-dev
-  # the one code format, checked by CI (scripts/check-format.sh)
-  clang-format
+  # the one code format, checked by CI (scripts/check-format.sh); the checks
+  # of .clang-tidy (scripts/tidy.sh); functions measured by ctags
+  # (tests/check_sizes.py)
+  clang-format clang-tidy universal-ctags
   # the scale-out test's load balancer (tests/integration/scale_out_test.cpp)
   nginx-light
   # the web page's browser test: Debian's chromium driven by playwright-core from npm
   chromium
+  # output svg's drawings rasterised by an independent reader, librsvg
+  # (tests/integration/svg_output_test.cpp)
+  librsvg2-bin
 )
 
 if ! $build_only; then packages+=("${test_packages[@]}"); fi

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's second command, and the whole of CI: installs what is
 # missing, checks the code's format (scripts/check-format.sh), builds
-# with -Werror, runs every test, builds and checks the container image (scripts/container-test.sh), then builds again with
+# with -Werror, runs clang-tidy's checks (scripts/tidy.sh), runs every test, builds and checks the container image (scripts/container-test.sh), then builds again with
 # AddressSanitizer + UndefinedBehaviorSanitizer and runs every test there,
 # and fuzzes.
 set -euo pipefail
@@ -15,6 +15,8 @@ stage "format (.clang-format)"
 scripts/check-format.sh
 stage "build (warnings are errors)"
 scripts/build.sh build -DTOOND_WERROR=ON -DTOOND_TESTS=ON
+stage "clang-tidy (.clang-tidy)"
+scripts/tidy.sh build
 stage "tests"
 ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600
 

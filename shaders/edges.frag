@@ -21,14 +21,12 @@
 // that the palette then snaps to a stray colour).
 layout(binding = 0) uniform sampler2D u_normal_depth;  // xyz normal, w distance from the eye; w = 0: background
 layout(binding = 1) uniform sampler2D u_coverage;  // the share of each pixel the model covers
-uniform float u_half_width;        // pixels: half the line width
-uniform float u_depth_threshold;   // scene units
-uniform float u_cos_crease;
-uniform vec3 u_edge_color;         // linear
-uniform int u_readable_area_px;    // 0: every edge
-uniform bool u_whole_pixels;
+#include "outline_style.glsl"
 
 layout(location = 0) out vec4 o_color;
+
+float half_width() { return 0.5 * u_width; }  // pixels
+bool whole_pixels() { return u_whole_pixels != 0; }
 
 ivec2 g_size;
 const float kNone = 1e6;  // no edge within reach
@@ -126,7 +124,7 @@ float edge_distance_along(ivec2 p, ivec2 step, int reach) {
 // The nearest edge along one axis (`along`), in either direction; `toward`
 // is the direction it lies in.
 float nearest_along(ivec2 p, ivec2 along, int reach, out ivec2 toward) {
-  if (u_whole_pixels) {
+  if (whole_pixels()) {
     toward = -along;
     return edge_distance_along(p, -along, reach);
   }
@@ -158,7 +156,7 @@ void main() {
   g_size = textureSize(u_normal_depth, 0);
   ivec2 p = ivec2(gl_FragCoord.xy);
   // An edge at 45° crosses the axes √2 times farther away than it lies.
-  int reach = int(ceil((u_half_width + 0.5) * 1.4143));
+  int reach = int(ceil((half_width() + 0.5) * 1.4143));
   ivec2 toward_x, toward_y;
   float dx = nearest_along(p, ivec2(1, 0), reach, toward_x);
   float dy = nearest_along(p, ivec2(0, 1), reach, toward_y);
@@ -166,9 +164,9 @@ void main() {
   // from the pixel.
   float d = min(dx, dy);
   if (dx < kNone && dy < kNone) d = dx * dy / max(sqrt(dx * dx + dy * dy), 1e-6);
-  else if (dx < kNone && !u_whole_pixels) d = distance_by_slope(p, toward_x, dx, reach);
-  else if (dy < kNone && !u_whole_pixels) d = distance_by_slope(p, toward_y, dy, reach);
-  float coverage = u_whole_pixels ? float(d <= u_half_width) : clamp(u_half_width - d + 0.5, 0.0, 1.0);
+  else if (dx < kNone && !whole_pixels()) d = distance_by_slope(p, toward_x, dx, reach);
+  else if (dy < kNone && !whole_pixels()) d = distance_by_slope(p, toward_y, dy, reach);
+  float coverage = whole_pixels() ? float(d <= half_width()) : clamp(half_width() - d + 0.5, 0.0, 1.0);
   if (coverage <= 0.0) discard;
-  o_color = vec4(u_edge_color, coverage);
+  o_color = vec4(u_outline_color, coverage);
 }

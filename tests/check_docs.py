@@ -11,9 +11,12 @@ Fails (exit status 1, every problem printed) when
   - a page docs/**/*.md cannot be reached from README.md by following
     relative links from Markdown file to Markdown file (a link to a folder
     reaches the folder's README.md, as the repository's web view shows it);
-  - README.md is longer than 300 lines.
+  - README.md is longer than 300 lines;
+  - a path in backticks names no file or folder of the repository (see
+    `code_paths`): a doc that names a file is a doc a reader follows.
 Standard library only, so it runs wherever CMake found a Python 3.
 """
+import glob
 import os
 import re
 import sys
@@ -78,6 +81,69 @@ def link_targets(text):
     return sorted(found)
 
 
+# A code span that reads as a path: words joined by slashes, or one file
+# name with an extension the repository's own sources have. `<name>`,
+# `{id}` and `*` stand for any part of a name.
+SLASHED = re.compile(r'^[\w.-]+(/[\w.{}*<>+-]+)+/?$')
+SOURCE_FILE = re.compile(r'^[\w.-]+\.(cpp|h|py|sh|mjs|glsl|cmake)$')
+# Media types read as paths of the image folder; they are not.
+MEDIA_TYPE = re.compile(r'^(image|application|text|multipart)/(png|webp|jpeg|svg\+xml|json|plain|html|form-data)$')
+# Names the docs give to files that exist only once built or run, and the
+# shared folder beside the checkout.
+NOT_IN_TREE = ('build', 'build-asan', '..')
+# A path may leave out the folders every reader knows: `render/frame_plan`
+# is server/render/plan/frame_plan.{h,cpp} read from server/.
+EXTENSIONS = ('', '.*')
+
+
+def tree_folders(root):
+    folders = []
+    for folder, names, _ in os.walk(root):
+        names[:] = [n for n in names if not n.startswith('.') and n not in ('node_modules',) + NOT_IN_TREE]
+        folders.append(folder)
+    return folders
+
+
+def as_glob(path):
+    return re.sub(r'<[^>]*>|\{[^}]*\}', '*', path)
+
+
+def names_something(root, folders, path):
+    """Whether `path` names a file or folder from the root or from any
+    folder of the tree, with or without its extension."""
+    pattern = as_glob(path.rstrip('/'))
+    for folder in [root] + folders:
+        for ext in EXTENSIONS:
+            if glob.glob(os.path.join(folder, pattern + ext)):
+                return True
+    return False
+
+
+def code_paths(text):
+    """(line number, path) of every code span that reads as a path of the
+    repository: slashed paths whose first folder the repository has (an
+    HTTP route, a MIME type or a URL is not one), and source file names."""
+    found = []
+    for match in re.finditer(r'(`+)((?:(?!\1).)+?)\1', text, re.DOTALL):
+        span = match.group(2).strip()
+        if ' ' in span or span.split('/')[0] in NOT_IN_TREE or MEDIA_TYPE.match(span):
+            continue
+        if SLASHED.match(span) or SOURCE_FILE.match(span):
+            found.append((text.count('\n', 0, match.start()) + 1, span))
+    return found
+
+
+def dead_code_paths(root, page, folders):
+    problems = []
+    top_names = {os.path.basename(f) for f in folders}
+    for line, path in code_paths(read(page)):
+        if '/' in path and as_glob(path.split('/')[0]) not in top_names and '*' not in as_glob(path.split('/')[0]):
+            continue
+        if not names_something(root, folders, path):
+            problems.append(f'{os.path.relpath(page, root)}:{line}: `{path}` names no file of the repository')
+    return problems
+
+
 def is_relative(target):
     return bool(target) and not target.startswith('#') and not target.startswith('//') \
         and not SCHEME.match(target)
@@ -126,6 +192,10 @@ def main():
         for line, target in link_targets(read(page)):
             if is_relative(target) and not os.path.exists(resolve(root, page, target)):
                 problems.append(f'{os.path.relpath(page, root)}:{line}: dead link "{target}"')
+
+    folders = tree_folders(root)
+    for page in checked:
+        problems.extend(dead_code_paths(root, page, folders))
 
     # Every page reached by following links from the README, through any
     # Markdown file of the repository on the way.

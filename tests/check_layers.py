@@ -1,12 +1,17 @@
 #!/usr/bin/env python3
-"""The rooms of server/ and the way their includes point.
+"""What each room of the code may include.
 
-Each room is a folder; ROOMS lists them lowest first. A file may include
-headers of its own room and of any room below it; an include of a room
-above it runs back up, and fails the check with the file, the line and
-both rooms. A folder of server/ that no room holds fails too, so a new room
-is given its place here. Includes that name no room (the proto library's
-request_error.h, the files the build embeds) are not checked.
+A room is a folder of C++ sources: the libraries the daemon, its helpers
+and the CLI share (common/), the wire schema's reader (proto/cpp), the
+daemon's rooms (server/), the CLI (client/cli) and the benchmarks (bench).
+ROOMS says, for each, the other rooms whose headers its files may include;
+an include of any other room fails with the file, the line and both rooms.
+So does a folder of C++ sources that no room holds (a new room is given
+its place here), and a table whose rooms include each other round a cycle.
+
+An include is looked up as the compiler does: beside the file, then under
+each include root (INCLUDE_ROOTS). Includes found nowhere (the files the
+build generates, system headers) are not checked.
 
     tests/check_layers.py [REPO]
 """
@@ -14,31 +19,72 @@ import os
 import re
 import sys
 
-# Lowest first. A file belongs to the longest of these its path starts with.
-ROOMS = [
-    "server/parallel",        # one job's work over the cores
-    "server/text",            # the one text trim every reader uses
-    "server/helper_process",  # what the helper programs share
-    "server/glb",             # the .glb container writer
-    "server/image",           # PNG, sRGB, palettes, WebP
-    "server/bundle_paths",    # how the files of an upload name each other
-    "server/draco_decode",    # the Draco helper and its answer's wire format
-    "server/assimp_convert",  # the assimp helper program
-    "server/scene/mesh",      # a model as imported: meshes, rigs, creases, levels of detail
-    "server/scene/animation", # clips sampled, poses, what moves alike
-    "server/scene/import",    # bundles and the importers of every format
-    "server/scene/store",     # the model store, its bound, the models kept in memory
-    "server/gpu",             # EGL and the RAII GL objects
-    "server/render/plan",     # parameters, a frame's plan and price, camera, levels, sheets' layout
-    "server/render/cull",     # what is left out before drawing: facing runs, the hull cull
-    "server/render/frame",    # a frame's GPU side: models, blocks, resources, pacing
-    "server/render/passes",   # one file per pass, and the object loop they share
-    "server/render/run",      # the renderer running a plan, the render threads, the fair queue
-    "server/render/atlas",    # a sheet's atlas (Aseprite JSON)
-    "server/pipeline",        # a request's way from parameters to the answer's bytes
-    "server/http",            # parse, call the pipeline, answer
-    "server/app",             # toond's main and its flags
-]
+INCLUDE_ROOTS = ["common", "server", "proto/cpp", "tests"]
+
+# Room → (what it holds, the rooms its files may include besides its own).
+ROOMS = {
+    "common/text": ("the one text trim every reader uses", []),
+    "common/parallel": ("one job's work over the cores", []),
+    "common/image": ("PNG, sRGB, palettes, WebP", ["common/parallel"]),
+    "common/glb": ("the .glb container writer", []),
+    "common/bundle_paths": ("how the files of an upload name each other", ["common/text"]),
+    "proto/cpp": ("the wire schema, its presets and the errors it raises", []),
+    "server/helpers/process": ("what the helper programs share: their limits, their stdio", []),
+    "server/helpers/launch": ("how the daemon runs a helper program", []),
+    "server/helpers/draco_decode": ("the Draco helper and its answer's wire format", ["server/helpers/process"]),
+    "server/helpers/assimp_convert": ("the assimp helper program", ["server/helpers/process", "common/glb"]),
+    "server/scene/mesh": ("a model as imported: meshes, rigs, creases, levels of detail", ["common/parallel"]),
+    "server/scene/animation": ("clips sampled, poses, what moves alike", ["common/parallel", "server/scene/mesh"]),
+    "server/scene/reading": ("what every format's reader shares: the bundle, limits, errors, mesh building, images",
+                             ["common/bundle_paths", "common/image", "common/text", "server/scene/mesh"]),
+    "server/scene/gltf": ("glTF 2.0 and GLB", ["common/bundle_paths", "server/helpers/draco_decode",
+                                               "server/helpers/launch", "server/scene/animation",
+                                               "server/scene/mesh", "server/scene/reading"]),
+    "server/scene/import": ("the other formats, and the importer chosen for an upload",
+                            ["common/bundle_paths", "common/glb", "common/image", "common/text", "server/helpers/launch",
+                             "server/scene/animation", "server/scene/gltf", "server/scene/mesh",
+                             "server/scene/reading"]),
+    "server/scene/store": ("the model store, its bound, the models kept in memory",
+                           ["common/bundle_paths", "server/scene/import", "server/scene/mesh", "server/scene/reading"]),
+    "server/sheet_files": ("a sheet's files besides its PNG: trimmed and packed tiles, .aseprite, Godot",
+                           ["common/image"]),
+    "server/gpu": ("EGL and the RAII GL objects", ["common/image", "common/text"]),
+    "server/render/plan": ("parameters, a frame's plan and price, camera, levels, sheets' layout",
+                           ["server/scene/animation", "server/scene/mesh"]),
+    "server/render/cull": ("what is left out before drawing: facing runs, the hull cull",
+                           ["server/render/plan", "server/scene/mesh"]),
+    "server/render/frame": ("a frame's GPU side: models, blocks, resources, pacing",
+                            ["common/image", "server/gpu", "server/render/cull", "server/render/plan",
+                             "server/scene/animation", "server/scene/mesh"]),
+    "server/render/passes": ("one file per pass, and the object loop they share",
+                             ["server/gpu", "server/render/cull", "server/render/frame", "server/render/plan"]),
+    "server/render/run": ("the renderer running a plan, the render threads, the fair queue",
+                          ["common/image", "server/gpu", "server/render/cull", "server/render/frame",
+                           "server/render/passes", "server/render/plan", "server/scene/animation",
+                           "server/scene/mesh"]),
+    "server/render/atlas": ("a sheet's atlas (Aseprite JSON)", ["server/render/plan"]),
+    "server/render/vector": ("line drawings as vectors: exact visibility, strokes, SVG",
+                             ["common/image", "common/parallel", "server/render/frame", "server/render/plan",
+                              "server/scene/animation", "server/scene/mesh"]),
+    "server/pipeline": ("a request's way from parameters to the answer's bytes",
+                        ["common/image", "proto/cpp", "server/render/atlas", "server/render/frame", "server/render/vector",
+                         "server/sheet_files",
+                         "server/render/plan", "server/render/run", "server/scene/animation",
+                         "server/scene/mesh", "server/scene/store"]),
+    "server/http": ("parse, call the pipeline, answer",
+                    ["common/text", "proto/cpp", "server/gpu", "server/pipeline", "server/render/frame",
+                     "server/render/plan", "server/render/run", "server/scene/reading", "server/scene/store"]),
+    "server/app": ("toond's main and its flags",
+                   ["common/text", "server/gpu", "server/http", "server/render/run", "server/scene/store"]),
+    "client/cli": ("the toon command-line client",
+                   ["common/bundle_paths", "common/glb", "common/image", "common/text", "proto/cpp"]),
+    "bench": ("the benchmarks, run by hand",
+              ["common/image", "server/gpu", "server/scene/gltf", "server/scene/import", "server/scene/mesh",
+               "server/scene/reading", "server/scene/store", "tests/support"]),
+    # Not fenced itself: the test harness the benchmarks share.
+    "tests/support": ("the tests' daemon harness and generated models", None),
+}
+FENCED_TOPS = ["common", "proto", "server", "client", "bench"]
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
@@ -52,30 +98,77 @@ def room_of(path):
     return best
 
 
+def resolve(repo, path, include):
+    """The repository path `include` in file `path` names, or None."""
+    for base in [os.path.dirname(path)] + INCLUDE_ROOTS:
+        candidate = os.path.normpath(os.path.join(base, include)).replace(os.sep, "/")
+        if os.path.isfile(os.path.join(repo, candidate)):
+            return candidate
+    return None
+
+
+def sources(repo):
+    for top in FENCED_TOPS:
+        for folder, names, files in os.walk(os.path.join(repo, top)):
+            names[:] = [n for n in names if n != "node_modules"]
+            for name in sorted(files):
+                if name.endswith((".h", ".cpp")):
+                    yield os.path.relpath(os.path.join(folder, name), repo).replace(os.sep, "/")
+
+
+def cycle_in_table():
+    """A cycle of rooms that may include each other, or None."""
+    state = {}
+
+    def visit(room, trail):
+        state[room] = "open"
+        for other in ROOMS[room][1] or []:
+            if state.get(other) == "open":
+                return trail + [room, other]
+            if other not in state:
+                found = visit(other, trail + [room])
+                if found:
+                    return found
+        state[room] = "done"
+        return None
+
+    for room in ROOMS:
+        if room not in state:
+            found = visit(room, [])
+            if found:
+                return found
+    return None
+
+
+def problems_of(repo):
+    problems = []
+    cycle = cycle_in_table()
+    if cycle:
+        problems.append("the table's rooms include each other round a cycle: " + " -> ".join(cycle))
+    files = 0
+    for path in sources(repo):
+        room = room_of(path)
+        if room is None or ROOMS[room][1] is None:
+            problems.append(f"{path}: in no room; give its folder a place in ROOMS ({__file__})")
+            continue
+        files += 1
+        allowed = set(ROOMS[room][1]) | {room}
+        with open(os.path.join(repo, path), encoding="utf-8") as f:
+            for number, line in enumerate(f, 1):
+                match = INCLUDE.match(line)
+                if not match:
+                    continue
+                target_path = resolve(repo, path, match.group(1))
+                target = room_of(target_path) if target_path else None
+                if target is not None and target not in allowed:
+                    problems.append(f"{path}:{number}: includes {match.group(1)}, of {target}, "
+                                    f"which {room} may not include")
+    return files, problems
+
+
 def main():
     repo = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
-    rank = {room: i for i, room in enumerate(ROOMS)}
-    problems = []
-    files = 0
-    for folder, _, names in os.walk(os.path.join(repo, "server")):
-        for name in sorted(names):
-            if not name.endswith((".h", ".cpp")):
-                continue
-            path = os.path.relpath(os.path.join(folder, name), repo).replace(os.sep, "/")
-            room = room_of(path)
-            if room is None:
-                problems.append(f"{path}: in no room; give its folder a place in ROOMS ({__file__})")
-                continue
-            files += 1
-            with open(os.path.join(repo, path), encoding="utf-8") as f:
-                for number, line in enumerate(f, 1):
-                    match = INCLUDE.match(line)
-                    if not match:
-                        continue
-                    target = room_of("server/" + match.group(1))
-                    if target is not None and rank[target] > rank[room]:
-                        problems.append(f"{path}:{number}: includes {match.group(1)}, of {target}, "
-                                        f"above its own room {room}")
+    files, problems = problems_of(repo)
     for problem in problems:
         print(problem)
     print(f"check_layers: {files} files in {len(ROOMS)} rooms; {len(problems)} problems")

@@ -284,6 +284,23 @@ Options parse_args(const std::vector<std::string>& args, const std::optional<std
   return o;
 }
 
+namespace {
+
+// -o NAME.svg asks for the lines as vectors (output svg); parameters that
+// name another output contradict it.
+void apply_output_extension(const std::string& file, json& params) {
+  std::string lower = file;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (!lower.ends_with(".svg")) return;
+  if (params.contains("output") && params["output"] != "svg") {
+    throw UsageError("-o " + file + ": an .svg file holds output svg, but the parameters ask for output " +
+                     params["output"].dump() + "; drop one");
+  }
+  params["output"] = "svg";
+}
+
+}  // namespace
+
 nlohmann::json build_render_params(const Options& options, const proto::ParamSchema& schema,
                                    const ClipsOfModel& clips_of) {
   json params = json::object();
@@ -328,6 +345,7 @@ nlohmann::json build_render_params(const Options& options, const proto::ParamSch
   for (const auto& [key, text] : in_frames) {
     set(key, text, range_in_seconds(params, key, text, *frame_range_of(key, text), clips_of));
   }
+  apply_output_extension(options.output, params);
   if (!options.obj_path.empty() && params.contains("model")) {
     throw UsageError("the parameters name model " + params["model"].dump() + " but " + options.obj_path +
                      " is uploaded with the request; drop one");

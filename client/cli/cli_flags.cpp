@@ -46,7 +46,7 @@ void set_output(FlagTarget& t, Value v) {
 // parameters); a file name there is the old spelling of -o.
 void set_output_layer(FlagTarget& t, Value v) {
   if (v.empty() || v == "-" || v.find_first_of("./") != std::string::npos) {
-    throw UsageError("--output '" + v + "': --output names the layer (color, lines, depth, normal or id); " +
+    throw UsageError("--output '" + v + "': --output names the layer (color, lines, depth, normal, id or svg); " +
                      "the file is -o FILE or --out FILE");
   }
   t.options.sets.emplace_back("output", v);
@@ -131,13 +131,16 @@ const Flag kFlags[] = {
      }},
     {{"", "--output", "LAYER",
       "the layer to render: color (default), lines, depth,\n"
-      "normal or id; the same as --set output=LAYER"},
+      "normal, id or svg; the same as --set output=LAYER"},
      kRender,
      false,
      set_output_layer},
     {{"-o", "--out", "FILE",
-      "where to write the answer: a PNG, or an animated WebP\n"
-      "for sheet.animate (required; - for standard output)"},
+      "where to write the answer: a PNG, an animated WebP\n"
+      "for sheet.animate, an SVG for output svg (a name ending\n"
+      ".svg asks for it); a sheet's .aseprite file (.aseprite,\n"
+      ".ase), Godot SpriteFrames (.tres, its PNG beside it) or\n"
+      "atlas (.json) by the extension (required; - for stdout)"},
      kRender,
      false,
      set_output},
@@ -213,12 +216,19 @@ joint and morph-target counts. A clip is rendered with
 with --set animation.range=START,END (see toon render --help).
 )"},
     {Verb::render, "render",
-     "[PATH.obj|PATH.m | --model ID] [--params FILE.json]\n[--set key.sub=value ...] -o OUT.png|OUT.webp",
+     "[PATH.obj|PATH.m | --model ID] [--params FILE.json]\n[--set key.sub=value ...] -o "
+     "OUT.png|OUT.webp|OUT.svg|OUT.aseprite|OUT.tres|OUT.json",
      "render a PNG of a local OBJ, a stored model or the demo model",
      R"(Renders a PNG (POST /render), or an animated WebP when the parameters ask
 for sheet.animate. With PATH.obj (or a .m, .gltf or .glb model) the model and
 its MTL files and textures are uploaded with the request; with --model a stored model is used;
 with neither the daemon's built-in demo model renders.
+A sheet (--set sheet.frames=8, sheet.animation.clip=Walk) goes to engines
+as the extension of -o says: walk.aseprite (?atlas=aseprite: one .aseprite
+file for Aseprite, Unity, Bevy, LOVE, MonoGame), walk.tres (?atlas=godot: a
+Godot 4 SpriteFrames resource, and walk.png beside it, which it names),
+walk.json (?atlas=json: the atlas alone); --set sheet.pack=true trims and
+packs the tiles.
 A clip's range (animation.range, sheet.animation.range) is two numbers,
 seconds on the file's time base (--set sheet.animation.range=5.6,6.23),
 or frames where the clip has a frame rate (toon info lists it): with

@@ -10,12 +10,14 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "bundle_scan.h"
 #include "connection.h"
 #include "gallery_command.h"
 #include "param_schema.h"
 #include "reply.h"
+#include "sheet_output.h"
 
 namespace toond::cli {
 namespace {
@@ -165,6 +167,59 @@ json clips_of_model(const Options& options, const std::string& model_id) {
                                                         : json::array();
 }
 
+// One render request, its query (render_answer_for) on the route; a local
+// model goes up with it.
+httplib::Result post_render(Connection& conn, const Options& options, const json& params, const BundleScan& scan,
+                            const std::string& query) {
+  if (options.obj_path.empty()) return conn.post_json(render_route(params) + query, params);
+  std::cerr << "toon: uploading " << bundle_summary(scan) << "\n";
+  httplib::MultipartFormDataItems items = bundle_parts(scan);
+  items.push_back({"params", params.dump(), "", "application/json"});
+  return conn.post_multipart("/render" + query, items);
+}
+
+bool answered_as(const httplib::Response& res, const RenderAnswer& answer) {
+  const std::string type = res.get_header_value("Content-Type");
+  std::string expected;
+  for (const std::string& t : answer.content_types) {
+    if (type.rfind(t, 0) == 0) return true;
+    expected += (expected.empty() ? "" : " or ") + t;
+  }
+  std::cerr << "toon: expected " << expected << " from toond, got '" << type << "'\n";
+  return false;
+}
+
+// Written as it came, whatever the file is called (the caller names it),
+// and said so on stderr.
+int write_answer(OutputFile& file, const std::string& name, const httplib::Response& res, const RenderAnswer& answer) {
+  if (std::string problem = file.commit(res.body); !problem.empty()) {
+    std::cerr << "toon: " << problem << "\n";
+    return 1;
+  }
+  const std::string type = res.get_header_value("Content-Type");
+  const bool webp = type.rfind("image/webp", 0) == 0;
+  std::cerr << "toon: wrote " << (name == "-" ? "standard output" : name);
+  if (!answer.what.empty())
+    std::cerr << " (" << answer.what;
+  else if (webp)
+    std::cerr << " (animated WebP";
+  else if (type.rfind("image/svg+xml", 0) == 0)
+    std::cerr << " (SVG line drawing";
+  else if (auto size = png_size(res.body))
+    std::cerr << " (" << size->first << "x" << size->second;
+  else
+    std::cerr << " (not a PNG?";
+  std::cerr << ", " << human_bytes(res.body.size()) << ")";
+  if (std::string timing = res.get_header_value("Server-Timing"); !timing.empty()) {
+    std::cerr << "; server timing: " << timing;
+  }
+  std::cerr << "\n";
+  if (webp && name.ends_with(".png")) {
+    std::cerr << "toon: note: " << name << " holds a WebP (sheet.animate), not a PNG; name it .webp\n";
+  }
+  return 0;
+}
+
 int render(const Options& options) {
   // Everything that can be checked locally is, before a byte is sent (a
   // range in frames asks for the model's clips first).
@@ -175,48 +230,26 @@ int render(const Options& options) {
     scan = scan_obj_bundle(options.obj_path);
     print_warnings(scan.warnings);
   }
+  // -o walk.aseprite, walk.tres, walk.json ask for the sheet's file; a
+  // .tres gets the sheet's PNG beside it, asked for next.
+  const RenderAnswer answer = render_answer_for(options.output);
   OutputFile output(options.output);
+  std::optional<OutputFile> png;
+  if (!answer.companion_png.empty()) png.emplace(answer.companion_png);
 
   Connection conn(options.server);
-  httplib::Result result = [&] {
-    if (options.obj_path.empty()) return conn.post_json(render_route(params), params);
-    std::cerr << "toon: uploading " << bundle_summary(scan) << "\n";
-    httplib::MultipartFormDataItems items = bundle_parts(scan);
-    items.push_back({"params", params.dump(), "", "application/json"});
-    return conn.post_multipart("/render", items);
-  }();
+  httplib::Result result = post_render(conn, options, params, scan, answer.query);
   if (!result) return conn.network_failure(result);
   if (result->status != 200) return error_reply(*result);
-
-  // A PNG, or with sheet.animate an animated WebP: written as it came,
-  // whatever -o is called (the caller names the file).
-  const std::string type = result->get_header_value("Content-Type");
-  const bool webp = type.rfind("image/webp", 0) == 0;
-  if (type.rfind("image/png", 0) != 0 && !webp) {
-    std::cerr << "toon: expected image/png or image/webp from toond, got '" << type << "'\n";
-    return 1;
-  }
-  if (std::string problem = output.commit(result->body); !problem.empty()) {
-    std::cerr << "toon: " << problem << "\n";
-    return 1;
-  }
-
-  std::cerr << "toon: wrote " << (options.output == "-" ? "standard output" : options.output);
-  if (webp)
-    std::cerr << " (animated WebP";
-  else if (auto size = png_size(result->body))
-    std::cerr << " (" << size->first << "x" << size->second;
-  else
-    std::cerr << " (not a PNG?";
-  std::cerr << ", " << human_bytes(result->body.size()) << ")";
-  if (std::string timing = result->get_header_value("Server-Timing"); !timing.empty()) {
-    std::cerr << "; server timing: " << timing;
-  }
-  std::cerr << "\n";
-  if (webp && options.output.ends_with(".png")) {
-    std::cerr << "toon: note: " << options.output << " holds a WebP (sheet.animate), not a PNG; name it .webp\n";
-  }
-  return 0;
+  if (!answered_as(*result, answer)) return 1;
+  if (!png) return write_answer(output, options.output, *result, answer);
+  const RenderAnswer image = render_answer_for(answer.companion_png);
+  httplib::Result png_result = post_render(conn, options, params, scan, "");
+  if (!png_result) return conn.network_failure(png_result);
+  if (png_result->status != 200) return error_reply(*png_result);
+  if (!answered_as(*png_result, image)) return 1;
+  if (int status = write_answer(output, options.output, *result, answer); status != 0) return status;
+  return write_answer(*png, answer.companion_png, *png_result, image);
 }
 
 }  // namespace

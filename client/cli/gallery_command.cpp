@@ -94,175 +94,212 @@ std::string gl_renderer(Connection& conn) {
   return {};
 }
 
-}  // namespace
-
-int run_gallery(const Options& options) {
-  const proto::ParamSchema& schema = proto::ParamSchema::render_params();
-
-  // Everything that can be checked here is, before a byte is sent: the look
-  // table against the schema, the model folders, the output folder.
-  for (const Look& look : gallery::effect_looks()) gallery::validate_look(look, schema);
-  const gallery::ModelSelection selection =
-      gallery::select_models(options.models_dir, options.all_models, options.only);
-  for (const std::string& note : selection.notes) std::cerr << "toon: note: " << note << "\n";
-
-  const fs::path out_dir = options.output;
-  {
-    std::error_code ec;
-    if (fs::exists(out_dir, ec) && !fs::is_directory(out_dir, ec)) {
-      throw UsageError("-o " + out_dir.string() + ": exists and is not a folder");
-    }
-    fs::create_directories(out_dir, ec);
-    if (ec) throw UsageError("-o " + out_dir.string() + ": cannot create the folder: " + ec.message());
+// Checked before a byte is sent: -o names a folder, or a path one can be made at.
+void prepare_output_folder(const fs::path& out_dir) {
+  std::error_code ec;
+  if (fs::exists(out_dir, ec) && !fs::is_directory(out_dir, ec)) {
+    throw UsageError("-o " + out_dir.string() + ": exists and is not a folder");
   }
+  fs::create_directories(out_dir, ec);
+  if (ec) throw UsageError("-o " + out_dir.string() + ": cannot create the folder: " + ec.message());
+}
 
-  Connection conn(options.server);
-  httplib::Result presets_result = conn.get("/presets");
-  if (!presets_result) return conn.network_failure(presets_result);
-  if (presets_result->status != 200) return error_reply(*presets_result);
-  const json presets = json::parse(presets_result->body, nullptr, false);
-  if (!presets.is_object()) {
-    std::cerr << "toon: unexpected answer from toond for GET /presets (not a JSON object)\n";
-    return 1;
+// The looks a gallery renders: the daemon's presets, then toon's effect looks.
+struct GalleryLooks {
+  std::vector<Look> looks;
+  std::size_t presets = 0;
+  // Per look, why it cannot render: a preset this toon's schema does not
+  // know still gets its column, its renders failing with the reason.
+  std::vector<std::string> problem;
+  json preset_answer;  // the daemon's GET /presets
+
+  json preset_params(const Look& look) const {
+    if (!look.is_preset || !preset_answer.contains(look.name)) return json();
+    const json& preset = preset_answer[look.name];
+    return preset.is_object() && preset.contains("params") ? preset["params"] : json();
   }
-  const std::string renderer = gl_renderer(conn);
+};
 
-  std::vector<Look> looks = gallery::preset_looks(presets, schema);
-  const std::size_t preset_count = looks.size();
-  for (const Look& look : gallery::effect_looks()) looks.push_back(look);
-
-  // A preset this toon's schema does not know still gets its column; its
-  // renders fail with the reason.
-  std::vector<std::string> look_problem(looks.size());
-  for (std::size_t i = 0; i < preset_count; ++i) {
+GalleryLooks gallery_looks(json presets, const proto::ParamSchema& schema) {
+  GalleryLooks out;
+  out.looks = gallery::preset_looks(presets, schema);
+  out.presets = out.looks.size();
+  for (const Look& look : gallery::effect_looks()) out.looks.push_back(look);
+  out.problem.resize(out.looks.size());
+  for (std::size_t i = 0; i < out.presets; ++i) {
     try {
-      gallery::validate_look(looks[i], schema);
+      gallery::validate_look(out.looks[i], schema);
     } catch (const UsageError& e) {
-      look_problem[i] = e.what();
+      out.problem[i] = e.what();
     }
   }
+  out.preset_answer = std::move(presets);
+  return out;
+}
 
-  const std::size_t total = selection.models.size() * looks.size();
-  std::cerr << "toon: rendering " << looks.size() << " looks (" << preset_count << " presets, "
-            << looks.size() - preset_count << " effects) on " << selection.models.size()
-            << (selection.models.size() == 1 ? " model" : " models") << " at " << options.size << "×" << options.size
-            << ": " << total << " renders\n";
+// One gallery run: every look on every model, a thumbnail of each for the
+// contact sheet, and the page's record of each render.
+class Gallery {
+ public:
+  Gallery(const Options& options, const proto::ParamSchema& schema, Connection& conn, GalleryLooks looks,
+          std::size_t models)
+      : options_(options),
+        schema_(schema),
+        conn_(conn),
+        looks_(std::move(looks)),
+        total_(models * looks_.looks.size()),
+        factor_(gallery::thumbnail_factor(options.size)) {}
 
-  const int factor = gallery::thumbnail_factor(options.size);
-  const int thumb_size = options.size / factor;
-  std::vector<std::vector<std::optional<image::Image>>> thumbs;
-  std::vector<gallery::PageModel> page;
-  std::size_t done = 0, failures = 0;
+  std::size_t total() const { return total_; }
+  const GalleryLooks& looks() const { return looks_; }
 
-  for (const gallery::ModelFolder& model : selection.models) {
-    const fs::path model_dir = out_dir / model.name;
-    // A .glb made here is kept beside its renders, so the page's commands
-    // render what was uploaded.
-    const std::string model_text_path =
-        model.as_glb ? (model_dir / model.obj_path.filename().replace_extension(".glb")).generic_string()
-                     : (fs::path(options.models_dir) / model.folder / model.obj_path.filename()).generic_string();
-    gallery::PageModel page_model{model.name, model_text_path, {}, {}};
-    auto& row = thumbs.emplace_back(looks.size());
+  void render_model(const gallery::ModelFolder& model);
+  // The contact sheet and index.html; false when either could not be written.
+  bool write_sheet_and_page(const std::string& renderer) const;
+  // The summary line; the exit status.
+  int finish(bool written_ok) const;
 
-    std::string model_id;
-    gallery::ModelFrame frame;
+ private:
+  std::string upload(const gallery::ModelFolder& model, const std::string& model_text_path, gallery::ModelFrame& frame,
+                     std::string& error);
+  void skip_model(gallery::PageModel page_model);
+  gallery::PageRender render_look(const gallery::ModelFolder& model, const fs::path& model_dir,
+                                  const gallery::PageModel& page_model, std::size_t li, const std::string& model_id,
+                                  const gallery::ModelView& view, const gallery::ModelFrame& frame,
+                                  const std::error_code& mkdir_ec);
+  std::string render_to_file(const json& params, const fs::path& file, std::optional<image::Image>& thumb) const;
+
+  const Options& options_;
+  const proto::ParamSchema& schema_;
+  Connection& conn_;
+  GalleryLooks looks_;
+  std::size_t total_;
+  int factor_;
+  std::vector<std::vector<std::optional<image::Image>>> thumbs_;
+  std::vector<gallery::PageModel> page_;
+  std::size_t done_ = 0, failures_ = 0;
+};
+
+// The model's bundle as sent (a .glb written beside its renders where the
+// gallery sends one, so the page's commands render what was uploaded);
+// its id, or "" with `error` set.
+std::string Gallery::upload(const gallery::ModelFolder& model, const std::string& model_text_path,
+                            gallery::ModelFrame& frame, std::string& error) {
+  BundleScan scan = scan_obj_bundle(model.obj_path);
+  for (const std::string& w : scan.warnings) std::cerr << "toon: " << model.name << ": warning: " << w << "\n";
+  frame = gallery::frame_from_obj(scan.files.front().content);
+  if (model.as_glb) {
+    BundleFile glb{fs::path(model_text_path).filename().string(), model_text_path, glb_from_obj(scan)};
+    std::error_code ec;
+    fs::create_directories(fs::path(model_text_path).parent_path(), ec);
+    error = ec ? "cannot create " + fs::path(model_text_path).parent_path().string() + ": " + ec.message()
+               : write_file(glb.disk_path, glb.content);
+    scan.files = {std::move(glb)};
+  }
+  return error.empty() ? upload_model(conn_, model, scan, error) : std::string();
+}
+
+// One line for a model that could not be sent, rather than one per look.
+void Gallery::skip_model(gallery::PageModel page_model) {
+  done_ += looks_.looks.size();
+  failures_ += looks_.looks.size();
+  std::cerr << "[" << done_ << "/" << total_ << "] " << page_model.name << ": " << page_model.error << "; its "
+            << looks_.looks.size() << " renders are skipped\n";
+  for (const Look& look : looks_.looks) {
+    page_model.renders.push_back(
+        gallery::PageRender{look.name, look.description, {}, look.params, {}, "not rendered: " + page_model.error});
+  }
+  page_.push_back(std::move(page_model));
+}
+
+void Gallery::render_model(const gallery::ModelFolder& model) {
+  const fs::path model_dir = fs::path(options_.output) / model.name;
+  const std::string model_text_path =
+      model.as_glb ? (model_dir / model.obj_path.filename().replace_extension(".glb")).generic_string()
+                   : (fs::path(options_.models_dir) / model.folder / model.obj_path.filename()).generic_string();
+  gallery::PageModel page_model{model.name, model_text_path, {}, {}};
+  thumbs_.emplace_back(looks_.looks.size());
+  std::string model_id;
+  gallery::ModelFrame frame;
+  try {
+    model_id = upload(model, model_text_path, frame, page_model.error);
+  } catch (const std::exception& e) {
+    page_model.error = e.what();
+  }
+  if (!page_model.error.empty()) return skip_model(std::move(page_model));
+  const gallery::ModelView view = gallery::view_for_model(model.folder, schema_);
+  std::error_code mkdir_ec;
+  fs::create_directories(model_dir, mkdir_ec);
+  for (std::size_t li = 0; li < looks_.looks.size(); ++li) {
+    page_model.renders.push_back(render_look(model, model_dir, page_model, li, model_id, view, frame, mkdir_ec));
+  }
+  page_.push_back(std::move(page_model));
+}
+
+gallery::PageRender Gallery::render_look(const gallery::ModelFolder& model, const fs::path& model_dir,
+                                         const gallery::PageModel& page_model, std::size_t li,
+                                         const std::string& model_id, const gallery::ModelView& view,
+                                         const gallery::ModelFrame& frame, const std::error_code& mkdir_ec) {
+  const Look& look = looks_.looks[li];
+  std::cerr << "[" << ++done_ << "/" << total_ << "] " << model.name << "/" << look.name << "\n";
+  const json params =
+      gallery::render_params(look, looks_.preset_params(look), view, frame, options_.size, model_id, schema_);
+  const std::string file_name = look.name + ".png";
+  gallery::PageRender render{
+      look.name, look.description, {}, params, gallery::render_command(page_model.obj_path, params, file_name), {}};
+  std::string error = looks_.problem[li];
+  if (error.empty() && mkdir_ec) error = "cannot create " + model_dir.string() + ": " + mkdir_ec.message();
+  if (error.empty()) {
     try {
-      BundleScan scan = scan_obj_bundle(model.obj_path);
-      for (const std::string& w : scan.warnings) std::cerr << "toon: " << model.name << ": warning: " << w << "\n";
-      frame = gallery::frame_from_obj(scan.files.front().content);
-      if (model.as_glb) {
-        BundleFile glb{fs::path(model_text_path).filename().string(), model_text_path, glb_from_obj(scan)};
-        std::error_code ec;
-        fs::create_directories(model_dir, ec);
-        page_model.error =
-            ec ? "cannot create " + model_dir.string() + ": " + ec.message() : write_file(glb.disk_path, glb.content);
-        scan.files = {std::move(glb)};
-      }
-      if (page_model.error.empty()) model_id = upload_model(conn, model, scan, page_model.error);
-    } catch (const std::exception& e) {
-      page_model.error = e.what();
+      schema_.validate(params);
+    } catch (const RequestError& e) {
+      error = std::string("invalid render parameters: ") + e.what();
     }
-    if (!page_model.error.empty()) {
-      // One line for the model rather than one per look.
-      done += looks.size();
-      failures += looks.size();
-      std::cerr << "[" << done << "/" << total << "] " << model.name << ": " << page_model.error << "; its "
-                << looks.size() << " renders are skipped\n";
-      for (const Look& look : looks) {
-        page_model.renders.push_back(
-            gallery::PageRender{look.name, look.description, {}, look.params, {}, "not rendered: " + page_model.error});
-      }
-      page.push_back(std::move(page_model));
-      continue;
-    }
-
-    const gallery::ModelView view = gallery::view_for_model(model.folder, schema);
-    std::error_code mkdir_ec;
-    fs::create_directories(model_dir, mkdir_ec);
-
-    for (std::size_t li = 0; li < looks.size(); ++li) {
-      const Look& look = looks[li];
-      std::cerr << "[" << ++done << "/" << total << "] " << model.name << "/" << look.name << "\n";
-      const json preset_params = look.is_preset && presets.contains(look.name) && presets[look.name].is_object() &&
-                                         presets[look.name].contains("params")
-                                     ? presets[look.name]["params"]
-                                     : json();
-      const json params = gallery::render_params(look, preset_params, view, frame, options.size, model_id, schema);
-      const std::string file_name = look.name + ".png";
-      gallery::PageRender render{
-          look.name, look.description, {}, params, gallery::render_command(model_text_path, params, file_name), {}};
-
-      std::string error = look_problem[li];
-      if (error.empty() && mkdir_ec) error = "cannot create " + model_dir.string() + ": " + mkdir_ec.message();
-      if (error.empty()) {
-        try {
-          schema.validate(params);
-        } catch (const RequestError& e) {
-          error = std::string("invalid render parameters: ") + e.what();
-        }
-      }
-      if (error.empty()) {
-        httplib::Result result = conn.post_json("/render", params);
-        if (!result) {
-          error = conn.describe_failure(result);
-        } else if (result->status != 200) {
-          error = reply_problem(*result);
-        } else if (result->get_header_value("Content-Type").rfind("image/png", 0) != 0) {
-          error = "expected image/png from toond, got '" + result->get_header_value("Content-Type") + "'";
-        } else {
-          try {
-            const image::Image img = image::decode_png(result->body);
-            error = write_file(model_dir / file_name, result->body);
-            if (error.empty()) {
-              // A sprite sheet is several cells' worth: shrunk further to fit one.
-              const int tiles = std::max(1, std::max(img.width, img.height) / options.size);
-              row[li] = gallery::make_thumbnail(img, factor * tiles);
-              render.image = model.name + "/" + file_name;
-            }
-          } catch (const std::exception& e) {
-            error = std::string("toond's PNG does not decode: ") + e.what();
-          }
-        }
-      }
-      if (!error.empty()) {
-        ++failures;
-        render.error = error;
-        std::cerr << "toon: " << model.name << "/" << look.name << " failed: " << error << "\n";
-        std::error_code ec;
-        fs::remove(model_dir / file_name, ec);  // no stale image from an earlier run
-      }
-      page_model.renders.push_back(std::move(render));
-    }
-    page.push_back(std::move(page_model));
   }
+  if (error.empty()) error = render_to_file(params, model_dir / file_name, thumbs_.back()[li]);
+  if (error.empty()) {
+    render.image = model.name + "/" + file_name;
+    return render;
+  }
+  ++failures_;
+  render.error = error;
+  std::cerr << "toon: " << model.name << "/" << look.name << " failed: " << error << "\n";
+  std::error_code ec;
+  fs::remove(model_dir / file_name, ec);  // no stale image from an earlier run
+  return render;
+}
 
+// Renders `params` into `file` and its thumbnail; "" or what went wrong.
+std::string Gallery::render_to_file(const json& params, const fs::path& file,
+                                    std::optional<image::Image>& thumb) const {
+  httplib::Result result = conn_.post_json("/render", params);
+  if (!result) return conn_.describe_failure(result);
+  if (result->status != 200) return reply_problem(*result);
+  if (result->get_header_value("Content-Type").rfind("image/png", 0) != 0) {
+    return "expected image/png from toond, got '" + result->get_header_value("Content-Type") + "'";
+  }
+  try {
+    const image::Image img = image::decode_png(result->body);
+    if (std::string error = write_file(file, result->body); !error.empty()) return error;
+    // A sprite sheet is several cells' worth: shrunk further to fit one.
+    const int tiles = std::max(1, std::max(img.width, img.height) / options_.size);
+    thumb = gallery::make_thumbnail(img, factor_ * tiles);
+    return {};
+  } catch (const std::exception& e) {
+    return std::string("toond's PNG does not decode: ") + e.what();
+  }
+}
+
+bool Gallery::write_sheet_and_page(const std::string& renderer) const {
+  const fs::path out_dir = options_.output;
   bool written_ok = true;
   std::vector<std::vector<const image::Image*>> grid;
-  for (const auto& row : thumbs) {
+  for (const auto& row : thumbs_) {
     auto& cells = grid.emplace_back();
     for (const auto& t : row) cells.push_back(t ? &*t : nullptr);
   }
   const std::string sheet_name = "contact-sheet.png";
+  const int thumb_size = options_.size / factor_;
   std::string sheet_error;
   try {
     sheet_error = write_file(out_dir / sheet_name,
@@ -274,25 +311,59 @@ int run_gallery(const Options& options) {
     std::cerr << "toon: contact sheet: " << sheet_error << "\n";
     written_ok = false;
   }
-
   gallery::PageInfo info;
   info.contact_sheet = sheet_error.empty() ? sheet_name : "";
-  info.server = options.server;
+  info.server = options_.server;
   info.renderer = renderer;
-  info.size = options.size;
-  if (std::string e = write_file(out_dir / "index.html", gallery::gallery_page(info, page)); !e.empty()) {
+  info.size = options_.size;
+  if (std::string e = write_file(out_dir / "index.html", gallery::gallery_page(info, page_)); !e.empty()) {
     std::cerr << "toon: index.html: " << e << "\n";
     written_ok = false;
   }
+  return written_ok;
+}
 
-  if (failures) {
-    std::cerr << "toon: " << failures << " of " << total << " renders failed (see above); ";
+int Gallery::finish(bool written_ok) const {
+  if (failures_) {
+    std::cerr << "toon: " << failures_ << " of " << total_ << " renders failed (see above); ";
   } else {
     std::cerr << "toon: ";
   }
-  std::cerr << "wrote " << total - failures << (total - failures == 1 ? " image" : " images")
-            << (written_ok ? ", contact-sheet.png and index.html" : "") << " in " << out_dir.string() << "\n";
-  return failures || !written_ok ? 1 : 0;
+  std::cerr << "wrote " << total_ - failures_ << (total_ - failures_ == 1 ? " image" : " images")
+            << (written_ok ? ", contact-sheet.png and index.html" : "") << " in " << options_.output << "\n";
+  return failures_ || !written_ok ? 1 : 0;
+}
+
+}  // namespace
+
+int run_gallery(const Options& options) {
+  const proto::ParamSchema& schema = proto::ParamSchema::render_params();
+  // Everything that can be checked here is, before a byte is sent: the look
+  // table against the schema, the model folders, the output folder.
+  for (const Look& look : gallery::effect_looks()) gallery::validate_look(look, schema);
+  const gallery::ModelSelection selection =
+      gallery::select_models(options.models_dir, options.all_models, options.only);
+  for (const std::string& note : selection.notes) std::cerr << "toon: note: " << note << "\n";
+  prepare_output_folder(options.output);
+
+  Connection conn(options.server);
+  httplib::Result presets_result = conn.get("/presets");
+  if (!presets_result) return conn.network_failure(presets_result);
+  if (presets_result->status != 200) return error_reply(*presets_result);
+  json presets = json::parse(presets_result->body, nullptr, false);
+  if (!presets.is_object()) {
+    std::cerr << "toon: unexpected answer from toond for GET /presets (not a JSON object)\n";
+    return 1;
+  }
+  const std::string renderer = gl_renderer(conn);
+  Gallery gallery(options, schema, conn, gallery_looks(std::move(presets), schema), selection.models.size());
+  const GalleryLooks& looks = gallery.looks();
+  std::cerr << "toon: rendering " << looks.looks.size() << " looks (" << looks.presets << " presets, "
+            << looks.looks.size() - looks.presets << " effects) on " << selection.models.size()
+            << (selection.models.size() == 1 ? " model" : " models") << " at " << options.size << "×" << options.size
+            << ": " << gallery.total() << " renders\n";
+  for (const gallery::ModelFolder& model : selection.models) gallery.render_model(model);
+  return gallery.finish(gallery.write_sheet_and_page(renderer));
 }
 
 }  // namespace toond::cli

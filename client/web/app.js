@@ -6,7 +6,7 @@ import { installKeyboard } from './keyboard.js';
 import {
   clone, effectiveParams, getPointer, paramsFromHash, paramsToHash, schemaDefaults, setPointer, withPreset,
 } from './params.js';
-import { ApiError, LostServer, RenderLoop } from './render_loop.js';
+import { ApiError, LostServer, RenderLoop, answerFailure } from './render_loop.js';
 import { AnimationPanel } from './animation_panel.js';
 import { MaterialList } from './material_list.js';
 import { SheetPreview } from './sheet_preview.js';
@@ -97,6 +97,8 @@ function bodyFor(kind) {
   const body = clone(studio.params);
   // The live loop renders one image; the sheet section asks for the sheet.
   delete body.sheet;
+  // The svg block means something to output svg alone (the SVG button's).
+  if (body.output !== 'svg') delete body.svg;
   if (kind === 'quick') {
     const shown = effective();
     const scale = Math.min(1, QUICK_SIDE / Math.max(shown.width, shown.height));
@@ -370,13 +372,15 @@ function toggleHelp() {
 
 // ---- layers ---------------------------------------------------------------------
 
-// One button per value of the schema's `output` (a daemon without it shows none).
+// One button per raster value of the schema's `output` (a daemon without it
+// shows none); its vector drawing, svg, is a download beside them.
 function installLayers() {
   const schema = studio.schema.properties.output;
   if (!Array.isArray(schema?.enum)) return;
   const box = $('layers');
   box.title = schema.description ?? '';
   for (const value of schema.enum) {
+    if (value === 'svg') continue;
     const id = `layer-${value}`;
     const radio = Object.assign(document.createElement('input'), { type: 'radio', name: 'layer', id, value });
     const label = Object.assign(document.createElement('label'), { htmlFor: id, textContent: value });
@@ -385,7 +389,56 @@ function installLayers() {
     });
     box.append(radio, label);
   }
+  if (schema.enum.includes('svg')) installSvgDownload(box);
   box.hidden = false;
+}
+
+// ---- the lines as vectors -------------------------------------------------------
+
+function installSvgDownload(box) {
+  const button = Object.assign(document.createElement('button'), {
+    type: 'button', id: 'svg-download', textContent: 'SVG',
+    title: 'Download the lines of this view as an SVG drawing (output svg): a layer per kind of line, '
+      + 'for a pen plotter or a vector editor',
+  });
+  const hidden = Object.assign(document.createElement('input'), { type: 'checkbox', id: 'svg-hidden' });
+  const label = Object.assign(document.createElement('label'), {
+    htmlFor: 'svg-hidden', textContent: 'hidden lines', title: 'Add the hidden parts of the lines, dashed (svg.hidden)',
+  });
+  button.addEventListener('click', () => downloadSvg(button, hidden.checked));
+  const tools = Object.assign(document.createElement('span'), { className: 'svg-tools' });
+  tools.append(button, hidden, label);
+  box.append(tools);
+}
+
+// The full-quality request of the view shown, but for its output: the
+// drawing comes back as a file to save.
+async function downloadSvg(button, withHidden) {
+  const body = bodyFor('full');
+  body.output = 'svg';
+  if (withHidden) body.svg = { hidden: true };
+  button.disabled = true;
+  try {
+    let res;
+    try {
+      res = await fetch('/render', { method: 'POST', headers: { 'Content-Type': 'application/json' },
+        body: JSON.stringify(body) });
+    } catch (e) {
+      throw new LostServer(e.message);
+    }
+    if (!res.ok) throw await answerFailure(res);
+    const url = URL.createObjectURL(await res.blob());
+    const link = Object.assign(document.createElement('a'), { href: url, download: 'toond-lines.svg' });
+    document.body.append(link);
+    link.click();
+    link.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 60000);
+    button.dataset.downloads = String(Number(button.dataset.downloads || 0) + 1);
+  } catch (error) {
+    showRenderError(error);
+  } finally {
+    button.disabled = false;
+  }
 }
 
 // ---- sprite sheet ---------------------------------------------------------------
@@ -399,12 +452,53 @@ function syncSheet(shown) {
   $('sheet-toggle').checked = sheetOn();
   $('sheet-controls').hidden = !sheetOn();
   $('sheet-frame').hidden = !sheetOn() || !studio.sheetUrl;
+  for (const id of ['sheet-format', 'sheet-format-label']) $(id).hidden = !sheetOn();
   if (!sheetOn()) {
     $('sheet-status').textContent = '';
     $('sheet-error').textContent = '';
-    for (const id of ['sheet-download', 'atlas-download']) $(id).hidden = true;
+    for (const id of ['sheet-download', 'atlas-download', 'file-download']) $(id).hidden = true;
   }
   studio.sheetPanel.render(shown);
+}
+
+// The sheet's files besides its PNG and atlas, asked for with the body of
+// the sheet shown when their button is pressed. The Godot resource names
+// the PNG by the name the sheet's download gives it, so the two saved side
+// by side belong together.
+const SHEET_FILES = {
+  aseprite: { query: '?atlas=aseprite', name: 'toond-sheet.aseprite', label: 'Download .aseprite' },
+  godot: { query: '?atlas=godot&texture=toond-sheet.png', name: 'toond-sheet.tres', label: 'Download .tres' },
+};
+
+// The download buttons the format select asks for, once a sheet is shown.
+function syncSheetFormat() {
+  const format = $('sheet-format').value;
+  const shown = Boolean(studio.sheetUrl) && sheetOn();
+  $('sheet-download').hidden = !shown || format === 'aseprite';
+  $('atlas-download').hidden = !shown || format !== 'png';
+  const file = $('file-download');
+  file.hidden = !shown || format === 'png';
+  file.textContent = SHEET_FILES[format]?.label ?? '';
+}
+
+async function downloadSheetFile() {
+  const file = SHEET_FILES[$('sheet-format').value];
+  const body = studio.sheet.shownBody;
+  if (!file || !body) return;
+  $('file-download').disabled = true;
+  try {
+    const res = await fetch(`/render${file.query}`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body });
+    if (!res.ok) throw await answerFailure(res);
+    const link = document.createElement('a');
+    link.href = URL.createObjectURL(await res.blob());
+    link.download = file.name;
+    link.click();
+    setTimeout(() => URL.revokeObjectURL(link.href), 60000);
+  } catch (e) {
+    showSheetError(e);
+  } finally {
+    $('file-download').disabled = false;
+  }
 }
 
 function replaceUrl(key, url) {
@@ -449,13 +543,10 @@ function showSheet({ blob, atlas, ms }) {
   studio.sheetPanel.clearErrors();
   $('sheet-error').textContent = '';
   $('sheet-status').textContent = `${count} frames · ${size?.w}×${size?.h} px · ${Math.round(ms)} ms`;
-  const png = $('sheet-download');
-  png.href = studio.sheetUrl;
-  png.hidden = false;
-  const json = $('atlas-download');
-  json.href = replaceUrl('atlasUrl', URL.createObjectURL(new Blob([JSON.stringify(atlas, null, 2)],
+  $('sheet-download').href = studio.sheetUrl;
+  $('atlas-download').href = replaceUrl('atlasUrl', URL.createObjectURL(new Blob([JSON.stringify(atlas, null, 2)],
     { type: 'application/json' })));
-  json.hidden = false;
+  syncSheetFormat();
 }
 
 // The sheet's request: the page's state, except that an animated sheet
@@ -502,6 +593,8 @@ function installSheet() {
     // The single image is already current: the sheet need not wait for it.
     if (sheetOn()) studio.sheet.schedule(0);
   });
+  $('sheet-format').addEventListener('change', syncSheetFormat);
+  $('file-download').addEventListener('click', downloadSheetFile);
   $('sheet').hidden = false;
 }
 

@@ -6,7 +6,7 @@
 // x-applies-when) is hidden until it matters again.
 import { applies } from './applies.js';
 import { buildClipList } from './clip_list_field.js';
-import { getPointer, isPlainObject } from './params.js';
+import { fixedDefault, getPointer, isPlainObject } from './params.js';
 
 // Chosen elsewhere on the page: the model list, the preset menu, scenes
 // (curl or the CLI only), the layer switcher, the sprite-sheet section and
@@ -351,7 +351,7 @@ export class ControlPanel {
     const id = fieldId(pointer);
     const select = el('select', { id });
     const numeric = schema.type === 'number' || schema.type === 'integer';
-    if (schema.default === undefined) select.append(el('option', { value: '', text: '—' }));
+    if (fixedDefault(schema) === undefined) select.append(el('option', { value: '', text: '—' }));
     for (const v of values) select.append(el('option', { value: String(v), text: String(v) }));
     select.addEventListener('change', () => {
       const raw = select.value;
@@ -467,7 +467,7 @@ export class ControlPanel {
 function newItem(schema) {
   const item = {};
   for (const [key, sub] of Object.entries(schema.properties ?? {})) {
-    if (sub.default !== undefined) item[key] = sub.default;
+    if (fixedDefault(sub) !== undefined) item[key] = fixedDefault(sub);
     else if ((schema.required ?? []).includes(key) && sub.minimum !== undefined && sub.maximum !== undefined) {
       item[key] = (sub.minimum + sub.maximum) / 2;
     }

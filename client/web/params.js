@@ -21,6 +21,14 @@ export function deepMerge(base, over) {
   return out;
 }
 
+// A field's default where it holds for every request; undefined where the
+// schema has none, or where it depends on other fields (x-default-when: a
+// light's space is view in a sheet, model otherwise), which the daemon
+// decides.
+export function fixedDefault(schema) {
+  return schema['x-default-when'] ? undefined : schema.default;
+}
+
 // The defaults the schema declares, filled down into objects, so that every
 // control has a value to show even where a block's own default is {}.
 export function schemaDefaults(schema) {
@@ -38,7 +46,7 @@ export function schemaDefaults(schema) {
     const itemDefaults = schemaDefaults(schema.items);
     return schema.default.map((item) => deepMerge(itemDefaults, item));
   }
-  return clone(schema.default);
+  return clone(fixedDefault(schema));
 }
 
 export function pointerParts(pointer) {

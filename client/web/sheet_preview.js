@@ -19,6 +19,25 @@ async function post(url, body, as) {
   return as === 'json' ? res.json() : res.blob();
 }
 
+// The JSON of a PNG's tEXt chunk `toond:atlas` (the sheet's atlas rides
+// there): chunks are length, type, data, CRC after the 8-byte signature.
+export function atlasInPng(buffer) {
+  const view = new DataView(buffer);
+  const bytes = new Uint8Array(buffer);
+  const key = new TextEncoder().encode('toond:atlas\0');
+  for (let at = 8; at + 12 <= bytes.length;) {
+    const length = view.getUint32(at);
+    const type = String.fromCharCode(...bytes.subarray(at + 4, at + 8));
+    const data = bytes.subarray(at + 8, at + 8 + length);
+    if (type === 'tEXt' && key.every((b, i) => data[i] === b)) {
+      return JSON.parse(new TextDecoder().decode(data.subarray(key.length)));
+    }
+    if (type === 'IEND') break;
+    at += 12 + length;
+  }
+  throw new Error('the sheet came without its atlas (no tEXt chunk toond:atlas)');
+}
+
 export class SheetPreview {
   // bodyFor() → the sheet request's JSON body, or null when no sheet is wanted.
   // onSheet({blob, atlas, ms}), onError(error), onBusy(busy).
@@ -60,8 +79,12 @@ export class SheetPreview {
     const started = performance.now();
     try {
       // The atlas alone is cheap (no render), and asking for it with the
-      // very same body keeps its tiles and the image in step.
-      const [blob, atlas] = await Promise.all([post('/render', body), post('/render?atlas=json', body, 'json')]);
+      // very same body keeps its tiles and the image in step. A packed
+      // sheet's atlas needs the pixels (its trims), so it is read from the
+      // PNG's own tEXt chunk rather than drawn a second time.
+      const [blob, atlas] = params.sheet?.pack
+        ? await post('/render', body).then(async (b) => [b, atlasInPng(await b.arrayBuffer())])
+        : await Promise.all([post('/render', body), post('/render?atlas=json', body, 'json')]);
       // Dropped if the sheet was switched off or changed meanwhile.
       const now = this.bodyFor();
       if (now && JSON.stringify(now) === body) {

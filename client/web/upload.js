@@ -38,7 +38,7 @@ export function filesFromInput(fileList) {
 // the folder the user dropped ("spot/") is not part of them, and files
 // outside that folder (a README beside it) are left out.
 // The model files' extensions: toond's own readers', then those read
-// through assimp (server/bundle_paths/model_formats.cpp; a unit test keeps
+// through assimp (common/bundle_paths/model_formats.cpp; a unit test keeps
 // the two lists equal).
 export const MODEL_EXTENSIONS = [
   'obj', 'm', 'gltf', 'glb', 'stl', 'ply', 'iqm',

@@ -205,18 +205,32 @@ const json& schema_of_kind(const json& schema, const json& value) {
   return schema;
 }
 
-void fill_defaults(const json& field_schema, json& value) {
+// A field's default in `request`: the first of its x-default-when whose
+// `present` pointer names a field the request has, else its `default`.
+const json* default_of(const json& field_schema, const json& request) {
+  if (auto when = field_schema.find("x-default-when"); when != field_schema.end()) {
+    for (const json& rule : *when) {
+      if (request.contains(json::json_pointer(rule.at("present").get<std::string>()))) return &rule.at("default");
+    }
+  }
+  if (auto given = field_schema.find("default"); given != field_schema.end()) return &*given;
+  return nullptr;
+}
+
+void fill_defaults(const json& field_schema, json& value, const json& request) {
   const json& schema = schema_of_kind(field_schema, value);
   if (value.is_object()) {
     if (auto props = schema.find("properties"); props != schema.end()) {
       for (const auto& [key, sub] : props->items()) {
-        if (!value.contains(key) && sub.contains("default")) value[key] = sub["default"];
-        if (value.contains(key)) fill_defaults(sub, value[key]);
+        if (!value.contains(key)) {
+          if (const json* fallback = default_of(sub, request)) value[key] = *fallback;
+        }
+        if (value.contains(key)) fill_defaults(sub, value[key], request);
       }
     }
   } else if (value.is_array()) {
     if (const json* items = items_schema(schema)) {
-      for (auto& element : value) fill_defaults(*items, element);
+      for (auto& element : value) fill_defaults(*items, element, request);
     }
   }
 }
@@ -314,7 +328,7 @@ void ParamSchema::validate(const nlohmann::json& request) const {
 nlohmann::json ParamSchema::validate_and_complete(const nlohmann::json& request) const {
   validate(request);
   json completed = request;
-  fill_defaults(document_, completed);
+  fill_defaults(document_, completed, request);
   return completed;
 }
 

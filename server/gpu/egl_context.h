@@ -62,6 +62,7 @@ class EglContext {
 
  private:
   void release();
+  void read_gl_info();  // the context's vendor, renderer and versions, into info_
 
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;

@@ -2,7 +2,7 @@
 
 #include "limit_error.h"
 #include "request_error.h"
-#include "scene/import/import_error.h"
+#include "scene/reading/import_error.h"
 
 namespace toond::http {
 

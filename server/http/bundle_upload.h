@@ -2,7 +2,7 @@
 #include <httplib.h>
 
 #include "http/request_limits.h"
-#include "scene/import/bundle.h"
+#include "scene/reading/bundle.h"
 
 namespace toond::http {
 

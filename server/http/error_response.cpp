@@ -12,8 +12,8 @@
 #include "limit_error.h"
 #include "render/run/render_service.h"
 #include "request_error.h"
-#include "scene/import/import_error.h"
-#include "scene/import/import_limits.h"
+#include "scene/reading/import_error.h"
+#include "scene/reading/import_limits.h"
 #include "scene/store/store_error.h"
 
 namespace toond::http {
@@ -61,6 +61,13 @@ void write_store_error(httplib::Response& res, const scene::StoreError& e) {
                   std::string(e.what()) +
                       ": nothing was stored; stored models still render (the operator frees or grows the volume, "
                       "or bounds the store below its size with --max-store-mb)");
+      return;
+    case Kind::Busy:
+      // The pass that holds the lock is a few file operations long; one
+      // that outlasts StoreOptions::lock_wait is a hung replica's.
+      std::cerr << "toond: model store: " << e.what() << "\n";
+      res.set_header("Retry-After", "5");
+      write_error(res, 503, "busy", std::string(e.what()) + "; nothing was stored, retry shortly");
       return;
     case Kind::Failed:
       break;

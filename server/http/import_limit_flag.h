@@ -3,7 +3,7 @@
 // of an import-limit answer belong here, beside the flags, not in scene/.
 #include <string_view>
 
-#include "scene/import/import_limits.h"
+#include "scene/reading/import_limits.h"
 
 namespace toond::http {
 

@@ -88,6 +88,8 @@ SheetParams sheet_of(const json& s, const CameraParams& camera) {
   if (s.contains("pixel_art")) sheet.pixel_art = pixel_art_of(s.at("pixel_art"));
   sheet.animate = s.at("animate").get<bool>();
   sheet.frame_ms = s.at("frame_ms").get<int>();
+  sheet.pack = s.at("pack").get<bool>();
+  sheet.power_of_two = s.at("power_of_two").get<bool>();
   if (s.contains("animation")) {
     const json& a = s.at("animation");
     sheet.clip_list = a.is_array();
@@ -101,6 +103,7 @@ Output output_of(const std::string& name) {
   if (name == "depth") return Output::Depth;
   if (name == "normal") return Output::Normal;
   if (name == "id") return Output::Id;
+  if (name == "svg") return Output::Svg;
   return Output::Color;
 }
 
@@ -145,10 +148,7 @@ void read_lights(const json& j, RenderParams& p) {
     if (l.contains("position")) light.position = dvec3_of(l.at("position"));
     light.radius = l.at("radius").get<double>();
     light.color = srgb_to_linear(vec3_of(l.at("color"))) * l.at("intensity").get<float>();
-    // Absent, a sheet's lights turn with its camera, so that every
-    // direction is lit alike; a single image's stay with the model.
-    const std::string space = l.value("space", j.contains("sheet") ? "view" : "model");
-    light.space = space == "view" ? LightSpace::View : LightSpace::Model;
+    light.space = l.at("space") == "view" ? LightSpace::View : LightSpace::Model;
     p.lights.push_back(light);
   }
   p.light_combine = j.at("light_combine") == "sum" ? LightCombine::Sum : LightCombine::Max;
@@ -302,6 +302,7 @@ RenderParams render_params_from_wire(const json& j) {
   if (j.contains("sheet")) p.sheet = sheet_of(j.at("sheet"), p.camera);
   if (j.contains("animation")) p.animation = animation_of(j.at("animation"));
   p.output = output_of(j.at("output").get<std::string>());
+  p.svg.hidden = j.at("svg").at("hidden").get<bool>();
   return p;
 }
 

@@ -1,7 +1,9 @@
-// POST /render: JSON parameters → PNG; or multipart (bundle files + a
+// POST /render: JSON parameters → PNG (output svg, or Accept:
+// image/svg+xml without an output: SVG); or multipart (bundle files + a
 // `params` part) to upload and render in one call. With `sheet`: a sprite
 // sheet with its atlas in a tEXt chunk, or (?atlas=json) the atlas alone, or
-// (sheet.animate) its frames as an animated WebP. The route parses the
+// (?atlas=aseprite, ?atlas=godot) an .aseprite file or a Godot SpriteFrames
+// resource, or (sheet.animate) its frames as an animated WebP. The route parses the
 // request, hands it to the render pipeline (server/pipeline/pipeline.h),
 // and answers; the result cache sits between the pipeline's resolve stage
 // and the rest.
@@ -15,7 +17,9 @@
 #include "http/render_params_wire.h"
 #include "http/request_limits.h"
 #include "http/routes.h"
+#include "http/sheet_query.h"
 #include "http/store_upload.h"
+#include "http/svg_request.h"
 #include "param_schema.h"
 #include "pipeline/pipeline.h"
 #include "presets.h"
@@ -63,7 +67,8 @@ std::string lod_header(const std::vector<render::LodUse>& lods) {
 }
 
 // "cost=12.3; frames=1; samples=…; triangles=…; tiles=…; framebuffer=…;
-// edge_texels=…; crease_edges=…":
+// edge_texels=…; crease_edges=…" (and a line drawing's "line_triangles=…;
+// line_edges=…"):
 // the predicted Msamples and what they are made of, for clients that size
 // their requests and for the cost benchmark, which fits the weights.
 std::string cost_header(const pipeline::RenderPrice& price) {
@@ -73,6 +78,7 @@ std::string cost_header(const pipeline::RenderPrice& price) {
   s << "cost=" << c.units() << "; frames=" << price.frames << "; samples=" << c.samples << "; triangles=" << c.triangles
     << "; tiles=" << c.tiles << "; framebuffer=" << c.framebuffer << "; edge_texels=" << c.edge_texels
     << "; crease_edges=" << c.crease_edges;
+  if (c.line_triangles > 0) s << "; line_triangles=" << c.line_triangles << "; line_edges=" << c.line_edges;
   return s.str();
 }
 
@@ -119,21 +125,9 @@ nlohmann::json complete_request(const nlohmann::json& request, const RequestLimi
   return schema.validate_and_complete(proto::Presets::builtin().expand(request));
 }
 
-// `?atlas=json` answers a sheet's atlas alone, without rendering; the
-// query names nothing else.
-bool wants_atlas_only(const httplib::Request& req, const render::RenderParams& params) {
-  if (!req.has_param("atlas")) return false;
-  if (req.get_param_value("atlas") != "json") {
-    throw RequestError(400, "invalid_parameter", "?atlas: the only value is json (the sheet's atlas alone)", "?atlas");
-  }
-  if (!params.sheet) {
-    throw RequestError(400, "invalid_parameter", "?atlas=json needs a `sheet` in the parameters", "/sheet");
-  }
-  return true;
-}
-
 pipeline::Services services_of(ServiceContext& context) {
-  return {context.library, context.renderer, context.clip_framings, context.limits.render, context.render_deadline};
+  return {context.library,       context.renderer,        context.clip_framings,
+          context.limits.render, context.render_deadline, context.line_drawings};
 }
 
 // The pipeline's render, with what /metrics counts of it.
@@ -177,19 +171,27 @@ void answer_rendered(const httplib::Request& req, httplib::Response& res, pipeli
 void register_render_routes(httplib::Server& server, ServiceContext& context) {
   const auto render = [&context](const httplib::Request& req, httplib::Response& res) {
     const auto started = Clock::now();
-    const nlohmann::json completed = complete_request(read_request(req, context), context.limits);
+    nlohmann::json sent = read_request(req, context);
+    apply_svg_accept(req.get_header_value("Accept"), sent);
+    const nlohmann::json completed = complete_request(sent, context.limits);
+    check_svg_fields(sent, completed);
     // Held until the answer is sent: the store lets none of these models go.
     scene::ModelPins pins(context.store);
     pipeline::Request request =
         pipeline::resolve(render_params_from_wire(completed), context.library, pins, context.limits.render);
-    if (wants_atlas_only(req, request.params)) {
+    request.answer = sheet_answer_of(req);
+    pipeline::check_sheet_answer(request);
+    if (!pipeline::needs_drawing(request)) {
       pipeline::Services services = services_of(context);
-      res.set_content(pipeline::sheet_atlas(request, services).dump(2), "application/json");
+      const pipeline::Encoded file = pipeline::sheet_file(request, services);
+      for (const auto& [name, value] : file.headers) res.set_header(name, value);
+      res.set_content(file.body, file.content_type);
       return;
     }
     // Completed parameters name content-addressed models (and bundle files
-    // inside them): they decide every byte of the answer.
-    const std::string cache_key = completed.dump();
+    // inside them): they decide every byte of the answer, with the query
+    // that says which file of the sheet it is.
+    const std::string cache_key = completed.dump() + sheet_answer_key(request.answer);
     if (answer_from_cache(context.results.get(), cache_key, req, res)) return;
     pipeline::Rendered rendered = render_counted(std::move(request), req.remote_addr, context);
     answer_rendered(req, res, rendered, cache_key, started, context);

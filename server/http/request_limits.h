@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pipeline/render_limits.h"
-#include "scene/import/import_limits.h"
+#include "scene/reading/import_limits.h"
 
 namespace toond::http {
 

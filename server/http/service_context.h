@@ -8,6 +8,7 @@
 #include "http/result_cache.h"
 #include "http/service_metrics.h"
 #include "pipeline/pose.h"
+#include "pipeline/svg_render.h"
 #include "render/run/render_service.h"
 #include "scene/store/model_library.h"
 #include "scene/store/model_store.h"
@@ -26,6 +27,8 @@ struct ServiceContext {
   std::unique_ptr<ResultCache> results{};
   // Recently used clips' framings (a request with `animation`).
   pipeline::ClipFramings clip_framings{};
+  // Output svg's models' edges and the lane its drawings wait in.
+  pipeline::LineDrawings line_drawings{};
 };
 
 }  // namespace toond::http

@@ -15,6 +15,7 @@ std::string refusal_reason(scene::StoreError::Kind kind) {
       return "models_in_use";
     case scene::StoreError::Kind::LargerThanStore:
       return "larger_than_store";
+    case scene::StoreError::Kind::Busy:
     case scene::StoreError::Kind::Failed:
       break;
   }

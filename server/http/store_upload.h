@@ -4,7 +4,7 @@
 // timed and sized for /metrics, the store's refusals counted, and the models
 // it let go for its bound forgotten by this replica.
 #include "http/service_context.h"
-#include "scene/import/bundle.h"
+#include "scene/reading/bundle.h"
 #include "scene/store/model_store.h"
 
 namespace toond::http {

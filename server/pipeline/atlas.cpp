@@ -4,9 +4,9 @@
 
 namespace toond::pipeline {
 
-nlohmann::ordered_json atlas_of(const Request& request, const render::SceneFrame& scene) {
+nlohmann::ordered_json atlas_of(const Request& request, const std::vector<render::FramePlan>& plans) {
   const render::RenderParams& params = request.params;
-  return render::sheet_atlas(*request.layout, params, scene, params.sheet->animate ? "sheet.webp" : "sheet.png");
+  return render::sheet_atlas(*request.layout, params, plans, params.sheet->animate ? "sheet.webp" : "sheet.png");
 }
 
 }  // namespace toond::pipeline

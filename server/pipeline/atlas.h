@@ -1,15 +1,17 @@
 #pragma once
-// A sheet's atlas (render/atlas/sheet_atlas.h), written from its layout and the
-// framing its frames share, without rendering: the answer of ?atlas=json,
-// and the tEXt chunk of a sheet's PNG.
+// A sheet's atlas (render/atlas/sheet_atlas.h), written from its layout and
+// its frames' plans, without rendering: the answer of ?atlas=json, and the
+// tEXt chunk of a sheet's PNG.
 #include <nlohmann/json.hpp>
 
+#include <vector>
 #include "pipeline/request.h"
-#include "render/plan/camera.h"
+
+#include "render/plan/frame_plan.h"
 
 namespace toond::pipeline {
 
-// `scene`: the framing every frame of the sheet shares (plan.h).
-nlohmann::ordered_json atlas_of(const Request& request, const render::SceneFrame& scene);
+// `plans`: the sheet's frames' (plan.h), in layout order.
+nlohmann::ordered_json atlas_of(const Request& request, const std::vector<render::FramePlan>& plans);
 
 }  // namespace toond::pipeline

@@ -5,11 +5,9 @@
 #include "limit_error.h"
 #include "render/plan/pass_plan.h"
 #include "render/plan/pixel_art_frame.h"
-#include "render/plan/sheet_layout.h"
 
 namespace toond::pipeline {
 
-using render::layout_sheet;
 using render::SheetLayout;
 namespace {
 
@@ -23,8 +21,8 @@ std::string count(double n) { return std::to_string(static_cast<unsigned long lo
 // An animation (sheet.animate) holds every frame whole, so its frames'
 // pixels count instead of the sheet's (the same but for padding); a
 // pixel-art sheet's frames are drawn as `drawn` says.
-void check_sheet_budget(const RenderParams& p, const RenderParams& drawn, const RenderLimits& limits) {
-  const SheetLayout layout = layout_sheet(*p.sheet, p.width, p.height);
+void check_sheet_budget(const RenderParams& p, const SheetLayout& layout, const RenderParams& drawn,
+                        const RenderLimits& limits) {
   const double pixels = p.sheet->animate ? static_cast<double>(layout.frames.size()) * p.width * p.height
                                          : static_cast<double>(layout.width) * layout.height;
   if (pixels > static_cast<double>(limits.max_output_pixels)) {
@@ -91,7 +89,7 @@ void check_drawn_render(const RenderParams& p, const RenderLimits& limits) {
 
 }  // namespace
 
-void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
+void check_render_budget(const RenderParams& p, const std::optional<SheetLayout>& layout, const RenderLimits& limits) {
   // The framebuffer and sample checks weigh what is drawn, not what was
   // asked: a pixel-art sheet draws each frame at 1/scale, one sample a
   // pixel; a data layer draws one sample a pixel, unsupersampled (the pass
@@ -102,7 +100,7 @@ void check_render_budget(const RenderParams& p, const RenderLimits& limits) {
     drawn.msaa = 1;
     drawn.supersample = 1;
   }
-  if (p.sheet) check_sheet_budget(p, drawn, limits);
+  if (layout) check_sheet_budget(p, *layout, drawn, limits);
   check_drawn_render(drawn, limits);
 }
 

@@ -1,8 +1,11 @@
 #pragma once
 // Admission of a render request's size against the daemon's --max-*
 // limits, before anything is posed or priced; its errors name the flags.
+#include <optional>
+
 #include "pipeline/render_limits.h"
 #include "render/plan/render_params.h"
+#include "render/plan/sheet_layout.h"
 
 namespace toond::pipeline {
 
@@ -15,7 +18,9 @@ inline constexpr int kMaxDrawnSide = 16384;
 // to lower) when a render would exceed the output pixels, the sample budget
 // (width × supersample × height × supersample × msaa), the largest
 // framebuffer side, or the lights or objects allowed. A sheet's whole image
-// and all its frames' samples count too.
-void check_render_budget(const RenderParams& params, const RenderLimits& limits = {});
+// and all its frames' samples count too: `layout` is the sheet's
+// (frames.h: layout_of), none for a single image.
+void check_render_budget(const RenderParams& params, const std::optional<render::SheetLayout>& layout,
+                         const RenderLimits& limits = {});
 
 }  // namespace toond::pipeline

@@ -6,6 +6,7 @@
 #include "image/png_codec.h"
 #include "image/webp_animation.h"
 #include "pipeline/output_png.h"
+#include "pipeline/sheet_answer.h"
 
 namespace toond::pipeline {
 namespace {
@@ -38,6 +39,7 @@ image::WebpAnimationOptions animation_options(const Request& request) {
 
 Encoded encode(const render::RenderOutput& out, const Request& request,
                const std::optional<nlohmann::ordered_json>& atlas) {
+  if (request.answer.file != SheetFile::Image) return encode_sheet_file(&out, request, *atlas);
   Encoded encoded;
   if (request.params.sheet && request.params.sheet->animate) {
     encoded.body = image::encode_webp_animation(out.frames, animation_options(request));

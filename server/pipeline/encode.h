@@ -24,7 +24,8 @@ struct Encoded {
 };
 
 // `atlas`: a sheet's (atlas.h), written into its PNG; an animation's goes
-// out with ?atlas=json alone.
+// out with ?atlas=json alone. A sheet asked for as a file (?atlas=…) is
+// that file (sheet_answer.h).
 Encoded encode(const render::RenderOutput& out, const Request& request,
                const std::optional<nlohmann::ordered_json>& atlas);
 

@@ -74,6 +74,7 @@ OutputPng encode_output(const render::RenderOutput& out, const OutputDescription
   switch (output.output) {
     case render::Output::Color:
     case render::Output::Lines:
+    case render::Output::Svg:  // drawn as vectors (svg_render.h), never read back: not reached
       return {image::encode_png(out.image, options), {}};
     case render::Output::Depth: {
       const image::DepthRange range = image::visible_depth_range(out.layer);

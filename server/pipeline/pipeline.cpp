@@ -6,6 +6,7 @@
 #include "pipeline/atlas.h"
 #include "pipeline/plan.h"
 #include "pipeline/queue.h"
+#include "pipeline/sheet_answer.h"
 
 namespace toond::pipeline {
 namespace {
@@ -49,11 +50,16 @@ std::vector<render::RenderJob> frame_jobs(const Request& request, const std::vec
 }  // namespace
 
 nlohmann::ordered_json sheet_atlas(const Request& request, Services& services) {
-  const ObjectPoses poses = pose_frames(request, services.framings, services.renderer.skinning()).front();
-  return atlas_of(request, *render::frame_scene_of(planned_objects(request, poses)));
+  const std::vector<ObjectPoses> poses = pose_frames(request, services.framings, services.renderer.skinning());
+  return atlas_of(request, plan_frames(request, poses));
+}
+
+Encoded sheet_file(const Request& request, Services& services) {
+  return encode_sheet_file(nullptr, request, sheet_atlas(request, services));
 }
 
 Rendered render(Request request, const std::string& client, Services& services) {
+  if (request.params.output == render::Output::Svg) return render_svg(std::move(request), client, services);
   Rendered rendered;
   const auto posing = Clock::now();
   const std::vector<ObjectPoses> poses = pose_frames(request, services.framings, services.renderer.skinning());
@@ -62,10 +68,10 @@ Rendered render(Request request, const std::string& client, Services& services) 
   // A sheet's atlas frames it as its frames are; an animation's goes out
   // with ?atlas=json alone.
   std::optional<nlohmann::ordered_json> atlas;
-  if (request.layout && !request.params.sheet->animate) atlas = atlas_of(request, *plans.front().scene);
+  if (request.layout && !request.params.sheet->animate) atlas = atlas_of(request, plans);
 
   rendered.price = price_of(plans);
-  check_render_cost(request, rendered.price, services.limits);
+  check_render_cost(request, poses, rendered.price, services.limits);
   rendered.long_lane = services.renderer.is_long(rendered.price.total.units());
   const auto submitted = Clock::now();
   // Past the deadline the render thread skips the job instead of drawing
@@ -77,7 +83,8 @@ Rendered render(Request request, const std::string& client, Services& services) 
   if (request.pins) request.pins->lease();
   Assembly assembly(request.params, request.layout);
   queue_frames(services.renderer, frame_jobs(request, poses, std::move(plans), schedule), services.deadline, assembly);
-  const render::RenderOutput out = assembly.finish();
+  render::RenderOutput out = assembly.finish();
+  if (atlas && request.params.sheet->pack) pack_sheet_output(out, *atlas, request);
   rendered.render_ms = render_thread_ms(out);
   rendered.queue_ms = std::max(0.0, ms_since(submitted) - rendered.render_ms);
 

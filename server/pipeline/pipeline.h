@@ -22,6 +22,7 @@
 #include "pipeline/render_limits.h"
 #include "pipeline/request.h"
 #include "pipeline/resolve.h"
+#include "pipeline/svg_render.h"
 #include "render/run/render_service.h"
 #include "scene/store/model_library.h"
 
@@ -35,6 +36,7 @@ struct Services {
   ClipFramings& framings;
   const RenderLimits& limits;
   std::chrono::milliseconds deadline;  // --render-timeout: how long a render may wait and draw
+  LineDrawings& lines;                 // output svg's edges and lane (svg_render.h)
 };
 
 // A finished render: its answer's bytes and what its headers report.
@@ -55,7 +57,12 @@ struct Rendered {
 // A sheet's atlas alone (?atlas=json): posed and framed, nothing drawn.
 nlohmann::ordered_json sheet_atlas(const Request& request, Services& services);
 
-// Poses, prices, queues, assembles and encodes a resolved request. `client`
+// A sheet's atlas as the file the request asks for (?atlas=json or godot,
+// sheet_answer.h), when it needs nothing drawn (needs_drawing is false).
+Encoded sheet_file(const Request& request, Services& services);
+
+// Poses, prices, queues, assembles and encodes a resolved request (output
+// svg: draws it as vectors, svg_render.h). `client`
 // (the connection's address) takes turns with other clients in the queue.
 // Throws CostRefused over --max-render-cost, QueueFull when the lane is
 // full, RequestError 503 deadline_exceeded, render::RenderAborted when a

@@ -14,7 +14,13 @@ std::vector<render::PlannedObject> planned_objects(const Request& request, const
 }
 
 std::vector<render::FramePlan> plan_frames(const Request& request, const std::vector<ObjectPoses>& poses) {
-  std::vector<render::RenderParams> drawn = drawn_frames(request.params);
+  return plan_frames(request, poses, request.params, request.layout);
+}
+
+std::vector<render::FramePlan> plan_frames(const Request& request, const std::vector<ObjectPoses>& poses,
+                                           const render::RenderParams& params,
+                                           const std::optional<render::SheetLayout>& layout) {
+  std::vector<render::RenderParams> drawn = drawn_frames(params, layout);
   // Every frame's poses are framed alike (pose.h): one framing for all.
   const auto scene = render::frame_scene_of(planned_objects(request, poses.front()));
   std::vector<render::FramePlan> plans;

@@ -17,5 +17,10 @@ std::vector<render::PlannedObject> planned_objects(const Request& request, const
 // Every frame's plan, in layout order (frames.h): its parameters as drawn
 // and its poses, all in one framing.
 std::vector<render::FramePlan> plan_frames(const Request& request, const std::vector<ObjectPoses>& poses);
+// The same for the request's objects and poses drawn with `params` laid
+// out as `layout` instead of its own: the price's what-ifs (price.h).
+std::vector<render::FramePlan> plan_frames(const Request& request, const std::vector<ObjectPoses>& poses,
+                                           const render::RenderParams& params,
+                                           const std::optional<render::SheetLayout>& layout);
 
 }  // namespace toond::pipeline

@@ -14,17 +14,10 @@ namespace {
 using render::RenderCost;
 using render::RenderParams;
 
-// What the request would cost drawn with `params` instead of its own
-// (the same models, as imported: a pose changes no price).
-RenderPrice price(const Request& request, const RenderParams& params) {
-  const std::vector<render::PlannedObject> objects = planned_objects(request);
-  RenderPrice p;
-  p.frames = 0;
-  for (const RenderParams& frame : drawn_frames(params)) {
-    p.total += render::predict_cost(frame, objects);
-    ++p.frames;
-  }
-  return p;
+// What the request would cost drawn with `params` instead of its own, in
+// the same poses: its frames planned as they would be.
+RenderPrice price_with(const Request& request, const std::vector<ObjectPoses>& poses, const RenderParams& params) {
+  return price_of(plan_frames(request, poses, params, layout_of(params)));
 }
 
 std::string fmt(double v) {
@@ -36,10 +29,12 @@ std::string fmt(double v) {
 
 // The changes to the request, each alone, that would bring it under the
 // limit; the size is halved (aspect kept) until it fits or reaches 16.
-std::vector<std::string> ways_under(const Request& request, double limit) {
+std::vector<std::string> ways_under(const Request& request, const std::vector<ObjectPoses>& poses, double limit) {
   std::vector<std::string> ways;
   const RenderParams& p = request.params;
-  const auto fits = [&](const RenderParams& changed) { return price(request, changed).total.units() <= limit; };
+  const auto fits = [&](const RenderParams& changed) {
+    return price_with(request, poses, changed).total.units() <= limit;
+  };
   RenderParams smaller = p;
   while (smaller.width > 16 && smaller.height > 16) {
     smaller.width = std::max(16, smaller.width / 2);
@@ -85,6 +80,8 @@ RenderCost RenderPrice::per_frame() const {
   one.frames /= n;
   one.edge_texels /= n;
   one.crease_edges /= n;
+  one.line_triangles /= n;
+  one.line_edges /= n;
   return one;
 }
 
@@ -95,16 +92,15 @@ RenderPrice price_of(const std::vector<render::FramePlan>& plans) {
   return p;
 }
 
-RenderPrice price_render(const Request& request) { return price(request, request.params); }
-
-void check_render_cost(const Request& request, const RenderPrice& p, const RenderLimits& limits) {
+void check_render_cost(const Request& request, const std::vector<ObjectPoses>& poses, const RenderPrice& p,
+                       const RenderLimits& limits) {
   const double limit = limits.max_render_cost;
   if (limit <= 0 || p.total.units() <= limit) return;
   std::string message = "the render is predicted to cost " + p.total.describe();
   if (p.frames > 1) message += " for its " + std::to_string(p.frames) + " frames";
   message += ", more than the limit --max-render-cost = " + fmt(limit) + " Msamples; the model's surface lies up to " +
              fmt(deepest_layers(request)) + " layers deep";
-  const std::vector<std::string> ways = ways_under(request, limit);
+  const std::vector<std::string> ways = ways_under(request, poses, limit);
   if (ways.empty()) {
     message +=
         "; no single change of size, msaa, supersample or outline brings it under: the model itself is too "

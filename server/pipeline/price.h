@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "limit_error.h"
+#include "pipeline/pose.h"
 #include "pipeline/render_limits.h"
 #include "pipeline/request.h"
 #include "render/plan/frame_plan.h"
@@ -25,10 +26,6 @@ struct RenderPrice {
 // The price of frames planned (plan.h): the sum of their plans' costs.
 RenderPrice price_of(const std::vector<render::FramePlan>& plans);
 
-// Prices `request` from its parameters and its objects' meshes, as the
-// plans of its frames would: for what-ifs, which are not framed.
-RenderPrice price_render(const Request& request);
-
 // A request refused for its price: the daemon counts these (/metrics).
 class CostRefused : public LimitError {
  public:
@@ -37,8 +34,10 @@ class CostRefused : public LimitError {
 
 // Throws CostRefused (422, limit_exceeded, --max-render-cost) when the price
 // is over the limit, naming the figure, the limit, and the changes to the
-// request (size, msaa, supersample, outline, frames) that would fit.
-void check_render_cost(const Request& request, const RenderPrice& price, const RenderLimits& limits);
+// request (size, msaa, supersample, outline) that would fit, each priced
+// from the plans its frames would have in the same `poses` (pose.h).
+void check_render_cost(const Request& request, const std::vector<ObjectPoses>& poses, const RenderPrice& price,
+                       const RenderLimits& limits);
 
 // Frames priced at this many Msamples or more (about 0.7 s of llvmpipe) are
 // drawn in chunks of about kPacedChunkCost each (about 45 ms), the deadline

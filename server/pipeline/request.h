@@ -7,6 +7,7 @@
 
 #include "pipeline/clips.h"
 #include "pipeline/output_png.h"
+#include "pipeline/sheet_answer.h"
 #include "render/plan/render_params.h"
 #include "render/plan/sheet_layout.h"
 #include "render/run/render_service.h"
@@ -27,6 +28,9 @@ struct Request {
   // model (clips.h).
   std::optional<AnimationClip> clip;
   OutputDescription output;
+  // What a sheet answers (?atlas=…): its image unless the route says
+  // otherwise.
+  SheetAnswer answer;
   // Where the models are pinned (resolve.h); leased when the frames are
   // queued, so that every replica sees them in use.
   scene::ModelPins* pins = nullptr;

@@ -4,6 +4,7 @@
 
 #include "pipeline/budget.h"
 #include "pipeline/clips.h"
+#include "pipeline/frames.h"
 #include "pipeline/sheet_checks.h"
 #include "render/frame/ramp_image.h"
 #include "request_error.h"
@@ -112,12 +113,12 @@ Request resolve(render::RenderParams params, scene::ModelLibrary& library, scene
   // An animated sheet's size follows its clips' lengths: they are looked
   // up before the sheet is held to the budget.
   resolve_sheet_clips(params, *request.objects.front().model);
-  check_render_budget(params, limits);
+  request.layout = layout_of(params);
+  check_render_budget(params, request.layout, limits);
   request.output = describe_output(params, request.objects);
   request.params = std::move(params);
   load_bundle_images(library, request);
   const render::RenderParams& p = request.params;
-  if (p.sheet) request.layout = render::layout_sheet(*p.sheet, p.width, p.height);
   if (p.animation) request.clip = resolve_animation_clip(p, *request.objects.front().model);
   return request;
 }

@@ -24,6 +24,17 @@ void check_sheet_params(const render::RenderParams& params) {
                          "sheets come as PNG)",
                          "/sheet/animate");
     }
+    if (params.sheet->pack) {
+      throw RequestError(400, "invalid_parameter",
+                         "/sheet/pack: a packed sheet needs output color or lines (a depth, normal or id tile has "
+                         "no transparent pixels to trim)",
+                         "/sheet/pack");
+    }
+  }
+  if (params.sheet->pack && params.sheet->animate) {
+    throw RequestError(400, "invalid_parameter",
+                       "/sheet/pack: animate answers whole frames as an animated WebP; there is no sheet to pack",
+                       "/sheet/pack");
   }
   if (!params.sheet->pixel_art) return;
   const int scale = params.sheet->pixel_art->scale;

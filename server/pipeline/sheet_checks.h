@@ -9,8 +9,9 @@ namespace toond::pipeline {
 // Throws RequestError (400 invalid_parameter) when pixel art's scale does
 // not divide width and height (at /sheet/pixel_art/scale: a tile must be
 // whole art pixels, or the blocks would not line up with the tile), or when
-// pixel art or animate is asked of a data layer (output depth, normal or
-// id; at /sheet/pixel_art or /sheet/animate).
+// pixel art, animate or pack is asked of a data layer (output depth,
+// normal or id; at /sheet/pixel_art, /sheet/animate or /sheet/pack), or
+// pack of an animated WebP (at /sheet/pack).
 void check_sheet_params(const render::RenderParams& params);
 
 }  // namespace toond::pipeline

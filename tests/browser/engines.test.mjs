@@ -9,7 +9,10 @@
 // engines too, and a one-shot (the walk with loop: false, whose tags say
 // Aseprite's "repeat": "1"): Phaser plays it once and stops on its last
 // frame; PixiJS reads no tags at all, so a game gives its AnimatedSprite
-// loop = false from the tag itself.
+// loop = false from the tag itself. The walk packed (sheet.pack: trimmed
+// frames, spriteSourceSize, sourceSize) plays the same 4 animations of 6
+// frames in both engines, and each frame is drawn on the same pixels as its
+// grid tile.
 //   node engines.test.mjs --toond PATH --exported DIR --artifacts DIR
 // Exit 0: every check passed; 1: a check failed.
 import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -31,6 +34,7 @@ const artifacts = argument('--artifacts');
 mkdirSync(artifacts, { recursive: true });
 
 const { check, failed } = checker();
+const checkOne = check;
 
 const versionOf = (name) => JSON.parse(readFileSync(path.join(here, 'node_modules', name, 'package.json'), 'utf8')).version;
 
@@ -80,13 +84,13 @@ async function enginePage(browser, sheets) {
   await page.evaluate(() => {
     // A Phaser game that loads sheet `key` with its Aseprite loader and
     // calls `create` as its scene's create.
-    window.phaserGame = (key, create) => {
+    window.phaserGame = (key, create, config = {}) => {
       const parent = document.createElement('div');
       parent.id = `phaser-${key}-${document.body.children.length}`;
       document.body.append(parent);
       return new Phaser.Game({
         type: Phaser.CANVAS, width: 320, height: 240, parent, banner: false, transparent: true,
-        audio: { noAudio: true },
+        audio: { noAudio: true }, ...config,
         scene: { preload() { this.load.aseprite(key, `${key}.png`, `${key}.json`); }, create },
       });
     };
@@ -186,6 +190,74 @@ function pixiLoads(page, name) {
   }, name);
 }
 
+// Every frame of sheet `key` drawn alone by Phaser (canvas) and by PixiJS
+// (WebGL), without smoothing, the sprite placed so that its tile's top left
+// falls on the whole pixel (100, 120) whatever its anchor; the pixels are
+// kept in the page (window.drawn) for sameDrawing to compare. A packed
+// frame is drawn at its trim offset inside that tile, so a packed sheet
+// and its grid must draw alike.
+function drawFrames(page, name) {
+  return page.evaluate(([key, stepTimeout]) => new Promise((resolve, reject) => {
+    const timer = setTimeout(() => reject(new Error(`Phaser did not draw ${key}`)), stepTimeout);
+    window.drawn = window.drawn ?? {};
+    const game = window.phaserGame(key, function create() {
+      const names = this.textures.get(key).getFrameNames().sort((a, b) => a - b);
+      const sprite = this.add.sprite(0, 0, key, names[0]);
+      const frames = [];
+      const place = () => {
+        sprite.setFrame(names[frames.length]);
+        sprite.setPosition(100 + sprite.originX * sprite.width, 120 + sprite.originY * sprite.height);
+      };
+      place();
+      this.game.events.on('postrender', () => {
+        if (frames.length === names.length) return;
+        frames.push(this.game.canvas.getContext('2d').getImageData(0, 0, 200, 160).data);
+        if (frames.length < names.length) {
+          place();
+          return;
+        }
+        clearTimeout(timer);
+        window.drawn[`phaser:${key}`] = frames;
+        setTimeout(() => game.destroy(true), 0);
+        resolve();
+      });
+    }, { width: 200, height: 160, antialias: false });
+  }).then(async () => {
+    const { sheet } = await window.pixiSheet(key);
+    sheet.textureSource.scaleMode = 'nearest';
+    const renderer = await PIXI.autoDetectRenderer({ width: 200, height: 160, preference: 'webgl', backgroundAlpha: 0 });
+    const frames = [];
+    for (const name of Object.keys(sheet.textures).sort((a, b) => a - b)) {
+      const sprite = new PIXI.Sprite(sheet.textures[name]);
+      const { width, height } = sprite.texture.orig;
+      sprite.position.set(100 + sprite.anchor.x * width, 120 + sprite.anchor.y * height);
+      const target = PIXI.RenderTexture.create({ width: 200, height: 160 });
+      renderer.render({ container: sprite, target, clear: true });
+      frames.push(renderer.extract.pixels(target).pixels);
+      target.destroy(true);
+      sprite.destroy();
+    }
+    window.drawn[`pixi:${key}`] = frames;
+    renderer.destroy();
+  }), [name, STEP_TIMEOUT_MS]);
+}
+
+// How the frames `engine` drew of sheets a and b compare: frames that
+// differ in any byte, and frames with nothing drawn.
+function sameDrawing(page, engine, a, b) {
+  return page.evaluate(([e, x, y]) => {
+    const one = window.drawn[`${e}:${x}`];
+    const other = window.drawn[`${e}:${y}`];
+    let differing = 0;
+    let empty = 0;
+    one.forEach((pixels, i) => {
+      if (pixels.some((v, k) => v !== other[i][k])) differing += 1;
+      if (!pixels.some((v, k) => k % 4 === 3 && v !== 0)) empty += 1;
+    });
+    return { frames: one.length, others: other.length, differing, empty };
+  }, [engine, a, b]);
+}
+
 // Phaser plays a one-shot's first tag as a game plays an attack: as
 // createFromAseprite made it, with no repeat of its own given. Answers the
 // frames shown, whether it completed, the frame it rests on a while after,
@@ -271,7 +343,8 @@ function checkAtlas(label, atlas) {
     problems.slice(0, 5).join('; '));
 }
 
-function checkPhaserWalk(phaser, atlas, clipMs) {
+function checkPhaserWalk(phaser, atlas, clipMs, label = '') {
+  const check = (condition, what, detail) => checkOne(condition, `${label}${what}`, detail);
   const tags = atlas.meta.frameTags;
   check(phaser.animations.length === 4 && phaser.animations.every((a) => a.frames.length === 6),
     'Phaser: createFromAseprite gives 4 animations of 6 frames',
@@ -296,7 +369,8 @@ function checkPhaserWalk(phaser, atlas, clipMs) {
   `${JSON.stringify(phaser.pivot)}, origin ${JSON.stringify(phaser.origin)}, anchor ${JSON.stringify(anchor)}`);
 }
 
-function checkPixiWalk(pixi, atlas) {
+function checkPixiWalk(pixi, atlas, label = '') {
+  const check = (condition, what, detail) => checkOne(condition, `${label}${what}`, detail);
   const names = Object.keys(pixi.animations);
   check(names.length === 4 && names.every((n) => pixi.animations[n].length === 6 && pixi.animations[n].every(Boolean)),
     'PixiJS: the Spritesheet has 4 animations of 6 textures',
@@ -319,6 +393,21 @@ function checkPixiWalk(pixi, atlas) {
   const anchor = atlas.frames['0']?.anchor ?? {};
   check(close(pixi.anchor.x, anchor.x) && close(pixi.anchor.y, anchor.y), 'PixiJS: the sprite stands on the anchor',
     JSON.stringify(pixi.anchor));
+}
+
+// A packed walk sheet plays as its grid does, and every frame is drawn on
+// the very pixels its grid tile is drawn on, in both engines.
+async function checkPacked(page, packed, clipMs) {
+  checkPhaserWalk(await phaserLoads(page, 'packed'), packed.atlas, clipMs, 'packed: ');
+  checkPixiWalk(await pixiLoads(page, 'packed'), packed.atlas, 'packed: ');
+  check(Object.values(packed.atlas.frames).every((f) => f.trimmed), 'packed: every frame is trimmed');
+  await drawFrames(page, 'walk');
+  await drawFrames(page, 'packed');
+  for (const engine of ['phaser', 'pixi']) {
+    const drawn = await sameDrawing(page, engine, 'walk', 'packed');
+    check(drawn.frames === 24 && drawn.others === 24 && drawn.differing === 0 && drawn.empty === 0,
+      `${engine}: each packed frame is drawn where its grid tile is, pixel for pixel`, JSON.stringify(drawn));
+  }
 }
 
 function checkTurntable(phaser, pixi, atlas) {
@@ -345,6 +434,8 @@ try {
   const base = { model: walker.id, width: 64, height: 64, background: [0, 0, 0, 0], camera: { preset: 'dimetric' } };
   const walk = await sheetOf(daemon.url, { ...base, sheet: { frames: 4, yaw_start: 0, animation: { clip: 'Walk', frames: 6 } } });
   const turn = await sheetOf(daemon.url, { ...base, sheet: { frames: 8, pitches: [10, 40], frame_ms: 80 } });
+  const packed = await sheetOf(daemon.url,
+    { ...base, sheet: { frames: 4, yaw_start: 0, animation: { clip: 'Walk', frames: 6 }, pack: true } });
   const once = await sheetOf(daemon.url,
     { ...base, sheet: { frames: 2, yaw_start: 0, animation: { clip: 'Walk', frames: 5, loop: false } } });
   writeFileSync(path.join(artifacts, 'engines-walk.png'), walk.png);
@@ -352,14 +443,16 @@ try {
   checkAtlas('walk', walk.atlas);
   checkAtlas('turntable', turn.atlas);
   checkAtlas('one-shot', once.atlas);
+  checkAtlas('packed walk', packed.atlas);
 
   browser = await launchChromium(chromium);
-  const { page, pageErrors } = await enginePage(browser, { walk, turn, once });
+  const { page, pageErrors } = await enginePage(browser, { walk, turn, once, packed });
   check(await page.evaluate(() => Phaser.VERSION) === versionOf('phaser') && await page.evaluate(() => PIXI.VERSION) === versionOf('pixi.js'),
     'the page runs the installed Phaser and PixiJS', await page.evaluate(() => `${Phaser.VERSION}, ${PIXI.VERSION}`));
   const phaserWalk = await phaserLoads(page, 'walk');
   checkPhaserWalk(phaserWalk, walk.atlas, clipMs);
   checkPixiWalk(await pixiLoads(page, 'walk'), walk.atlas);
+  await checkPacked(page, packed, clipMs);
   checkTurntable(await phaserLoads(page, 'turn'), await pixiLoads(page, 'turn'), turn.atlas);
   checkOneShot(await phaserPlaysOnce(page, 'once'), await pixiPlaysOnce(page, 'once'), once.atlas, phaserWalk);
   check(pageErrors.length === 0, 'no uncaught errors in the page', pageErrors.join('; '));

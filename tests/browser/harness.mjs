@@ -72,3 +72,27 @@ export function checker() {
     failed: () => failures,
   };
 }
+
+// Runs in a page (page.evaluate): the PNG's pixels as Chromium decodes
+// them, RGBA rows top to bottom, base64. Read back through WebGL from an
+// ImageBitmap made without premultiplied alpha or colour conversion: a 2D
+// canvas stores premultiplied colour and would round translucent pixels.
+export async function decodePngInPage(pngBase64) {
+  const bytes = Uint8Array.from(atob(pngBase64), (c) => c.charCodeAt(0));
+  const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }),
+    { premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
+  const { width, height } = bitmap;
+  const gl = new OffscreenCanvas(width, height).getContext('webgl2', { premultipliedAlpha: false });
+  if (!gl) throw new Error('no WebGL2 context');
+  gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, false);
+  gl.pixelStorei(gl.UNPACK_COLORSPACE_CONVERSION_WEBGL, gl.NONE);
+  gl.bindTexture(gl.TEXTURE_2D, gl.createTexture());
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, bitmap);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, gl.createFramebuffer());
+  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, gl.getParameter(gl.TEXTURE_BINDING_2D), 0);
+  const pixels = new Uint8Array(width * height * 4);
+  gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  let binary = '';
+  for (let i = 0; i < pixels.length; i += 0x8000) binary += String.fromCharCode(...pixels.subarray(i, i + 0x8000));
+  return { width, height, rgba: btoa(binary) };
+}

@@ -1,10 +1,11 @@
 // The page's output tools in a real browser (Debian's chromium through
 // playwright-core, a real toond on 127.0.0.1:0): controls shown only where
 // the schema's x-applies-when says they matter, the layer switcher
-// (`output`), and the sprite-sheet preview with its atlas.
+// (`output`), the SVG download beside it, and the sprite-sheet preview with
+// its atlas.
 //   node layers.test.mjs --toond PATH --artifacts DIR
 // Exit 0: every check passed; 1: a check failed. Screenshots go to --artifacts.
-import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -202,6 +203,109 @@ async function checkLayers(page, requests) {
   check((await imageStats(page, '#view')).hash === colour.hash, 'and shows the colour image again');
 }
 
+// The format select and the pack switch: .aseprite and Godot downloads
+// asked for with the body of the sheet shown, under names that go together;
+// pack sends sheet.pack and the atlas that comes back is packed.
+async function checkSheetFiles(page, requests) {
+  check(await page.locator('#sheet-format').isVisible() && await page.inputValue('#sheet-format') === 'png'
+        && await page.locator('#atlas-download').isVisible() && await page.locator('#file-download').isHidden(),
+  'a format select, PNG + JSON at first: the sheet and atlas downloads');
+  const lastSheet = [...requests].reverse().find((r) => r.body.sheet && !r.url.includes('?'));
+  const download = async (format) => {
+    await page.selectOption('#sheet-format', format);
+    requests.length = 0;
+    const [file] = await Promise.all([page.waitForEvent('download', { timeout: STEP_TIMEOUT_MS }), page.click('#file-download')]);
+    const bytes = readFileSync(await file.path());
+    const asked = requests.find((r) => r.url.includes(`atlas=${format}`));
+    return { name: file.suggestedFilename(), bytes, asked };
+  };
+  const ase = await download('aseprite');
+  check(ase.name === 'toond-sheet.aseprite' && ase.bytes.readUInt16LE(4) === 0xA5E0 && ase.bytes.readUInt16LE(6) === 6
+        && await page.locator('#atlas-download').isHidden(),
+  '.aseprite: one file of the 6 frames, asked for with ?atlas=aseprite', `${ase.name}, ${ase.bytes.length} bytes`);
+  const tres = await download('godot');
+  check(tres.name === 'toond-sheet.tres' && tres.bytes.toString().includes('path="toond-sheet.png"')
+        && await page.getAttribute('#sheet-download', 'download') === 'toond-sheet.png'
+        && await page.locator('#sheet-download').isVisible(),
+  'Godot: a .tres naming the PNG the sheet download saves beside it', tres.name);
+  check(lastSheet && [ase, tres].every((d) => d.asked && JSON.stringify(d.asked.body) === JSON.stringify(lastSheet.body)),
+    'both are asked for with the body of the sheet shown');
+  await page.selectOption('#sheet-format', 'png');
+  check(await shown(page, '/sheet/pack') && !(await shown(page, '/sheet/power_of_two')),
+    'a pack switch in the sheet\'s controls, power_of_two hidden while it is off');
+  const sheets = Number(await page.getAttribute('#sheet-view', 'data-sheets'));
+  requests.length = 0;
+  await page.check('[data-path="/sheet/pack"] input[type=checkbox]');
+  await page.waitForFunction((n) => Number(document.getElementById('sheet-view').dataset.sheets) > n
+    && !document.getElementById('sheet').classList.contains('busy'), sheets, { timeout: STEP_TIMEOUT_MS });
+  const packed = requests.filter((r) => r.body.sheet?.pack === true);
+  const tiles = await page.locator('#sheet-tiles .tile').count();
+  check(packed.length === 1 && !packed[0].url.includes('?') && await shown(page, '/sheet/power_of_two') && tiles === 6
+        && /6 frames/.test(await page.textContent('#sheet-status')),
+  'pack sends sheet.pack; the atlas is read from the packed PNG (no second draw) and outlines its 6 frames',
+  `${packed.map((r) => r.url).join(', ')}; ${tiles} tiles`);
+  // Back to the grid, and the sheet of it shown before the next check.
+  const packedSheets = Number(await page.getAttribute('#sheet-view', 'data-sheets'));
+  await page.uncheck('[data-path="/sheet/pack"] input[type=checkbox]');
+  await page.waitForFunction((n) => Number(document.getElementById('sheet-view').dataset.sheets) > n
+    && !document.getElementById('sheet').classList.contains('busy'), packedSheets, { timeout: STEP_TIMEOUT_MS });
+}
+
+// The drawing as Chromium reads it: its layers' ids (DOMParser), its
+// size and how many pixels its strokes ink, drawn from an <img> into a canvas.
+async function readSvgInPage(page, text) {
+  return page.evaluate(async (svg) => {
+    const doc = new DOMParser().parseFromString(svg, 'image/svg+xml');
+    const ids = [...doc.documentElement.children].filter((e) => e.localName === 'g').map((g) => g.id);
+    const strokes = doc.querySelectorAll('g#silhouette path').length;
+    const url = URL.createObjectURL(new Blob([svg], { type: 'image/svg+xml' }));
+    const img = new Image();
+    img.src = url;
+    await img.decode();
+    const canvas = Object.assign(document.createElement('canvas'), { width: img.naturalWidth, height: img.naturalHeight });
+    const ctx = canvas.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const { data } = ctx.getImageData(0, 0, canvas.width, canvas.height);
+    let ink = 0;
+    for (let i = 3; i < data.length; i += 4) ink += data[i] > 127 ? 1 : 0;
+    URL.revokeObjectURL(url);
+    return { ids, strokes, width: img.naturalWidth, height: img.naturalHeight, ink,
+      parseError: doc.querySelector('parsererror') !== null };
+  }, text);
+}
+
+async function downloadSvg(page, name) {
+  const [download] = await Promise.all([page.waitForEvent('download', { timeout: STEP_TIMEOUT_MS }),
+    page.click('#svg-download')]);
+  const file = path.join(artifacts, name);
+  await download.saveAs(file);
+  return { file, suggested: download.suggestedFilename(), text: readFileSync(file, 'utf8') };
+}
+
+// The SVG button beside the layers: the view's lines downloaded as an SVG
+// drawing, which Chromium opens with its layers and draws with ink.
+async function checkSvg(page, requests) {
+  check(await page.isVisible('#svg-download'), 'an SVG button beside the layer buttons');
+  requests.length = 0;
+  const plain = await downloadSvg(page, 'toond-lines.svg');
+  check(plain.suggested === 'toond-lines.svg', 'the drawing downloads as toond-lines.svg', plain.suggested);
+  const asked = lastRender(requests);
+  check(asked?.output === 'svg' && !('svg' in asked), 'it asks for output "svg"', JSON.stringify(asked));
+  const read = await readSvgInPage(page, plain.text);
+  check(!read.parseError, 'Chromium parses the drawing as SVG');
+  check(JSON.stringify(read.ids) === JSON.stringify(['silhouette', 'creases', 'intersections', 'boundary']),
+    'with a layer per kind of line', read.ids.join(' '));
+  check(read.strokes > 0, 'the silhouette layer has strokes', String(read.strokes));
+  check(read.width === 192 && read.height === 192, 'an <img> of it is the view\'s size', `${read.width}×${read.height}`);
+  check(read.ink > 100 && read.ink < 0.25 * read.width * read.height, 'and Chromium draws its lines',
+    `${read.ink} inked pixels`);
+  await page.check('#svg-hidden');
+  const withHidden = await downloadSvg(page, 'toond-lines-hidden.svg');
+  check(lastRender(requests)?.svg?.hidden === true, 'the hidden-lines box asks for svg.hidden');
+  const again = await readSvgInPage(page, withHidden.text);
+  check(again.ids[0] === 'hidden', 'and the drawing gets a hidden layer first', again.ids.join(' '));
+}
+
 async function checkSheet(page, requests) {
   check(await page.locator('#sheet-toggle').isVisible() && !(await shown(page, '/sheet/frames')),
     'a sprite-sheet switch, its controls hidden while off');
@@ -256,6 +360,7 @@ async function checkSheet(page, requests) {
   check(await label.isVisible() && /frame 4 · yaw/.test(await label.textContent()),
     'hovering a tile outlines it and names its frame and yaw', await label.textContent());
   await shot(page, '14-sprite-sheet.png');
+  await checkSheetFiles(page, requests);
 
   // Dragging a slider with the sheet on: the live loop's quick renders go
   // on alone, and the sheet follows once, when the drag has ended. The
@@ -305,7 +410,8 @@ try {
   const start = encodeURIComponent(JSON.stringify({ width: 192, height: 192 }));
   for (const [name, part] of [['light type', (p) => checkLightType(p, requests)],
     ['light space and fov', (p) => checkLightSpaceAndFov(p, requests)], ['group switches', checkGroupSwitches],
-    ['layers', (p) => checkLayers(p, requests)], ['sprite sheet', (p) => checkSheet(p, requests)]]) {
+    ['layers', (p) => checkLayers(p, requests)], ['svg download', (p) => checkSvg(p, requests)],
+    ['sprite sheet', (p) => checkSheet(p, requests)]]) {
     try {
       await page.goto('about:blank');
       await page.goto(`${daemon.url}/#${start}`);

@@ -29,7 +29,7 @@
 #include "scene/animation/clip_sampling.h"
 #include "scene/animation/pose.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/import_error.h"
+#include "scene/reading/import_error.h"
 #include "support/surface_distance.h"
 
 namespace toond::conformance {

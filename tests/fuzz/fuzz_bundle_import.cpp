@@ -7,9 +7,9 @@
 #include <cstdlib>
 
 #include "fuzz_input.h"
-#include "scene/import/bundle.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/import_error.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_error.h"
 
 namespace {
 

@@ -10,9 +10,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "scene/import/bundle.h"
-#include "scene/import/gltf_import.h"
-#include "scene/import/import_error.h"
+#include "scene/gltf/gltf_import.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace toond::scene;

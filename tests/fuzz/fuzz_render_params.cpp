@@ -10,6 +10,7 @@
 #include "http/request_limits.h"
 #include "param_schema.h"
 #include "pipeline/budget.h"
+#include "pipeline/frames.h"
 #include "presets.h"
 #include "render/plan/render_params.h"
 #include "request_error.h"
@@ -25,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     schema.validate(request);
     const auto params = toond::http::render_params_from_wire(
         schema.validate_and_complete(toond::proto::Presets::builtin().expand(request)));
-    toond::pipeline::check_render_budget(params, limits.render);
+    toond::pipeline::check_render_budget(params, toond::pipeline::layout_of(params), limits.render);
   } catch (const toond::RequestError&) {
     return 0;
   } catch (const std::exception& e) {

@@ -119,24 +119,24 @@ std::string read_text(const fs::path& path) {
 
 // A shader that compiles but declares a uniform with another type than the
 // renderer sets: glProgramUniform1f on an int is GL_INVALID_OPERATION, a
-// real GL error in the edge pass, with no test hook in the daemon.
+// real GL error in the id layer's pass, with no test hook in the daemon.
 TEST(GlError, FailsThatRenderWith500AndTheDaemonGoesOn) {
   const fs::path dir = make_temp_dir("toond-glerror");
   for (const auto& entry : fs::directory_iterator(TOOND_SHADER_SOURCE_DIR)) {
     fs::copy_file(entry.path(), dir / entry.path().filename());
   }
-  const std::string good = read_text(dir / "edges.frag");
-  const std::string declaration = "uniform float u_half_width;";
-  ASSERT_NE(good.find(declaration), std::string::npos) << "edges.frag changed; pick another float uniform";
+  const std::string good = read_text(dir / "layer.frag");
+  const std::string declaration = "uniform float u_layer_id;";
+  ASSERT_NE(good.find(declaration), std::string::npos) << "layer.frag changed; pick another float uniform";
   std::string bad = good;
-  bad.replace(bad.find(declaration), declaration.size(), "uniform int u_half_width;");
+  bad.replace(bad.find(declaration), declaration.size(), "uniform int u_layer_id;");
 
   Daemon daemon({}, {"--shader-dir", dir.string()});
   auto client = daemon.client();
-  const json params = {{"width", 64}, {"height", 64}, {"outline", {{"method", "edges"}}}};
+  const json params = {{"width", 64}, {"height", 64}, {"output", "id"}};
   render_ok(client, params);
 
-  std::ofstream(dir / "edges.frag", std::ios::trunc) << bad;
+  std::ofstream(dir / "layer.frag", std::ios::trunc) << bad;
   auto failed = post_json(client, "/render", params);
   ASSERT_TRUE(failed);
   EXPECT_EQ(failed->status, 500) << failed->body;
@@ -149,7 +149,7 @@ TEST(GlError, FailsThatRenderWith500AndTheDaemonGoesOn) {
   EXPECT_EQ(health->status, 200);
   // A different file time than the broken one, so the reload notices.
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  std::ofstream(dir / "edges.frag", std::ios::trunc) << good;
+  std::ofstream(dir / "layer.frag", std::ios::trunc) << good;
   const image::Image img = render_ok(client, params);
   EXPECT_EQ(img.width, 64);
   daemon.stop();

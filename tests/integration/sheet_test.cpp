@@ -22,30 +22,6 @@ namespace {
 
 using nlohmann::json;
 
-// The text of the PNG's tEXt chunk named `key`, read from the chunk list
-// itself (8-byte signature, then length, type, data, CRC per chunk) rather
-// than through the daemon's own codec.
-std::optional<std::string> text_chunk(const std::string& png, const std::string& key) {
-  auto be32 = [&](std::size_t at) {
-    std::uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(png[at + i]);
-    return v;
-  };
-  for (std::size_t at = 8; at + 12 <= png.size();) {
-    const std::size_t length = be32(at);
-    const std::string type = png.substr(at + 4, 4);
-    if (at + 12 + length > png.size()) break;
-    const std::string data = png.substr(at + 8, length);
-    if (type == "tEXt") {
-      const std::size_t nul = data.find('\0');
-      if (nul != std::string::npos && data.substr(0, nul) == key) return data.substr(nul + 1);
-    }
-    if (type == "IEND") break;
-    at += 12 + length;
-  }
-  return std::nullopt;
-}
-
 // Rows from the model's top to its bottom: the pixels unlike the corner.
 int silhouette_height(const image::Image& img) {
   const std::vector<bool> mask = foreground_mask(img);
@@ -77,7 +53,7 @@ class Sheet : public SharedDaemonTest {
     return res->body;
   }
   static json atlas_of(const std::string& png) {
-    const std::optional<std::string> text = text_chunk(png, "toond:atlas");
+    const std::optional<std::string> text = png_text(png, "toond:atlas");
     if (!text) {
       ADD_FAILURE() << "the PNG has no tEXt chunk toond:atlas";
       return json::object();

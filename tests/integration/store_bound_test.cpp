@@ -84,7 +84,7 @@ TEST(StoreBound, SixteenUploadsStayUnderTwoMegabytesAndTheModelRenderedAMomentAg
   const std::set<std::string> kept = listed(client);
   EXPECT_TRUE(kept.count(ids[0]));
   EXPECT_FALSE(kept.count(ids[1]));
-  std::set<std::string> on_store = store_entries(daemon.data_dir());
+  std::set<std::string> on_store = store_entries_once_swept(daemon.data_dir());
   EXPECT_EQ(on_store, kept) << "a folder in the store is not a listed model";
 
   const std::string metrics = scrape_when(client, [](const std::string&) { return true; });
@@ -243,7 +243,7 @@ TEST(StoreBound, TwoReplicasOnOneStoreEvictUnderLoad) {
     }
     EXPECT_GT(render_statuses[404], 0) << "no render came after its model was let go";
 
-    const std::set<std::string> entries = store_entries(dir);
+    const std::set<std::string> entries = store_entries_once_swept(dir);
     for (const std::string& name : entries) EXPECT_FALSE(name.starts_with(".tmp-")) << name << " was left behind";
     EXPECT_LE(stored_file_bytes(dir), kTwoMiB);
     auto cb = b.client();

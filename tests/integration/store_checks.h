@@ -1,10 +1,13 @@
 #pragma once
 // What the model store tests share: distinct uploads of one real file, and
 // the store as the disk holds it.
+#include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <set>
 #include <string>
+#include <thread>
 
 #include <httplib.h>
 
@@ -27,6 +30,21 @@ inline std::set<std::string> store_entries(const std::filesystem::path& data_dir
   std::set<std::string> names;
   for (const auto& e : std::filesystem::directory_iterator(data_dir / "models")) {
     names.insert(e.path().filename().string());
+  }
+  return names;
+}
+
+// The same once no temporary folder is left, waiting 5 s at most: each
+// replica deletes the models it let go on a thread of its own, just after
+// the upload that let them go is answered.
+inline std::set<std::string> store_entries_once_swept(const std::filesystem::path& data_dir) {
+  std::set<std::string> names = store_entries(data_dir);
+  const auto temporary = [&] {
+    return std::any_of(names.begin(), names.end(), [](const std::string& n) { return n.starts_with(".tmp-"); });
+  };
+  for (int tries = 0; tries < 500 && temporary(); ++tries) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    names = store_entries(data_dir);
   }
   return names;
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 
 #include "image/png_codec.h"
 #include "support/shared_models.h"
@@ -79,6 +80,27 @@ image::Image tile_of(const image::Image& sheet, const nlohmann::json& rect) {
     std::copy_n(sheet.pixel(rect["x"].get<int>(), rect["y"].get<int>() + y), tile.width * 4, tile.pixel(0, y));
   }
   return tile;
+}
+
+std::optional<std::string> png_text(const std::string& png, const std::string& key) {
+  auto be32 = [&](std::size_t at) {
+    std::uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(png[at + i]);
+    return v;
+  };
+  for (std::size_t at = 8; at + 12 <= png.size();) {
+    const std::size_t length = be32(at);
+    const std::string type = png.substr(at + 4, 4);
+    if (at + 12 + length > png.size()) break;
+    const std::string data = png.substr(at + 8, length);
+    if (type == "tEXt") {
+      const std::size_t nul = data.find('\0');
+      if (nul != std::string::npos && data.substr(0, nul) == key) return data.substr(nul + 1);
+    }
+    if (type == "IEND") break;
+    at += 12 + length;
+  }
+  return std::nullopt;
 }
 
 }  // namespace toond::test

@@ -2,6 +2,7 @@
 // HTTP helpers shared by the integration tests.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,10 @@ image::Image render_ok(httplib::Client& client, const nlohmann::json& params);
 // One frame of a sprite sheet: the atlas rectangle `rect` ({x, y, w, h})
 // cut out of `sheet`.
 image::Image tile_of(const image::Image& sheet, const nlohmann::json& rect);
+
+// The text of the PNG's tEXt chunk named `key`, read from the chunk list
+// itself rather than through the daemon's own codec; none when absent.
+std::optional<std::string> png_text(const std::string& png, const std::string& key);
 
 // The "error" object of a JSON error answer.
 nlohmann::json error_of(const httplib::Result& res);

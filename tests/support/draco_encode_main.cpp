@@ -20,8 +20,8 @@
 #include <draco/compression/encode.h>
 #include <draco/mesh/mesh.h>
 
-#include "draco_decode/draco_wire.h"
-#include "helper_process/stdio_bytes.h"
+#include "helpers/draco_decode/draco_wire.h"
+#include "helpers/process/stdio_bytes.h"
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "draco_decode/draco_wire.h"
-#include "scene/import/child_process.h"
+#include "helpers/draco_decode/draco_wire.h"
+#include "helpers/launch/child_process.h"
 
 namespace toond::test {
 namespace {

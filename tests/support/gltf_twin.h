@@ -2,8 +2,8 @@
 // The glTF twin of an imported model: the same vertices, triangles,
 // materials and image files written as glTF, so a test can check that the
 // glTF importer makes what the OBJ importer made.
-#include "scene/import/bundle.h"
 #include "scene/mesh/model.h"
+#include "scene/reading/bundle.h"
 #include "support/gltf_writer.h"
 
 namespace toond::test {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/import/bundle.h"
+#include "scene/reading/bundle.h"
 
 namespace toond::test {
 

@@ -21,8 +21,8 @@
 #include "pose_checks.h"
 #include "scene/import/assimp_import.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/import_error.h"
 #include "scene/mesh/mesh_processing.h"
+#include "scene/reading/import_error.h"
 #include "support/shared_models.h"
 #include "support/stored_zip.h"
 

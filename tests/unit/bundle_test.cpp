@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "scene/import/bundle.h"
-#include "scene/import/import_error.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_error.h"
 
 namespace toond::scene {
 namespace {

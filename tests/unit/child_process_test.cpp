@@ -9,7 +9,7 @@
 #include <chrono>
 #include <string>
 
-#include "scene/import/child_process.h"
+#include "helpers/launch/child_process.h"
 
 namespace toond::scene {
 namespace {

@@ -20,6 +20,7 @@
 #include "help_checks.h"
 #include "param_schema.h"
 #include "reply.h"
+#include "sheet_output.h"
 #include "support/shared_models.h"
 
 namespace toond::cli {
@@ -288,6 +289,20 @@ TEST(RenderParams, RepeatedSetsMergeAndLaterOnesWin) {
   const json p = build_render_params(o, schema());
   EXPECT_EQ(p, json::parse(R"({"outline":{"width":4.5,"color":[1,0,0],"enabled":false},
                                "shading":{"steps":5}})"));
+}
+
+// -o NAME.svg asks for the lines as vectors; parameters that ask for
+// another output contradict it.
+TEST(RenderParams, AnSvgFileNameAsksForOutputSvg) {
+  EXPECT_EQ(build_render_params(parse({"render", "-o", "lines.SVG"}), schema()), json::parse(R"({"output":"svg"})"));
+  EXPECT_EQ(build_render_params(parse({"render", "-o", "x.svg", "--set", "svg.hidden=true"}), schema()),
+            json::parse(R"({"output":"svg","svg":{"hidden":true}})"));
+  EXPECT_EQ(build_render_params(parse({"render", "-o", "x.png"}), schema()), json::object());
+  const std::string message = usage_error([&] {
+    build_render_params(parse({"render", "-o", "x.svg", "--output", "lines"}), schema());
+  });
+  EXPECT_TRUE(contains(message, "x.svg")) << message;
+  EXPECT_TRUE(contains(message, "\"lines\"")) << message;
 }
 
 // Keys as users type them, driven by the schema: a path through objects
@@ -704,6 +719,24 @@ TEST(Reply, PngSizeAndHelpers) {
   EXPECT_EQ(content_type_for("Textures/a.JPG"), "image/jpeg");
   EXPECT_EQ(content_type_for("spot.obj"), "text/plain");
   EXPECT_EQ(human_bytes(1500000), "1.5 MB");
+}
+
+// -o picks the sheet's file by its extension; anything else is the image.
+TEST(RenderAnswer, TheExtensionOfOutPicksTheSheetsFile) {
+  EXPECT_EQ(render_answer_for("walk.aseprite").query, "?atlas=aseprite");
+  EXPECT_EQ(render_answer_for("out/WALK.ASE").query, "?atlas=aseprite");
+  EXPECT_EQ(render_answer_for("walk.json").query, "?atlas=json");
+  const RenderAnswer godot = render_answer_for("sprites/walk cycle.tres");
+  EXPECT_EQ(godot.query, "?atlas=godot&texture=walk%20cycle.png") << "the PNG beside it, by name";
+  EXPECT_EQ(godot.companion_png, "sprites/walk cycle.png");
+  // The image as it comes: output svg (which a .svg name asks for) answers an SVG.
+  for (const char* image : {"walk.png", "turn.webp", "lines.svg", "-", "noext"}) {
+    const RenderAnswer answer = render_answer_for(image);
+    EXPECT_EQ(answer.query, "") << image;
+    EXPECT_EQ(answer.companion_png, "") << image;
+    EXPECT_EQ(answer.content_types, (std::vector<std::string>{"image/png", "image/webp", "image/svg+xml"})) << image;
+  }
+  EXPECT_EQ(percent_encoded("a b/ü"), "a%20b%2F%C3%BC");
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // up and every index must name a point.
 #include <gtest/gtest.h>
 
-#include "draco_decode/draco_wire.h"
+#include "helpers/draco_decode/draco_wire.h"
 
 namespace toond::draco_wire {
 namespace {

@@ -16,7 +16,7 @@
 #include "pose_checks.h"
 #include "render/plan/drawn_materials.h"
 #include "render/plan/pass_plan.h"
-#include "scene/import/image_lookup.h"
+#include "scene/reading/image_lookup.h"
 #include "scene/import/iqm_import.h"
 #include "scene/import/skins.h"
 

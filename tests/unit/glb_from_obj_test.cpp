@@ -18,7 +18,7 @@
 #include "cli_test_helpers.h"
 #include "glb_from_obj.h"
 #include "image/png_codec.h"
-#include "scene/import/gltf_import.h"
+#include "scene/gltf/gltf_import.h"
 #include "scene/import/obj_import.h"
 
 namespace toond::cli {

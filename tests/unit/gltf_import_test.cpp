@@ -9,11 +9,11 @@
 
 #include "gltf_import_checks.h"
 #include "model_checks.h"
+#include "scene/gltf/gltf_import.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/gltf_import.h"
-#include "scene/import/import_error.h"
 #include "scene/import/obj_import.h"
 #include "scene/mesh/mesh_processing.h"
+#include "scene/reading/import_error.h"
 #include "support/gltf_twin.h"
 #include "support/gltf_writer.h"
 #include "support/shared_models.h"

@@ -7,7 +7,7 @@
 
 #include "model_checks.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/mesh_builder.h"
+#include "scene/reading/mesh_builder.h"
 
 namespace toond::scene {
 namespace {

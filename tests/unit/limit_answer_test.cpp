@@ -10,7 +10,7 @@
 
 #include "http/error_response.h"
 #include "render/run/render_service.h"
-#include "scene/import/import_limits.h"
+#include "scene/reading/import_limits.h"
 
 namespace toond::http {
 namespace {

@@ -8,10 +8,10 @@
 
 #include "model_checks.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/import_error.h"
 #include "scene/import/m_import.h"
 #include "scene/import/obj_import.h"
 #include "scene/mesh/mesh_processing.h"
+#include "scene/reading/import_error.h"
 #include "scene/store/model_store.h"
 
 namespace toond::scene {

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "image/png_codec.h"
-#include "scene/import/bundle.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/import_error.h"
 #include "scene/mesh/model.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_error.h"
 #include "support/shared_models.h"
 
 namespace toond::scene::test_checks {

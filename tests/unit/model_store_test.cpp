@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "scene/import/demo_model.h"
-#include "scene/import/import_error.h"
+#include "scene/reading/import_error.h"
 #include "scene/store/model_store.h"
 
 namespace toond::scene {

@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "model_checks.h"
-#include "scene/import/import_error.h"
 #include "scene/import/obj_import.h"
 #include "scene/import/obj_text.h"
-#include "scene/import/texture_decode.h"
 #include "scene/mesh/mesh_processing.h"
+#include "scene/reading/import_error.h"
+#include "scene/reading/texture_decode.h"
 #include "support/shared_models.h"
 
 namespace toond::scene {

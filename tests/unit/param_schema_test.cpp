@@ -44,6 +44,24 @@ TEST(ParamSchema, DefaultsNeverOverrideGivenValues) {
   EXPECT_TRUE(p["lights"].empty()) << "an explicit empty light list stays empty";
 }
 
+// A light's space is the schema's to default, like every other field: in
+// a sheet its lights turn with the camera (every direction lit alike),
+// otherwise they stay with the model; a given space is kept either way.
+TEST(ParamSchema, ALightsSpaceDefaultsToViewInASheetAndModelOtherwise) {
+  const json light = {{"type", "directional"}};
+  EXPECT_EQ(schema().validate_and_complete({{"lights", {light}}})["lights"][0]["space"], "model");
+  EXPECT_EQ(schema().validate_and_complete(json::object())["lights"][0]["space"], "model");
+  const json sheet = {{"frames", 4}};
+  EXPECT_EQ(schema().validate_and_complete({{"lights", {light}}, {"sheet", sheet}})["lights"][0]["space"], "view");
+  EXPECT_EQ(schema().validate_and_complete({{"sheet", sheet}})["lights"][0]["space"], "view")
+      << "the default light too";
+  json given = light;
+  given["space"] = "model";
+  EXPECT_EQ(schema().validate_and_complete({{"lights", {given}}, {"sheet", sheet}})["lights"][0]["space"], "model");
+  // Every x-default-when names a field by pointer and gives a value its field accepts.
+  EXPECT_NO_THROW(schema().validate(schema().validate_and_complete({{"sheet", sheet}})));
+}
+
 TEST(ParamSchema, EveryDefaultInTheSchemaValidates) {
   // The completed default request must itself pass validation: a default
   // outside its own range would be a schema bug.

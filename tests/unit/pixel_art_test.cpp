@@ -15,6 +15,7 @@
 #include "limit_error.h"
 #include "param_schema.h"
 #include "pipeline/budget.h"
+#include "pipeline/frames.h"
 #include "pipeline/sheet_checks.h"
 #include "render/plan/pixel_art_frame.h"
 #include "request_error.h"
@@ -67,6 +68,11 @@ std::set<std::uint32_t> visible_colours(const Image& img) {
 
 render::RenderParams params_of(const json& request) {
   return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
+}
+
+// The budget as the pipeline checks it: on the sheet laid out once.
+void check_budget(const render::RenderParams& params, const pipeline::RenderLimits& limits) {
+  pipeline::check_render_budget(params, pipeline::layout_of(params), limits);
 }
 
 TEST(MedianCut, FewColoursAreKeptExactly) {
@@ -314,14 +320,13 @@ TEST(PixelArtParams, TheBudgetWeighsTheFramesAsDrawnAndTheWholeAnimation) {
   // msaa 4 over 8 frames of 64² is four times the sample limit; as pixel
   // art the frames are drawn at 16², one sample each.
   const json sheet = {{"frames", 8}, {"pixel_art", {{"scale", 4}}}};
-  EXPECT_NO_THROW(pipeline::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", sheet}}), limits));
-  EXPECT_THROW(
-      pipeline::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", {{"frames", 8}}}}), limits),
-      LimitError);
+  EXPECT_NO_THROW(check_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", sheet}}), limits));
+  EXPECT_THROW(check_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", {{"frames", 8}}}}), limits),
+               LimitError);
   for (const json& over : {json{{"frames", 9}, {"pixel_art", {{"scale", 4}}}}, json{{"frames", 9}, {"animate", true}},
                            json{{"frames", 9}, {"animate", true}, {"pixel_art", json::object()}}}) {
     try {
-      pipeline::check_render_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", over}}), limits);
+      check_budget(params_of({{"width", 64}, {"height", 64}, {"sheet", over}}), limits);
       ADD_FAILURE() << over.dump() << " passed a limit of 8 frames of 64²";
     } catch (const LimitError& e) {
       EXPECT_EQ(e.limit(), "--max-output-pixels") << over.dump();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "model_checks.h"
+#include "render/plan/frame_plan.h"
 #include "render/plan/pass_plan.h"
 #include "render/plan/render_cost.h"
 #include "scene/import/obj_import.h"
@@ -187,7 +188,8 @@ render::RenderParams params_with_size(render::RenderParams p, int size) {
 
 render::RenderCost cost_of(const scene::Model& m, const render::RenderParams& p) {
   const scene::Mesh* meshes[] = {&m.mesh};
-  return render::predict_frame_cost(p, render::plan_passes(p, {}), meshes);
+  const render::PassPlan passes = render::plan_passes(p, {});
+  return render::predict_frame_cost({.params = p, .passes = passes, .line_px = p.outline.width}, meshes);
 }
 
 TEST(RenderCost, SamplesGrowWithPixelsSamplesAndLayers) {
@@ -261,7 +263,8 @@ TEST(RenderCost, CreaseLinesArePricedByTheirEdgesNotThePixels) {
   hard.has_crease_edges = true;
   const scene::Mesh* meshes[] = {&m.mesh};
   const auto priced = [&](const render::RenderParams& p) {
-    return render::predict_frame_cost(p, render::plan_passes(p, hard), meshes);
+    const render::PassPlan passes = render::plan_passes(p, hard);
+    return render::predict_frame_cost({.params = p, .passes = passes, .line_px = p.outline.width}, meshes);
   };
   render::RenderParams p = params_at(256, 256, 4);
   p.outline.width = 2;
@@ -294,7 +297,9 @@ TEST(RenderCost, AWorldWidthIsPricedAtItsPixels) {
   p.outline.edges = true;
   p.outline.units = render::OutlineUnits::World;
   p.outline.width = 0.05f;
-  const double per_pixel = cost_of(m, p).edge_texels / (512.0 * 512);
+  // The plan converts the width at its camera, and prices what it will draw.
+  const render::FramePlan plan = render::plan_frame(p, std::vector<render::PlannedObject>{{m}});
+  const double per_pixel = plan.cost.edge_texels / (512.0 * 512);
   const double reach = (per_pixel - render::kSilhouettePixelTexels) / 4;
   EXPECT_GE(reach, 11.0);
   EXPECT_LE(reach, 15.0);

@@ -127,6 +127,12 @@ TEST(RenderParamsDefaults, AClipEntrysInitialValuesAreTheSchemasDefaults) {
       EXPECT_EQ(clip.range.has_value(), initial_clip.range.has_value()) << "sheet.animation.range in " << animation;
     }
   }
+  const RenderParams sheet = http::render_params_from_wire(
+      proto::ParamSchema::render_params().validate_and_complete({{"sheet", json::object()}}));
+  ASSERT_TRUE(sheet.sheet);
+  const SheetParams initial_sheet;
+  EXPECT_EQ(sheet.sheet->pack, initial_sheet.pack) << "sheet.pack";
+  EXPECT_EQ(sheet.sheet->power_of_two, initial_sheet.power_of_two) << "sheet.power_of_two";
   const RenderParams schema =
       http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete({{"animation", entry}}));
   ASSERT_TRUE(schema.animation);

@@ -10,6 +10,8 @@
 #include <string>
 
 #include "limit_error.h"
+#include "pipeline/frames.h"
+#include "pipeline/plan.h"
 #include "pipeline/price.h"
 #include "pipeline/render_limits.h"
 #include "presets.h"
@@ -33,7 +35,20 @@ Request job_of(std::shared_ptr<const scene::Model> model, const nlohmann::json& 
   Request job;
   job.objects.push_back({"m", std::move(model), glm::dmat4(1.0), nullptr});
   job.params = test::complete_params(request);
+  job.layout = layout_of(job.params);
   return job;
+}
+
+// Every frame of the request at rest.
+std::vector<ObjectPoses> rest_poses(const Request& job) {
+  return std::vector<ObjectPoses>(job.layout ? job.layout->frames.size() : 1, ObjectPoses{nullptr});
+}
+
+// What the pipeline prices: its frames' plans.
+RenderPrice price_render(const Request& job) { return price_of(plan_frames(job, rest_poses(job))); }
+
+void check_render_cost(const Request& job, const RenderPrice& price, const RenderLimits& limits) {
+  pipeline::check_render_cost(job, rest_poses(job), price, limits);
 }
 
 TEST(RenderPrice, TheIssuesStackIsRefusedWithWhatWouldFit) {

@@ -12,6 +12,7 @@
 #include "limit_error.h"
 #include "param_schema.h"
 #include "pipeline/budget.h"
+#include "pipeline/frames.h"
 #include "presets.h"
 #include "render/atlas/sheet_atlas.h"
 #include "render/plan/camera.h"
@@ -21,6 +22,20 @@ namespace toond::render {
 namespace {
 
 using nlohmann::json;
+
+// Each frame's plan as far as the atlas reads it: its view of a box two
+// units tall standing on the origin, and the framing they share.
+std::vector<FramePlan> plans_of(const SheetLayout& layout, const RenderParams& p) {
+  auto scene = std::make_shared<SceneFrame>();
+  scene->bounds = {{-1, 0, -1}, {1, 2, 1}};
+  std::vector<FramePlan> plans;
+  for (const SheetFrame& frame : layout.frames) {
+    FramePlan plan{.params = frame_params(p, layout, frame), .scene = scene};
+    plan.camera = fit_camera(plan.params.camera, scene->bounds, static_cast<double>(p.width) / p.height);
+    plans.push_back(std::move(plan));
+  }
+  return plans;
+}
 
 RenderParams params_of(const json& request) {
   const json expanded = proto::Presets::builtin().expand(request);
@@ -239,9 +254,7 @@ TEST(SheetAtlas, AOneShotsTagsPlayOnceAndALoopsRepeat) {
   RenderParams p = params_of({{"width", 16}, {"height", 16}, {"sheet", {{"frames", 2}}}});
   p.sheet->clips = {resolved_clip("Walk", {0.0, 1.0}, 4, true), resolved_clip("Die", {1.0, 2.0}, 3, false)};
   const SheetLayout layout = layout_sheet(*p.sheet, p.width, p.height);
-  SceneFrame scene;
-  scene.bounds = {{-1, 0, -1}, {1, 2, 1}};
-  const json atlas = sheet_atlas(layout, p, scene, "sheet.png");
+  const json atlas = sheet_atlas(layout, p, plans_of(layout, p), "sheet.png");
   const json& tags = atlas["meta"]["frameTags"];
   ASSERT_EQ(tags.size(), 4u);
   for (const json& tag : tags) {
@@ -258,9 +271,7 @@ TEST(SheetAtlas, AOneShotsTagsPlayOnceAndALoopsRepeat) {
 TEST(SheetAtlas, FollowsAsepritesHashLayoutWithYawAndPitch) {
   const RenderParams p = params_of({{"width", 32}, {"height", 48}, {"sheet", {{"frames", 8}, {"columns", 4}}}});
   const SheetLayout layout = layout_sheet(*p.sheet, p.width, p.height);
-  SceneFrame scene;
-  scene.bounds = {{-1, 0, -1}, {1, 2, 1}};
-  const nlohmann::ordered_json listed = sheet_atlas(layout, p, scene, "sheet.png");
+  const nlohmann::ordered_json listed = sheet_atlas(layout, p, plans_of(layout, p), "sheet.png");
   // Named by index, as Aseprite's {frame} names them, and listed in order.
   std::vector<std::string> names;
   for (const auto& [name, frame] : listed["frames"].items()) names.push_back(name);
@@ -295,7 +306,9 @@ TEST(SheetAtlas, FollowsAsepritesHashLayoutWithYawAndPitch) {
 }
 
 TEST(SheetBudget, TheWholeSheetCountsAgainstTheLimits) {
-  using pipeline::check_render_budget;
+  const auto check_render_budget = [](const RenderParams& p, const pipeline::RenderLimits& l) {
+    pipeline::check_render_budget(p, pipeline::layout_of(p), l);
+  };
   pipeline::RenderLimits limits;
   limits.max_output_pixels = 64 * 64 * 8;
   limits.max_samples = 64 * 64 * 8 * 4;
@@ -321,7 +334,9 @@ TEST(SheetBudget, TheWholeSheetCountsAgainstTheLimits) {
 // A depth, normal or id layer draws one sample a pixel whatever msaa and
 // supersample say: a limit those would pass is no reason to refuse it.
 TEST(SheetBudget, DataLayersCountTheSamplesTheyDraw) {
-  using pipeline::check_render_budget;
+  const auto check_render_budget = [](const RenderParams& p, const pipeline::RenderLimits& l) {
+    pipeline::check_render_budget(p, pipeline::layout_of(p), l);
+  };
   pipeline::RenderLimits limits;
   limits.max_samples = 256 * 256 * 4;
   const json heavy = {{"width", 256}, {"height", 256}, {"msaa", 8}, {"supersample", 2}};

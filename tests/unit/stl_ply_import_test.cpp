@@ -7,9 +7,9 @@
 
 #include "model_checks.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/import_error.h"
-#include "scene/import/import_limits.h"
 #include "scene/mesh/mesh_processing.h"
+#include "scene/reading/import_error.h"
+#include "scene/reading/import_limits.h"
 #include "support/mesh_file_writers.h"
 
 namespace toond::scene {

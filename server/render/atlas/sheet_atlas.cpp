@@ -94,20 +94,20 @@ Tracks tracks_of(const SheetLayout& layout, const SheetParams& sheet) {
 
 }  // namespace
 
-nlohmann::ordered_json sheet_atlas(const SheetLayout& layout, const RenderParams& params, const SceneFrame& scene,
-                                   const std::string& image_name) {
-  const double aspect = static_cast<double>(layout.tile_width) / layout.tile_height;
+nlohmann::ordered_json sheet_atlas(const SheetLayout& layout, const RenderParams& params,
+                                   std::span<const FramePlan> plans, const std::string& image_name) {
+  const SceneFrame& scene = *plans.front().scene;
   const glm::dvec3 foot((scene.bounds.min.x + scene.bounds.max.x) * 0.5, scene.bounds.min.y,
                         (scene.bounds.min.z + scene.bounds.max.z) * 0.5);
   const json size = {{"w", layout.tile_width}, {"h", layout.tile_height}};
   const SheetParams& sheet = *params.sheet;
   json frames = json::object();
   json framing;
-  for (const SheetFrame& frame : layout.frames) {
-    const RenderParams one = frame_params(params, layout, frame);
-    const CameraSetup camera = fit_camera(one.camera, scene.bounds, aspect, scene.outline);
-    if (framing.is_null()) framing = framing_of(one.camera, camera);
-    const json anchor = anchor_of(camera, foot);
+  for (std::size_t i = 0; i < layout.frames.size(); ++i) {
+    const SheetFrame& frame = layout.frames[i];
+    const FramePlan& plan = plans[i];
+    if (framing.is_null()) framing = framing_of(plan.params.camera, plan.camera);
+    const json anchor = anchor_of(plan.camera, foot);
     json entry = {
         {"frame", {{"x", frame.x}, {"y", frame.y}, {"w", layout.tile_width}, {"h", layout.tile_height}}},
         {"rotated", false},

@@ -14,21 +14,23 @@
 
 #include <nlohmann/json.hpp>
 
-#include "render/plan/camera.h"
+#include <span>
+
+#include "render/plan/frame_plan.h"
 #include "render/plan/render_params.h"
 #include "render/plan/sheet_layout.h"
 
 namespace toond::render {
 
-// `params` are the sheet's render parameters, `scene` the framing's view of
-// the models (frame_scene of the job's objects). Frames are named by their
+// `params` are the sheet's render parameters, `plans` its frames' plans in
+// layout order (their cameras and shared framing). Frames are named by their
 // index in layout order, and listed in that order. A frame's anchor (and
 // its `pivot`, the same point) is where the point under the orbit's
 // centre, at the foot of the bounds, lands in its tile (0..1 from the top
 // left): the spot a game stands the sprite on. One tag (and one Pixi
 // animation) per clip, pitch and direction of an animated sheet (a
 // one-shot clip's with Aseprite's "repeat": "1"), per pitch of a turntable.
-nlohmann::ordered_json sheet_atlas(const SheetLayout& layout, const RenderParams& params, const SceneFrame& scene,
-                                   const std::string& image_name);
+nlohmann::ordered_json sheet_atlas(const SheetLayout& layout, const RenderParams& params,
+                                   std::span<const FramePlan> plans, const std::string& image_name);
 
 }  // namespace toond::render

@@ -388,6 +388,125 @@ float skipped_side(HiddenFaces hidden) {
   return 0.0f;
 }
 
+// The faces the main pass draws, with a winding no rounding can flip, and
+// the box round each face and its hull face.
+void classify_faces(const HullCullMesh& mesh, const HullCullView& view, Scratch& scratch) {
+  const std::span<const std::uint32_t> indices = mesh.indices();
+  const std::size_t triangles = indices.size() / 3;
+  const double drawn_sign = view.drawn_clockwise ? -1.0 : 1.0;
+  scratch.turns.resize(triangles);
+  scratch.boxes.resize(triangles);
+  for (std::size_t t = 0; t < triangles; ++t) {
+    const ProjectedVertex& a = scratch.vertices[indices[3 * t]];
+    const ProjectedVertex& b = scratch.vertices[indices[3 * t + 1]];
+    const ProjectedVertex& c = scratch.vertices[indices[3 * t + 2]];
+    scratch.turns[t] = face_turn(a.window, b.window, c.window, drawn_sign);
+    scratch.boxes[t].min = glm::min(glm::min(a.reach_min, b.reach_min), c.reach_min) - static_cast<float>(kMarginPx);
+    scratch.boxes[t].max = glm::max(glm::max(a.reach_max, b.reach_max), c.reach_max) + static_cast<float>(kMarginPx);
+  }
+}
+
+bool drawn(const Scratch& scratch, std::size_t t) { return scratch.turns[t] == kDrawn; }
+
+// Where the drawn faces' cover may end (their edges not shared with another
+// drawn face), where a point it holds lies (their middles), and how many
+// layers of the drawn and unsure faces lie over each cell (their edges not
+// shared within them).
+void map_cover(const HullCullMesh& mesh, const HullCullView& view, Scratch& scratch) {
+  const std::span<const std::uint32_t> indices = mesh.indices();
+  const std::size_t triangles = indices.size() / 3;
+  const double cell = cell_px(view, triangles);
+  scratch.ends.reset(view.viewport_width, view.viewport_height, cell);
+  scratch.covered.reset(view.viewport_width, view.viewport_height, cell);
+  if (view.count_layers) {
+    const std::pair<glm::dvec2, glm::dvec2> bounds = window_bounds(mesh, scratch.vertices);
+    scratch.layers.reset({view.viewport_width, view.viewport_height, cell, bounds.first, bounds.second},
+                         !view.drawn_clockwise, kVertexSlackPx);
+  }
+  scratch.outline.clear();
+  for (std::size_t t = 0; t < triangles; ++t) {
+    if (scratch.turns[t] == kTurnedAway) continue;
+    const glm::dvec2* corner[3];
+    for (std::size_t c = 0; c < 3; ++c) corner[c] = &scratch.vertices[indices[3 * t + c]].window;
+    if (drawn(scratch, t)) scratch.covered.add_point((*corner[0] + *corner[1] + *corner[2]) / 3.0);
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t other = mesh.neighbour(t, k);
+      const FaceTurn across =
+          other >= 0 ? static_cast<FaceTurn>(scratch.turns[static_cast<std::size_t>(other)]) : kTurnedAway;
+      const int k1 = (k + 1) % 3;
+      if (drawn(scratch, t) && across != kDrawn) scratch.ends.add_box(*corner[k], *corner[k1]);
+      if (view.count_layers && across == kTurnedAway) {
+        scratch.outline.push_back(
+            {mesh.welded(indices[3 * t + k]), mesh.welded(indices[3 * t + k1]), corner[k], corner[k1]});
+      }
+    }
+  }
+  scratch.ends.sum();
+  scratch.covered.sum();
+  if (view.count_layers) {
+    give_along_loops(scratch.outline, scratch.vertices.size(), scratch);
+    scratch.layers.finish();
+  }
+}
+
+// A face whose box holds a covered point (its own face, if drawn, or a
+// drawn face's middle) and meets no end of the cover lies wholly inside
+// it, whichever way it or its hull face turns; so does one whose box the
+// layers cover.
+bool cannot_show(const Scratch& scratch, const HullCullView& view, std::size_t t) {
+  const Box& box = scratch.boxes[t];
+  if (!scratch.ends.holds(box)) return false;
+  const CellRect cells = scratch.ends.overlapped_by(box);
+  if (!scratch.ends.any(cells) && (drawn(scratch, t) || scratch.covered.any_inside(box))) return true;
+  return view.count_layers && scratch.layers.covers(cells.x0, cells.x1, cells.y0, cells.y1);
+}
+
+// A face the main pass draws turns toward the camera, and so, all but
+// always, does its hull face: only the others are worth the test.
+bool hull_face_turned_away(const HullCullMesh& mesh, const Scratch& scratch, float skipped, std::size_t t) {
+  const std::span<const std::uint32_t> indices = mesh.indices();
+  return skipped != 0.0f && !drawn(scratch, t) &&
+         hull_face_surely_turns(scratch.vertices[indices[3 * t]], scratch.vertices[indices[3 * t + 1]],
+                                scratch.vertices[indices[3 * t + 2]], skipped);
+}
+
+// The faces that may show, submesh by submesh: first those the hull draws
+// as they come, then, in ranges of their own, those it draws turned away.
+HullSubset faces_that_may_show(const HullCullMesh& mesh, const HullCullView& view, Scratch& scratch) {
+  const std::span<const std::uint32_t> indices = mesh.indices();
+  const float skipped = skipped_side(view.hull_hidden);
+  HullSubset out;
+  out.indices.reserve(indices.size());
+  // The faces set apart gather here, each submesh's range of them first
+  // counted from its start, then moved behind the rest.
+  std::vector<std::uint32_t>& away = scratch.turned_away;
+  away.clear();
+  for (const scene::Submesh& sub : mesh.submeshes()) {
+    scene::Submesh kept{static_cast<std::uint32_t>(out.indices.size()), 0, sub.material};
+    scene::Submesh set_apart{static_cast<std::uint32_t>(away.size()), 0, sub.material};
+    for (std::size_t e = sub.first_index; e < sub.first_index + sub.index_count; e += 3) {
+      if (cannot_show(scratch, view, e / 3)) {
+        ++out.culled_triangles;
+        continue;
+      }
+      std::vector<std::uint32_t>& to = hull_face_turned_away(mesh, scratch, skipped, e / 3) ? away : out.indices;
+      to.insert(to.end(), indices.begin() + static_cast<std::ptrdiff_t>(e),
+                indices.begin() + static_cast<std::ptrdiff_t>(e + 3));
+    }
+    kept.index_count = static_cast<std::uint32_t>(out.indices.size()) - kept.first_index;
+    out.submeshes.push_back(kept);
+    set_apart.index_count = static_cast<std::uint32_t>(away.size()) - set_apart.first_index;
+    out.turned_away.push_back(set_apart);
+  }
+  if (away.empty()) {
+    out.turned_away.clear();
+    return out;
+  }
+  for (scene::Submesh& range : out.turned_away) range.first_index += static_cast<std::uint32_t>(out.indices.size());
+  out.indices.insert(out.indices.end(), away.begin(), away.end());
+  return out;
+}
+
 }  // namespace
 
 HullCullMesh::HullCullMesh(Stream positions, Stream outline_offsets, std::span<const std::uint32_t> indices,
@@ -408,115 +527,11 @@ HullCullMesh::HullCullMesh(Stream positions, Stream outline_offsets, std::span<c
 std::optional<HullSubset> hull_faces_that_may_show(const HullCullMesh& mesh, const HullCullView& view) {
   if (view.viewport_width <= 0 || view.viewport_height <= 0) return std::nullopt;
   static thread_local Scratch scratch;
-  std::vector<ProjectedVertex>& vertices = scratch.vertices;
-  vertices.resize(mesh.used_vertices().empty() ? 0 : mesh.used_vertices().back() + 1);
-  if (!project_vertices(mesh, view, vertices)) return std::nullopt;
-  const std::span<const std::uint32_t> indices = mesh.indices();
-  const std::size_t triangles = indices.size() / 3;
-  // The faces the main pass draws, with a winding no rounding can flip, and
-  // the box round each face and its hull face.
-  const double drawn_sign = view.drawn_clockwise ? -1.0 : 1.0;
-  std::vector<std::uint8_t>& turns = scratch.turns;
-  std::vector<Box>& boxes = scratch.boxes;
-  turns.resize(triangles);
-  boxes.resize(triangles);
-  for (std::size_t t = 0; t < triangles; ++t) {
-    const ProjectedVertex& a = vertices[indices[3 * t]];
-    const ProjectedVertex& b = vertices[indices[3 * t + 1]];
-    const ProjectedVertex& c = vertices[indices[3 * t + 2]];
-    turns[t] = face_turn(a.window, b.window, c.window, drawn_sign);
-    boxes[t].min = glm::min(glm::min(a.reach_min, b.reach_min), c.reach_min) - static_cast<float>(kMarginPx);
-    boxes[t].max = glm::max(glm::max(a.reach_max, b.reach_max), c.reach_max) + static_cast<float>(kMarginPx);
-  }
-  const auto drawn = [&](std::size_t t) { return turns[t] == kDrawn; };
-  // Where the drawn faces' cover may end (their edges not shared with
-  // another drawn face), where a point it holds lies (their middles), and
-  // how many layers of the drawn and unsure faces lie over each cell (their
-  // edges not shared within them).
-  CellCounts& ends = scratch.ends;
-  CellCounts& covered = scratch.covered;
-  CoverLayers& layers = scratch.layers;
-  const double cell = cell_px(view, triangles);
-  ends.reset(view.viewport_width, view.viewport_height, cell);
-  covered.reset(view.viewport_width, view.viewport_height, cell);
-  if (view.count_layers) {
-    const std::pair<glm::dvec2, glm::dvec2> bounds = window_bounds(mesh, vertices);
-    layers.reset({view.viewport_width, view.viewport_height, cell, bounds.first, bounds.second}, !view.drawn_clockwise,
-                 kVertexSlackPx);
-  }
-  std::vector<OutlineEdge>& outline = scratch.outline;
-  outline.clear();
-  for (std::size_t t = 0; t < triangles; ++t) {
-    if (turns[t] == kTurnedAway) continue;
-    const glm::dvec2* corner[3];
-    for (std::size_t c = 0; c < 3; ++c) corner[c] = &vertices[indices[3 * t + c]].window;
-    if (drawn(t)) covered.add_point((*corner[0] + *corner[1] + *corner[2]) / 3.0);
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t other = mesh.neighbour(t, k);
-      const FaceTurn across = other >= 0 ? static_cast<FaceTurn>(turns[static_cast<std::size_t>(other)]) : kTurnedAway;
-      const int k1 = (k + 1) % 3;
-      if (drawn(t) && across != kDrawn) ends.add_box(*corner[k], *corner[k1]);
-      if (view.count_layers && across == kTurnedAway) {
-        outline.push_back({mesh.welded(indices[3 * t + k]), mesh.welded(indices[3 * t + k1]), corner[k], corner[k1]});
-      }
-    }
-  }
-  ends.sum();
-  covered.sum();
-  if (view.count_layers) {
-    give_along_loops(outline, vertices.size(), scratch);
-    layers.finish();
-  }
-  // A face whose box holds a covered point (its own face, if drawn, or a
-  // drawn face's middle) and meets no end of the cover lies wholly inside
-  // it, whichever way it or its hull face turns; so does one whose box
-  // the layers cover.
-  const auto cannot_show = [&](std::size_t t) {
-    const Box& box = boxes[t];
-    if (!ends.holds(box)) return false;
-    const CellRect cells = ends.overlapped_by(box);
-    if (!ends.any(cells) && (drawn(t) || covered.any_inside(box))) return true;
-    return view.count_layers && layers.covers(cells.x0, cells.x1, cells.y0, cells.y1);
-  };
-  // A face the main pass draws turns toward the camera, and so, all but
-  // always, does its hull face: only the others are worth the test.
-  const float skipped = skipped_side(view.hull_hidden);
-  const auto turned_away = [&](std::size_t t) {
-    return skipped != 0.0f && !drawn(t) &&
-           hull_face_surely_turns(vertices[indices[3 * t]], vertices[indices[3 * t + 1]], vertices[indices[3 * t + 2]],
-                                  skipped);
-  };
-  HullSubset out;
-  out.indices.reserve(indices.size());
-  // The faces set apart gather here, each submesh's range of them first
-  // counted from its start, then moved behind the rest.
-  std::vector<std::uint32_t>& away = scratch.turned_away;
-  away.clear();
-  for (const scene::Submesh& sub : mesh.submeshes()) {
-    scene::Submesh kept{static_cast<std::uint32_t>(out.indices.size()), 0, sub.material};
-    scene::Submesh set_apart{static_cast<std::uint32_t>(away.size()), 0, sub.material};
-    for (std::size_t e = sub.first_index; e < sub.first_index + sub.index_count; e += 3) {
-      if (cannot_show(e / 3)) {
-        ++out.culled_triangles;
-        continue;
-      }
-      std::vector<std::uint32_t>& to = turned_away(e / 3) ? away : out.indices;
-      to.push_back(indices[e]);
-      to.push_back(indices[e + 1]);
-      to.push_back(indices[e + 2]);
-    }
-    kept.index_count = static_cast<std::uint32_t>(out.indices.size()) - kept.first_index;
-    out.submeshes.push_back(kept);
-    set_apart.index_count = static_cast<std::uint32_t>(away.size()) - set_apart.first_index;
-    out.turned_away.push_back(set_apart);
-  }
-  if (away.empty()) {
-    out.turned_away.clear();
-    return out;
-  }
-  for (scene::Submesh& range : out.turned_away) range.first_index += static_cast<std::uint32_t>(out.indices.size());
-  out.indices.insert(out.indices.end(), away.begin(), away.end());
-  return out;
+  scratch.vertices.resize(mesh.used_vertices().empty() ? 0 : mesh.used_vertices().back() + 1);
+  if (!project_vertices(mesh, view, scratch.vertices)) return std::nullopt;
+  classify_faces(mesh, view, scratch);
+  map_cover(mesh, view, scratch);
+  return faces_that_may_show(mesh, view, scratch);
 }
 
 }  // namespace toond::render

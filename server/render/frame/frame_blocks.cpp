@@ -1,5 +1,7 @@
 #include "render/frame/frame_blocks.h"
 
+#include <cmath>
+
 #include "render/frame/shading_block.h"
 #include "render/frame/uniform_blocks.h"
 
@@ -18,10 +20,15 @@ ViewBlock view_block_for(const FrameContext& frame) {
 }
 
 OutlineBlock outline_block_for(const FrameContext& frame) {
+  const OutlineParams& params = frame.params.outline;
   OutlineBlock outline;
-  outline.outline_color = frame.params.outline.color;
-  outline.darken = frame.params.outline.darken;
+  outline.outline_color = params.color;
+  outline.darken = params.darken;
   outline.width = frame.outline_px;
+  outline.depth_threshold = params.depth_threshold * 2.0f * frame.scene.bounds.radius();
+  outline.cos_crease = static_cast<float>(std::cos(glm::radians(params.crease_angle_deg)));
+  outline.readable_area_px = params.readable_area_px;
+  outline.whole_pixels = params.whole_pixel_lines ? 1 : 0;
   return outline;
 }
 

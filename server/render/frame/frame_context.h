@@ -1,10 +1,9 @@
 #pragma once
-// Everything a frame's passes share, worked out once before the first one
-// draws: from its plan (frame_plan.h: the passes, the scene's frame, the
-// camera, the outline's width in pixels) the matrices, the level of detail
-// and the faces each object may skip, the shadow's fit and the lights as
-// the shaders take them. Pure arithmetic, no GL: it sees the models as
-// imported, not their GPU copies.
+// Everything a frame's passes share, taken from its plan (frame_plan.h:
+// everything about the frame was decided there) in the form the passes and
+// shaders use: the matrices rounded to float, the lights relative to the
+// frame's origin, the ramp's arrays, the faces skipped as this renderer
+// draws them. No decision is made here, and no GL call.
 #include <optional>
 #include <vector>
 
@@ -14,6 +13,7 @@
 #include "render/plan/drawn_materials.h"
 #include "render/plan/face_culling.h"
 #include "render/plan/frame_plan.h"
+#include "render/plan/lod_choice.h"
 #include "render/plan/pass_plan.h"
 #include "render/plan/render_params.h"
 #include "render/plan/shadow_fit.h"
@@ -22,40 +22,13 @@
 
 namespace toond::render {
 
-// One object of the frame as its arithmetic sees it: the model as imported
-// (its levels of detail, closed or open, their hole caps) in its pose.
-// Where it stands is the plan's (FramePlan::scene).
+// One object of the frame as its passes draw it: the model as imported, in
+// the pose its GPU copy holds. What the plan decided for it is the plan's
+// (FramePlan::objects).
 struct FrameObject {
   const scene::Model& model;
   const scene::SkinPose* pose = nullptr;  // null: as imported
   bool skinned = false;                   // posed by the vertex stages (GpuModel::skinned)
-
-  // The pose's when posed (which may be a whole clip's reach).
-  const scene::Bounds& bounds() const;
-  // How much the pose may lengthen a level's error (SkinPose::stretch); 1 as imported.
-  double pose_stretch() const { return pose ? pose->stretch : 1.0; }
-  // Level 0 is the full mesh; the rest come from scene::Mesh::lods.
-  std::size_t lod_count() const { return 1 + model.mesh.lods.size(); }
-  // Per level, in the mesh's units: how far its surface may stray (0 at level 0).
-  std::vector<double> lod_errors() const;
-  std::size_t triangles(std::size_t lod) const;
-  // Whether a level's triangles close around a volume (scene/mesh/enclosure.h);
-  // a pose keeps the topology.
-  scene::Enclosure enclosure(std::size_t lod) const;
-  // Triangles closing the level's holes; posed, they moved with the pose.
-  const std::vector<glm::vec3>& caps(std::size_t lod) const;
-};
-
-// The level of detail one object was drawn at (see lod_choice.h).
-struct LodUse {
-  std::size_t level = 0;      // 0 = full detail
-  std::size_t levels = 1;     // how many the model has
-  std::size_t triangles = 0;  // drawn per pass
-  double error_px = 0;        // the level's error projected to output pixels
-  // The side of the faces the main pass skipped (None: both drawn): a
-  // closed level seen from outside (face_culling.h), or an open one none
-  // of whose holes showed (their caps were checked and hidden).
-  HiddenFaces culled = HiddenFaces::None;
 };
 
 // The lights in the form toon.frag's arrays take: a direction toward the
@@ -77,27 +50,36 @@ struct FrameContext {
   // a point at the scene's middle (camera.h, frame_scene).
   const SceneFrame& scene;
   const CameraSetup& camera;
+  const glm::dmat4& clip;  // projection × view, in double
+  const Viewer& viewer;
+  const std::optional<ShadowFit>& shadow;
   std::vector<glm::mat4> model_matrices{};   // per object, rounded to float from scene.matrices
   std::vector<glm::mat3> normal_matrices{};  // inverse-transpose of their upper 3×3
-  glm::dmat4 clip{1.0};                      // projection × view, in double
-  glm::mat4 view_projection{1.0f};           // the same, rounded for the shaders
-  Viewer viewer{};
+  glm::mat4 view_projection{1.0f};           // clip, rounded for the shaders
   // Supersampling draws everything `supersample` times larger, pixel sizes
   // included, then averages back down.
   int supersample = 1;
   int draw_width = 0;
   int draw_height = 0;
-  float outline_px = 0;                // every outline method draws this one width, in drawn pixels
-  std::vector<LodUse> lods{};          // one per object; every pass draws an object at its level
-  std::vector<FaceSkip> main_faces{};  // per object: of the main pass and the edge prepass
-  // Per object, its materials as this frame draws them (drawn_materials.h).
+  float outline_px = 0;  // every outline method draws this one width, in drawn pixels
+  // One per object, the plan's: every pass draws an object at its level;
+  // `culled` says which faces the main pass left out as drawn.
+  std::vector<LodUse> lods{};
+  // Per object, the faces each pass skips: the plan's, or none in a frame
+  // that draws both sides of every face.
+  std::vector<FaceSkip> main_faces{};  // the main pass, the edge prepass, a data layer
+  std::vector<FaceSkip> hull_faces{};  // the outline hull
+  std::vector<HiddenFaces> shadow_faces{};
+  // The faces that cannot show to the camera whether or not this frame
+  // culls faces, which a pass may leave out of what it draws over the
+  // surface (crease lines) without changing a pixel either way.
+  std::vector<FaceSkip> unseen_faces{};
+  // Per object, its materials as this frame draws them (the plan's).
   std::vector<std::vector<DrawnMaterial>> materials{};
-  std::optional<ShadowFit> shadow{};
   ShadingLights lights{};
   // The colour ramp's stops as toon.frag's arrays take them.
   std::vector<float> ramp_at{};
   std::vector<glm::vec3> ramp_color{};
-  bool face_culling = true;
 
   std::size_t lod_of(std::size_t i) const { return lods[i].level; }
   const DrawnMaterial& material(std::size_t i, int m) const { return materials[i][static_cast<std::size_t>(m)]; }
@@ -107,20 +89,8 @@ struct FrameContext {
   bool orthographic() const { return viewer.orthographic; }
   glm::vec3 eye() const { return glm::vec3(camera.eye); }
   glm::vec3 view_dir() const { return glm::vec3(viewer.forward); }
-  // The size of one drawn pixel at clip w = 1 (a pixel at depth w is w
-  // times it): projection[1][1] maps a view-space height at depth w to NDC,
-  // and NDC spans `draw_height` pixels over 2 units.
+  // The size of one drawn pixel at clip w = 1 (FramePlan::world_per_px_at_w1).
   double world_per_px_at_w1() const { return 2.0 / (camera.projection[1][1] * draw_height); }
-  // The faces of object i that cannot show through `view_projection` to
-  // `seen_by`. An object with holes whose caps do not all turn away skips
-  // them too in a pass that can check its caps (`caps_checked`), else none.
-  FaceSkip culling_for(std::size_t i, const glm::dmat4& view_projection, const Viewer& seen_by,
-                       bool caps_checked) const;
-  // The same whether or not this frame culls faces (`face_culling`): the
-  // faces that cannot show, which a pass may leave out of what it draws
-  // over the surface (crease lines) without changing a pixel either way.
-  FaceSkip hidden_from(std::size_t i, const glm::dmat4& view_projection, const Viewer& seen_by,
-                       bool caps_checked) const;
 };
 
 // `objects` in the plan's order. `face_culling` off draws both sides of

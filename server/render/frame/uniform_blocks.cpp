@@ -5,7 +5,7 @@
 namespace toond::render {
 
 static_assert(sizeof(ViewBlock) == 112 && sizeof(ObjectBlock) == 128 && sizeof(MaterialBlock) == 32 &&
-                  sizeof(OutlineBlock) == 32,
+                  sizeof(OutlineBlock) == 48,
               "std140 sizes");
 
 ObjectBlock ObjectBlock::placing(const glm::mat4& model, const glm::mat3& normal_matrix, bool skinned) {
@@ -47,7 +47,11 @@ std::vector<UniformBlockLayout> uniform_block_layouts() {
        sizeof(OutlineBlock),
        {{"u_outline_color", offsetof(OutlineBlock, outline_color)},
         {"u_darken", offsetof(OutlineBlock, darken)},
-        {"u_width", offsetof(OutlineBlock, width)}}},
+        {"u_width", offsetof(OutlineBlock, width)},
+        {"u_depth_threshold", offsetof(OutlineBlock, depth_threshold)},
+        {"u_cos_crease", offsetof(OutlineBlock, cos_crease)},
+        {"u_readable_area_px", offsetof(OutlineBlock, readable_area_px)},
+        {"u_whole_pixels", offsetof(OutlineBlock, whole_pixels)}}},
   };
 }
 

@@ -48,12 +48,17 @@ struct MaterialBlock {
   float padding[2] = {};
 };
 
-// The outline's colour and width (binding 4).
+// The outline's colour and width, and what the edge pass counts as an
+// edge (binding 4).
 struct OutlineBlock {
   static constexpr int kBinding = 4;
   glm::vec3 outline_color{0.0f};
   float darken = 0;
-  float width = 0;  // pixels
+  float width = 0;            // pixels
+  float depth_threshold = 0;  // scene units
+  float cos_crease = 1;
+  std::int32_t readable_area_px = 0;
+  std::int32_t whole_pixels = 0;
   float padding[3] = {};
 };
 

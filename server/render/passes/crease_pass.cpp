@@ -13,7 +13,7 @@ namespace {
 // faces, is dropped before it is rasterised. None where that side may show
 // through a hole.
 int culled_winding(const FrameContext& frame, std::size_t i) {
-  const FaceSkip skip = frame.hidden_from(i, frame.clip, frame.viewer, true);
+  const FaceSkip& skip = frame.unseen_faces[i];
   if (skip.unless_caps_show) return 0;
   switch (skip.hidden) {
     case HiddenFaces::None:

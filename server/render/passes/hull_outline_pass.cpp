@@ -1,5 +1,3 @@
-#include <algorithm>
-#include <limits>
 #include <optional>
 #include <span>
 
@@ -8,40 +6,6 @@
 
 namespace toond::render {
 namespace {
-
-// How far the hull may stand out of the model's box: up to 3 widths
-// (mitred corners), where a pixel's size grows with the depth w, which the
-// offset itself adds to. `world_per_px` is a pixel's size at w = 1.
-double hull_reach(const FrameContext& frame, double world_per_px) {
-  const double k = 3.0 * frame.outline_px * world_per_px;
-  if (frame.orthographic()) return k;
-  if (k >= 0.5) return std::numeric_limits<double>::infinity();
-  double w_max = 1.0;
-  for (int corner = 0; corner < 8; ++corner) {
-    w_max = std::max(w_max, (frame.clip * glm::dvec4(frame.scene.bounds.corner(corner), 1.0)).w);
-  }
-  return k * w_max / (1.0 - k);
-}
-
-// Which side of object i's hull its draw skips. The stencil keeps the hull
-// off the model, so its faces toward the camera may draw the ring: where a
-// closed model's back faces may be skipped, the hull's may too. Its front
-// faces lie nearer than its back ones, so they pass every depth test (a
-// floor's) the back ones would. The hull must not be cut by the near or far
-// plane either: where it is, its back faces show through the cut.
-FaceSkip hull_face_skip(const FrameContext& frame, std::size_t i) {
-  const FrameObject& object = frame.objects[i];
-  FaceSkip hull;
-  if (frame.main_faces[i].hidden == HiddenFaces::None) return hull;
-  const double reach = hull_reach(frame, frame.world_per_px_at_w1());
-  hull.hidden =
-      hidden_faces(object.enclosure(frame.lod_of(i)), frame.scene.matrices[i], frame.clip, object.bounds(), reach);
-  // The hull's holes move with its offset and may turn toward the camera
-  // where the model's do not: its own caps, offset like it (they share
-  // its vertices), are checked.
-  hull.unless_caps_show = hull.hidden != HiddenFaces::None && !object.caps(frame.lod_of(i)).empty();
-  return hull;
-}
 
 // What object i's cull reads, or nullopt where its whole hull is drawn:
 // the cull is off, the object is posed (its vertices are not the ones kept
@@ -64,7 +28,7 @@ std::optional<HullCullInput> cull_input(const PassContext& context, std::size_t 
   view.viewport_width = frame.draw_width;
   view.viewport_height = frame.draw_height;
   view.drawn_clockwise = frame.main_faces[i].hidden == HiddenFaces::Front;
-  view.hull_hidden = context.hull_skips[i].hidden;
+  view.hull_hidden = frame.hull_faces[i].hidden;
   view.count_layers = frame.plan.samples > 1;
   return HullCullInput{std::move(mesh), view};
 }
@@ -141,14 +105,12 @@ void draw_hull_outline_pass(PassContext& context) {
   gpu::Program& program = context.programs.get("hull.vert", "hull.frag", frame.plan.outline.defines());
   program.use();
   const HullFaces faces = hull_faces(context);
-  draw_objects(context, {.faces = [&](std::size_t i) { return context.hull_skips[i]; },
+  draw_objects(context, {.faces = [&](std::size_t i) { return frame.hull_faces[i]; },
                          .draw = [&](std::size_t i) { draw_hull_of(context, faces, i, HullSide::Shown); },
                          .redraw = [&](std::size_t i) { draw_hull_of(context, faces, i, HullSide::Both); }});
 }
 
 void start_hull_cull(PassContext& context) {
-  for (std::size_t i = 0; i < context.frame.objects.size(); ++i)
-    context.hull_skips.push_back(hull_face_skip(context.frame, i));
   std::vector<std::optional<HullCullInput>> inputs;
   bool any = false;
   for (std::size_t i = 0; i < context.frame.objects.size(); ++i) {

@@ -44,9 +44,6 @@ struct PassContext {
   bool wide_lines = true;
   // Where work is handed off while the passes record (the hull cull).
   BackgroundThread& background;
-  // Per object, the side of its hull the hull pass skips, worked out once
-  // by start_hull_cull (the cull reads it too).
-  std::vector<FaceSkip> hull_skips{};
   // Started before the first pass (start_hull_cull), taken by the hull pass.
   Handoff<std::vector<std::optional<HullSubset>>> hull_cull{};
   std::size_t hull_faces_culled = 0;  // reported in RenderOutput

@@ -5,7 +5,6 @@ namespace toond::render {
 void draw_shadow_pass(PassContext& context) {
   const FrameContext& frame = context.frame;
   const RenderParams& params = frame.params;
-  const Light& caster = params.lights[static_cast<std::size_t>(frame.plan.shadow_light)];
   gpu::ShadowMap& map = context.resources.shadow_map_for(params.shadows.map_size);
   map.bind_for_drawing();
   glEnable(GL_DEPTH_TEST);
@@ -23,14 +22,10 @@ void draw_shadow_pass(PassContext& context) {
   gpu::Program& program = context.programs.get("shadow.vert", "shadow.frag", variant.defines());
   program.use();
   program.set("u_light_view_projection", glm::mat4(frame.shadow->view_projection));
-  const Viewer light{glm::dvec3(0.0), glm::normalize(caster.direction), true};
   draw_objects(context,
                {// The nearest surface seen from the light is the same with
                 // the far side skipped, so the map is too.
-                .faces =
-                    [&](std::size_t i) {
-                      return FaceSkip{frame.culling_for(i, frame.shadow->view_projection, light, false).hidden};
-                    },
+                .faces = [&](std::size_t i) { return FaceSkip{frame.shadow_faces[i]}; },
                 .draw =
                     [&](std::size_t i) {
                       if (alpha_tested)

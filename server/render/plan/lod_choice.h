@@ -8,8 +8,21 @@
 #include <glm/glm.hpp>
 
 #include "render/plan/camera.h"
+#include "render/plan/face_culling.h"
 
 namespace toond::render {
+
+// The level of detail one object was drawn at (see lod_choice.h).
+struct LodUse {
+  std::size_t level = 0;      // 0 = full detail
+  std::size_t levels = 1;     // how many the model has
+  std::size_t triangles = 0;  // drawn per pass
+  double error_px = 0;        // the level's error projected to output pixels
+  // The side of the faces the main pass skipped (None: both drawn): a
+  // closed level seen from outside (face_culling.h), or an open one none
+  // of whose holes showed (their caps were checked and hidden).
+  HiddenFaces culled = HiddenFaces::None;
+};
 
 // Output pixels covered by one unit of frame space at the nearest point of
 // the sphere (centre, radius) to the camera, along the view axis. A sphere

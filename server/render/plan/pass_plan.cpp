@@ -79,7 +79,9 @@ PassPlan plan_passes(const RenderParams& params, const ModelTraits& model) {
   if (is_data_layer(params.output)) return plan_data_layer(params, model);
   PassPlan plan;
   plan.output = params.output;
-  const bool lines_only = params.output == Output::Lines;
+  // The vector drawing (render/vector/line_drawing.h) draws what the lines
+  // layer would: it is planned as one, though nothing of it is rasterised.
+  const bool lines_only = params.output == Output::Lines || params.output == Output::Svg;
   plan.samples = params.msaa;
   // Shadows need a light that casts them (the first directional one) and a
   // lit shading mode to darken; the lines layer shows no shading.

@@ -1,8 +1,7 @@
 #include "render/plan/render_cost.h"
 
 #include "render/plan/camera.h"
-#include "render/plan/light_space.h"
-#include "render/plan/outline_width.h"
+#include "render/plan/line_drawing_cost.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,41 +63,26 @@ RenderCost pass_cost(std::span<const scene::Mesh* const> meshes, const std::opti
   return cost;
 }
 
-// The outline's width in drawn pixels as the frame will draw it: a width in
-// world units converted at the camera that frames the meshes' bounds.
-double drawn_line_px(const RenderParams& params, std::span<const scene::Mesh* const> meshes, double supersample) {
-  if (meshes.empty()) return 0.0;
-  scene::Bounds bounds = meshes.front()->bounds;
-  for (const scene::Mesh* mesh : meshes) {
-    bounds.min = glm::min(bounds.min, mesh->bounds.min);
-    bounds.max = glm::max(bounds.max, mesh->bounds.max);
-  }
-  const double aspect = static_cast<double>(params.width) / std::max(params.height, 1);
-  const CameraSetup camera = fit_camera(params.camera, bounds, aspect);
-  const bool orthographic = params.camera.projection == Projection::Orthographic;
-  return outline_width_px(params.outline, camera, orthographic, params.height) * supersample;
-}
-
 // The crease pass: every edge creased at the request's angle (and every
 // segment where parts cross that turns as far, drawn alike), and the
 // samples its lines cover (each mesh's creased length at the frame's scale:
 // framed, its bounding sphere fills the frame's shorter side). Drawn one
 // sample a pixel, the lines' coverage is gathered in a target of its own,
 // cleared and laid over the image: two more passes over the frame.
-RenderCost crease_cost(const RenderParams& params, const PassPlan& plan, std::span<const scene::Mesh* const> meshes,
-                       double width, double height) {
+RenderCost crease_cost(const PricedFrame& frame, std::span<const scene::Mesh* const> meshes, double width,
+                       double height) {
   RenderCost cost;
-  const double angle = params.outline.crease_angle_deg;
-  const double line_px = drawn_line_px(params, meshes, plan.supersample);
+  const double angle = frame.params.outline.crease_angle_deg;
+  const int samples = frame.passes.samples;
   const auto add = [&](const scene::TurnTally& lines) {
     cost.crease_edges += static_cast<double>(lines.creased_at(angle));
-    cost.samples += lines.length_at(angle) * std::min(width, height) * line_px * plan.samples;
+    cost.samples += lines.length_at(angle) * std::min(width, height) * frame.line_px * samples;
   };
   for (const scene::Mesh* mesh : meshes) {
     add(mesh->crease_edges);
     add(mesh->intersections);
   }
-  if (plan.samples == 1) cost.framebuffer += 2 * kLineCoveragePassSamples * width * height;
+  if (samples == 1) cost.framebuffer += 2 * kLineCoveragePassSamples * width * height;
   return cost;
 }
 
@@ -111,7 +95,8 @@ double edge_texels_per_pixel(double line_px, bool creases_only) {
 
 double RenderCost::units() const {
   return (samples + triangles * kTriangleSamples + tiles * kTileSamples + framebuffer * kFramebufferSamples +
-          frames * kFrameSamples + edge_texels * kEdgeTexelSamples + crease_edges * kCreaseEdgeSamples) /
+          frames * kFrameSamples + edge_texels * kEdgeTexelSamples + crease_edges * kCreaseEdgeSamples +
+          line_triangles * kLineTriangleSamples + line_edges * kLineEdgeSamples) /
          1e6;
 }
 
@@ -122,6 +107,8 @@ std::string RenderCost::describe() const {
     << " M, tile samples crossed " << tiles / 1e6 << " M, frame samples " << framebuffer / 1e6 << " M";
   if (edge_texels > 0) s << ", edge pass texels " << edge_texels / 1e6 << " M";
   if (crease_edges > 0) s << ", crease edges " << crease_edges / 1e6 << " M";
+  if (line_triangles > 0) s << ", line drawing's triangles " << line_triangles / 1e6 << " M";
+  if (line_edges > 0) s << ", line drawing's edges " << line_edges / 1e6 << " M";
   s << ")";
   return s.str();
 }
@@ -134,11 +121,15 @@ RenderCost& RenderCost::operator+=(const RenderCost& other) {
   frames += other.frames;
   edge_texels += other.edge_texels;
   crease_edges += other.crease_edges;
+  line_triangles += other.line_triangles;
+  line_edges += other.line_edges;
   return *this;
 }
 
-RenderCost predict_frame_cost(const RenderParams& params, const PassPlan& plan,
-                              std::span<const scene::Mesh* const> meshes, ViewKnown view) {
+RenderCost predict_frame_cost(const PricedFrame& frame, std::span<const scene::Mesh* const> meshes, ViewKnown view) {
+  const RenderParams& params = frame.params;
+  const PassPlan& plan = frame.passes;
+  if (params.output == Output::Svg) return line_drawing_cost(params, meshes);
   const double width = static_cast<double>(params.width) * plan.supersample;
   const double height = static_cast<double>(params.height) * plan.supersample;
   const bool known = view == ViewKnown::Camera;
@@ -149,18 +140,14 @@ RenderCost predict_frame_cost(const RenderParams& params, const PassPlan& plan,
   for (int i = frame_geometry_passes(plan); i > 0; --i) cost += one_pass;
   if (plan.has(Pass::Shadow)) {
     const double side = params.shadows.map_size;
-    const Light& caster = params.lights[static_cast<std::size_t>(plan.shadow_light)];
-    const glm::dvec3 light =
-        caster.space == LightSpace::View ? view_to_scene(params.camera, caster.direction) : caster.direction;
-    cost += pass_cost(meshes, known ? std::optional(light) : std::nullopt, side, side, 1);
+    cost += pass_cost(meshes, known ? std::optional(frame.shadow_direction) : std::nullopt, side, side, 1);
     cost.framebuffer += side * side;  // its clear
   }
   cost.framebuffer += width * height * plan.samples * frame_wide_passes(plan);
   if (plan.has(Pass::Edges)) {
-    cost.edge_texels =
-        width * height * edge_texels_per_pixel(drawn_line_px(params, meshes, plan.supersample), plan.creases_only);
+    cost.edge_texels = width * height * edge_texels_per_pixel(frame.line_px, plan.creases_only);
   }
-  if (plan.has(Pass::Creases)) cost += crease_cost(params, plan, meshes, width, height);
+  if (plan.has(Pass::Creases)) cost += crease_cost(frame, meshes, width, height);
   cost.frames = 1;
   return cost;
 }

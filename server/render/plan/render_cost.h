@@ -8,6 +8,8 @@
 #include <span>
 #include <string>
 
+#include <glm/glm.hpp>
+
 #include "render/plan/pass_plan.h"
 #include "render/plan/render_params.h"
 #include "scene/mesh/model.h"
@@ -37,12 +39,19 @@ struct RenderCost {
   // geometry stage and a line set up, whatever its length. The samples
   // its lines cover are counted with the others.
   double crease_edges = 0;
+  // A vector line drawing (output svg, render/vector/line_drawing.h) draws
+  // nothing on the GPU: it places, faces and bins every triangle on the
+  // CPU, then tests each edge that may be a line against the triangles
+  // near it on screen (render/plan/line_drawing_cost.h).
+  double line_triangles = 0;
+  double line_edges = 0;
 
   // One figure, in millions of sample-equivalents ("Msamples"): a triangle
   // set up counts as kTriangleSamples samples, a tile sample crossed as
   // kTileSamples, a frame sample as kFramebufferSamples, a frame as
   // kFrameSamples, a texel the edge pass reads as kEdgeTexelSamples, a
-  // crease edge drawn as kCreaseEdgeSamples. The
+  // crease edge drawn as kCreaseEdgeSamples, a line drawing's triangle as
+  // kLineTriangleSamples and its edge as kLineEdgeSamples. The
   // weights were fitted to llvmpipe's render times (bench/render_cost.py:
   // 1.0–1.8 ms per Msample on a 2-core machine, from day to day); on a GPU
   // the figure is still proportional to the work.
@@ -67,6 +76,16 @@ inline constexpr double kEdgeTexelSamples = 4.5;
 // coverage when there is one sample a pixel; the medians kept.
 inline constexpr double kCreaseEdgeSamples = 275;
 inline constexpr double kLineCoveragePassSamples = 1.6;
+// A line drawing's weights (render/plan/line_drawing_cost.h), fitted by
+// bench/line_drawing.py --fit to its own time (Server-Timing `lines`) on
+// the shared models and fandisk, two views each, at 1.4 ms a Msample: 497
+// and 2416 (2026-12-07, a 2-core machine shared with other builds). They
+// over-price the small closed models (2 ms drawn, 6-15 ms priced) and
+// under-price the windmill's many crease edges by up to half; the price
+// only refuses (--max-render-cost), so erring high is the safe side.
+inline constexpr double kLineTriangleSamples = 500;
+inline constexpr double kLineEdgeSamples = 2400;
+inline constexpr double kSilhouetteEdgesPerRootTriangle = 8;
 // The screen tile a rasteriser bins triangles into (llvmpipe's is 64 pixels).
 inline constexpr double kTilePixels = 64;
 
@@ -87,11 +106,21 @@ double edge_texels_per_pixel(double line_px, bool creases_only);
 // turned by its transform: priced at their densest direction).
 enum class ViewKnown { Camera, Any };
 
-// The cost of one frame drawn with `params` (the parameters as drawn: a
-// pixel-art frame's reduced size, a sheet frame's yaw and pitch) under
-// `plan`. Every mesh is assumed to fill the frame, at full detail; the
-// shadow pass sees them from its light's direction.
-RenderCost predict_frame_cost(const RenderParams& params, const PassPlan& plan,
-                              std::span<const scene::Mesh* const> meshes, ViewKnown view = ViewKnown::Camera);
+// What a frame's price reads of its plan (frame_plan.h): the parameters it
+// is drawn with (a pixel-art frame's reduced size, a sheet frame's yaw and
+// pitch), its passes, the width its lines are drawn at and, where it casts
+// a shadow, the way the shadow's light travels (scene coordinates, a
+// view-space light already turned with the camera).
+struct PricedFrame {
+  const RenderParams& params;
+  const PassPlan& passes;
+  double line_px = 0;
+  glm::dvec3 shadow_direction{0.0, 0.0, -1.0};
+};
+
+// The cost of one frame. Every mesh is assumed to fill the frame, at full
+// detail; the shadow pass sees them from its light's direction.
+RenderCost predict_frame_cost(const PricedFrame& frame, std::span<const scene::Mesh* const> meshes,
+                              ViewKnown view = ViewKnown::Camera);
 
 }  // namespace toond::render

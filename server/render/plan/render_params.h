@@ -28,9 +28,10 @@ glm::vec3 srgb_to_linear(const glm::vec3& c);
 // schema writes them, made linear); RenderParamsDefaults checks each.
 enum class ShadingMode { Cel, Phong, Flat };
 enum class BaseColor { Material, White };
-// What the answer holds: the finished colour, the lines alone, or one of
-// the data layers a compositor uses (proto schema `output`).
-enum class Output { Color, Lines, Depth, Normal, Id };
+// What the answer holds: the finished colour, the lines alone, one of the
+// data layers a compositor uses, or the lines as vector paths (proto schema
+// `output`).
+enum class Output { Color, Lines, Depth, Normal, Id, Svg };
 enum class Rounding { Ceil, Floor, Round };
 enum class Projection { Perspective, Orthographic };
 
@@ -100,7 +101,12 @@ struct SheetParams {
   };
   std::optional<PixelArt> pixel_art;
   bool animate = false;  // answer an animated WebP of the frames instead of the sheet's PNG
-  int frame_ms = 100;    // how long each animation frame shows
+  // `sheet.pack`: each tile cut to its visible pixels and packed, `padding`
+  // apart (pipeline/sheet_answer.h); `power_of_two`: the packed sheet's
+  // sides powers of two.
+  bool pack = false;
+  bool power_of_two = false;
+  int frame_ms = 100;  // how long each animation frame shows
   // An animated sheet: per clip, per pitch, a row per direction (`frames`
   // yaws) of the clip's frames. Empty: a turntable.
   std::vector<SheetClip> clips;
@@ -236,6 +242,11 @@ struct OutlineParams {
   bool any() const { return enabled && width > 0.0f && (hull || wireframe || edges); }
 };
 
+// `output: "svg"`'s own choices (render/vector/line_drawing.h).
+struct SvgParams {
+  bool hidden = false;  // a dashed `hidden` layer with the lines' hidden parts
+};
+
 struct TwoToneParams {
   bool enabled = false;
   float threshold = 0.25f;
@@ -297,6 +308,7 @@ struct RenderParams {
   std::optional<SheetParams> sheet;          // unset: one image
   std::optional<AnimationParams> animation;  // unset: the rest pose
   Output output = Output::Color;
+  SvgParams svg;
 };
 
 }  // namespace toond::render

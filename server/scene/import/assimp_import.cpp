@@ -7,11 +7,11 @@
 #include <map>
 
 #include "bundle_paths/model_formats.h"
+#include "helpers/launch/helper_program.h"
+#include "scene/gltf/gltf_container.h"
+#include "scene/gltf/gltf_import.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/gltf_container.h"
-#include "scene/import/gltf_import.h"
-#include "scene/import/helper_program.h"
-#include "scene/import/import_error.h"
+#include "scene/reading/import_error.h"
 
 namespace toond::scene {
 namespace {

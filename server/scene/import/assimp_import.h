@@ -1,7 +1,7 @@
 #pragma once
 // The formats toond reads through assimp (FBX, COLLADA, 3DS, 3MF, OFF and
 // the others below), converted in the helper program toond-assimp-convert
-// (server/assimp_convert/) with limits on time, memory and output, and then
+// (server/helpers/assimp_convert/) with limits on time, memory and output, and then
 // read as any glTF upload is (gltf_import.h, GltfOrigin::Converted): the
 // glTF importer's checks are the answer's validation, and skins, morph
 // targets and clips take the same path as a glTF character's. A crash, a
@@ -13,10 +13,10 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/import/bundle.h"
-#include "scene/import/import_choices.h"
-#include "scene/import/import_limits.h"
 #include "scene/mesh/model.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_choices.h"
+#include "scene/reading/import_limits.h"
 
 namespace toond::scene {
 

@@ -8,11 +8,10 @@
 #include "bundle_paths/bundle_path.h"
 #include "bundle_paths/model_formats.h"
 #include "scene/animation/motion_classes.h"
+#include "scene/gltf/gltf_container.h"
+#include "scene/gltf/gltf_import.h"
 #include "scene/import/assimp_import.h"
 #include "scene/import/clip_merge.h"
-#include "scene/import/gltf_container.h"
-#include "scene/import/gltf_import.h"
-#include "scene/import/import_error.h"
 #include "scene/import/iqm_import.h"
 #include "scene/import/m_import.h"
 #include "scene/import/obj_import.h"
@@ -24,6 +23,7 @@
 #include "scene/mesh/intersection_lines.h"
 #include "scene/mesh/mesh_lod.h"
 #include "scene/mesh/mesh_processing.h"
+#include "scene/reading/import_error.h"
 
 namespace toond::scene {
 namespace {

@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "glb/glb_container.h"
-#include "scene/import/data_uri.h"
-#include "scene/import/gltf_container.h"
-#include "scene/import/gltf_json.h"
-#include "scene/import/import_error.h"
+#include "scene/gltf/data_uri.h"
+#include "scene/gltf/gltf_container.h"
+#include "scene/gltf/gltf_json.h"
+#include "scene/reading/import_error.h"
 
 namespace toond::scene {
 namespace {

@@ -1,5 +1,5 @@
 #pragma once
-#include "scene/import/bundle.h"
+#include "scene/reading/bundle.h"
 
 namespace toond::scene {
 

@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "glb/glb_container.h"
-#include "scene/import/gltf_import.h"
-#include "scene/import/import_error.h"
+#include "scene/gltf/gltf_import.h"
+#include "scene/reading/import_error.h"
 
 namespace toond::scene {
 namespace {

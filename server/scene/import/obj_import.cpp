@@ -15,12 +15,12 @@
 
 #include "bundle_paths/statement_names.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/image_lookup.h"
-#include "scene/import/import_error.h"
-#include "scene/import/mesh_builder.h"
 #include "scene/import/obj_text.h"
 #include "scene/import/skins.h"
-#include "scene/import/texture_decode.h"
+#include "scene/reading/image_lookup.h"
+#include "scene/reading/import_error.h"
+#include "scene/reading/mesh_builder.h"
+#include "scene/reading/texture_decode.h"
 #include "text/trim.h"
 
 namespace toond::scene {

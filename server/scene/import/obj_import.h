@@ -1,10 +1,10 @@
 #pragma once
 #include <string>
 
-#include "scene/import/bundle.h"
-#include "scene/import/import_choices.h"
-#include "scene/import/import_limits.h"
 #include "scene/mesh/model.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_choices.h"
+#include "scene/reading/import_limits.h"
 
 namespace toond::scene {
 

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "scene/import/bundle_import.h"
-#include "scene/import/import_error.h"
-#include "scene/import/mesh_builder.h"
 #include "scene/import/text_numbers.h"
+#include "scene/reading/import_error.h"
+#include "scene/reading/mesh_builder.h"
 #include "text/trim.h"
 
 namespace toond::scene {
@@ -84,7 +84,7 @@ class Failure {
 
 Header read_header(std::string_view bytes, const Failure& fail) {
   const std::size_t end = bytes.find("end_header");
-  if (end == std::string_view::npos || end > kMaxHeaderBytes) {
+  if (end > kMaxHeaderBytes) {  // npos too
     fail(end == std::string_view::npos ? "no end_header: not a PLY file, or cut short in its header"
                                        : "a header over 64 KiB");
   }

@@ -6,10 +6,10 @@
 // 0..1 reals) as the base colour; faces of any corner count (fanned) from
 // vertex_indices or vertex_index. Other elements and properties are skipped
 // and named in the warnings.
-#include "scene/import/bundle.h"
-#include "scene/import/import_choices.h"
-#include "scene/import/import_limits.h"
 #include "scene/mesh/model.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_choices.h"
+#include "scene/reading/import_limits.h"
 
 namespace toond::scene {
 

@@ -8,9 +8,9 @@
 #include "bundle_paths/name_index.h"
 #include "scene/import/assimp_import.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/image_lookup.h"
-#include "scene/import/import_error.h"
-#include "scene/import/texture_decode.h"
+#include "scene/reading/image_lookup.h"
+#include "scene/reading/import_error.h"
+#include "scene/reading/texture_decode.h"
 #include "text/trim.h"
 
 namespace toond::scene {

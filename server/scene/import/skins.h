@@ -8,9 +8,9 @@
 #include <string>
 #include <string_view>
 
-#include "scene/import/bundle.h"
-#include "scene/import/import_choices.h"
-#include "scene/import/import_limits.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_choices.h"
+#include "scene/reading/import_limits.h"
 #include "scene/mesh/model.h"
 
 namespace toond::scene {

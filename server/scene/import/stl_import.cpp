@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "scene/import/bundle_import.h"
-#include "scene/import/import_error.h"
-#include "scene/import/mesh_builder.h"
 #include "scene/import/text_numbers.h"
+#include "scene/reading/import_error.h"
+#include "scene/reading/mesh_builder.h"
 #include "text/trim.h"
 
 namespace toond::scene {

@@ -5,10 +5,10 @@
 // normal is ignored (exporters write zeros, or the winding's normal), so
 // the mesh is shaded by angle (scene/mesh/normals_by_angle.h). Corners at the
 // same coordinates become one position, so the triangles share edges.
-#include "scene/import/bundle.h"
-#include "scene/import/import_choices.h"
-#include "scene/import/import_limits.h"
 #include "scene/mesh/model.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_choices.h"
+#include "scene/reading/import_limits.h"
 
 namespace toond::scene {
 

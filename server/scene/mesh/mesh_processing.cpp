@@ -177,111 +177,150 @@ std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positi
   return compute_outline_normals(positions, indices, shading_normals, group_by_position(positions));
 }
 
-std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positions,
-                                               std::span<const std::uint32_t> indices,
-                                               std::span<const glm::vec3> shading_normals,
-                                               std::span<const std::uint32_t> groups) {
-  const std::size_t group_count = groups.empty() ? 0 : *std::max_element(groups.begin(), groups.end()) + 1u;
+namespace {
 
-  // Every direction a vertex's hull must move away from: its faces' normals
-  // and, on an open rim (a leg without a sole, a flat eye decal), the
-  // outward direction in the face's plane across the boundary edge, as if a
-  // cap closed the hole. Without the rim term an open mesh gets no outline
-  // past its boundary. The pushes are visited twice (once to sum them, once
-  // for the mitre against their sum) rather than stored per position: a
-  // list per position cost an allocation each, and more than the rest.
-  EdgeTable edge_use(indices.size());
-  auto edge_key = [&](std::uint32_t a, std::uint32_t b) { return EdgeTable::key(groups[a], groups[b]); };
+// How many triangles use each edge between position groups.
+EdgeTable edge_uses(std::span<const std::uint32_t> indices, std::span<const std::uint32_t> groups) {
+  EdgeTable uses(indices.size());
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    for (int k = 0; k < 3; ++k) {
-      ++edge_use[edge_key(indices[t + static_cast<std::size_t>(k)],
-                          indices[t + static_cast<std::size_t>((k + 1) % 3)])];
+    for (std::size_t k = 0; k < 3; ++k) {
+      ++uses[EdgeTable::key(groups[indices[t + k]], groups[indices[t + (k + 1) % 3]])];
     }
   }
-  // Every triangle with an area, its normal and corner angles found once:
-  // the pushes are visited twice and the face directions once, and the
-  // angles' arc tangents were most of the time.
-  const std::vector<ShadedTriangle> shaded = shaded_triangles(positions, indices);
-  // A few distinct face directions per position, to tell a real rim from
-  // an edge that only looks open: at a T-junction (one face splits an edge
-  // its neighbour does not) the edge is used once, but the neighbour's face
-  // already pushes the way the rim would. Counting both tilted a corner's
-  // offset off its faces and its mitre out to three widths. Each is kept as
-  // the triangle whose normal it is.
-  constexpr std::size_t kDirectionsKept = 8;
-  std::vector<std::uint32_t> face_directions(group_count * kDirectionsKept);
-  std::vector<std::uint8_t> directions_known(group_count, 0);
-  const auto directions_of = [&](std::uint32_t group) {
-    return std::span(&face_directions[group * kDirectionsKept], directions_known[group]);
-  };
-  for (std::uint32_t s = 0; s < shaded.size(); ++s) {
-    const glm::dvec3& n = shaded[s].normal;
-    for (const std::uint32_t corner : shaded[s].corner) {
-      const std::uint32_t g = groups[corner];
-      const auto dirs = directions_of(g);
-      const bool known =
-          std::any_of(dirs.begin(), dirs.end(), [&](std::uint32_t d) { return glm::dot(shaded[d].normal, n) > 0.999; });
-      if (!known && directions_known[g] < kDirectionsKept)
-        face_directions[g * kDirectionsKept + directions_known[g]++] = s;
+  return uses;
+}
+
+// A few distinct face directions per position group, to tell a real rim
+// from an edge that only looks open: at a T-junction (one face splits an
+// edge its neighbour does not) the edge is used once, but the neighbour's
+// face already pushes the way the rim would. Counting both tilted a
+// corner's offset off its faces and its mitre out to three widths. Each is
+// kept as the triangle whose normal it is.
+class FaceDirections {
+ public:
+  FaceDirections(std::span<const ShadedTriangle> shaded, std::span<const std::uint32_t> groups, std::size_t group_count)
+      : shaded_(shaded), kept_(group_count * kKept), known_(group_count, 0) {
+    for (std::uint32_t s = 0; s < shaded.size(); ++s) {
+      for (const std::uint32_t corner : shaded[s].corner) add(groups[corner], s);
     }
   }
-  auto faces_push_that_way = [&](std::uint32_t group, const glm::dvec3& direction) {
-    const auto dirs = directions_of(group);
+
+  // Whether a face of `group` already pushes roughly along `direction`.
+  bool push_that_way(std::uint32_t group, const glm::dvec3& direction) const {
+    const auto dirs = of(group);
     return std::any_of(dirs.begin(), dirs.end(),
-                       [&](std::uint32_t d) { return glm::dot(shaded[d].normal, direction) > 0.7; });
-  };
-  // The pushes across open rims, found once for both visits.
-  struct RimPush {
-    std::uint32_t group;
-    glm::dvec3 outward;
-  };
-  std::vector<RimPush> rim_pushes;
+                       [&](std::uint32_t d) { return glm::dot(shaded_[d].normal, direction) > 0.7; });
+  }
+
+ private:
+  static constexpr std::size_t kKept = 8;
+
+  std::span<const std::uint32_t> of(std::uint32_t group) const {
+    return std::span(&kept_[group * kKept], known_[group]);
+  }
+
+  void add(std::uint32_t group, std::uint32_t triangle) {
+    const glm::dvec3& n = shaded_[triangle].normal;
+    const auto dirs = of(group);
+    const bool known =
+        std::any_of(dirs.begin(), dirs.end(), [&](std::uint32_t d) { return glm::dot(shaded_[d].normal, n) > 0.999; });
+    if (!known && known_[group] < kKept) kept_[group * kKept + known_[group]++] = triangle;
+  }
+
+  std::span<const ShadedTriangle> shaded_;
+  std::vector<std::uint32_t> kept_;
+  std::vector<std::uint8_t> known_;
+};
+
+struct RimPush {
+  std::uint32_t group;
+  glm::dvec3 outward;
+};
+
+// On an open rim (a leg without a sole, a flat eye decal) the hull must also
+// move outward in the face's plane across the boundary edge, as if a cap
+// closed the hole; without it an open mesh gets no outline past its
+// boundary. Edges that only look open (FaceDirections) push nothing more.
+std::vector<RimPush> rim_pushes(std::span<const glm::vec3> positions, std::span<const ShadedTriangle> shaded,
+                                std::span<const std::uint32_t> groups, const EdgeTable& edge_use,
+                                const FaceDirections& directions) {
+  std::vector<RimPush> pushes;
   for (const ShadedTriangle& tri : shaded) {
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = tri.corner[k], b = tri.corner[(k + 1) % 3];
-      if (edge_use.get(edge_key(a, b)) != 1) continue;
+      if (edge_use.get(EdgeTable::key(groups[a], groups[b])) != 1) continue;
       // In the face's plane, perpendicular to the edge, away from the
       // triangle (counter-clockwise winding puts the interior on the left).
       const glm::dvec3 outward =
           glm::normalize(glm::cross(glm::dvec3(positions[b]) - glm::dvec3(positions[a]), tri.normal));
       for (const std::uint32_t g : {groups[a], groups[b]}) {
-        if (!faces_push_that_way(g, outward)) rim_pushes.push_back({g, outward});
+        if (!directions.push_that_way(g, outward)) pushes.push_back({g, outward});
       }
     }
   }
-  // Calls push(group, direction, weight) for every push of every position.
-  auto for_each_push = [&](auto&& push) {
-    for (const ShadedTriangle& tri : shaded) {
-      for (int k = 0; k < 3; ++k) push(groups[tri.corner[k]], tri.normal, tri.angles[k]);
-    }
-    const double quarter_turn = std::acos(0.0);
-    for (const RimPush& rim : rim_pushes) push(rim.group, rim.outward, quarter_turn);
-  };
+  return pushes;
+}
 
+// Calls push(group, direction, weight) for every direction a position's
+// hull must move away from: its faces' normals (by corner angle) and its
+// rim pushes (a quarter turn each). Visited twice (once to sum, once for
+// the mitre against the sum) rather than stored per position: a list per
+// position cost an allocation each, and more than the rest.
+template <class Push>
+void for_each_push(std::span<const ShadedTriangle> shaded, std::span<const std::uint32_t> groups,
+                   std::span<const RimPush> rims, Push&& push) {
+  for (const ShadedTriangle& tri : shaded) {
+    for (int k = 0; k < 3; ++k) push(groups[tri.corner[k]], tri.normal, tri.angles[k]);
+  }
+  const double quarter_turn = std::acos(0.0);
+  for (const RimPush& rim : rims) push(rim.group, rim.outward, quarter_turn);
+}
+
+// Each group's offset: the unit sum of its pushes, mitred. At a hard corner
+// the averaged normal leans away from each face (a cube corner's diagonal
+// meets every face at 54.7°), so one unit along it moves each face plane
+// by only cos(angle) and the outline comes out thin along edges. Lengthen
+// it by 1/min cos, so every face plane moves out one full unit. A face
+// turned away (a fold, a two-sided sheet) has no mitre that would help;
+// knife edges would need an unbounded one, so past kMaxMitre the corner is
+// bevelled instead. Zero where the faces cancel.
+std::vector<glm::dvec3> mitred_group_offsets(std::span<const ShadedTriangle> shaded,
+                                             std::span<const std::uint32_t> groups, std::span<const RimPush> rims,
+                                             std::size_t group_count) {
   std::vector<glm::dvec3> sums(group_count, glm::dvec3(0.0));
-  for_each_push([&](std::uint32_t g, const glm::dvec3& direction, double weight) { sums[g] += direction * weight; });
+  for_each_push(shaded, groups, rims,
+                [&](std::uint32_t g, const glm::dvec3& direction, double weight) { sums[g] += direction * weight; });
   std::vector<glm::dvec3> units(group_count, glm::dvec3(0.0));
   for (std::size_t g = 0; g < group_count; ++g) {
     const double length = glm::length(sums[g]);
-    if (length > 1e-12) units[g] = sums[g] / length;  // else faces cancel: fall back below
+    if (length > 1e-12) units[g] = sums[g] / length;
   }
-  // Mitre: at a hard corner the averaged normal leans away from each face
-  // (a cube corner's diagonal meets every face at 54.7°), so one unit
-  // along it moves each face plane by only cos(angle) and the outline
-  // comes out thin along edges. Lengthen it by 1/min cos, so every face
-  // plane moves out one full unit. A face turned away (a fold, a
-  // two-sided sheet) has no mitre that would help; knife edges would need
-  // an unbounded one, so past kMaxMitre the corner is bevelled instead.
   std::vector<double> min_cos(group_count, 1.0);
-  for_each_push([&](std::uint32_t g, const glm::dvec3& direction, double) {
+  for_each_push(shaded, groups, rims, [&](std::uint32_t g, const glm::dvec3& direction, double) {
     min_cos[g] = std::min(min_cos[g], glm::dot(units[g], direction));
   });
-  std::vector<glm::dvec3> group_offset(group_count, glm::dvec3(0.0));
+  std::vector<glm::dvec3> offsets(group_count, glm::dvec3(0.0));
   for (std::size_t g = 0; g < group_count; ++g) {
     const double mitre = min_cos[g] <= 0.0 ? 1.0 : 1.0 / std::max(min_cos[g], 1.0 / kMaxMitre);
-    group_offset[g] = units[g] * mitre;
+    offsets[g] = units[g] * mitre;
   }
+  return offsets;
+}
 
+}  // namespace
+
+std::vector<glm::vec3> compute_outline_normals(std::span<const glm::vec3> positions,
+                                               std::span<const std::uint32_t> indices,
+                                               std::span<const glm::vec3> shading_normals,
+                                               std::span<const std::uint32_t> groups) {
+  const std::size_t group_count = groups.empty() ? 0 : *std::max_element(groups.begin(), groups.end()) + 1u;
+  // Every triangle with an area, its normal and corner angles found once:
+  // the pushes are visited twice and the face directions once, and the
+  // angles' arc tangents were most of the time.
+  const std::vector<ShadedTriangle> shaded = shaded_triangles(positions, indices);
+  const FaceDirections directions(shaded, groups, group_count);
+  const std::vector<RimPush> rims = rim_pushes(positions, shaded, groups, edge_uses(indices, groups), directions);
+  const std::vector<glm::dvec3> group_offset = mitred_group_offsets(shaded, groups, rims, group_count);
   std::vector<glm::vec3> offsets(positions.size());
   for (std::size_t v = 0; v < positions.size(); ++v) {
     glm::vec3 o(group_offset[groups[v]]);

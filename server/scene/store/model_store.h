@@ -6,32 +6,45 @@
 // leaves by being renamed out of place first, so no reader ever finds half
 // of one.
 //
+// The store's index (scene/store/store_catalog.h) knows every model's size
+// and last use, so that landing an upload, letting models go and counting
+// the store cost O(log n) in the number of models, never a walk of the
+// store. It is shared by every replica on the volume, and changed in one
+// pass at a time across them.
+//
 // Bounded (StoreOptions::max_bytes), the store lets the least recently used
-// models go (last upload or render, scene/store/model_use.h) to make room for a
-// new one, but never a model a render holds: this process's own pins (from
-// a request's lookup to its answer), and every replica's leases on the
-// shared volume (while its render is queued or drawing). Each replica may evict; the
-// check and the rename are not one atomic step across replicas, so a render
-// that takes a model in the very instant another replica lets it go finds
-// it gone (404), as if it had come a moment later; a render that already
-// took it draws from memory and is not disturbed.
+// models go (last upload or render, scene/store/model_use.h) to make room for
+// a new one, in the pass that renames the new one in: the store never holds
+// more than its bound, and lets go no more than it needs. It never lets go
+// a model a render holds: this process's own pins (from a request's lookup
+// to its answer), and every replica's leases on the shared volume (while
+// its render is queued or drawing). A render that takes a model in the
+// very instant another replica lets it go finds it gone (404), as if it had
+// come a moment later; a render that already took it draws from memory and
+// is not disturbed.
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <ctime>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "scene/import/bundle.h"
-#include "scene/import/import_choices.h"
-#include "scene/import/import_limits.h"
+#include "scene/reading/bundle.h"
+#include "scene/reading/import_choices.h"
+#include "scene/reading/import_limits.h"
+#include "scene/store/folder_sweeper.h"
+#include "scene/store/store_catalog.h"
 #include "scene/store/store_error.h"
+#include "scene/store/store_journal.h"
 #include "scene/store/store_scan.h"
 
 namespace toond::scene {
@@ -99,6 +112,11 @@ struct ModelInfo {
 // made (the same files with another glTF scene are another model).
 std::string bundle_id(const Bundle& bundle, const ImportChoices& choices = {});
 
+struct Model;
+
+// `model`'s materials as ModelInfo lists them.
+std::vector<ModelInfo::MaterialEntry> material_entries(const Model& model);
+
 struct StoreOptions {
   // Bytes of stored models (their files and info.json) kept at most; 0: no
   // bound, nothing is ever let go.
@@ -106,14 +124,29 @@ struct StoreOptions {
   // A render's lease older than this is taken for a process that died
   // holding it (scene/store/model_use.h): longer than any request holds a model.
   std::chrono::seconds lease_expiry{600};
+  // How long a change waits for the store's lock, which another replica
+  // holds for a pass of a few file operations, before it gives up
+  // (StoreError::Kind::Busy): a replica hung while it holds the lock stops
+  // others' uploads for this long each, not for ever.
+  std::chrono::milliseconds lock_wait{30000};
+  // Where the store tells the operator what it did on its own (an index
+  // rebuilt); standard error, as "toond: …", when empty.
+  std::function<void(const std::string&)> log;
+  // Called at named moments of a pass, for tests that stop a replica there:
+  // "intended" (the index knows what is about to come and go), "evicting"
+  // (after each model renamed out), "renamed" (the new model in place, the
+  // index not yet told).
+  std::function<void(std::string_view moment)> checkpoint;
 };
 
 class ModelStore {
  public:
-  // Opens (creating when needed) DIR/models. Leftover temporary folders from
-  // an interrupted upload or delete are removed once they are older than
-  // kStaleTempAge: replicas share the data directory, so a fresh one may be
-  // another process's upload in flight.
+  // Opens (creating when needed) DIR/models and its index (DIR/models.index,
+  // read when intact, rebuilt with a log line when missing or damaged).
+  // Leftover temporary folders from an interrupted upload or delete are
+  // removed once they are older than kStaleTempAge: replicas share the data
+  // directory, so a fresh one may be another process's upload in flight.
+  // Throws StoreError when the index cannot be read or made.
   explicit ModelStore(std::filesystem::path data_dir, StoreOptions options = {});
   static constexpr std::chrono::minutes kStaleTempAge{60};
 
@@ -128,7 +161,8 @@ class ModelStore {
   // ImportLimitError beyond `limits`), then stores it with `choices`,
   // first letting go what the bound needs. Throws StoreError when it cannot
   // be kept (a full volume, a bound held by renders, a model larger than
-  // the bound); nothing of it is left then. Storing it again is a use.
+  // the bound, the store locked by a hung replica); nothing of it is left
+  // then. Storing it again is a use.
   // Thread-safe.
   PutResult put(const Bundle& bundle, const ImportLimits& limits = {}, const ImportChoices& choices = {});
 
@@ -153,7 +187,8 @@ class ModelStore {
   void lease(const std::string& id);
   void unlease(const std::string& id);
 
-  // Models and bytes in the store (every replica's, on a shared volume).
+  // Models and bytes in the store (every replica's, on a shared volume), as
+  // its index has them.
   StoreUsage usage() const;
   // Models this process let go for the bound since it started.
   std::uint64_t evictions() const { return evictions_; }
@@ -167,46 +202,43 @@ class ModelStore {
   std::optional<Volume> volume() const;
 
  private:
-  // What make_room() did: the models it let go, or that it let none go
-  // because renders hold too much for `incoming` bytes to fit.
-  struct Room {
+  // The models a pass lets go to make room: intents for the index, least
+  // recently used first; or a refusal, when renders hold too much.
+  struct Choice {
     bool refused = false;
-    std::vector<std::string> evicted;
+    std::vector<JournalRecord> models;
   };
-  enum class Letting { Evicted, Gone, Held };
 
-  // Lets the least recently used models go, sparing `spare`, until
-  // `incoming` more bytes (and the uploads this process is writing) fit
-  // under the bound. `refuse_when_held`: lets none go when the models
-  // renders hold leave too little room for `incoming` anyway. Called with
-  // evict_mutex_ held.
-  Room make_room(std::uint64_t incoming, const std::string& spare, bool refuse_when_held);
+  // Renames the written model (its temporary folder) into place in one
+  // pass, with the evictions the bound needs first.
+  PutResult land(const std::filesystem::path& temp, ModelInfo info, std::uint64_t bytes);
+  // The least recently used models no render holds, as many as `incoming`
+  // more bytes need to fit under the bound; their last uses checked on the
+  // volume first (renders stamp their models' folders, not the index).
+  Choice choose(StoreCatalog::Pass& pass, std::uint64_t incoming);
+  // Renames the chosen models out, unless a render took one meanwhile;
+  // appends their folders (to delete once the pass is over) and ids.
+  void let_go(StoreCatalog::Pass& pass, const Choice& choice, std::vector<std::filesystem::path>& doomed,
+              std::vector<std::string>& evicted);
   // Whether a render holds the model: a pin here, a lease anywhere. Called
   // with pins_mutex_ held.
   bool held(const std::string& id) const;
-  // One model out, unless a render holds it.
-  Letting evict(const std::string& id);
-  // Renames the model out of place (durably); the folder to delete then,
-  // or nothing when the model is not there.
+  // Renames the model out of place; the folder to delete then, or nothing
+  // when the model is not there. Durable once the pass settles.
   std::optional<std::filesystem::path> take_out(const std::string& id);
-  // Writes the model's folder and renames it into place; false when another
-  // upload of the same bundle got there first.
-  bool write_model(const std::string& id, const Bundle& bundle, const std::string& info_text);
+  // Writes the model's folder under a temporary name; its path.
+  std::filesystem::path write_temp(const std::string& id, const Bundle& bundle, const std::string& info_text);
+  void checkpoint(std::string_view moment) const;
 
   std::filesystem::path root_;
   StoreOptions options_;
-  std::string holder_;  // this process's name in the lease folders
-  mutable std::mutex mutex_;
-  // One eviction pass at a time; with it, the uploads this process is
-  // writing now (id → how many, and the bytes of one), counted until a
-  // scan finds them in place.
-  std::mutex evict_mutex_;
-  std::unordered_map<std::string, std::pair<int, std::uint64_t>> reserved_;
+  std::string holder_;            // this process's name in the lease folders
+  mutable StoreCatalog catalog_;  // usage() reads other replicas' changes
   std::mutex pins_mutex_;
   std::unordered_map<std::string, int> pins_;
   std::unordered_map<std::string, int> leases_;
-  mutable ModelSizes sizes_;
   std::atomic<std::uint64_t> evictions_{0};
+  FolderSweeper sweeper_;  // last: its thread deletes before the rest goes
 };
 
 }  // namespace toond::scene

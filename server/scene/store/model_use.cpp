@@ -16,9 +16,10 @@ std::timespec wall_clock_now() {
   return now;
 }
 
-void stamp_use(const fs::path& model_dir) {
-  const std::timespec now = wall_clock_now();
-  const std::timespec times[2] = {now, now};
+void stamp_use(const fs::path& model_dir) { stamp_use(model_dir, wall_clock_now()); }
+
+void stamp_use(const fs::path& model_dir, const std::timespec& when) {
+  const std::timespec times[2] = {when, when};
   // Setting a given time needs the folder's owner; a replica running as
   // another user may still set "now" as the file system's clock has it.
   if (::utimensat(AT_FDCWD, model_dir.c_str(), times, 0) != 0 && errno == EPERM) {

@@ -25,6 +25,8 @@ std::timespec wall_clock_now();
 // Sets the folder's modification time to now (this process's wall clock,
 // to the nanosecond, so that two uses in a row keep their order).
 void stamp_use(const std::filesystem::path& model_dir);
+// The same, with a given time (the one the store's index records).
+void stamp_use(const std::filesystem::path& model_dir, const std::timespec& when);
 
 // Creates (or renews) `model_dir/in-use/<holder>`. Best effort: where the
 // file cannot be made (a full disk) the render goes on, protected only by

@@ -1,14 +1,14 @@
 #pragma once
-// What the model store holds, model by model: its size and its last use,
-// read from the shared data directory, so that every replica counts the
-// models every other one stored. The order eviction takes them in.
+// What the model store holds as the volume shows it, model by model: its
+// size and its last use. The store's index (scene/store/store_index.h) is
+// built from a walk of the whole store only when it is missing or damaged;
+// everything else asks about one model at a time.
 #include <cstdint>
 #include <ctime>
 #include <filesystem>
-#include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 namespace toond::scene {
@@ -23,28 +23,21 @@ struct StoredModel {
   std::timespec last_use{};  // its folder's modification time (scene/store/model_use.h)
 };
 
-// Least recently used first; models used in the same nanosecond by id.
-void sort_least_recently_used(std::vector<StoredModel>& models);
+// The bytes of every file under a model's folder; nothing when the folder
+// went away while it was counted.
+std::optional<std::uint64_t> model_bytes(const std::filesystem::path& model_dir);
 
-// Sizes of stored models, measured once per id: a model's files never
-// change under its id, which is a hash of them. Thread-safe.
-class ModelSizes {
- public:
-  // Every model under `root` (folders named as ids), least recently used
-  // first; models gone meanwhile are left out and their sizes forgotten.
-  std::vector<StoredModel> scan(const std::filesystem::path& root);
-  void forget(const std::string& id);
+// The model's last use; nothing when its folder is not there.
+std::optional<std::timespec> last_use(const std::filesystem::path& model_dir);
 
- private:
-  std::mutex mutex_;
-  std::unordered_map<std::string, std::uint64_t> bytes_;
-};
+// Every model under `root` (folders named as ids), in no order; models
+// gone meanwhile are left out.
+std::vector<StoredModel> walk_store(const std::filesystem::path& root);
 
-// What scan() found, added up.
+// Models and bytes in the store.
 struct StoreUsage {
   std::size_t models = 0;
   std::uint64_t bytes = 0;
 };
-StoreUsage add_up(const std::vector<StoredModel>& models);
 
 }  // namespace toond::scene

@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""check_layers.py on small repositories made for the purpose: each holds
+one include the table forbids, or a folder no room holds, and must fail."""
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+CHECK = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'check_layers.py')
+
+
+def repo_with(files):
+    root = tempfile.mkdtemp(prefix='check_layers_')
+    for path, text in files.items():
+        os.makedirs(os.path.dirname(os.path.join(root, path)), exist_ok=True)
+        with open(os.path.join(root, path), 'w', encoding='utf-8') as f:
+            f.write(text)
+    return root
+
+
+def check(files):
+    run = subprocess.run([sys.executable, CHECK, repo_with(files)], capture_output=True, text=True)
+    return run.returncode, run.stdout
+
+
+HEADERS = {'server/render/passes/passes.h': '', 'server/pipeline/pipeline.h': '',
+           'server/scene/mesh/model.h': '', 'common/image/image.h': '', 'client/cli/cli_args.h': ''}
+
+
+class Fences(unittest.TestCase):
+    def test_includes_the_table_allows_pass(self):
+        status, out = check(dict(HEADERS, **{'server/http/routes.cpp': '#include "pipeline/pipeline.h"\n',
+                                             'client/cli/main.cpp': '#include "cli_args.h"\n'
+                                                                    '#include "image/image.h"\n'}))
+        self.assertEqual(status, 0, out)
+
+    def test_http_reaching_a_pass_fails(self):
+        status, out = check(dict(HEADERS, **{'server/http/routes.cpp': '#include "render/passes/passes.h"\n'}))
+        self.assertEqual(status, 1, out)
+        self.assertIn('server/http/routes.cpp:1: includes render/passes/passes.h, of server/render/passes', out)
+
+    def test_the_cli_including_a_daemon_header_fails(self):
+        status, out = check(dict(HEADERS, **{'client/cli/main.cpp': '#include "scene/mesh/model.h"\n'}))
+        self.assertEqual(status, 1, out)
+        self.assertIn('which client/cli may not include', out)
+
+    def test_a_shared_library_including_the_daemon_fails(self):
+        status, out = check(dict(HEADERS, **{'common/image/png.cpp': '#include "scene/mesh/model.h"\n'}))
+        self.assertEqual(status, 1, out)
+
+    def test_a_benchmark_reaching_the_http_layer_fails(self):
+        status, out = check(dict(HEADERS, **{'server/http/routes.h': '',
+                                             'bench/b.cpp': '#include "http/routes.h"\n'}))
+        self.assertEqual(status, 1, out)
+
+    def test_a_folder_in_no_room_fails(self):
+        status, out = check(dict(HEADERS, **{'server/newroom/x.cpp': ''}))
+        self.assertEqual(status, 1, out)
+        self.assertIn('server/newroom/x.cpp: in no room', out)
+
+
+if __name__ == '__main__':
+    unittest.main()
