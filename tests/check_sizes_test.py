@@ -5,8 +5,9 @@ it; the same at the limit must pass."""
 import os
 import subprocess
 import sys
-import tempfile
 import unittest
+
+from made_repo import repo_with
 
 CHECK = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'check_sizes.py')
 
@@ -23,12 +24,7 @@ def uniforms(count):
 
 
 def check(files):
-    root = tempfile.mkdtemp(prefix='check_sizes_')
-    for path, text in files.items():
-        os.makedirs(os.path.dirname(os.path.join(root, path)), exist_ok=True)
-        with open(os.path.join(root, path), 'w', encoding='utf-8') as f:
-            f.write(text)
-    run = subprocess.run([sys.executable, CHECK, root], capture_output=True, text=True)
+    run = subprocess.run([sys.executable, CHECK, repo_with(files)], capture_output=True, text=True)
     return run.returncode, run.stdout + run.stderr
 
 
