@@ -67,8 +67,7 @@ void draw_blended(PassContext& context) {
   for (std::size_t i = 0; i < frame.objects.size(); ++i) {
     const auto& materials = frame.materials[i];
     if (std::none_of(materials.begin(), materials.end(), [](const DrawnMaterial& m) { return m.blended; })) continue;
-    const glm::dvec3 centre(frame.scene.matrices[i] * glm::dvec4(glm::dvec3(frame.objects[i].bounds().centre()), 1.0));
-    order.emplace_back(-glm::dot(centre - frame.camera.eye, glm::dvec3(frame.viewer.forward)), i);
+    order.emplace_back(-frame.view_depths[i], i);
   }
   if (order.empty()) return;
   std::sort(order.begin(), order.end());
