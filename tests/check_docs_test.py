@@ -4,19 +4,11 @@ on what it is there to catch, or a green run of it says nothing."""
 import os
 import subprocess
 import sys
-import tempfile
 import unittest
 
+from made_repo import repo_with
+
 CHECK = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'check_docs.py')
-
-
-def repo_with(files):
-    root = tempfile.mkdtemp(prefix='check_docs_')
-    for path, text in files.items():
-        os.makedirs(os.path.dirname(os.path.join(root, path)), exist_ok=True)
-        with open(os.path.join(root, path), 'w', encoding='utf-8') as f:
-            f.write(text)
-    return root
 
 
 def check(root):

@@ -24,8 +24,11 @@ NAMED_UNIFORM = re.compile(r'\.set\(\s*"(u_\w+)"')
 
 def function_lengths(repo, tree):
     """(lines, path, name) of every function ctags finds under `tree`."""
-    run = subprocess.run(["ctags", "-R", "--languages=C++", "--kinds-C++=f", "--fields=+ne", "-f", "-", tree],
-                         cwd=repo, capture_output=True, text=True, check=True)
+    try:
+        run = subprocess.run(["ctags", "-R", "--languages=C++", "--kinds-C++=f", "--fields=+ne", "-f", "-", tree],
+                             cwd=repo, capture_output=True, text=True, check=True)
+    except (OSError, subprocess.CalledProcessError) as e:
+        sys.exit(f"check_sizes: universal-ctags did not run ({e}); scripts/install-deps.sh installs it")
     found = []
     for line in run.stdout.splitlines():
         fields = line.split("\t")

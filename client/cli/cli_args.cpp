@@ -176,32 +176,44 @@ std::optional<std::string> server_from_environment() {
   return std::string(value);
 }
 
-Options parse_args(const std::vector<std::string>& args, const std::optional<std::string>& env_server) {
-  Options o;
-  FlagTarget target{o, std::nullopt};
+namespace {
+
+// The command line's words sorted: the verb and flags go into the options
+// (flags through their rows), the rest are the verb's arguments.
+struct ReadLine {
   std::vector<std::string> positionals;
   std::vector<const Flag*> seen;  // to check against the verb once it is known
+  std::optional<std::string> server;
   bool verb_seen = false;
   bool help_verb = false;  // `toon help render`
-  bool options_ended = false;
+};
 
+// A word that is not a flag: the verb (or `help VERB`'s), else an argument.
+void take_word(const std::string& word, Options& o, ReadLine& line) {
+  if (!line.verb_seen) {
+    line.verb_seen = true;
+    if (word == "help") {
+      line.help_verb = true;
+      o.help = true;
+    } else {
+      o.verb = verb_from_name(word);
+    }
+  } else if (line.help_verb && o.verb == Verb::none) {
+    o.verb = verb_from_name(word);
+  } else {
+    line.positionals.push_back(word);
+  }
+}
+
+ReadLine read_line(const std::vector<std::string>& args, Options& o) {
+  ReadLine line;
+  FlagTarget target{o, std::nullopt};
+  bool options_ended = false;
   for (ArgCursor c(args); !c.done(); c.next()) {
     const std::string& a = c.current();
     const bool looks_like_flag = !options_ended && a.size() > 1 && a[0] == '-';
     if (!looks_like_flag) {
-      if (!verb_seen) {
-        verb_seen = true;
-        if (a == "help") {
-          help_verb = true;
-          o.help = true;
-        } else {
-          o.verb = verb_from_name(a);
-        }
-      } else if (help_verb && o.verb == Verb::none) {
-        o.verb = verb_from_name(a);
-      } else {
-        positionals.push_back(a);
-      }
+      take_word(a, o, line);
       continue;
     }
     if (a == "--") {
@@ -212,34 +224,34 @@ Options parse_args(const std::vector<std::string>& args, const std::optional<std
     const Flag* flag = take_flag(c, value);
     if (!flag) throw UsageError("unknown option '" + a + "' (see toon --help)");
     const bool again =
-        std::any_of(seen.begin(), seen.end(), [&](const Flag* f) { return f->help.name == flag->help.name; });
+        std::any_of(line.seen.begin(), line.seen.end(), [&](const Flag* f) { return f->help.name == flag->help.name; });
     if (again && !flag->repeatable) throw UsageError(flag_display(flag->help) + " given twice");
     flag->apply(target, value);
-    seen.push_back(flag);
+    line.seen.push_back(flag);
   }
+  line.server = target.server;
+  return line;
+}
 
-  // Help and version answer without a server, so a bad URL must not stop them.
-  if (o.help || o.version) return o;
+// --server, else TOOND_URL, else the default; checked, trailing '/' dropped.
+std::string server_of(const std::optional<std::string>& flag, const std::optional<std::string>& env_server) {
+  std::string server = flag ? *flag : env_server && !env_server->empty() ? *env_server : std::string(kDefaultServer);
+  parse_server_url(server);
+  while (server.size() > 1 && server.back() == '/') server.pop_back();
+  return server;
+}
 
-  if (target.server) {
-    o.server = *target.server;
-  } else if (env_server && !env_server->empty()) {
-    o.server = *env_server;
-  } else {
-    o.server = std::string(kDefaultServer);
-  }
-  parse_server_url(o.server);
-  while (o.server.size() > 1 && o.server.back() == '/') o.server.pop_back();
-
-  if (o.verb == Verb::none) throw UsageError("no command given (" + verb_names(" or ") + ")");
-
-  const std::string verb(verb_name(o.verb));
+void check_flags_fit(const std::vector<const Flag*>& seen, Verb verb) {
+  const std::string name(verb_name(verb));
   for (const Flag* flag : seen) {
-    if (!flag_allowed(flag->help.name, o.verb)) {
-      throw UsageError(verb + " does not take " + flag_display(flag->help) + " (see toon " + verb + " --help)");
+    if (!flag_allowed(flag->help.name, verb)) {
+      throw UsageError(name + " does not take " + flag_display(flag->help) + " (see toon " + name + " --help)");
     }
   }
+}
 
+// The verb's arguments into the options, and what the verb cannot do without.
+void take_positionals(Options& o, const std::vector<std::string>& positionals) {
   switch (o.verb) {
     case Verb::health:
       if (!positionals.empty()) {
@@ -281,6 +293,19 @@ Options parse_args(const std::vector<std::string>& args, const std::optional<std
     case Verb::none:
       break;
   }
+}
+
+}  // namespace
+
+Options parse_args(const std::vector<std::string>& args, const std::optional<std::string>& env_server) {
+  Options o;
+  const ReadLine line = read_line(args, o);
+  // Help and version answer without a server, so a bad URL must not stop them.
+  if (o.help || o.version) return o;
+  o.server = server_of(line.server, env_server);
+  if (o.verb == Verb::none) throw UsageError("no command given (" + verb_names(" or ") + ")");
+  check_flags_fit(line.seen, o.verb);
+  take_positionals(o, line.positionals);
   return o;
 }
 

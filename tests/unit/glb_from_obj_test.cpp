@@ -138,6 +138,72 @@ TEST(GlbFromObj, TheDaemonReadsTheSameTrianglesAndMaterialsAsFromTheObj) {
   EXPECT_TRUE(scene::import_gltf_bundle(matte_bundle, "model.glb").materials[0].matte);
 }
 
+// Per triangle (by its first corner's x), what its material says as the
+// daemon reads it: colour, textured, highlight, opacity and alpha mode.
+using Drawn = std::tuple<std::array<double, 3>, bool, bool, double, int>;
+
+std::map<double, Drawn> drawn_materials(const scene::Model& model) {
+  const scene::Mesh& mesh = model.mesh;
+  std::map<double, Drawn> out;
+  for (const scene::Submesh& s : mesh.submeshes) {
+    const scene::Material& m = model.materials[static_cast<std::size_t>(s.material)];
+    const auto rounded = [](double v) { return std::round(v * 1e6) / 1e6; };
+    for (std::uint32_t i = s.first_index; i < s.first_index + s.index_count; i += 3) {
+      double x = 1e9;
+      for (std::uint32_t c = 0; c < 3; ++c)
+        x = std::min(x, (mesh.origin + glm::dvec3(mesh.positions[mesh.indices[i + c]])).x);
+      out[rounded(x)] = {{rounded(m.diffuse.r), rounded(m.diffuse.g), rounded(m.diffuse.b)},
+                         m.diffuse_texture >= 0,
+                         m.matte,
+                         rounded(m.opacity),
+                         static_cast<int>(m.alpha_mode)};
+    }
+  }
+  return out;
+}
+
+// An OBJ whose MTL the old converter read its own way: a library name with
+// a blank, a usemtl name with blanks, Kd out of range, illum 1, d and Tr, a
+// map_Kd with options. Each triangle starts at its own x.
+TEST(GlbFromObj, EachMaterialDrawsAsTheDaemonDrawsTheObjs) {
+  std::string obj = "mtllib my mats.mtl\n";
+  const std::vector<std::string> names = {"two words", "bright", "chalk", "glass", "veil", "painted", ""};
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string x = std::to_string(2 * i);
+    obj += "v " + x + " 0 0\nv " + x + ".5 0 0\nv " + x + " 1 0\n";
+  }
+  obj += "vt 0 0\nvt 1 0\nvt 0 1\n";
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string v = std::to_string(3 * i + 1);
+    obj += (names[i].empty() ? "" : "usemtl " + names[i] + "\n") + "f " + v + "/1 " + std::to_string(3 * i + 2) +
+           "/2 " + std::to_string(3 * i + 3) + "/3\n";
+  }
+  // The last triangle follows `usemtl painted`: give it none of its own.
+  obj.insert(obj.rfind("f "), "usemtl missing\n");
+  const std::string mtl =
+      "newmtl two words\nKd 0 0 1\nnewmtl bright\nKd 2 0.5 -1\nKs 1 1 1\nnewmtl chalk\nillum 1\n"
+      "newmtl glass\nd 0.25\nnewmtl veil\nTr 0.75\nKd 0.2 0.4 0.6\nnewmtl painted\nmap_Kd -s 1 1 1 tex/C.PNG\n";
+  const BundleScan scan{
+      {{"model.obj", "model.obj", obj}, {"my mats.mtl", "my mats.mtl", mtl}, {"tex/c.png", "tex/c.png", tiny_png()}},
+      {}};
+  scene::Bundle glb_bundle;
+  glb_bundle.add("model.glb", glb_from_obj(scan));
+  const scene::Model from_glb = scene::import_gltf_bundle(glb_bundle, "model.glb");
+  const scene::Model from_obj = scene::import_obj_bundle(bundle_of(scan));
+  EXPECT_TRUE(from_glb.warnings.empty()) << from_glb.warnings.front();
+  const std::map<double, Drawn> obj_drawn = drawn_materials(from_obj);
+  ASSERT_EQ(obj_drawn.size(), names.size());
+  EXPECT_EQ(drawn_materials(from_glb), obj_drawn);
+  // The OBJ's own reading, so the agreement is not two defaults alike.
+  EXPECT_EQ(std::get<0>(obj_drawn.at(0.0)), (std::array<double, 3>{0, 0, 1}));
+  EXPECT_EQ(std::get<0>(obj_drawn.at(2.0)), (std::array<double, 3>{1, 0.5, 0}));
+  EXPECT_TRUE(std::get<2>(obj_drawn.at(4.0)));
+  EXPECT_EQ(std::get<3>(obj_drawn.at(6.0)), 0.25);
+  EXPECT_EQ(std::get<3>(obj_drawn.at(8.0)), 0.25);
+  EXPECT_TRUE(std::get<1>(obj_drawn.at(10.0)));
+  EXPECT_EQ(std::get<0>(obj_drawn.at(12.0)), (std::array<double, 3>{0.8, 0.8, 0.8}));
+}
+
 TEST(GlbFromObj, APrimitivePerMaterialAndNormalsOnlyWhereEveryCornerHasOne) {
   const std::string glb = glb_from_obj(scan_of(kObj, kMtl));
   const json doc = json_chunk(glb);

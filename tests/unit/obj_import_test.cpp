@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "model_checks.h"
+#include "obj_text/obj_text.h"
 #include "scene/import/obj_import.h"
-#include "scene/import/obj_text.h"
 #include "scene/mesh/mesh_processing.h"
 #include "scene/reading/import_error.h"
 #include "scene/reading/texture_decode.h"
@@ -19,6 +19,9 @@
 namespace toond::scene {
 namespace {
 
+using obj_text::material_alias;
+using obj_text::ObjTextFindings;
+using obj_text::prepare_obj_text;
 using test_checks::bundle_from_folder;
 using test_checks::expect_import_error;
 using test_checks::expect_well_formed;

@@ -120,6 +120,62 @@ struct WeldKeyHash {
   }
 };
 
+// The mesh source as the primitives add to it.
+struct SourceInProgress {
+  MeshSource source;
+  std::unordered_map<WeldKey, std::uint32_t, WeldKeyHash> welded;
+  std::vector<glm::dvec3> colours;  // per welded position, sRGB-encoded
+  bool any_colour = false;
+  bool colour_alpha = false;
+};
+
+// Where a primitive's normals, texture coordinates and tangents begin in
+// the source's lists; -1 where it has none.
+struct CornerBases {
+  std::int64_t normal = -1;
+  std::int64_t texcoord = -1;
+  std::int64_t tangent = -1;
+};
+
+int attribute_of(const tinygltf::Primitive& primitive, const std::string& key) {
+  const auto it = primitive.attributes.find(key);
+  return it == primitive.attributes.end() ? -1 : it->second;
+}
+
+// A primitive's triangles, as its mode strings its corners together; a
+// mirroring node turns each one over so that it still faces out.
+void add_triangles(MeshSource& source, const tinygltf::Primitive& primitive, const std::vector<std::uint32_t>& corners,
+                   const std::vector<std::uint32_t>& position_of, const CornerBases& bases, bool mirrored) {
+  const auto from = [](std::int64_t base, std::uint32_t pick) { return base < 0 ? -1 : base + pick; };
+  const auto add_triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    SourceTriangle tri;
+    const std::uint32_t picks[3] = {a, mirrored ? c : b, mirrored ? b : c};
+    for (int k = 0; k < 3; ++k) {
+      SourceCorner& corner = tri.corner[k];
+      corner.position = position_of[picks[k]];
+      corner.normal = from(bases.normal, picks[k]);
+      corner.texcoord = from(bases.texcoord, picks[k]);
+      corner.tangent = from(bases.tangent, picks[k]);
+    }
+    tri.material = primitive.material;
+    source.triangles.push_back(tri);
+  };
+  const std::size_t n = corners.size();
+  if (primitive.mode == TINYGLTF_MODE_TRIANGLES) {
+    for (std::size_t i = 0; i + 2 < n; i += 3) add_triangle(corners[i], corners[i + 1], corners[i + 2]);
+  } else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    for (std::size_t i = 0; i + 2 < n; ++i) {
+      if (i % 2 == 0) {
+        add_triangle(corners[i], corners[i + 1], corners[i + 2]);
+      } else {
+        add_triangle(corners[i + 1], corners[i], corners[i + 2]);
+      }
+    }
+  } else {
+    for (std::size_t i = 1; i + 1 < n; ++i) add_triangle(corners[0], corners[i], corners[i + 1]);
+  }
+}
+
 // The bytes tinygltf may read, by the names the importer gave them: the
 // file-system callbacks serve these and nothing else, so no URI in a file
 // can reach the disk or the network.
@@ -561,152 +617,19 @@ class GltfImporter {
     return choice;
   }
 
+  // The drawn primitives in the shared importer's terms: each instance's
+  // primitives placed by its node's matrix, positions welded across them.
   MeshSource make_source(const std::vector<MeshInstance>& instances) {
-    MeshSource source;
-    source.file = path_;
-    std::unordered_map<WeldKey, std::uint32_t, WeldKeyHash> welded;
-    std::vector<glm::dvec3> colours;  // per welded position, sRGB-encoded
-    bool any_colour = false;
-    bool colour_alpha = false;
+    SourceInProgress building;
+    building.source.file = path_;
     std::size_t skipped_modes = 0;
     for (const MeshInstance& instance : instances) {
-      const glm::dmat3 linear(instance.transform);
-      const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
-      const bool mirrored = glm::determinant(linear) < 0.0;
       const tinygltf::Mesh& mesh = gltf_.meshes[static_cast<std::size_t>(instance.mesh)];
       for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-        const tinygltf::Primitive& primitive = mesh.primitives[p];
-        if (!is_triangles(primitive.mode)) {
+        if (is_triangles(mesh.primitives[p].mode)) {
+          add_primitive(building, instance, mesh.primitives[p], primitive_name(instance.mesh, p));
+        } else {
           ++skipped_modes;
-          continue;
-        }
-        const std::string name = primitive_name(instance.mesh, p);
-        const auto attribute = [&](const std::string& key) {
-          const auto it = primitive.attributes.find(key);
-          return it == primitive.attributes.end() ? -1 : it->second;
-        };
-        const std::vector<double> positions = reader_->read(attribute("POSITION"), name + " POSITION", 3);
-        const std::size_t count = positions.size() / 3;
-        const auto check_count = [&](const std::vector<double>& values, int width, const std::string& what) {
-          if (values.size() != count * static_cast<std::size_t>(width)) {
-            fail(name + " has " + std::to_string(values.size() / static_cast<std::size_t>(width)) + " " + what +
-                 " for " + std::to_string(count) + " positions");
-          }
-        };
-        std::vector<double> colours_in;
-        if (attribute("COLOR_0") >= 0) {
-          colours_in = reader_->read(attribute("COLOR_0"), name + " COLOR_0", 4, {3});
-          check_count(colours_in, 4, "colours");
-          any_colour = true;
-        }
-        // How each vertex moves, when anything in the file does.
-        std::vector<std::uint32_t> motions;
-        if (rig_reader_->moves() && instance.node >= 0) {
-          motions = rig_reader_->motions_of(instance.node, primitive, count, name);
-        } else if (rig_reader_->moves()) {
-          fail(name + " is drawn without a node in a file whose nodes move");
-        }
-        // Positions, merged with equal ones (same colour, same motion) seen
-        // before.
-        std::vector<std::uint32_t> position_of(count);
-        for (std::size_t i = 0; i < count; ++i) {
-          const glm::dvec3 p3 = glm::dvec3(
-              instance.transform * glm::dvec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0));
-          glm::dvec3 colour(1.0);
-          if (!colours_in.empty()) {
-            colour = {srgb_encoded(colours_in[4 * i]), srgb_encoded(colours_in[4 * i + 1]),
-                      srgb_encoded(colours_in[4 * i + 2])};
-            colour_alpha = colour_alpha || colours_in[4 * i + 3] < 1.0;
-          }
-          const WeldKey key{{std::bit_cast<std::uint64_t>(p3.x), std::bit_cast<std::uint64_t>(p3.y),
-                             std::bit_cast<std::uint64_t>(p3.z), std::bit_cast<std::uint64_t>(colour.r),
-                             std::bit_cast<std::uint64_t>(colour.g), std::bit_cast<std::uint64_t>(colour.b),
-                             motions.empty() ? 0u : motions[i]}};
-          const auto [it, added] = welded.try_emplace(key, static_cast<std::uint32_t>(source.positions.size()));
-          if (added) {
-            source.positions.push_back(p3);
-            colours.push_back(colour);
-            if (!motions.empty()) source.motions.push_back(motions[i]);
-          }
-          position_of[i] = it->second;
-        }
-        const std::int64_t normal_base = static_cast<std::int64_t>(source.normals.size());
-        if (attribute("NORMAL") >= 0) {
-          const std::vector<double> normals = reader_->read(attribute("NORMAL"), name + " NORMAL", 3);
-          check_count(normals, 3, "normals");
-          for (std::size_t i = 0; i < count; ++i) {
-            source.normals.push_back(normal_matrix *
-                                     glm::dvec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]));
-          }
-        }
-        const bool has_normals = attribute("NORMAL") >= 0;
-        const std::int64_t tangent_base = static_cast<std::int64_t>(source.tangents.size());
-        const bool has_tangents = attribute("TANGENT") >= 0;
-        if (has_tangents) {
-          const std::vector<double> tangents = reader_->read(attribute("TANGENT"), name + " TANGENT", 4);
-          check_count(tangents, 4, "tangents");
-          // A tangent lies in the surface: it turns with the node's matrix
-          // itself, and a mirroring matrix turns the bitangent's hand.
-          const double hand = mirrored ? -1.0 : 1.0;
-          for (std::size_t i = 0; i < count; ++i) {
-            const glm::dvec3 along = linear * glm::dvec3(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2]);
-            source.tangents.emplace_back(along, tangents[4 * i + 3] * hand);
-          }
-        }
-        const TexcoordChoice uv = texcoord_choice(primitive.material);
-        const int texcoord_accessor = attribute("TEXCOORD_" + std::to_string(uv.set));
-        const std::int64_t texcoord_base = static_cast<std::int64_t>(source.texcoords.size());
-        if (texcoord_accessor >= 0) {
-          const std::vector<double> texcoords =
-              reader_->read(texcoord_accessor, name + " TEXCOORD_" + std::to_string(uv.set), 2);
-          check_count(texcoords, 2, "texture coordinates");
-          for (std::size_t i = 0; i < count; ++i) {
-            glm::dvec2 t(texcoords[2 * i], texcoords[2 * i + 1]);
-            if (uv.transform) t = uv.transform->apply(t);
-            // glTF's v runs down the image, the mesh's up (as in OBJ).
-            source.texcoords.emplace_back(t.x, 1.0 - t.y);
-          }
-        }
-        const bool has_texcoords = texcoord_accessor >= 0;
-
-        std::vector<std::uint32_t> corners;
-        if (primitive.indices >= 0) {
-          corners = reader_->read_indices(primitive.indices, name + " indices");
-          for (const std::uint32_t c : corners) {
-            if (c >= count) {
-              fail(name + " has the index " + std::to_string(c) + ", past its " + std::to_string(count) + " vertices");
-            }
-          }
-        } else {
-          corners.resize(count);
-          for (std::size_t i = 0; i < count; ++i) corners[i] = static_cast<std::uint32_t>(i);
-        }
-        const auto add_triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-          SourceTriangle tri;
-          const std::uint32_t picks[3] = {a, mirrored ? c : b, mirrored ? b : c};
-          for (int k = 0; k < 3; ++k) {
-            SourceCorner& corner = tri.corner[k];
-            corner.position = position_of[picks[k]];
-            corner.normal = has_normals ? normal_base + picks[k] : -1;
-            corner.texcoord = has_texcoords ? texcoord_base + picks[k] : -1;
-            corner.tangent = has_tangents ? tangent_base + picks[k] : -1;
-          }
-          tri.material = primitive.material;
-          source.triangles.push_back(tri);
-        };
-        const std::size_t n = corners.size();
-        if (primitive.mode == TINYGLTF_MODE_TRIANGLES) {
-          for (std::size_t i = 0; i + 2 < n; i += 3) add_triangle(corners[i], corners[i + 1], corners[i + 2]);
-        } else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
-          for (std::size_t i = 0; i + 2 < n; ++i) {
-            if (i % 2 == 0) {
-              add_triangle(corners[i], corners[i + 1], corners[i + 2]);
-            } else {
-              add_triangle(corners[i + 1], corners[i], corners[i + 2]);
-            }
-          }
-        } else {
-          for (std::size_t i = 1; i + 1 < n; ++i) add_triangle(corners[0], corners[i], corners[i + 1]);
         }
       }
     }
@@ -714,9 +637,147 @@ class GltfImporter {
       warnings_.add(path_ + ": " + std::to_string(skipped_modes) +
                     " point or line primitives are not drawn (only triangles are)");
     }
-    if (colour_alpha) warnings_.add(path_ + ": vertex colour alpha is not drawn; the colours are opaque");
-    if (any_colour) source.colors = std::move(colours);
-    return source;
+    if (building.colour_alpha) warnings_.add(path_ + ": vertex colour alpha is not drawn; the colours are opaque");
+    if (building.any_colour) building.source.colors = std::move(building.colours);
+    return std::move(building.source);
+  }
+
+  // One primitive's vertices and triangles, read in the order that decides
+  // which of its faults is told first.
+  void add_primitive(SourceInProgress& building, const MeshInstance& instance, const tinygltf::Primitive& primitive,
+                     const std::string& name) {
+    const glm::dmat3 linear(instance.transform);
+    const std::vector<double> positions = reader_->read(attribute_of(primitive, "POSITION"), name + " POSITION", 3);
+    const std::size_t count = positions.size() / 3;
+    const std::vector<std::uint32_t> position_of = weld_positions(building, instance, primitive, positions, name);
+    MeshSource& source = building.source;
+    CornerBases bases;
+    if (attribute_of(primitive, "NORMAL") >= 0) bases.normal = add_normals(source, primitive, linear, count, name);
+    if (attribute_of(primitive, "TANGENT") >= 0) bases.tangent = add_tangents(source, primitive, linear, count, name);
+    const TexcoordChoice uv = texcoord_choice(primitive.material);
+    if (attribute_of(primitive, "TEXCOORD_" + std::to_string(uv.set)) >= 0) {
+      bases.texcoord = add_texcoords(source, primitive, uv, count, name);
+    }
+    const bool mirrored = glm::determinant(linear) < 0.0;
+    add_triangles(source, primitive, corners_of(primitive, count, name), position_of, bases, mirrored);
+  }
+
+  void check_count(const std::vector<double>& values, int width, std::size_t count, const std::string& what,
+                   const std::string& name) const {
+    if (values.size() != count * static_cast<std::size_t>(width)) {
+      fail(name + " has " + std::to_string(values.size() / static_cast<std::size_t>(width)) + " " + what + " for " +
+           std::to_string(count) + " positions");
+    }
+  }
+
+  // How each vertex of a primitive moves, when anything in the file does.
+  std::vector<std::uint32_t> motions_of(const MeshInstance& instance, const tinygltf::Primitive& primitive,
+                                        std::size_t count, const std::string& name) {
+    if (!rig_reader_->moves()) return {};
+    if (instance.node < 0) fail(name + " is drawn without a node in a file whose nodes move");
+    return rig_reader_->motions_of(instance.node, primitive, count, name);
+  }
+
+  // The primitive's positions placed, each merged with an equal one (same
+  // colour, same motion) seen before: the welded position of each vertex.
+  std::vector<std::uint32_t> weld_positions(SourceInProgress& building, const MeshInstance& instance,
+                                            const tinygltf::Primitive& primitive, const std::vector<double>& positions,
+                                            const std::string& name) {
+    const std::size_t count = positions.size() / 3;
+    std::vector<double> colours_in;
+    if (attribute_of(primitive, "COLOR_0") >= 0) {
+      colours_in = reader_->read(attribute_of(primitive, "COLOR_0"), name + " COLOR_0", 4, {3});
+      check_count(colours_in, 4, count, "colours", name);
+      building.any_colour = true;
+    }
+    const std::vector<std::uint32_t> motions = motions_of(instance, primitive, count, name);
+    std::vector<std::uint32_t> position_of(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::dvec3 p3 = glm::dvec3(instance.transform *
+                                       glm::dvec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0));
+      glm::dvec3 colour(1.0);
+      if (!colours_in.empty()) {
+        colour = {srgb_encoded(colours_in[4 * i]), srgb_encoded(colours_in[4 * i + 1]),
+                  srgb_encoded(colours_in[4 * i + 2])};
+        building.colour_alpha = building.colour_alpha || colours_in[4 * i + 3] < 1.0;
+      }
+      const WeldKey key{{std::bit_cast<std::uint64_t>(p3.x), std::bit_cast<std::uint64_t>(p3.y),
+                         std::bit_cast<std::uint64_t>(p3.z), std::bit_cast<std::uint64_t>(colour.r),
+                         std::bit_cast<std::uint64_t>(colour.g), std::bit_cast<std::uint64_t>(colour.b),
+                         motions.empty() ? 0u : motions[i]}};
+      const auto [it, added] =
+          building.welded.try_emplace(key, static_cast<std::uint32_t>(building.source.positions.size()));
+      if (added) {
+        building.source.positions.push_back(p3);
+        building.colours.push_back(colour);
+        if (!motions.empty()) building.source.motions.push_back(motions[i]);
+      }
+      position_of[i] = it->second;
+    }
+    return position_of;
+  }
+
+  // The primitive's normals, turned by the node's normal matrix; returns
+  // the index of the first.
+  std::int64_t add_normals(MeshSource& source, const tinygltf::Primitive& primitive, const glm::dmat3& linear,
+                           std::size_t count, const std::string& name) {
+    const std::int64_t base = static_cast<std::int64_t>(source.normals.size());
+    const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+    const std::vector<double> normals = reader_->read(attribute_of(primitive, "NORMAL"), name + " NORMAL", 3);
+    check_count(normals, 3, count, "normals", name);
+    for (std::size_t i = 0; i < count; ++i) {
+      source.normals.push_back(normal_matrix * glm::dvec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]));
+    }
+    return base;
+  }
+
+  // A tangent lies in the surface: it turns with the node's matrix itself,
+  // and a mirroring matrix turns the bitangent's hand.
+  std::int64_t add_tangents(MeshSource& source, const tinygltf::Primitive& primitive, const glm::dmat3& linear,
+                            std::size_t count, const std::string& name) {
+    const std::int64_t base = static_cast<std::int64_t>(source.tangents.size());
+    const std::vector<double> tangents = reader_->read(attribute_of(primitive, "TANGENT"), name + " TANGENT", 4);
+    check_count(tangents, 4, count, "tangents", name);
+    const double hand = glm::determinant(linear) < 0.0 ? -1.0 : 1.0;
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::dvec3 along = linear * glm::dvec3(tangents[4 * i], tangents[4 * i + 1], tangents[4 * i + 2]);
+      source.tangents.emplace_back(along, tangents[4 * i + 3] * hand);
+    }
+    return base;
+  }
+
+  // The texture coordinates the material's colour texture samples, with
+  // its transform applied.
+  std::int64_t add_texcoords(MeshSource& source, const tinygltf::Primitive& primitive, const TexcoordChoice& uv,
+                             std::size_t count, const std::string& name) {
+    const std::int64_t base = static_cast<std::int64_t>(source.texcoords.size());
+    const std::string set = "TEXCOORD_" + std::to_string(uv.set);
+    const std::vector<double> texcoords = reader_->read(attribute_of(primitive, set), name + " " + set, 2);
+    check_count(texcoords, 2, count, "texture coordinates", name);
+    for (std::size_t i = 0; i < count; ++i) {
+      glm::dvec2 t(texcoords[2 * i], texcoords[2 * i + 1]);
+      if (uv.transform) t = uv.transform->apply(t);
+      // glTF's v runs down the image, the mesh's up (as in OBJ).
+      source.texcoords.emplace_back(t.x, 1.0 - t.y);
+    }
+    return base;
+  }
+
+  // The primitive's corners: its indices, checked, or its vertices in order.
+  std::vector<std::uint32_t> corners_of(const tinygltf::Primitive& primitive, std::size_t count,
+                                        const std::string& name) {
+    std::vector<std::uint32_t> corners;
+    if (primitive.indices < 0) {
+      corners.resize(count);
+      for (std::size_t i = 0; i < count; ++i) corners[i] = static_cast<std::uint32_t>(i);
+      return corners;
+    }
+    corners = reader_->read_indices(primitive.indices, name + " indices");
+    for (const std::uint32_t c : corners) {
+      if (c >= count)
+        fail(name + " has the index " + std::to_string(c) + ", past its " + std::to_string(count) + " vertices");
+    }
+    return corners;
   }
 
   // The bytes of image `index` and a name for messages, or nullopt with a

@@ -3,8 +3,8 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <optional>
@@ -14,8 +14,9 @@
 #include <vector>
 
 #include "bundle_paths/statement_names.h"
+#include "obj_text/mtl_material.h"
+#include "obj_text/obj_text.h"
 #include "scene/import/bundle_import.h"
-#include "scene/import/obj_text.h"
 #include "scene/import/skins.h"
 #include "scene/reading/image_lookup.h"
 #include "scene/reading/import_error.h"
@@ -29,73 +30,6 @@ namespace {
 std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 
 std::string find_obj(const Bundle& bundle) { return find_model_file(bundle, {".obj"}, ".obj"); }
-
-// Which statements an MTL gave a material, where tinyobj's defaults cannot
-// be told apart from values written in the file, and the texture statements
-// as written: tinyobj's option parser reads the name as a number after -o,
-// -s or -t with fewer than three numbers, while bundle_paths::texture_names
-// (the reading `toon` sends files by) does not.
-struct GivenStatements {
-  bool kd = false;
-  bool ns = false;
-  bool ks = false;
-  bool dissolve = false;  // d or Tr
-  bool illum = false;
-  std::optional<std::string> map_kd;  // the text after the keyword
-  std::optional<std::string> map_d;
-  std::optional<std::string> bump;  // map_Bump, map_bump or bump
-  std::optional<std::string> norm;
-};
-
-// The statements given per material name in an MTL text. Lines, names and
-// keywords are cut exactly as tinyobj's LoadMtl cuts them (any of \n, \r\n,
-// \r ends a line; the name is the rest of the newmtl line less trailing
-// blanks; keywords are case-sensitive), so the names match the ones it
-// produced and the same statements count.
-std::map<std::string, GivenStatements> given_statements(std::string_view mtl) {
-  std::map<std::string, GivenStatements> given;
-  std::string current;
-  std::size_t pos = 0;
-  while (pos < mtl.size()) {
-    const std::size_t end = std::min(mtl.find_first_of("\r\n", pos), mtl.size());
-    const std::string_view line = text::trim(mtl.substr(pos, end - pos));
-    pos = end + ((end + 1 < mtl.size() && mtl[end] == '\r' && mtl[end + 1] == '\n') ? 2 : 1);
-    if (line.empty()) continue;
-    const auto is = [&](std::string_view keyword) {
-      return line.starts_with(keyword) && line.size() > keyword.size() &&
-             (line[keyword.size()] == ' ' || line[keyword.size()] == '\t');
-    };
-    // As tinyobj, a statement that names no file leaves the one before.
-    const auto texture = [&](std::optional<std::string>& statement, std::size_t keyword_size) {
-      const std::string_view rest = line.substr(keyword_size);
-      if (!bundle_paths::texture_names(rest).empty()) statement = std::string(rest);
-    };
-    if (is("newmtl")) {
-      current = std::string(line.substr(7));
-    } else if (is("Kd")) {
-      given[current].kd = true;
-    } else if (is("Ns")) {
-      given[current].ns = true;
-    } else if (is("Ks")) {
-      given[current].ks = true;
-    } else if (is("d") || is("Tr")) {
-      given[current].dissolve = true;
-    } else if (is("illum")) {
-      given[current].illum = true;
-    } else if (is("map_d")) {
-      texture(given[current].map_d, 5);
-    } else if (is("map_Kd")) {
-      texture(given[current].map_kd, 6);
-    } else if (is("map_Bump") || is("map_bump")) {
-      texture(given[current].bump, 8);
-    } else if (is("bump")) {
-      texture(given[current].bump, 4);
-    } else if (is("norm")) {
-      texture(given[current].norm, 4);
-    }
-  }
-  return given;
-}
 
 // Serves `mtllib` names from the bundle instead of the file system, and
 // remembers which MTL each material came from: texture names in an MTL are
@@ -118,13 +52,8 @@ class BundleMaterialReader : public tinyobj::MaterialReader {
     return true;
   }
 
-  // What the MTL set for material `id`: tinyobj fills in its own defaults
-  // (Kd 0 without a texture and 0.6 with one, Ns 1) that cannot be told
-  // apart from values written in the file.
-  GivenStatements given(int id) const {
-    return id >= 0 && static_cast<std::size_t>(id) < given_.size() ? given_[static_cast<std::size_t>(id)]
-                                                                   : GivenStatements{};
-  }
+  // What the MTL says of material `id` (tinyobj's numbering).
+  const obj_text::MtlMaterial& material(int id) const { return said_.at(static_cast<std::size_t>(id)); }
 
   // The MTL that defined material `id` (the OBJ itself when unknown).
   const std::string& source_of(int id) const {
@@ -142,10 +71,10 @@ class BundleMaterialReader : public tinyobj::MaterialReader {
                     " is not in the bundle; its materials fall back to the default colour");
       return;
     }
-    std::istringstream in(*bundle_.find(*path));
     std::string warn;
     std::string err;
-    tinyobj::LoadMtl(material_map, materials, &in, &warn, &err);
+    std::vector<obj_text::MtlMaterial> said =
+        obj_text::read_mtl(*bundle_.find(*path), materials, material_map, &warn, &err);
     for (const std::string* text : {&warn, &err}) {
       std::istringstream lines(*text);
       for (std::string line; std::getline(lines, line);) {
@@ -153,22 +82,15 @@ class BundleMaterialReader : public tinyobj::MaterialReader {
         if (!line.empty() && line != ".") warnings_.add(*path + ": " + line);
       }
     }
-    const auto given = given_statements(*bundle_.find(*path));
-    for (std::size_t i = sources_.size(); i < materials->size(); ++i) {
-      const std::string& material = (*materials)[i].name;
-      sources_.push_back(*path);
-      const auto it = given.find(material);
-      given_.push_back(it == given.end() ? GivenStatements{} : it->second);
-      // prepare_obj_text turned usemtl names with blanks into this alias.
-      material_map->emplace(material_alias(material), static_cast<int>(i));
-    }
+    sources_.resize(materials->size(), *path);
+    std::move(said.begin(), said.end(), std::back_inserter(said_));
   }
 
   const Bundle& bundle_;
   std::string obj_path_;
   ImportWarnings& warnings_;
   std::vector<std::string> sources_;
-  std::vector<GivenStatements> given_;
+  std::vector<obj_text::MtlMaterial> said_;  // per material, in tinyobj's order
 };
 
 // Only consulted on failure, so the common path does not scan the text twice.
@@ -187,14 +109,7 @@ std::size_t line_of_vertex(const std::string& text, std::size_t vertex) {
   return 0;
 }
 
-glm::vec3 sanitize_colour(const tinyobj::real_t* rgb, float fallback) {
-  glm::vec3 c;
-  for (int i = 0; i < 3; ++i) {
-    const double value = rgb[i];
-    c[i] = std::isfinite(value) ? static_cast<float>(std::clamp(value, 0.0, 1.0)) : fallback;
-  }
-  return c;
-}
+glm::vec3 vec3_of(const obj_text::Rgb& rgb) { return {rgb[0], rgb[1], rgb[2]}; }
 
 // An image whose every pixel is grey is a height map (the classic meaning
 // of `bump`), not a tangent-space normal map, whose texels lean blue.
@@ -227,8 +142,8 @@ class Importer {
 
  private:
   void parse() {
-    ObjTextFindings findings;
-    std::istringstream in(prepare_obj_text(*bundle_.find(obj_path_), &findings));
+    obj_text::ObjTextFindings findings;
+    std::istringstream in(obj_text::prepare_obj_text(*bundle_.find(obj_path_), &findings));
     // tinyobj drops a quad naming a missing vertex without a word; a model
     // with holes is worse than a clear refusal.
     if (findings.missing_vertex_line != 0) {
@@ -386,14 +301,13 @@ class Importer {
   // (its alpha where it has one, else its luminance), and so does a
   // `map_Kd` image with alpha, as Minetest's and most games' OBJ props are
   // drawn.
-  void read_alpha(Material& material, const tinyobj::material_t& source, const GivenStatements& given,
-                  const std::string& mtl_path) {
-    if (given.dissolve && std::isfinite(source.dissolve) && source.dissolve < 1.0) {
-      material.opacity = static_cast<float>(std::clamp(static_cast<double>(source.dissolve), 0.0, 1.0));
+  void read_alpha(Material& material, const obj_text::MtlMaterial& said, const std::string& mtl_path) {
+    if (said.opacity) {
+      material.opacity = *said.opacity;
       material.alpha_mode = AlphaMode::Blend;
     }
-    if (given.map_d) {
-      const int map = texture_for(*given.map_d, source.name, mtl_path, MapRole::Alpha);
+    if (said.alpha_map) {
+      const int map = texture_for(*said.alpha_map, said.name, mtl_path, MapRole::Alpha);
       if (map >= 0) {
         material.diffuse_texture = with_alpha_map(material.diffuse_texture, map);
         if (material.alpha_mode == AlphaMode::Opaque) material.alpha_mode = AlphaMode::Mask;
@@ -437,6 +351,24 @@ class Importer {
     return static_cast<int>(model_.textures.size()) - 1;
   }
 
+  // The material as the MTL `mtl_path` describes it, its maps decoded.
+  Material material_of(const obj_text::MtlMaterial& said, const std::string& mtl_path) {
+    Material material;
+    material.name = said.name;
+    if (!said.colour_map.empty()) {
+      material.diffuse_texture = texture_for(said.colour_map, said.name, mtl_path, MapRole::Colour);
+    }
+    material.diffuse = vec3_of(obj_text::base_colour(said, material.diffuse_texture >= 0 || has_vertex_colors_));
+    if (!said.normal_map.empty()) {
+      material.normal_texture = texture_for(said.normal_map, said.name, mtl_path, MapRole::Normal);
+    }
+    material.specular = vec3_of(said.specular);
+    material.matte = said.matte;
+    read_alpha(material, said, mtl_path);
+    if (said.shininess) material.shininess = *said.shininess;
+    return material;
+  }
+
   void build_materials(std::vector<SourceTriangle>& triangles) {
     std::set<int> used;
     bool default_used = false;
@@ -452,47 +384,14 @@ class Importer {
     // and inflate the reported counts.
     std::map<int, int> slot;
     for (const int id : used) {
-      const auto& source = tinyobj_materials_[static_cast<std::size_t>(id)];
-      const std::string& mtl_path = reader_->source_of(id);
-      const GivenStatements given = reader_->given(id);
-      Material material;
-      material.name = source.name;
-      material.diffuse = sanitize_colour(source.diffuse, 0.8f);
-      const std::string diffuse_name = given.map_kd.value_or(source.diffuse_texname);
-      if (!diffuse_name.empty()) {
-        material.diffuse_texture = texture_for(diffuse_name, source.name, mtl_path, MapRole::Colour);
-      }
-      if (!given.kd) {
-        // Without Kd a texture or the vertex colours show as painted
-        // (nvdiffrec-style MTLs give only map_Kd), and a plain material gets
-        // the default grey.
-        material.diffuse = glm::vec3(material.diffuse_texture >= 0 || has_vertex_colors_ ? 1.0f : 0.8f);
-      }
-      // `norm` names a normal map outright; tinyobj files map_Bump, map_bump
-      // and bump under bump_texname, which Blender and most exporters use
-      // for tangent-space normal maps (windmill does).
-      const std::string normal_name = given.norm.value_or(
-          given.bump.value_or(!source.normal_texname.empty() ? source.normal_texname : source.bump_texname));
-      if (!normal_name.empty()) {
-        material.normal_texture = texture_for(normal_name, source.name, mtl_path, MapRole::Normal);
-      }
-      // nvdiffrec MTLs (spot, bob) misuse Ks as (unused, roughness,
-      // metalness), e.g. "Ks 0 0.25 0"; kept as written.
-      material.specular = sanitize_colour(source.specular, 0.0f);
-      material.matte = (given.ks && material.specular == glm::vec3(0.0f)) ||
-                       (given.illum && (source.illum == 0 || source.illum == 1));
-      read_alpha(material, source, given, mtl_path);
-      if (given.ns && std::isfinite(source.shininess)) {
-        material.shininess = static_cast<float>(std::clamp(static_cast<double>(source.shininess), 0.0, 1000.0));
-      }
       slot[id] = static_cast<int>(model_.materials.size());
-      model_.materials.push_back(std::move(material));
+      model_.materials.push_back(material_of(reader_->material(id), reader_->source_of(id)));
     }
     if (default_used) {
       slot[-1] = static_cast<int>(model_.materials.size());
       Material fallback;
       fallback.name = "default";
-      fallback.diffuse = glm::vec3(has_vertex_colors_ ? 1.0f : 0.8f);
+      fallback.diffuse = vec3_of(obj_text::plain_colour(has_vertex_colors_));
       model_.materials.push_back(std::move(fallback));
     }
     for (auto& tri : triangles) tri.material = slot.at(tri.material);

@@ -1,4 +1,4 @@
-#include "scene/import/obj_text.h"
+#include "obj_text/obj_text.h"
 #include "text/trim.h"
 
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <system_error>
 #include <vector>
 
-namespace toond::scene {
+namespace toond::obj_text {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
@@ -228,4 +228,4 @@ std::string prepare_obj_text(std::string_view text, ObjTextFindings* findings) {
   return out;
 }
 
-}  // namespace toond::scene
+}  // namespace toond::obj_text

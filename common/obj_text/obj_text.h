@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace toond::scene {
+namespace toond::obj_text {
 
 // - A line ending in '\' continues on the next line (Rhino writes long faces
 //   so); the pieces are joined and blank lines keep the numbering.
@@ -33,4 +33,4 @@ std::string prepare_obj_text(std::string_view text, ObjTextFindings* findings = 
 // replaced by one U+001F. Names without blanks are returned trimmed.
 std::string material_alias(std::string_view name);
 
-}  // namespace toond::scene
+}  // namespace toond::obj_text
