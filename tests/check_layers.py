@@ -198,7 +198,7 @@ def diagram_problem(repo):
         return f"{ARCHITECTURE}: no drawing of the rooms between '{DIAGRAM_BEGIN}' and '{DIAGRAM_END}'"
     drawn = text[begin + len(DIAGRAM_BEGIN):end].strip()
     if drawn != diagram():
-        return f"{ARCHITECTURE}: its drawing of the rooms is not the table's; paste what `{__file__} --diagram` prints"
+        return f"{ARCHITECTURE}: its drawing of the rooms is not the table's; paste what `tests/check_layers.py --diagram` prints"
     return None
 
 
