@@ -12,11 +12,17 @@ UNREACHABLE says which rooms a room's files may not reach even through
 the headers of rooms they may include: the include chain that gets there
 fails with the file.
 
+The table's floors (a room stands one floor above the highest room it may
+include) are drawn in docs/architecture.md between DIAGRAM_BEGIN and
+DIAGRAM_END; a drawing that is not the table's is a problem too, and
+`--diagram` prints the one to paste there.
+
 An include is looked up as the compiler does: beside the file, then under
 each include root (INCLUDE_ROOTS). Includes found nowhere (the files the
 build generates, system headers) are not checked.
 
     tests/check_layers.py [REPO]
+    tests/check_layers.py --diagram
 """
 import os
 import re
@@ -100,6 +106,10 @@ UNREACHABLE = {
 }
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
+
+ARCHITECTURE = "docs/architecture.md"
+DIAGRAM_BEGIN = "<!-- rooms: drawn by tests/check_layers.py --diagram -->"
+DIAGRAM_END = "<!-- rooms: end -->"
 
 
 def room_of(path):
@@ -198,11 +208,61 @@ def reach_problems(repo):
     return problems
 
 
+def floors():
+    """Each fenced room's floor: one above the highest room it may include."""
+    floor = {}
+
+    def of(room):
+        if room not in floor:
+            floor[room] = 1 + max((of(other) for other in ROOMS[room][1] if ROOMS[other][1] is not None), default=-1)
+        return floor[room]
+
+    for room, (_, allowed) in ROOMS.items():
+        if allowed is not None:
+            of(room)
+    return floor
+
+
+def diagram():
+    """The table's floors, top down, as docs/architecture.md draws them."""
+    floor = floors()
+    lines = ["```", "floor  rooms (each may include rooms below it, as tests/check_layers.py allows)"]
+    for level in range(max(floor.values()), -1, -1):
+        rooms = sorted(room for room, f in floor.items() if f == level)
+        line = f"{level:>5}  "
+        for room in rooms:
+            if len(line) + len(room) > 100 and line.strip():
+                lines.append(line.rstrip())
+                line = " " * 7
+            line += room + "  "
+        lines.append(line.rstrip())
+    lines.append("```")
+    return "\n".join(lines)
+
+
+def diagram_problem(repo):
+    """What is wrong with the architecture page's drawing of the table, or None."""
+    path = os.path.join(repo, ARCHITECTURE)
+    if not os.path.isfile(path):
+        return None
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    begin, end = text.find(DIAGRAM_BEGIN), text.find(DIAGRAM_END)
+    if begin < 0 or end < begin:
+        return f"{ARCHITECTURE}: no drawing of the rooms between '{DIAGRAM_BEGIN}' and '{DIAGRAM_END}'"
+    drawn = text[begin + len(DIAGRAM_BEGIN):end].strip()
+    if drawn != diagram():
+        return f"{ARCHITECTURE}: its drawing of the rooms is not the table's; paste what `{__file__} --diagram` prints"
+    return None
+
+
 def problems_of(repo):
     problems = []
     cycle = cycle_in_table()
     if cycle:
         problems.append("the table's rooms include each other round a cycle: " + " -> ".join(cycle))
+    elif diagram_problem(repo):
+        problems.append(diagram_problem(repo))
     files = 0
     for path in sources(repo):
         room = room_of(path)
@@ -225,6 +285,9 @@ def problems_of(repo):
 
 
 def main():
+    if sys.argv[1:] == ["--diagram"]:
+        print(diagram())
+        return 0
     repo = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
     files, problems = problems_of(repo)
     for problem in problems:

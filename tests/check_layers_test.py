@@ -71,5 +71,29 @@ class Fences(unittest.TestCase):
         self.assertIn('server/newroom/x.cpp: in no room', out)
 
 
+class Drawing(unittest.TestCase):
+    def drawing(self):
+        return subprocess.run([sys.executable, CHECK, '--diagram'], capture_output=True, text=True).stdout.strip()
+
+    def page(self, drawn):
+        return ('# Architecture\n<!-- rooms: drawn by tests/check_layers.py --diagram -->\n' + drawn +
+                '\n<!-- rooms: end -->\n')
+
+    def test_the_tables_own_drawing_passes(self):
+        status, out = check(dict(HEADERS, **{'docs/architecture.md': self.page(self.drawing())}))
+        self.assertEqual(status, 0, out)
+
+    def test_a_drawing_that_is_not_the_tables_fails(self):
+        moved = self.drawing().replace('server/app', 'server/apps')
+        status, out = check(dict(HEADERS, **{'docs/architecture.md': self.page(moved)}))
+        self.assertEqual(status, 1, out)
+        self.assertIn('its drawing of the rooms is not the table', out)
+
+    def test_a_page_without_the_drawing_fails(self):
+        status, out = check(dict(HEADERS, **{'docs/architecture.md': '# Architecture\n'}))
+        self.assertEqual(status, 1, out)
+        self.assertIn('no drawing of the rooms', out)
+
+
 if __name__ == '__main__':
     unittest.main()

@@ -16,9 +16,9 @@
 #include "pose_checks.h"
 #include "render/plan/drawn_materials.h"
 #include "render/plan/pass_plan.h"
-#include "scene/reading/image_lookup.h"
 #include "scene/import/iqm_import.h"
 #include "scene/import/skins.h"
+#include "scene/reading/image_lookup.h"
 
 namespace toond::scene {
 namespace {

@@ -29,6 +29,7 @@ void take_object_plans(FrameContext& frame, const std::vector<ObjectPlan>& objec
   for (const ObjectPlan& o : objects) {
     frame.lods.push_back(o.lod);
     frame.materials.push_back(o.materials);
+    frame.view_depths.push_back(o.view_depth);
     frame.unseen_faces.push_back(o.main);
     frame.main_faces.push_back(face_culling ? o.main : FaceSkip{});
     frame.hull_faces.push_back(face_culling ? o.hull : FaceSkip{});

@@ -76,6 +76,7 @@ struct FrameContext {
   std::vector<FaceSkip> unseen_faces{};
   // Per object, its materials as this frame draws them (the plan's).
   std::vector<std::vector<DrawnMaterial>> materials{};
+  std::vector<double> view_depths{};  // per object, the plan's ObjectPlan::view_depth
   ShadingLights lights{};
   // The colour ramp's stops as toon.frag's arrays take them.
   std::vector<float> ramp_at{};

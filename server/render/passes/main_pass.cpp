@@ -67,11 +67,7 @@ void draw_blended(PassContext& context) {
   for (std::size_t i = 0; i < frame.objects.size(); ++i) {
     const auto& materials = frame.materials[i];
     if (std::none_of(materials.begin(), materials.end(), [](const DrawnMaterial& m) { return m.blended; })) continue;
-    const FrameObject& object = frame.objects[i];
-    // The pose's bounds when posed (which may be a whole clip's reach).
-    const scene::Bounds& bounds = object.pose ? object.pose->bounds : object.model.mesh.bounds;
-    const glm::dvec3 centre(frame.scene.matrices[i] * glm::dvec4(glm::dvec3(bounds.centre()), 1.0));
-    order.emplace_back(-glm::dot(centre - frame.camera.eye, glm::dvec3(frame.viewer.forward)), i);
+    order.emplace_back(-frame.view_depths[i], i);
   }
   if (order.empty()) return;
   std::sort(order.begin(), order.end());

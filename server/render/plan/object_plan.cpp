@@ -99,6 +99,8 @@ std::vector<ObjectPlan> plan_objects(const FramePlan& plan, std::span<const Plan
       o.shadow = faces_hidden(object, o.lod.level, placement, plan.shadow->view_projection, light, false).hidden;
     }
     o.materials = std::move(materials[i]);
+    const glm::dvec3 centre(placement * glm::dvec4(glm::dvec3(object.bounds().centre()), 1.0));
+    o.view_depth = glm::dot(centre - plan.camera.eye, glm::dvec3(plan.viewer.forward));
     decided.push_back(std::move(o));
   }
   return decided;

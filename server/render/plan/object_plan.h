@@ -28,6 +28,9 @@ struct ObjectPlan {
   HiddenFaces shadow = HiddenFaces::None;
   // Its model's materials as this frame draws them.
   std::vector<DrawnMaterial> materials;
+  // How far ahead of the camera its bounds' centre lies: blended surfaces
+  // are drawn farthest object first.
+  double view_depth = 0.0;
 };
 
 // Per object of `objects`, as `plan` sees them (its camera, framing,

@@ -21,10 +21,10 @@
 #include <string_view>
 #include <vector>
 
+#include "scene/mesh/model.h"
 #include "scene/reading/bundle.h"
 #include "scene/reading/import_choices.h"
 #include "scene/reading/import_limits.h"
-#include "scene/mesh/model.h"
 
 namespace toond::scene {
 

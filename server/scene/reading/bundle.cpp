@@ -100,7 +100,10 @@ std::size_t Bundle::total_bytes() const {
 
 Bundle with_file(const Bundle& bundle, const std::string& path, std::string content) {
   Bundle out;
-  for (const auto& [name, bytes] : bundle.files()) out.add(name, name == path ? std::move(content) : bytes);
+  for (const auto& [name, bytes] : bundle.files()) {
+    if (name != path) out.add(name, bytes);
+  }
+  out.add(path, std::move(content));
   return out;
 }
 

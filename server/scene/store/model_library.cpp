@@ -5,10 +5,10 @@
 #include "bundle_paths/bundle_path.h"
 #include "scene/import/bundle_import.h"
 #include "scene/import/demo_model.h"
-#include "scene/reading/image_lookup.h"
 #include "scene/import/obj_import.h"
 #include "scene/mesh/crease_edges.h"
 #include "scene/mesh/intersection_lines.h"
+#include "scene/reading/image_lookup.h"
 #include "scene/reading/texture_decode.h"
 
 namespace toond::scene {
