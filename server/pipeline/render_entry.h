@@ -89,7 +89,7 @@ class RenderEntry {
   // request. Throws as check_sheet_answer (sheet_answer.h) and render()
   // (pipeline.h) do, the render threads' and the GPU's failures as
   // RenderFailure.
-  Answer answer(ResolvedRender request, const SheetAnswer& sheet, const Caller& caller);
+  Answer answer(ResolvedRender resolved, const SheetAnswer& sheet, const Caller& caller);
 
   // A model deleted or let go from the store leaves this replica's memory
   // and GPU now; other replicas drop it at their next lookup.
