@@ -8,6 +8,9 @@ ROOMS says, for each, the other rooms whose headers its files may include;
 an include of any other room fails with the file, the line and both rooms.
 So does a folder of C++ sources that no room holds (a new room is given
 its place here), and a table whose rooms include each other round a cycle.
+UNREACHABLE says which rooms a room's files may not reach even through
+the headers of rooms they may include: the include chain that gets there
+fails with the file.
 
 The table's floors (a room stands one floor above the highest room it may
 include) are drawn in docs/architecture.md between DIAGRAM_BEGIN and
@@ -75,16 +78,19 @@ ROOMS = {
     "server/render/vector": ("line drawings as vectors: exact visibility, strokes, SVG",
                              ["common/image", "common/parallel", "server/render/frame", "server/render/plan",
                               "server/scene/animation", "server/scene/mesh"]),
-    "server/pipeline": ("a request's way from parameters to the answer's bytes",
-                        ["common/image", "proto/cpp", "server/render/atlas", "server/render/frame", "server/render/vector",
-                         "server/sheet_files",
+    # server/gpu for the GPU's failures alone, which the entry says as its own (render_failure.h).
+    "server/pipeline": ("a request's way from parameters to the answer's bytes, entered by render_entry.h",
+                        ["common/image", "proto/cpp", "server/gpu", "server/render/atlas", "server/render/frame",
+                         "server/render/vector", "server/sheet_files",
                          "server/render/plan", "server/render/run", "server/scene/animation",
                          "server/scene/mesh", "server/scene/store"]),
-    "server/http": ("parse, call the pipeline, answer",
-                    ["common/text", "proto/cpp", "server/gpu", "server/pipeline", "server/render/frame",
-                     "server/render/plan", "server/render/run", "server/scene/reading", "server/scene/store"]),
+    # The store and an upload's files for the model routes; render requests
+    # through the pipeline's entry alone.
+    "server/http": ("parse, call the pipeline's entry, answer",
+                    ["common/text", "proto/cpp", "server/pipeline", "server/scene/reading", "server/scene/store"]),
     "server/app": ("toond's main and its flags",
-                   ["common/text", "server/gpu", "server/http", "server/render/run", "server/scene/store"]),
+                   ["common/text", "server/gpu", "server/http", "server/pipeline", "server/render/run",
+                    "server/scene/store"]),
     "client/cli": ("the toon command-line client",
                    ["common/bundle_paths", "common/glb", "common/image", "common/obj_text", "common/text",
                     "proto/cpp"]),
@@ -95,6 +101,13 @@ ROOMS = {
     "tests/support": ("the tests' daemon harness and generated models", None),
 }
 FENCED_TOPS = ["common", "proto", "server", "client", "bench"]
+
+# Room → rooms its files may not reach, include after include, through any
+# header: the HTTP layer knows no EGL or GL, not even by way of the
+# pipeline's headers (the entry keeps the render threads behind it).
+UNREACHABLE = {
+    "server/http": ["server/gpu"],
+}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
@@ -152,6 +165,51 @@ def cycle_in_table():
             if found:
                 return found
     return None
+
+
+def includes_of(repo, path, known):
+    """The repository files `path` includes, looked up once."""
+    if path not in known:
+        found = []
+        with open(os.path.join(repo, path), encoding="utf-8") as f:
+            for line in f:
+                match = INCLUDE.match(line)
+                target = resolve(repo, path, match.group(1)) if match else None
+                if target:
+                    found.append(target)
+        known[path] = found
+    return known[path]
+
+
+def unreachable_chain(repo, path, forbidden, known):
+    """The include chain from `path` to a file of a `forbidden` room, or None."""
+    came_from = {path: None}
+    queue = [path]
+    while queue:
+        current = queue.pop(0)
+        if room_of(current) in forbidden:
+            chain = []
+            while current:
+                chain.append(current)
+                current = came_from[current]
+            return list(reversed(chain))
+        for target in includes_of(repo, current, known):
+            if target not in came_from:
+                came_from[target] = current
+                queue.append(target)
+    return None
+
+
+def reach_problems(repo):
+    problems = []
+    known = {}
+    for path in sources(repo):
+        forbidden = UNREACHABLE.get(room_of(path))
+        chain = unreachable_chain(repo, path, forbidden, known) if forbidden else None
+        if chain:
+            problems.append(f"{path}: reaches {chain[-1]}, of {room_of(chain[-1])}, which {room_of(path)} may not "
+                            f"reach: " + " -> ".join(chain))
+    return problems
 
 
 def floors():
@@ -227,7 +285,7 @@ def problems_of(repo):
                 if target is not None and target not in allowed:
                     problems.append(f"{path}:{number}: includes {match.group(1)}, of {target}, "
                                     f"which {room} may not include")
-    return files, problems
+    return files, problems + reach_problems(repo)
 
 
 def main():

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """check_layers.py on small repositories made for the purpose: each holds
-one include the table forbids, or a folder no room holds, and must fail."""
+one include the table forbids, a chain of includes to a room the table
+says may not be reached, or a folder no room holds, and must fail."""
 import os
 import subprocess
 import sys
@@ -31,6 +32,16 @@ class Fences(unittest.TestCase):
         status, out = check(dict(HEADERS, **{'server/http/routes.cpp': '#include "render/passes/passes.h"\n'}))
         self.assertEqual(status, 1, out)
         self.assertIn('server/http/routes.cpp:1: includes render/passes/passes.h, of server/render/passes', out)
+
+    def test_http_reaching_the_gpu_through_a_header_it_may_include_fails(self):
+        status, out = check(dict(HEADERS, **{'server/gpu/egl_context.h': '',
+                                             'server/pipeline/pipeline.h': '#include "gpu/egl_context.h"\n',
+                                             'server/http/routes.cpp': '#include "pipeline/pipeline.h"\n'}))
+        self.assertEqual(status, 1, out)
+        self.assertIn('server/http/routes.cpp: reaches server/gpu/egl_context.h, of server/gpu, which server/http may '
+                      'not reach: server/http/routes.cpp -> server/pipeline/pipeline.h -> server/gpu/egl_context.h',
+                      out)
+        self.assertIn('; 1 problems', out)
 
     def test_the_cli_including_a_daemon_header_fails(self):
         status, out = check(dict(HEADERS, **{'client/cli/main.cpp': '#include "scene/mesh/model.h"\n'}))

@@ -20,6 +20,7 @@
 #include "http/access_control.h"
 #include "http/listen_backlog.h"
 #include "http/routes.h"
+#include "pipeline/render_entry.h"
 #include "render/run/render_service.h"
 #include "scene/store/model_library.h"
 #include "scene/store/model_store.h"
@@ -107,6 +108,12 @@ int run(const toond::app::Options& options) {
   if (options.skinning == Skinning::Cpu) render_options.skinning = toond::scene::Skinning::Cpu;
   toond::render::RenderService renderer(render_options);
   toond::scene::ModelLibrary library(store, 16);
+  toond::pipeline::RenderEntry::Settings entry_settings;
+  entry_settings.limits = options.limits.render;
+  entry_settings.deadline = std::chrono::milliseconds(static_cast<long long>(options.render_timeout_s * 1000));
+  // Edited shaders change the image of the same parameters: no cache then.
+  if (options.shader_dir.empty()) entry_settings.result_cache_bytes = options.result_cache_bytes;
+  toond::pipeline::RenderEntry renders(store, library, renderer, entry_settings);
 
   httplib::Server server;
   server.new_task_queue = [n = options.threads] { return new httplib::ThreadPool(static_cast<std::size_t>(n)); };
@@ -116,14 +123,9 @@ int run(const toond::app::Options& options) {
   // on every request of a kept-alive connection (a browser's); the test
   // ResultCache.KeptAliveConnectionsGetAnswersWithoutWaitingForAcks times it.
   server.set_tcp_nodelay(true);
-  toond::http::ServiceContext context{
-      store, library, renderer, std::chrono::milliseconds(static_cast<long long>(options.render_timeout_s * 1000))};
+  toond::http::ServiceContext context{store, renders};
   context.limits = options.limits;
   context.limits.max_upload_bytes = options.max_upload_bytes;
-  // Edited shaders change the image of the same parameters: no cache then.
-  if (options.result_cache_bytes > 0 && options.shader_dir.empty()) {
-    context.results = std::make_unique<toond::http::ResultCache>(options.result_cache_bytes);
-  }
   toond::http::register_routes(server, context);
   toond::http::install_access_control(server, options.access);
 

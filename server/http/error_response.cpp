@@ -5,12 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gpu/gpu_error.h"
-#include "gpu/shader_compile_error.h"
-#include "gpu/shader_log.h"
 #include "http/import_limit_flag.h"
 #include "limit_error.h"
-#include "render/run/render_service.h"
+#include "pipeline/render_failure.h"
 #include "request_error.h"
 #include "scene/reading/import_error.h"
 #include "scene/reading/import_limits.h"
@@ -76,6 +73,57 @@ void write_store_error(httplib::Response& res, const scene::StoreError& e) {
   write_error(res, 500, "internal", e.what());
 }
 
+// A shader (edited under --shader-dir) that does not compile: "toon.frag:12:
+// syntax error, …" up front, the driver's whole log beside it, and the
+// line (of the file: with_defines keeps numbering) when known.
+void write_shader_error(httplib::Response& res, const pipeline::RenderFailure& e) {
+  const pipeline::RenderFailure::Shader& shader = e.shader();
+  std::string message = shader.file;
+  if (shader.line) message += ":" + std::to_string(*shader.line);
+  message += ": " + (shader.first_error.empty() ? std::string("does not compile") : shader.first_error);
+  nlohmann::json error = {{"code", "shader_error"}, {"message", message}, {"path", shader.file}, {"log", shader.log}};
+  if (shader.line) error["line"] = *shader.line;
+  res.status = 500;
+  res.set_content(dump_for_client({{"error", error}}), "application/json");
+}
+
+// The render threads' and the GPU's failures, as the pipeline's entry says
+// them.
+void write_render_failure(httplib::Response& res, const pipeline::RenderFailure& e) {
+  using Kind = pipeline::RenderFailure::Kind;
+  switch (e.kind()) {
+    case Kind::DeadlineExceeded:
+      res.set_header("Retry-After", "5");
+      write_error(res, 503, "deadline_exceeded",
+                  "the render's deadline (--render-timeout) passed while it waited in the queue");
+      return;
+    case Kind::Aborted:
+      res.set_header("Retry-After", "5");
+      write_error(res, 503, "render_aborted",
+                  std::string(e.what()) +
+                      ": it ran past --render-timeout; a smaller size, fewer samples or fewer outline passes draw "
+                      "sooner (the answer's X-Toond-Cost header and --max-render-cost price a request)");
+      return;
+    case Kind::QueueFull:
+      res.set_header("Retry-After", "1");
+      write_error(res, 503, "busy", std::string(e.what()) + "; retry shortly");
+      return;
+    case Kind::ShaderError:
+      std::cerr << "toond: " << e.what() << "\n";
+      write_shader_error(res, e);
+      return;
+    case Kind::GpuReset:
+      std::cerr << "toond: " << e.what() << "\n";
+      res.set_header("Retry-After", "1");
+      write_error(res, 503, "gpu_reset", e.what());
+      return;
+    case Kind::GpuError:
+      break;
+  }
+  std::cerr << "toond: GPU error: " << e.what() << "\n";
+  write_error(res, 500, "gpu_error", e.what());
+}
+
 }  // namespace
 
 void write_exception(httplib::Response& res, std::exception_ptr ep) {
@@ -93,38 +141,8 @@ void write_exception(httplib::Response& res, std::exception_ptr ep) {
     write_error(res, 422, "bad_bundle", e.what(), e.file());
   } catch (const scene::StoreError& e) {
     write_store_error(res, e);
-  } catch (const render::DeadlineExceeded&) {
-    res.set_header("Retry-After", "5");
-    write_error(res, 503, "deadline_exceeded",
-                "the render's deadline (--render-timeout) passed while it waited in the queue");
-  } catch (const render::RenderAborted& e) {
-    res.set_header("Retry-After", "5");
-    write_error(res, 503, "render_aborted",
-                std::string(e.what()) +
-                    ": it ran past --render-timeout; a smaller size, fewer samples or fewer outline passes draw "
-                    "sooner (the answer's X-Toond-Cost header and --max-render-cost price a request)");
-  } catch (const render::QueueFull& e) {
-    res.set_header("Retry-After", "1");
-    write_error(res, 503, "busy", std::string(e.what()) + "; retry shortly");
-  } catch (const gpu::ShaderCompileError& e) {
-    std::cerr << "toond: " << e.what() << "\n";
-    // "toon.frag:12: syntax error, …" up front, the driver's whole log beside
-    // it, and the line (of the file: with_defines keeps numbering) when known.
-    const gpu::ShaderLogError first = gpu::first_shader_error(e.log());
-    std::string message = e.file();
-    if (first.line) message += ":" + std::to_string(*first.line);
-    message += ": " + (first.text.empty() ? std::string("does not compile") : first.text);
-    nlohmann::json error = {{"code", "shader_error"}, {"message", message}, {"path", e.file()}, {"log", e.log()}};
-    if (first.line) error["line"] = *first.line;
-    res.status = 500;
-    res.set_content(dump_for_client({{"error", error}}), "application/json");
-  } catch (const gpu::GpuReset& e) {
-    std::cerr << "toond: " << e.what() << "\n";
-    res.set_header("Retry-After", "1");
-    write_error(res, 503, "gpu_reset", e.what());
-  } catch (const gpu::GpuError& e) {
-    std::cerr << "toond: GPU error: " << e.what() << "\n";
-    write_error(res, 500, "gpu_error", e.what());
+  } catch (const pipeline::RenderFailure& e) {
+    write_render_failure(res, e);
   } catch (const std::filesystem::filesystem_error& e) {
     // Its text names the files it was about: the daemon's own paths.
     std::cerr << "toond: internal error: " << e.what() << "\n";

@@ -28,16 +28,10 @@ nlohmann::json store_document(const scene::ModelStore& store) {
 
 void register_info_routes(httplib::Server& server, ServiceContext& context) {
   server.Get("/healthz", [&context](const httplib::Request&, httplib::Response& res) {
-    const gpu::GlInfo& gl = context.renderer.gl_info();
     nlohmann::json body = {
         {"status", "ok"},
-        {"gl",
-         {{"vendor", gl.vendor},
-          {"renderer", gl.renderer},
-          {"version", gl.version},
-          {"glsl_version", gl.glsl_version},
-          {"platform", gl.platform}}},
-        {"queue_depth", context.renderer.queue_depth()},
+        {"gl", context.renders.gl_document()},
+        {"queue_depth", context.renders.queue_depth()},
         {"limits", limits_document(context.limits)},
         {"store", store_document(context.store)},
     };

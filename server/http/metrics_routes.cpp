@@ -8,7 +8,7 @@ namespace toond::http {
 void register_metrics_routes(httplib::Server& server, ServiceContext& context) {
   MetricsRegistry& registry = context.metrics.registry();
   registry.gauge("toond_render_queue_depth", "Render jobs waiting for the render thread.",
-                 [&context] { return static_cast<double>(context.renderer.queue_depth()); });
+                 [&context] { return static_cast<double>(context.renders.queue_depth()); });
   registry.gauge("toond_models_stored", "Models in the data directory (shared by every replica that mounts it).",
                  [&context] { return static_cast<double>(context.store.usage().models); });
   registry.gauge("toond_store_bytes",
@@ -26,23 +26,24 @@ void register_metrics_routes(httplib::Server& server, ServiceContext& context) {
                         [&context] { return static_cast<double>(context.store.evictions()); });
   registry.counter_from("toond_gpu_context_resets_total",
                         "Lost GL contexts (GPU resets) replaced by a new one since start.",
-                        [&context] { return static_cast<double>(context.renderer.gpu_resets()); });
+                        [&context] { return static_cast<double>(context.renders.gpu_resets()); });
   registry.counter_from("toond_frames_overlapped_total",
                         "Frames recorded while the same render thread's previous frame was still being read back "
                         "(--frames-in-flight 2).",
-                        [&context] { return static_cast<double>(context.renderer.overlapped_frames()); });
+                        [&context] { return static_cast<double>(context.renders.overlapped_frames()); });
   registry.gauge("toond_gpu_models_loaded", "Models whose GPU copy this replica holds (its GPU LRU).",
-                 [&context] { return static_cast<double>(context.renderer.gpu_models_loaded()); });
+                 [&context] { return static_cast<double>(context.renders.gpu_models_loaded()); });
   registry.gauge("toond_gpu_model_bytes",
                  "GPU memory held by the loaded models: vertex and index buffers and textures with mipmaps.",
-                 [&context] { return static_cast<double>(context.renderer.gpu_model_bytes()); });
+                 [&context] { return static_cast<double>(context.renders.gpu_model_bytes()); });
   // The result cache counts its own lookups; without a cache both stay 0.
+  const pipeline::ResultCache* results = context.renders.result_cache();
   registry.counter_from("toond_result_cache_hits_total", "Render requests answered from the result cache.",
-                        [&context] { return context.results ? static_cast<double>(context.results->hits()) : 0.0; });
+                        [results] { return results ? static_cast<double>(results->hits()) : 0.0; });
   registry.counter_from("toond_result_cache_misses_total", "Render requests the result cache could not answer.",
-                        [&context] { return context.results ? static_cast<double>(context.results->misses()) : 0.0; });
+                        [results] { return results ? static_cast<double>(results->misses()) : 0.0; });
   registry.gauge("toond_result_cache_bytes", "Bytes of PNGs the result cache holds.",
-                 [&context] { return context.results ? static_cast<double>(context.results->bytes()) : 0.0; });
+                 [results] { return results ? static_cast<double>(results->bytes()) : 0.0; });
 
   server.set_logger([&context](const httplib::Request& req, const httplib::Response& res) {
     context.metrics.count_request(req.method, route_label(req.path), res.status);

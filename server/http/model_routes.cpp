@@ -123,8 +123,7 @@ void register_model_routes(httplib::Server& server, ServiceContext& context) {
       write_error(res, 404, "unknown_model", "no model with id " + id, "/models/" + id);
       return;
     }
-    context.library.forget(id);
-    context.renderer.forget(id);
+    context.renders.forget(id);
     res.set_content(nlohmann::json{{"deleted", id}}.dump(), "application/json");
   });
 }

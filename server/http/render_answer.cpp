@@ -1,11 +1,16 @@
 #include "http/render_answer.h"
 
-#include <chrono>
 #include <sstream>
+#include <string_view>
+
+#include "text/trim.h"
 
 namespace toond::http {
+namespace {
 
-void answer_render(const httplib::Request& req, httplib::Response& res, const CachedRender& render) {
+// Sets ETag, X-Toond-Passes, -Lod, -Samples and the render's own headers,
+// then the body, or status 304 with no body when If-None-Match matches.
+void answer_render(const httplib::Request& req, httplib::Response& res, const pipeline::CachedRender& render) {
   res.set_header("ETag", render.etag);
   res.set_header("X-Toond-Passes", render.passes);
   if (!render.lod.empty()) res.set_header("X-Toond-Lod", render.lod);
@@ -21,20 +26,50 @@ void answer_render(const httplib::Request& req, httplib::Response& res, const Ca
   res.set_content(render.body, render.content_type);
 }
 
-bool answer_from_cache(ResultCache* cache, const std::string& key, const httplib::Request& req,
-                       httplib::Response& res) {
-  if (!cache) return false;
-  const auto start = std::chrono::steady_clock::now();
-  const auto hit = cache->find(key);
-  if (!hit) return false;
-  answer_render(req, res, *hit);
-  std::ostringstream timing;
-  timing.precision(3);
-  timing << std::fixed << "cache;desc=hit;dur="
-         << std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  res.set_header("Server-Timing", timing.str());
-  res.set_header("X-Toond-Cache", "hit");
-  return true;
+}  // namespace
+
+void write_answer(const httplib::Request& req, httplib::Response& res, const pipeline::Answer& answer,
+                  std::chrono::steady_clock::time_point asked) {
+  const pipeline::CachedRender& render = *answer.render;
+  switch (answer.from) {
+    case pipeline::Answer::From::File:
+      for (const auto& [name, value] : render.headers) res.set_header(name, value);
+      res.set_content(render.body, render.content_type);
+      return;
+    case pipeline::Answer::From::Render:
+      res.set_header("Server-Timing", answer.server_timing);
+      answer_render(req, res, render);
+      return;
+    case pipeline::Answer::From::Cache: {
+      answer_render(req, res, render);
+      std::ostringstream timing;
+      timing.precision(3);
+      timing << std::fixed << "cache;desc=hit;dur="
+             << std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - asked).count();
+      res.set_header("Server-Timing", timing.str());
+      res.set_header("X-Toond-Cache", "hit");
+      return;
+    }
+  }
+}
+
+bool etag_matches(const std::string& if_none_match, const std::string& etag) {
+  auto strong_tag = [](std::string_view s) {
+    s = text::trim(s);
+    // If-None-Match compares weakly: W/"x" matches "x".
+    if (s.rfind("W/", 0) == 0) s.remove_prefix(2);
+    return std::string(s);
+  };
+  std::size_t pos = 0;
+  while (pos <= if_none_match.size()) {
+    const std::size_t comma = if_none_match.find(',', pos);
+    const std::string tag = strong_tag(
+        std::string_view(if_none_match).substr(pos, comma == std::string::npos ? std::string::npos : comma - pos));
+    if (tag == "*" || (!tag.empty() && tag == strong_tag(etag))) return true;
+    if (comma == std::string::npos) break;
+    pos = comma + 1;
+  }
+  return false;
 }
 
 }  // namespace toond::http

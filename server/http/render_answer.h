@@ -1,22 +1,23 @@
 #pragma once
-// How a finished render goes back to the client: the PNG with its ETag, or
-// 304 Not Modified when the client's If-None-Match already names it; and the
-// result cache in front of the render thread.
-#include <memory>
+// How a render's answer goes back to the client: a sheet's file as it is;
+// a render with its ETag, or 304 Not Modified when the client's
+// If-None-Match already names it; a result cache hit marked as one.
+#include <chrono>
 #include <string>
 
 #include <httplib.h>
 
-#include "http/result_cache.h"
+#include "pipeline/render_entry.h"
 
 namespace toond::http {
 
-// Sets ETag, X-Toond-Passes and X-Toond-Lod, then the body, or status 304
-// with no body when If-None-Match matches.
-void answer_render(const httplib::Request& req, httplib::Response& res, const CachedRender& render);
+// The entry's answer (pipeline/render_entry.h) as the response; `asked`:
+// when the entry was asked, which a cache hit's Server-Timing counts from.
+void write_answer(const httplib::Request& req, httplib::Response& res, const pipeline::Answer& answer,
+                  std::chrono::steady_clock::time_point asked);
 
-// A cached render for `key`, answered (with `Server-Timing: cache`), or
-// false when the cache is off or does not hold it.
-bool answer_from_cache(ResultCache* cache, const std::string& key, const httplib::Request& req, httplib::Response& res);
+// Whether an If-None-Match header value matches `etag` ("*", or one of a
+// comma-separated list; weak tags compare by their opaque part).
+bool etag_matches(const std::string& if_none_match, const std::string& etag);
 
 }  // namespace toond::http

@@ -1,38 +1,32 @@
 #pragma once
 // toond's own metrics, served by GET /metrics (server/http/metrics_routes.cpp).
 // Events are counted where they happen (requests by the server's logger
-// hook, renders by the render route); what other parts count already
-// (result-cache hits) and levels (queue depth, models stored and on the GPU,
-// GPU bytes) are read at scrape time (metrics_routes.cpp).
+// hook, renders by the pipeline's entry, which reports them to this); what
+// other parts count already (result-cache hits) and levels (queue depth,
+// models stored and on the GPU, GPU bytes) are read at scrape time
+// (metrics_routes.cpp).
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include "http/metrics.h"
-#include "render/frame/pass_timing.h"
+#include "pipeline/render_observer.h"
 
 namespace toond::http {
 
-class ServiceMetrics {
+class ServiceMetrics : public pipeline::RenderObserver {
  public:
   ServiceMetrics();
 
   // One answered HTTP request; `route` is the route's template
   // (route_label), never the raw path, so ids do not multiply series.
   void count_request(const std::string& method, const std::string& route, int status);
-  // One finished render: whole request (parse to PNG), and the stages of
-  // its Server-Timing header: queue wait, each pass, encoding (stage
-  // `encode_stage`: "png", or "webp" for an animated sheet).
+  // What the pipeline's entry reports of each render (pipeline/render_observer.h).
   void observe_render(double seconds, const std::vector<render::PassTiming>& passes, double queue_ms, double encode_ms,
-                      const std::string& encode_stage);
-  // A render request's price (render/plan/render_cost.h) as it was admitted, its
-  // lane, and the render threads' time its frames took: the two counters'
-  // ratio is the seconds one Msample costs on this machine.
-  void observe_cost(double predicted_msamples, bool long_lane, double render_thread_seconds);
-  // A request refused for its predicted cost (--max-render-cost).
-  void count_cost_refusal();
-  // A render stopped at its deadline between chunks (503 render_aborted).
-  void count_abort();
+                      const std::string& encode_stage) override;
+  void observe_cost(double predicted_msamples, bool long_lane, double render_thread_seconds) override;
+  void count_cost_refusal() override;
+  void count_abort() override;
   // One upload imported as a new model: how long the import took (parse,
   // mesh processing, levels of detail, storing) and the bundle's bytes.
   void observe_import(double seconds, std::size_t bytes);

@@ -49,18 +49,4 @@ pipeline::SheetAnswer sheet_answer_of(const httplib::Request& req) {
   return answer;
 }
 
-std::string sheet_answer_key(const pipeline::SheetAnswer& answer) {
-  switch (answer.file) {
-    case pipeline::SheetFile::Image:
-      return "";
-    case pipeline::SheetFile::AtlasJson:
-      return "?atlas=json";
-    case pipeline::SheetFile::Aseprite:
-      return "?atlas=aseprite";
-    case pipeline::SheetFile::Godot:
-      return "?atlas=godot&texture=" + answer.godot_texture;
-  }
-  return "";
-}
-
 }  // namespace toond::http

@@ -8,7 +8,7 @@
 
 #include <httplib.h>
 
-#include "pipeline/sheet_answer.h"
+#include "pipeline/sheet_file.h"
 
 namespace toond::http {
 
@@ -17,9 +17,5 @@ namespace toond::http {
 // absolute outside res:// and user://, another scheme, control
 // characters, longer than 1024 bytes).
 pipeline::SheetAnswer sheet_answer_of(const httplib::Request& req);
-
-// What sets the answer apart from the image of the same parameters, for
-// the result cache's key: "" for the image.
-std::string sheet_answer_key(const pipeline::SheetAnswer& answer);
 
 }  // namespace toond::http

@@ -37,10 +37,7 @@ scene::ModelStore::PutResult store_upload(ServiceContext& context, const scene::
   }
   // What was let go for the bound leaves this replica's memory and GPU now;
   // other replicas drop it at their next lookup, which asks the store.
-  for (const std::string& id : result.evicted) {
-    context.library.forget(id);
-    context.renderer.forget(id);
-  }
+  for (const std::string& id : result.evicted) context.renders.forget(id);
   // A bundle already stored was not imported again: nothing to time.
   if (result.created) {
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - started;

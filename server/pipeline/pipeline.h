@@ -8,8 +8,9 @@
 //   assemble one image, a sheet, an animation, pixel art        (assemble.h)
 //   encode   PNG (a layer's, a sheet's with its atlas) or WebP  (encode.h)
 // A single image is a sheet of one frame: the same stages, one frame. The
-// HTTP layer parses the request, asks its result cache between resolve and
-// render, and answers; nothing here knows HTTP.
+// way in is render_entry.h: it resolves a request and answers it from its
+// result cache or by these stages; the HTTP layer parses the request and
+// writes the answer; nothing here knows HTTP.
 #include <chrono>
 #include <string>
 #include <vector>

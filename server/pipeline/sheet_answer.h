@@ -9,22 +9,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pipeline/sheet_file.h"
 #include "render/frame/render_output.h"
 
 namespace toond::pipeline {
 
 struct Request;
 struct Encoded;
-
-enum class SheetFile { Image, AtlasJson, Aseprite, Godot };
-
-struct SheetAnswer {
-  SheetFile file = SheetFile::Image;
-  // ?texture: the sheet's PNG as the Godot resource names it, a res://
-  // path or one relative to the .tres; empty: the atlas's meta.image,
-  // beside the .tres.
-  std::string godot_texture;
-};
 
 // Throws RequestError 400 when the answer cannot be had from the request:
 // a file of a request without `sheet` (at /sheet), an .aseprite file of a

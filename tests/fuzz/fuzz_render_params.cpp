@@ -6,11 +6,11 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "http/render_params_wire.h"
 #include "http/request_limits.h"
 #include "param_schema.h"
 #include "pipeline/budget.h"
 #include "pipeline/frames.h"
+#include "pipeline/render_params_wire.h"
 #include "presets.h"
 #include "render/plan/render_params.h"
 #include "request_error.h"
@@ -24,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     toond::http::check_request_counts(request, limits);
     const auto& schema = toond::proto::ParamSchema::render_params();
     schema.validate(request);
-    const auto params = toond::http::render_params_from_wire(
+    const auto params = toond::pipeline::render_params_from_wire(
         schema.validate_and_complete(toond::proto::Presets::builtin().expand(request)));
     toond::pipeline::check_render_budget(params, toond::pipeline::layout_of(params), limits.render);
   } catch (const toond::RequestError&) {

@@ -4,8 +4,8 @@
 #include <string>
 
 #include "gpu/program_cache.h"
-#include "http/render_params_wire.h"
 #include "param_schema.h"
+#include "pipeline/render_params_wire.h"
 #include "presets.h"
 #include "render/frame/gpu_model.h"
 #include "render/run/renderer.h"
@@ -16,7 +16,7 @@ namespace toond::test {
 render::RenderParams complete_params(const nlohmann::json& request) {
   const nlohmann::json completed =
       proto::ParamSchema::render_params().validate_and_complete(proto::Presets::builtin().expand(request));
-  return http::render_params_from_wire(completed);
+  return pipeline::render_params_from_wire(completed);
 }
 
 InProcessScene::InProcessScene(const PlacedModels& models)

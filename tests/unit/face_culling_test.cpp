@@ -8,9 +8,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
+#include "pipeline/render_params_wire.h"
 #include "render/frame/gpu_model.h"
 #include "render/plan/camera.h"
 #include "render/plan/face_culling.h"
@@ -79,7 +79,7 @@ TEST(FaceCulling, NothingIsSkippedWhenTheNearPlaneCutsTheObject) {
 class FaceCullingRender : public test::GlContextTest {
  protected:
   static RenderParams params(const nlohmann::json& request) {
-    return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
+    return pipeline::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
   }
   struct Pair {
     image::Image culled;

@@ -9,9 +9,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
+#include "pipeline/render_params_wire.h"
 #include "render/cull/facing_runs.h"
 #include "render/run/renderer.h"
 #include "scene/import/bundle_import.h"
@@ -148,7 +148,7 @@ TEST(FacingRuns, OnlyASimilarityCarriesTheTestOver) {
 class FacingRunsRender : public test::GlContextTest {
  protected:
   static RenderParams params(const nlohmann::json& request) {
-    return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
+    return pipeline::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
   }
   // The same bytes with runs left out and without; returns how many
   // triangles were left out.

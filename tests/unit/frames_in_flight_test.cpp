@@ -8,9 +8,9 @@
 #include <memory>
 #include <vector>
 
-#include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
+#include "pipeline/render_params_wire.h"
 #include "render/frame/gpu_model.h"
 #include "render/run/renderer.h"
 #include "scene/import/bundle_import.h"
@@ -22,7 +22,7 @@ namespace toond::render {
 namespace {
 
 RenderParams in_flight_params(const nlohmann::json& request) {
-  return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
+  return pipeline::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
 }
 
 // Requests whose frames differ (camera, size, sampling, output), in the

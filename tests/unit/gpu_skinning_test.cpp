@@ -12,8 +12,8 @@
 #include <string>
 
 #include "gltf_import_checks.h"
-#include "http/render_params_wire.h"
 #include "param_schema.h"
+#include "pipeline/render_params_wire.h"
 #include "render/frame/gpu_model.h"
 #include "render/run/renderer.h"
 #include "scene/animation/pose.h"
@@ -78,7 +78,7 @@ Difference compare(const RenderOutput& a, const RenderOutput& b) {
 class GpuSkinning : public test::GlContextTest {
  protected:
   static RenderParams params(const nlohmann::json& request) {
-    return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
+    return pipeline::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
   }
 
   // Renders `model` at `time` of its first clip both ways under each

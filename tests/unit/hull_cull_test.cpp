@@ -16,9 +16,9 @@
 
 #include "gpu/egl_context.h"
 #include "gpu/gl.h"
-#include "http/render_params_wire.h"
 #include "model_checks.h"
 #include "param_schema.h"
+#include "pipeline/render_params_wire.h"
 #include "render/cull/background_thread.h"
 #include "render/cull/hull_cull.h"
 #include "render/frame/gpu_model.h"
@@ -226,7 +226,7 @@ TEST(HullCull, AVertexOutsideTheDepthRangeTurnsTheCullOff) {
 class HullCullRender : public test::GlContextTest {
  protected:
   static RenderParams params(const nlohmann::json& request) {
-    return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
+    return pipeline::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
   }
   struct Pair {
     RenderOutput culled;

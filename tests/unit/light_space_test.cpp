@@ -9,8 +9,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "http/render_params_wire.h"
 #include "param_schema.h"
+#include "pipeline/render_params_wire.h"
 #include "presets.h"
 #include "render/plan/camera.h"
 #include "render/plan/light_space.h"
@@ -74,7 +74,7 @@ TEST(LightSpace, ViewLightsTurnWithTheCameraModelLightsStay) {
 
 RenderParams light_params_of(const json& request) {
   const json expanded = proto::Presets::builtin().expand(request);
-  return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(expanded));
+  return pipeline::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(expanded));
 }
 
 TEST(LightSpace, ASheetsLightsAreInViewSpaceUnlessTheySayOtherwise) {

@@ -9,7 +9,6 @@
 #include <nlohmann/json.hpp>
 
 #include "http/error_response.h"
-#include "render/run/render_service.h"
 #include "scene/reading/import_limits.h"
 
 namespace toond::http {
@@ -68,16 +67,6 @@ TEST(ImportLimitAnswer, TheGltfImportersLimitsAreNamedByHttpToo) {
   EXPECT_EQ(error.at("limit"), "--max-triangles");
   EXPECT_EQ(error.at("message"),
             "m.glb: buffer view 2 decompresses to 27 indices, more than the limit --max-triangles = 8 allows");
-}
-
-TEST(DeadlineAnswer, NamesTheFlagTheRenderLayerDoesNotKnow) {
-  const render::DeadlineExceeded e;
-  EXPECT_EQ(std::string(e.what()).find("--"), std::string::npos) << e.what();
-  httplib::Response res;
-  const json error = error_of(e, res);
-  EXPECT_EQ(res.status, 503);
-  EXPECT_EQ(error.at("code"), "deadline_exceeded");
-  EXPECT_EQ(error.at("message"), "the render's deadline (--render-timeout) passed while it waited in the queue");
 }
 
 }  // namespace

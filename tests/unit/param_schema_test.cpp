@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "http/render_params_wire.h"
 #include "param_schema.h"
+#include "pipeline/render_params_wire.h"
 #include "render/plan/render_params.h"
 
 namespace toond::proto {
@@ -258,7 +258,7 @@ TEST(ParamSchema, SetFromTextRejectsUnknownKeysAndBadText) {
 TEST(RenderParams, ColoursBecomeLinearAndLightsCarryIntensity) {
   json request = {{"background", {0.5, 0.5, 0.5}},
                   {"lights", {{{"type", "directional"}, {"color", {1, 1, 1}}, {"intensity", 2}}}}};
-  const auto p = http::render_params_from_wire(schema().validate_and_complete(request));
+  const auto p = pipeline::render_params_from_wire(schema().validate_and_complete(request));
   EXPECT_NEAR(p.background.r, 0.2140, 1e-3);  // sRGB 0.5 in linear light
   EXPECT_FLOAT_EQ(p.background.a, 1.0f);
   ASSERT_EQ(p.lights.size(), 1u);
@@ -273,7 +273,7 @@ TEST(RenderParams, MaterialsTexturesAndTheHighlightsSourceAreRead) {
                     {"Body", {{"alpha", "opaque"}}}}},
                   {"textures", {{"filter", "nearest"}}},
                   {"specular", {{"source", "all"}}}};
-  const auto p = http::render_params_from_wire(schema().validate_and_complete(request));
+  const auto p = pipeline::render_params_from_wire(schema().validate_and_complete(request));
   ASSERT_EQ(p.materials.size(), 2u);
   EXPECT_EQ(p.materials.at("Hat").alpha, scene::AlphaMode::Blend);
   EXPECT_EQ(p.materials.at("Hat").alpha_cutoff, 0.25f);
@@ -282,7 +282,7 @@ TEST(RenderParams, MaterialsTexturesAndTheHighlightsSourceAreRead) {
   EXPECT_FALSE(p.materials.at("Body").alpha_cutoff);
   EXPECT_EQ(p.texture_filter, render::TextureFilterChoice::Nearest);
   EXPECT_EQ(p.specular.source, render::SpecularSource::All);
-  const auto defaults = http::render_params_from_wire(schema().validate_and_complete(json::object()));
+  const auto defaults = pipeline::render_params_from_wire(schema().validate_and_complete(json::object()));
   EXPECT_TRUE(defaults.materials.empty());
   EXPECT_EQ(defaults.texture_filter, render::TextureFilterChoice::Auto);
   EXPECT_EQ(defaults.specular.source, render::SpecularSource::Material);

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
-#include "http/render_params_wire.h"
 #include "param_schema.h"
+#include "pipeline/render_params_wire.h"
 #include "render/plan/pass_plan.h"
 
 namespace toond::render {
@@ -13,7 +13,7 @@ namespace {
 using nlohmann::json;
 
 RenderParams params(const json& request) {
-  return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
+  return pipeline::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
 }
 
 // Whether the main pass's programs get #define d.

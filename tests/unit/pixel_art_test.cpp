@@ -8,7 +8,6 @@
 #include <random>
 #include <set>
 
-#include "http/render_params_wire.h"
 #include "image/block_upscale.h"
 #include "image/palette_quantise.h"
 #include "image/webp_animation.h"
@@ -16,6 +15,7 @@
 #include "param_schema.h"
 #include "pipeline/budget.h"
 #include "pipeline/frames.h"
+#include "pipeline/render_params_wire.h"
 #include "pipeline/sheet_checks.h"
 #include "render/plan/pixel_art_frame.h"
 #include "request_error.h"
@@ -67,7 +67,7 @@ std::set<std::uint32_t> visible_colours(const Image& img) {
 }
 
 render::RenderParams params_of(const json& request) {
-  return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
+  return pipeline::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
 }
 
 // The budget as the pipeline checks it: on the sheet laid out once.
@@ -279,7 +279,7 @@ TEST(PixelArtParams, BadInputsAreRefusedWithTheirPath) {
   const auto& schema = proto::ParamSchema::render_params();
   auto path_of = [&](const json& pixel_art) {
     try {
-      const render::RenderParams p = http::render_params_from_wire(
+      const render::RenderParams p = pipeline::render_params_from_wire(
           schema.validate_and_complete({{"width", 48}, {"height", 48}, {"sheet", {{"pixel_art", pixel_art}}}}));
       pipeline::check_sheet_params(p);
     } catch (const RequestError& e) {
@@ -300,7 +300,7 @@ TEST(PixelArtParams, BadInputsAreRefusedWithTheirPath) {
   EXPECT_EQ(path_of({{"scale", 6}, {"palette", {"#123456"}}, {"dither", true}}), "(accepted)");
   auto layer_path = [&](const std::string& output, const json& sheet) {
     try {
-      pipeline::check_sheet_params(http::render_params_from_wire(
+      pipeline::check_sheet_params(pipeline::render_params_from_wire(
           schema.validate_and_complete({{"width", 48}, {"height", 48}, {"output", output}, {"sheet", sheet}})));
     } catch (const RequestError& e) {
       return e.path();

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "http/render_params_wire.h"
 #include "param_schema.h"
+#include "pipeline/render_params_wire.h"
 #include "render/plan/render_params.h"
 
 namespace toond::render {
@@ -26,7 +26,7 @@ struct Mismatch {
 };
 
 TEST(RenderParamsDefaults, EveryInitialValueIsTheSchemasDefault) {
-  const RenderParams schema = http::render_params_from_wire(
+  const RenderParams schema = pipeline::render_params_from_wire(
       proto::ParamSchema::render_params().validate_and_complete(nlohmann::json::object()));
   const RenderParams initial;
   Mismatch m;
@@ -118,7 +118,7 @@ TEST(RenderParamsDefaults, AClipEntrysInitialValuesAreTheSchemasDefaults) {
   const SheetClip initial_clip;
   const json entry = {{"clip", "Walk"}};
   for (const json& animation : {entry, json::array({entry, entry})}) {
-    const RenderParams schema = http::render_params_from_wire(
+    const RenderParams schema = pipeline::render_params_from_wire(
         proto::ParamSchema::render_params().validate_and_complete({{"sheet", {{"animation", animation}}}}));
     ASSERT_TRUE(schema.sheet) << animation;
     ASSERT_FALSE(schema.sheet->clips.empty()) << animation;
@@ -127,14 +127,14 @@ TEST(RenderParamsDefaults, AClipEntrysInitialValuesAreTheSchemasDefaults) {
       EXPECT_EQ(clip.range.has_value(), initial_clip.range.has_value()) << "sheet.animation.range in " << animation;
     }
   }
-  const RenderParams sheet = http::render_params_from_wire(
+  const RenderParams sheet = pipeline::render_params_from_wire(
       proto::ParamSchema::render_params().validate_and_complete({{"sheet", json::object()}}));
   ASSERT_TRUE(sheet.sheet);
   const SheetParams initial_sheet;
   EXPECT_EQ(sheet.sheet->pack, initial_sheet.pack) << "sheet.pack";
   EXPECT_EQ(sheet.sheet->power_of_two, initial_sheet.power_of_two) << "sheet.power_of_two";
-  const RenderParams schema =
-      http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete({{"animation", entry}}));
+  const RenderParams schema = pipeline::render_params_from_wire(
+      proto::ParamSchema::render_params().validate_and_complete({{"animation", entry}}));
   ASSERT_TRUE(schema.animation);
   const AnimationParams initial;
   EXPECT_EQ(schema.animation->time, initial.time) << "animation.time";

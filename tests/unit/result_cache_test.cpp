@@ -1,9 +1,10 @@
 // The result cache's bookkeeping and ETag matching, without a daemon.
 #include <gtest/gtest.h>
 
-#include "http/result_cache.h"
+#include "http/render_answer.h"
+#include "pipeline/result_cache.h"
 
-namespace toond::http {
+namespace toond::pipeline {
 namespace {
 
 std::shared_ptr<const CachedRender> png_of(std::size_t bytes, char fill = 'x') {
@@ -56,6 +57,7 @@ TEST(ETag, IsAQuotedHashOfTheBytes) {
 }
 
 TEST(ETag, IfNoneMatchListsWeakTagsAndStar) {
+  using http::etag_matches;
   const std::string tag = etag_of("png");
   EXPECT_TRUE(etag_matches(tag, tag));
   EXPECT_TRUE(etag_matches("*", tag));
@@ -67,4 +69,4 @@ TEST(ETag, IfNoneMatchListsWeakTagsAndStar) {
 }
 
 }  // namespace
-}  // namespace toond::http
+}  // namespace toond::pipeline

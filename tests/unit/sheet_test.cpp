@@ -8,11 +8,11 @@
 #include <utility>
 #include <vector>
 
-#include "http/render_params_wire.h"
 #include "limit_error.h"
 #include "param_schema.h"
 #include "pipeline/budget.h"
 #include "pipeline/frames.h"
+#include "pipeline/render_params_wire.h"
 #include "presets.h"
 #include "render/atlas/sheet_atlas.h"
 #include "render/plan/camera.h"
@@ -39,7 +39,7 @@ std::vector<FramePlan> plans_of(const SheetLayout& layout, const RenderParams& p
 
 RenderParams params_of(const json& request) {
   const json expanded = proto::Presets::builtin().expand(request);
-  return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(expanded));
+  return pipeline::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(expanded));
 }
 
 TEST(SheetLayout, AbsentFieldsComeFromTheCameraAndAFullTurn) {

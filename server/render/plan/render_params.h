@@ -1,8 +1,8 @@
 #pragma once
-// Render parameters as the renderer uses them: resolved and typed. The HTTP
-// layer builds them from a request that ParamSchema::validate_and_complete()
+// Render parameters as the renderer uses them: resolved and typed. The
+// pipeline builds them from a request that ParamSchema::validate_and_complete()
 // has checked and filled with the schema's defaults
-// (http/render_params_wire.h), so every field is present and in range here;
+// (pipeline/render_params_wire.h), so every field is present and in range here;
 // names and defaults live in proto/render-params.schema.json, not in this
 // file.
 #include <array>

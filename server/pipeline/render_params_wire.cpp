@@ -1,9 +1,9 @@
-#include "http/render_params_wire.h"
+#include "pipeline/render_params_wire.h"
 
 #include <algorithm>
 #include <string>
 
-namespace toond::http {
+namespace toond::pipeline {
 
 // Every type built here is the renderer's; spelling render:: on each would
 // hide the mapping.
@@ -306,4 +306,4 @@ RenderParams render_params_from_wire(const json& j) {
   return p;
 }
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

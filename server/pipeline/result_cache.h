@@ -3,7 +3,7 @@
 // the canonical (preset-expanded, default-completed) parameters, which name
 // the content-addressed models. An identical request is answered from here
 // without touching the render thread. Bounded by bytes, least recently used
-// out first; thread-safe.
+// out first; thread-safe. The pipeline's entry (render_entry.h) owns it.
 #include <cstddef>
 #include <list>
 #include <memory>
@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-namespace toond::http {
+namespace toond::pipeline {
 
 struct CachedRender {
   std::string body;  // the image: a PNG, or what content_type says
@@ -29,10 +29,6 @@ struct CachedRender {
 // A strong ETag for a body: its 64-bit FNV-1a hash, quoted. The same bytes
 // get the same tag on every replica.
 std::string etag_of(const std::string& body);
-
-// Whether an If-None-Match header value matches `etag` ("*", or one of a
-// comma-separated list; weak tags compare by their opaque part).
-bool etag_matches(const std::string& if_none_match, const std::string& etag);
 
 class ResultCache {
  public:
@@ -66,4 +62,4 @@ class ResultCache {
   std::size_t misses_ = 0;
 };
 
-}  // namespace toond::http
+}  // namespace toond::pipeline

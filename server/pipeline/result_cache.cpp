@@ -1,12 +1,9 @@
-#include "http/result_cache.h"
+#include "pipeline/result_cache.h"
 
 #include <cstdint>
 #include <cstdio>
-#include <string_view>
 
-#include "text/trim.h"
-
-namespace toond::http {
+namespace toond::pipeline {
 
 std::string etag_of(const std::string& body) {
   std::uint64_t h = 14695981039346656037ull;
@@ -17,25 +14,6 @@ std::string etag_of(const std::string& body) {
   char buf[24];
   std::snprintf(buf, sizeof buf, "\"%016llx\"", static_cast<unsigned long long>(h));
   return buf;
-}
-
-bool etag_matches(const std::string& if_none_match, const std::string& etag) {
-  auto strong_tag = [](std::string_view s) {
-    s = text::trim(s);
-    // If-None-Match compares weakly: W/"x" matches "x".
-    if (s.rfind("W/", 0) == 0) s.remove_prefix(2);
-    return std::string(s);
-  };
-  std::size_t pos = 0;
-  while (pos <= if_none_match.size()) {
-    const std::size_t comma = if_none_match.find(',', pos);
-    const std::string tag = strong_tag(
-        std::string_view(if_none_match).substr(pos, comma == std::string::npos ? std::string::npos : comma - pos));
-    if (tag == "*" || (!tag.empty() && tag == strong_tag(etag))) return true;
-    if (comma == std::string::npos) break;
-    pos = comma + 1;
-  }
-  return false;
 }
 
 std::size_t ResultCache::cost(const std::string& key, const CachedRender& r) {
@@ -92,4 +70,4 @@ std::size_t ResultCache::misses() const {
   return misses_;
 }
 
-}  // namespace toond::http
+}  // namespace toond::pipeline
