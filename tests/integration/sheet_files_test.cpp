@@ -195,7 +195,8 @@ TEST_F(SheetFiles, PackedLayersShareOneAtlasAndOverlayAsTheirGrids) {
   int smaller = 0;
   for (const auto& [name, frame] : atlas["frames"].items()) {
     const json& own = bare_atlas["frames"][name]["frame"];
-    smaller += own["w"].get<int>() * own["h"].get<int>() < frame["frame"]["w"].get<int>() * frame["frame"]["h"].get<int>();
+    smaller +=
+        own["w"].get<int>() * own["h"].get<int>() < frame["frame"]["w"].get<int>() * frame["frame"]["h"].get<int>();
   }
   EXPECT_EQ(smaller, 24) << "every frame of the layers is cut wider than the fills alone";
 }
