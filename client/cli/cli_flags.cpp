@@ -228,7 +228,9 @@ as the extension of -o says: walk.aseprite (?atlas=aseprite: one .aseprite
 file for Aseprite, Unity, Bevy, LOVE, MonoGame), walk.tres (?atlas=godot: a
 Godot 4 SpriteFrames resource, and walk.png beside it, which it names),
 walk.json (?atlas=json: the atlas alone); --set sheet.pack=true trims and
-packs the tiles.
+packs the tiles; --set sheet.layers=color,lines draws each frame as the
+colour without its lines and the lines alone (a layer each in the
+.aseprite file; packed alike).
 A clip's range (animation.range, sheet.animation.range) is two numbers,
 seconds on the file's time base (--set sheet.animation.range=5.6,6.23),
 or frames where the clip has a frame rate (toon info lists it): with

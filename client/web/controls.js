@@ -82,8 +82,10 @@ function enumOf(schema) {
   return null;
 }
 
-// outline.method: a name, or a list of names from the same set.
+// outline.method: a name, or a list of names from the same set; sheet.layers:
+// a list of names alone.
 function multiEnumOf(schema) {
+  if (schema.type === 'array' && Array.isArray(schema.items?.enum)) return schema.items.enum;
   if (!Array.isArray(schema.oneOf) || schema.oneOf.length !== 2) return null;
   const single = schema.oneOf.find((s) => Array.isArray(s.enum));
   const list = schema.oneOf.find((s) => s.type === 'array' && s.items && Array.isArray(s.items.enum));
@@ -374,10 +376,14 @@ export class ControlPanel {
       return check;
     });
     box.append(el('p', { class: 'field-error', role: 'alert' }));
+    const listOnly = schema.type === 'array';
     const send = () => {
       const chosen = checks.filter((c) => c.checked).map((c) => c.value);
-      // One name is sent as a name, several as a list; none is left to the server to refuse.
-      this.handlers.change(pointer, chosen.length === 1 ? chosen[0] : chosen, true);
+      // A field that takes a name gets one name as a name, several as a list
+      // and none left to the server to refuse; a list alone with none
+      // checked goes back to absent.
+      if (!listOnly) this.handlers.change(pointer, chosen.length === 1 ? chosen[0] : chosen, true);
+      else this.handlers.change(pointer, chosen.length ? chosen : undefined, true);
     };
     for (const check of checks) check.addEventListener('change', send);
     parent.append(box);

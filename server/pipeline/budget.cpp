@@ -1,5 +1,6 @@
 #include "pipeline/budget.h"
 
+#include <algorithm>
 #include <string>
 
 #include "limit_error.h"
@@ -20,29 +21,35 @@ std::string count(double n) { return std::to_string(static_cast<unsigned long lo
 // checks that follow.
 // An animation (sheet.animate) holds every frame whole, so its frames'
 // pixels count instead of the sheet's (the same but for padding); a
-// pixel-art sheet's frames are drawn as `drawn` says.
+// pixel-art sheet's frames are drawn as `drawn` says. A sheet of several
+// layers (sheet.layers) counts as that many sheets, as many as the answers
+// that draw them all (pipeline/sheet_layers.h) hold at once.
 void check_sheet_budget(const RenderParams& p, const SheetLayout& layout, const RenderParams& drawn,
                         const RenderLimits& limits) {
-  const double pixels = p.sheet->animate ? static_cast<double>(layout.frames.size()) * p.width * p.height
-                                         : static_cast<double>(layout.width) * layout.height;
+  const std::size_t layers = std::max<std::size_t>(1, p.sheet->layers.size());
+  const std::string in_layers = layers > 1 ? " in " + std::to_string(layers) + " layers" : "";
+  const std::string fewer_layers = layers > 1 ? ", fewer sheet.layers" : "";
+  const double pixels =
+      static_cast<double>(layers) * (p.sheet->animate ? static_cast<double>(layout.frames.size()) * p.width * p.height
+                                                      : static_cast<double>(layout.width) * layout.height);
   if (pixels > static_cast<double>(limits.max_output_pixels)) {
     const std::string what = p.sheet->animate ? "the animation of " + std::to_string(layout.frames.size()) + " frames"
                                               : "the sheet of " + std::to_string(layout.columns) + " × " +
                                                     std::to_string(layout.rows) + " tiles";
     throw LimitError(422, "--max-output-pixels",
-                     what + " is " + count(pixels) + " pixels, more than the limit --max-output-pixels = " +
-                         count(static_cast<double>(limits.max_output_pixels)) +
-                         "; lower sheet.frames, the pitches, or width and height",
+                     what + in_layers + " is " + count(pixels) + " pixels, more than the limit --max-output-pixels = " +
+                         count(static_cast<double>(limits.max_output_pixels)) + "; lower sheet.frames, the pitches" +
+                         fewer_layers + ", or width and height",
                      "/sheet/frames");
   }
-  const double samples = static_cast<double>(layout.frames.size()) * drawn.width * drawn.supersample * drawn.height *
-                         drawn.supersample * drawn.msaa;
+  const double frames = static_cast<double>(layout.frames.size() * layers);
+  const double samples = frames * drawn.width * drawn.supersample * drawn.height * drawn.supersample * drawn.msaa;
   if (samples > static_cast<double>(limits.max_samples)) {
     throw LimitError(
         422, "--max-samples",
-        std::to_string(layout.frames.size()) + " frames × width × height × supersample² × msaa = " + count(samples) +
+        count(frames) + " frames" + in_layers + " × width × height × supersample² × msaa = " + count(samples) +
             " samples, more than the limit --max-samples = " + count(static_cast<double>(limits.max_samples)) +
-            "; lower sheet.frames, the pitches, msaa or supersample",
+            "; lower sheet.frames, the pitches" + fewer_layers + ", msaa or supersample",
         "/sheet/frames");
   }
 }

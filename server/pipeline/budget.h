@@ -18,7 +18,8 @@ inline constexpr int kMaxDrawnSide = 16384;
 // to lower) when a render would exceed the output pixels, the sample budget
 // (width × supersample × height × supersample × msaa), the largest
 // framebuffer side, or the lights or objects allowed. A sheet's whole image
-// and all its frames' samples count too: `layout` is the sheet's
+// and all its frames' samples count too, once per layer of sheet.layers
+// (the answers that draw them all hold them at once): `layout` is the sheet's
 // (frames.h: layout_of), none for a single image.
 void check_render_budget(const RenderParams& params, const std::optional<render::SheetLayout>& layout,
                          const RenderLimits& limits = {});

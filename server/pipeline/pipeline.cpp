@@ -7,6 +7,7 @@
 #include "pipeline/plan.h"
 #include "pipeline/queue.h"
 #include "pipeline/sheet_answer.h"
+#include "pipeline/sheet_layers.h"
 
 namespace toond::pipeline {
 namespace {
@@ -33,15 +34,16 @@ double render_thread_ms(const render::RenderOutput& out) {
   return ms;
 }
 
-// Each frame as a job for the render threads, in layout order: its poses,
-// its plan and the request's schedule (a sheet waits in the lane its whole
-// price says, its client's turn, all its frames paced alike).
+// Each frame as a job for the render threads, in layout order (layer after
+// layer, sheet_layers.h: each layer's frames take the same poses): its
+// poses, its plan and the request's schedule (a sheet waits in the lane its
+// whole price says, its client's turn, all its frames paced alike).
 std::vector<render::RenderJob> frame_jobs(const Request& request, const std::vector<ObjectPoses>& poses,
                                           std::vector<render::FramePlan> plans, const render::Schedule& schedule) {
   std::vector<render::RenderJob> jobs;
   for (std::size_t i = 0; i < plans.size(); ++i) {
     render::RenderJob job{.objects = request.objects, .plan = std::move(plans[i]), .schedule = schedule};
-    for (std::size_t k = 0; k < job.objects.size(); ++k) job.objects[k].pose = poses[i][k];
+    for (std::size_t k = 0; k < job.objects.size(); ++k) job.objects[k].pose = poses[i % poses.size()][k];
     jobs.push_back(std::move(job));
   }
   return jobs;
@@ -81,7 +83,7 @@ Rendered render(Request request, const std::string& client, Services& services) 
                                   .pacing = pacing_of(rendered.price),
                                   .deadline = submitted + services.deadline};
   if (request.pins) request.pins->lease();
-  Assembly assembly(request.params, request.layout);
+  Assembly assembly(request.params, request.layout, drawn_layers(request.params, request.answer.file).size());
   queue_frames(services.renderer, frame_jobs(request, poses, std::move(plans), schedule), services.deadline, assembly);
   render::RenderOutput out = assembly.finish();
   if (atlas && request.params.sheet->pack) pack_sheet_output(out, *atlas, request);

@@ -1,6 +1,7 @@
 #include "pipeline/plan.h"
 
 #include "pipeline/frames.h"
+#include "pipeline/sheet_layers.h"
 
 namespace toond::pipeline {
 
@@ -20,12 +21,15 @@ std::vector<render::FramePlan> plan_frames(const Request& request, const std::ve
 std::vector<render::FramePlan> plan_frames(const Request& request, const std::vector<ObjectPoses>& poses,
                                            const render::RenderParams& params,
                                            const std::optional<render::SheetLayout>& layout) {
-  std::vector<render::RenderParams> drawn = drawn_frames(params, layout);
+  const std::vector<render::RenderParams> drawn = drawn_frames(params, layout);
   // Every frame's poses are framed alike (pose.h): one framing for all.
   const auto scene = render::frame_scene_of(planned_objects(request, poses.front()));
   std::vector<render::FramePlan> plans;
-  for (std::size_t i = 0; i < drawn.size(); ++i) {
-    plans.push_back(render::plan_frame(std::move(drawn[i]), planned_objects(request, poses[i]), scene));
+  for (const render::Output layer : drawn_layers(params, request.answer.file)) {
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      plans.push_back(
+          render::plan_frame(layer_params(drawn[i], layer, params), planned_objects(request, poses[i]), scene));
+    }
   }
   return plans;
 }

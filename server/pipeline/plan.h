@@ -15,7 +15,8 @@ namespace toond::pipeline {
 std::vector<render::PlannedObject> planned_objects(const Request& request, const ObjectPoses& poses = {});
 
 // Every frame's plan, in layout order (frames.h): its parameters as drawn
-// and its poses, all in one framing.
+// and its poses, all in one framing; a sheet drawn as several layers
+// (sheet_layers.h) has them layer after layer, the output's first.
 std::vector<render::FramePlan> plan_frames(const Request& request, const std::vector<ObjectPoses>& poses);
 // The same for the request's objects and poses drawn with `params` laid
 // out as `layout` instead of its own: the price's what-ifs (price.h).

@@ -7,6 +7,7 @@
 
 #include "pipeline/frames.h"
 #include "pipeline/plan.h"
+#include "pipeline/sheet_layers.h"
 
 namespace toond::pipeline {
 namespace {
@@ -97,7 +98,12 @@ void check_render_cost(const Request& request, const std::vector<ObjectPoses>& p
   const double limit = limits.max_render_cost;
   if (limit <= 0 || p.total.units() <= limit) return;
   std::string message = "the render is predicted to cost " + p.total.describe();
-  if (p.frames > 1) message += " for its " + std::to_string(p.frames) + " frames";
+  const std::size_t layers = drawn_layers(request.params, request.answer.file).size();
+  if (layers > 1) {
+    message += " for its " + std::to_string(p.frames / layers) + " frames × " + std::to_string(layers) + " layers";
+  } else if (p.frames > 1) {
+    message += " for its " + std::to_string(p.frames) + " frames";
+  }
   message += ", more than the limit --max-render-cost = " + fmt(limit) + " Msamples; the model's surface lies up to " +
              fmt(deepest_layers(request)) + " layers deep";
   const std::vector<std::string> ways = ways_under(request, poses, limit);

@@ -1,6 +1,7 @@
 #pragma once
 // The price of a render request, worked out before it is queued
-// (render/plan/render_cost.h): a sheet costs all its frames. Over the daemon's
+// (render/plan/render_cost.h): a sheet costs all its frames, in every layer
+// it draws (sheet_layers.h). Over the daemon's
 // --max-render-cost the request is refused with the figures and what would
 // bring it under; under it, the price picks the queue lane and whether the
 // draws are paced (render/frame/draw_pacing.h).

@@ -90,6 +90,10 @@ SheetParams sheet_of(const json& s, const CameraParams& camera) {
   sheet.frame_ms = s.at("frame_ms").get<int>();
   sheet.pack = s.at("pack").get<bool>();
   sheet.power_of_two = s.at("power_of_two").get<bool>();
+  if (s.contains("layers")) {
+    // The schema lets color and lines alone in.
+    for (const json& layer : s.at("layers")) sheet.layers.push_back(layer == "lines" ? Output::Lines : Output::Color);
+  }
   if (s.contains("animation")) {
     const json& a = s.at("animation");
     sheet.clip_list = a.is_array();

@@ -1,9 +1,12 @@
 #include "pipeline/sheet_answer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <vector>
 
 #include "pipeline/encode.h"
 #include "pipeline/request.h"
+#include "pipeline/sheet_layers.h"
 #include "render/plan/pass_plan.h"
 #include "request_error.h"
 #include "sheet_files/aseprite_file.h"
@@ -47,7 +50,19 @@ std::string texture_path(const Request& request, const nlohmann::ordered_json& a
   return atlas.at("meta").at("image").get<std::string>();
 }
 
-std::string layer_name(render::Output output) { return output == render::Output::Lines ? "lines" : "color"; }
+// The layers drawn (sheet_layers.h), colour below lines as a painter
+// stacks them; Aseprite lists layers bottom first.
+std::vector<sheet_files::AsepriteLayer> aseprite_layers(const render::RenderOutput& out, const Request& request) {
+  const std::vector<render::Output> drawn = drawn_layers(request.params, request.answer.file);
+  std::vector<sheet_files::AsepriteLayer> layers;
+  for (const render::Output layer : {render::Output::Color, render::Output::Lines}) {
+    const auto at = std::find(drawn.begin(), drawn.end(), layer);
+    if (at == drawn.end()) continue;
+    const std::size_t index = static_cast<std::size_t>(at - drawn.begin());
+    layers.push_back({layer_name(layer), index == 0 ? &out.image : &out.other_layers[index - 1]});
+  }
+  return layers;
+}
 
 }  // namespace
 
@@ -83,7 +98,9 @@ bool needs_drawing(const Request& request) {
 void pack_sheet_output(render::RenderOutput& out, nlohmann::ordered_json& atlas, const Request& request) {
   const auto start = std::chrono::steady_clock::now();
   const render::SheetParams& sheet = *request.params.sheet;
-  sheet_files::pack_sheet(out.image, atlas, {.padding = sheet.padding, .power_of_two = sheet.power_of_two});
+  std::vector<image::Image*> layers{&out.image};
+  for (image::Image& layer : out.other_layers) layers.push_back(&layer);
+  sheet_files::pack_sheet(layers, atlas, {.padding = sheet.padding, .power_of_two = sheet.power_of_two});
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   out.timings.push_back({"pack", ms, false, ms});
 }
@@ -104,7 +121,7 @@ Encoded encode_sheet_file(const render::RenderOutput* out, const Request& reques
       encoded.stage = "godot";
       break;
     case SheetFile::Aseprite:
-      encoded.body = sheet_files::aseprite_file({{layer_name(request.params.output), &out->image}}, atlas);
+      encoded.body = sheet_files::aseprite_file(aseprite_layers(*out, request), atlas);
       encoded.content_type = "application/octet-stream";
       encoded.headers.emplace_back("Content-Disposition", "attachment; filename=\"sheet.aseprite\"");
       encoded.stage = "aseprite";

@@ -28,14 +28,18 @@ void check_sheet_answer(const Request& request);
 // pixels, or a packed sheet's atlas (the trims are the pixels').
 bool needs_drawing(const Request& request);
 
-// sheet.pack: `out.image` trimmed and packed, and `atlas` rewritten to
-// match (sheet_files/packed_sheet.h), with the sheet's padding between
-// tiles and its power_of_two; its time goes into out.timings as `pack`.
+// sheet.pack: `out.image` (and the sheet's other layers, out.other_layers:
+// each tile cut to all the layers' pixels) trimmed and packed, and `atlas`
+// rewritten to match (sheet_files/packed_sheet.h), with the sheet's padding
+// between tiles and its power_of_two; its time goes into out.timings as
+// `pack`.
 void pack_sheet_output(render::RenderOutput& out, nlohmann::ordered_json& atlas, const Request& request);
 
 // The answer's bytes when it is a file and not the image: the atlas as JSON
 // or a Godot resource (`out` may then be null: nothing was drawn), or the
-// .aseprite file of `out`'s sheet, its one layer named after the output.
+// .aseprite file of `out`'s sheet, a layer per layer drawn (sheet_layers.h:
+// the output alone, or sheet.layers), named `color` and `lines`, lines
+// above.
 Encoded encode_sheet_file(const render::RenderOutput* out, const Request& request, const nlohmann::ordered_json& atlas);
 
 }  // namespace toond::pipeline

@@ -11,7 +11,9 @@ namespace toond::pipeline {
 // whole art pixels, or the blocks would not line up with the tile), or when
 // pixel art, animate or pack is asked of a data layer (output depth,
 // normal or id; at /sheet/pixel_art, /sheet/animate or /sheet/pack), or
-// pack of an animated WebP (at /sheet/pack).
+// pack of an animated WebP (at /sheet/pack), or when sheet.layers is given
+// with an output that is not among them or is not color or lines (at
+// /sheet/layers).
 void check_sheet_params(const render::RenderParams& params);
 
 }  // namespace toond::pipeline

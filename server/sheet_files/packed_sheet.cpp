@@ -19,25 +19,27 @@ void copy_rect(const image::Image& from, const PixelRect& rect, image::Image& to
 
 }  // namespace
 
-void pack_sheet(image::Image& sheet, nlohmann::ordered_json& atlas, const PackOptions& options) {
+void pack_sheet(std::span<image::Image* const> layers, nlohmann::ordered_json& atlas, const PackOptions& options) {
   const AtlasView view = view_of(atlas);
+  const std::vector<const image::Image*> sheets(layers.begin(), layers.end());
   std::vector<PixelRect> kept;
   std::vector<PackSize> sizes;
   for (const AtlasFrame& frame : view.frames) {
-    PixelRect bounds = visible_bounds(sheet, frame.frame);
+    PixelRect bounds = visible_bounds(sheets, frame.frame);
     if (bounds.w == 0) bounds = {frame.frame.x, frame.frame.y, 1, 1};
     kept.push_back(bounds);
     sizes.push_back({bounds.w, bounds.h});
   }
   const Packing packing = pack_rects(sizes, options);
-  image::Image packed{packing.width, packing.height,
-                      std::vector<std::uint8_t>(static_cast<std::size_t>(packing.width) * packing.height * 4, 0)};
+  const image::Image blank{packing.width, packing.height,
+                           std::vector<std::uint8_t>(static_cast<std::size_t>(packing.width) * packing.height * 4, 0)};
+  std::vector<image::Image> packed(layers.size(), blank);
   json& frames = atlas.at("frames");
   for (std::size_t i = 0; i < view.frames.size(); ++i) {
     const AtlasFrame& frame = view.frames[i];
     const PixelRect& bounds = kept[i];
     const PackPlace& place = packing.places[i];
-    copy_rect(sheet, bounds, packed, place);
+    for (std::size_t l = 0; l < layers.size(); ++l) copy_rect(*layers[l], bounds, packed[l], place);
     json& entry = frames.at(frame.name);
     entry["frame"] = rect_json(place.x, place.y, bounds.w, bounds.h);
     entry["trimmed"] = bounds.w != frame.tile_w || bounds.h != frame.tile_h;
@@ -49,7 +51,7 @@ void pack_sheet(image::Image& sheet, nlohmann::ordered_json& atlas, const PackOp
   meta.erase("columns");
   meta.erase("rows");
   meta["packed"] = true;
-  sheet = std::move(packed);
+  for (std::size_t l = 0; l < layers.size(); ++l) *layers[l] = std::move(packed[l]);
 }
 
 }  // namespace toond::sheet_files

@@ -28,4 +28,23 @@ PixelRect visible_bounds(const image::Image& sheet, const PixelRect& tile) {
   return {left, top, right - left + 1, bottom - top + 1};
 }
 
+PixelRect visible_bounds(std::span<const image::Image* const> sheets, const PixelRect& tile) {
+  PixelRect all{tile.x, tile.y, 0, 0};
+  for (const image::Image* sheet : sheets) {
+    const PixelRect one = visible_bounds(*sheet, tile);
+    if (one.w == 0) continue;
+    if (all.w == 0) {
+      all = one;
+      continue;
+    }
+    const int right = std::max(all.x + all.w, one.x + one.w);
+    const int bottom = std::max(all.y + all.h, one.y + one.h);
+    all.x = std::min(all.x, one.x);
+    all.y = std::min(all.y, one.y);
+    all.w = right - all.x;
+    all.h = bottom - all.y;
+  }
+  return all;
+}
+
 }  // namespace toond::sheet_files

@@ -9,6 +9,7 @@ import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import Aseprite from 'ase-parser';
 import { argument, launchChromium, openPage, startDaemon } from './harness.mjs';
 import { dragSlider, imageStats, rendersShown, waitForFullRender } from './page_actions.mjs';
 
@@ -223,6 +224,33 @@ async function checkSheetFiles(page, requests) {
   check(ase.name === 'toond-sheet.aseprite' && ase.bytes.readUInt16LE(4) === 0xA5E0 && ase.bytes.readUInt16LE(6) === 6
         && await page.locator('#atlas-download').isHidden(),
   '.aseprite: one file of the 6 frames, asked for with ?atlas=aseprite', `${ase.name}, ${ase.bytes.length} bytes`);
+  // sheet.layers: a checkbox per layer among the sheet's controls; with
+  // colour and lines checked the sheet is asked for as both layers and the
+  // .aseprite file holds a layer each.
+  const layerBoxes = await page.locator('[data-path="/sheet/layers"] input[type=checkbox]')
+    .evaluateAll((boxes) => boxes.map((b) => b.value));
+  check(layerBoxes.join() === 'color,lines', 'a checkbox per layer the schema\'s sheet.layers lists', layerBoxes.join());
+  for (const layer of ['color', 'lines']) {
+    const before = Number(await page.getAttribute('#sheet-view', 'data-sheets'));
+    await page.check(`[data-path="/sheet/layers"] input[value=${layer}]`);
+    await page.waitForFunction((n) => Number(document.getElementById('sheet-view').dataset.sheets) > n
+      && !document.getElementById('sheet').classList.contains('busy'), before, { timeout: STEP_TIMEOUT_MS });
+  }
+  const layered = await download('aseprite');
+  const layeredFile = new Aseprite(layered.bytes, 'layers.aseprite');
+  layeredFile.parse();
+  check(layered.asked?.body.sheet?.layers?.join() === 'color,lines'
+        && layeredFile.layers.map((l) => l.name).join() === 'color,lines',
+  'colour and lines checked: the .aseprite file holds both layers', layeredFile.layers.map((l) => l.name).join());
+  for (const layer of ['lines', 'color']) {
+    const before = Number(await page.getAttribute('#sheet-view', 'data-sheets'));
+    await page.uncheck(`[data-path="/sheet/layers"] input[value=${layer}]`);
+    await page.waitForFunction((n) => Number(document.getElementById('sheet-view').dataset.sheets) > n
+      && !document.getElementById('sheet').classList.contains('busy'), before, { timeout: STEP_TIMEOUT_MS });
+  }
+  const unlayered = [...requests].reverse().find((r) => r.body.sheet);
+  check(unlayered && !('layers' in unlayered.body.sheet), 'none checked leaves sheet.layers out',
+    JSON.stringify(unlayered?.body.sheet));
   const tres = await download('godot');
   check(tres.name === 'toond-sheet.tres' && tres.bytes.toString().includes('path="toond-sheet.png"')
         && await page.getAttribute('#sheet-download', 'download') === 'toond-sheet.png'

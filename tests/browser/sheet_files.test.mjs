@@ -5,7 +5,7 @@
 // pinned in package.json), and as ?atlas=godot by a reader of Godot's
 // text-resource grammar (godot_resource.mjs); both are checked against the
 // atlas (?atlas=json) and the sheet's PNG as Chromium decodes it, packed
-// (sheet.pack) and not.
+// (sheet.pack) and not, and drawn as two layers (sheet.layers).
 //   node sheet_files.test.mjs --toond PATH --exported DIR
 // Exit 0: every check passed; 1: a check failed.
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -77,8 +77,10 @@ function largestDifference(a, b) {
   return largest;
 }
 
-function checkAseprite(label, files) {
-  const { atlas, image } = files;
+// `layers`: the file's layers bottom first, each with the sheet its cels
+// must show (by default the one colour layer, the PNG of the request).
+function checkAseprite(label, files, layers = [{ name: 'color', image: files.image }]) {
+  const { atlas } = files;
   const ase = new Aseprite(files.aseprite, 'walk.aseprite');
   ase.parse();
   const frames = Object.values(atlas.frames);
@@ -91,19 +93,24 @@ function checkAseprite(label, files) {
         && t.to === tags[i].to && t.animDirection === 'Forward' && t.repeat === 0),
   `${label}: one tag per direction, with the atlas's name, from and to, looping forward`,
   ase.tags.map((t) => `${t.name} ${t.from}-${t.to} ${t.animDirection} x${t.repeat}`).join('; '));
-  check(ase.layers.length === 1 && ase.layers[0].name === 'color', `${label}: one layer, the colour`,
+  const names = layers.map((l) => l.name);
+  check(ase.layers.map((l) => l.name).join() === names.join(), `${label}: the layers ${names.join(', ')}, bottom first`,
     ase.layers.map((l) => l.name).join());
   let worst = 0;
   let cels = 0;
+  let framesWithEveryLayer = 0;
   ase.frames.forEach((f, i) => {
-    const canvas = Buffer.alloc(96 * 96 * 4);
+    const canvases = layers.map(() => Buffer.alloc(96 * 96 * 4));
     for (const cel of f.cels) {
       cels += 1;
+      const canvas = canvases[cel.layerIndex];
       for (let y = 0; y < cel.h; y++) cel.rawCelData.copy(canvas, ((cel.ypos + y) * 96 + cel.xpos) * 4, y * cel.w * 4, (y + 1) * cel.w * 4);
     }
-    worst = Math.max(worst, largestDifference(canvas, tileOf(image, frames[i])));
+    if (new Set(f.cels.map((c) => c.layerIndex)).size === layers.length) framesWithEveryLayer += 1;
+    layers.forEach((l, k) => { worst = Math.max(worst, largestDifference(canvases[k], tileOf(l.image, frames[i]))); });
   });
-  check(cels === 24 && worst <= 1, `${label}: each frame's cel, at its place, is its tile of the sheet (±1)`,
+  check(cels === 24 * layers.length && framesWithEveryLayer === 24 && worst <= 1,
+    `${label}: every frame has a cel per layer, at its place its tile of that layer's sheet (±1)`,
     `${cels} cels, largest difference ${worst}`);
   const pivot = ase.slices.find((s) => s.name === 'pivot');
   const anchor = frames[0].anchor;
@@ -156,6 +163,38 @@ function checkGodot(label, files) {
   check(framesOk, `${label}: each animation plays its tag's frames for their atlas durations, and loops`);
 }
 
+// sheet.layers: the .aseprite file holds the colour without its lines and
+// the lines, each cel its tile of that layer's sheet asked for on its own;
+// packed, the colour and the lines sheets share one atlas and each frame of
+// either is its grid tile.
+async function checkLayers(url, page, request) {
+  const decode = async (png) => {
+    const decoded = await page.evaluate(decodePngInPage, png.toString('base64'));
+    return { ...decoded, rgba: Buffer.from(decoded.rgba, 'base64') };
+  };
+  const bare = await decode(await post(`${url}/render`, { ...request, outline: { enabled: false }, contour: { enabled: false } }));
+  const lines = await decode(await post(`${url}/render`, { ...request, output: 'lines' }));
+  const layered = { ...request, sheet: { ...request.sheet, layers: ['color', 'lines'] } };
+  const atlas = JSON.parse(await post(`${url}/render?atlas=json`, layered));
+  const aseprite = await post(`${url}/render?atlas=aseprite`, layered);
+  checkAseprite('two layers', { atlas, aseprite }, [{ name: 'color', image: bare }, { name: 'lines', image: lines }]);
+  const packed = { ...layered, sheet: { ...layered.sheet, pack: true } };
+  const packedAtlas = JSON.parse(await post(`${url}/render?atlas=json`, packed));
+  const packedColour = await decode(await post(`${url}/render`, packed));
+  const packedLines = await decode(await post(`${url}/render`, { ...packed, output: 'lines' }));
+  let worst = 0;
+  for (const [name, frame] of Object.entries(packedAtlas.frames)) {
+    worst = Math.max(worst, largestDifference(tileOf(packedColour, frame), tileOf(bare, atlas.frames[name])),
+      largestDifference(tileOf(packedLines, frame), tileOf(lines, atlas.frames[name])));
+  }
+  const linesAtlas = JSON.parse(await post(`${url}/render?atlas=json`, { ...packed, output: 'lines' }));
+  const sameSize = packedColour.width === packedLines.width && packedColour.height === packedLines.height
+    && JSON.stringify(linesAtlas) === JSON.stringify(packedAtlas);
+  check(sameSize && worst === 0, 'packed with both layers, the colour and the lines sheets share one atlas and '
+    + 'each frame of either is its tile of that layer\'s grid sheet', `${packedColour.width}×${packedColour.height}, `
+    + `largest difference ${worst}`);
+}
+
 const dataDir = mkdtempSync(path.join(tmpdir(), 'toond-sheet-files-'));
 let daemon = null;
 let browser = null;
@@ -179,6 +218,7 @@ try {
   const share = (packed.image.width * packed.image.height) / (grid.image.width * grid.image.height);
   check(share <= 0.6, 'the packed PNG takes at most 60 % of the grid\'s area',
     `${packed.image.width}×${packed.image.height} of ${grid.image.width}×${grid.image.height}: ${share.toFixed(3)}`);
+  await checkLayers(daemon.url, page, request);
 } catch (e) {
   check(false, 'the sheet-files test ran to its end', e.stack || String(e));
 } finally {

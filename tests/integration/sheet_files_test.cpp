@@ -13,6 +13,7 @@
 #include <string>
 
 #include "image/png_codec.h"
+#include "support/ase_reader.h"
 #include "support/shared_models.h"
 #include "test_client.h"
 
@@ -59,6 +60,28 @@ class SheetFiles : public SharedDaemonTest {
     }
     EXPECT_EQ(res->get_header_value("Content-Type"), type) << path;
     return res->body;
+  }
+
+  // The walk drawn as both layers (sheet.layers), answered as `output`.
+  static json layered(const std::string& output, const json& sheet_fields = json::object()) {
+    json params = walk(sheet_fields);
+    params["sheet"]["layers"] = {"color", "lines"};
+    params["output"] = output;
+    return params;
+  }
+
+  // The walk's sheet of each layer, asked for alone as the docs say it:
+  // the colour with outline and contour off, and output lines.
+  static image::Image colour_without_lines() {
+    json params = walk();
+    params["outline"] = {{"enabled", false}};
+    params["contour"] = {{"enabled", false}};
+    return image::decode_png(answer("/render", params, "image/png"));
+  }
+  static image::Image lines_alone() {
+    json params = walk();
+    params["output"] = "lines";
+    return image::decode_png(answer("/render", params, "image/png"));
   }
 
   static json atlas_in(const std::string& png) {
@@ -114,6 +137,68 @@ TEST_F(SheetFiles, EachPackedFrameAtItsSourceOffsetIsItsTileOnAFractionOfTheArea
   EXPECT_LE(share, 0.60);
   EXPECT_EQ(json::parse(answer("/render?atlas=json", walk({{"pack", true}}), "application/json")), atlas)
       << "?atlas=json draws the packed sheet for its atlas";
+}
+
+// sheet.layers: every frame of the .aseprite file has a cel in each layer,
+// and each is its tile of the sheet of that layer asked for on its own.
+TEST_F(SheetFiles, TheAsepriteFileOfTwoLayersHoldsTheColourAndTheLinesAsAskedApart) {
+  ASSERT_FALSE(walker().empty());
+  const AseRead ase = read_aseprite(answer("/render?atlas=aseprite", layered("color"), "application/octet-stream"));
+  ASSERT_EQ(ase.frames, 24);
+  EXPECT_EQ(ase.layers, (std::vector<std::string>{"color", "lines"})) << "bottom first: lines over the colour";
+  const std::string grid_png = answer("/render", walk(), "image/png");
+  const json grid_atlas = atlas_in(grid_png);
+  const image::Image sheets[] = {colour_without_lines(), lines_alone()};
+  EXPECT_NE(sheets[0].rgba, image::decode_png(grid_png).rgba) << "the colour with its lines is not the colour layer";
+  std::vector<std::vector<int>> cels(2, std::vector<int>(24, 0));
+  for (const AseRead::Cel& cel : ase.cels) {
+    ASSERT_TRUE(cel.layer == 0 || cel.layer == 1) << cel.layer;
+    ++cels[static_cast<std::size_t>(cel.layer)][static_cast<std::size_t>(cel.frame)];
+    const image::Image tile =
+        tile_of(sheets[static_cast<std::size_t>(cel.layer)], grid_atlas["frames"][std::to_string(cel.frame)]["frame"]);
+    EXPECT_EQ(visible_pixels(cel_on_canvas(cel, 96, 96)), visible_pixels(tile.rgba))
+        << "frame " << cel.frame << " of " << ase.layers[static_cast<std::size_t>(cel.layer)];
+  }
+  EXPECT_EQ(cels, std::vector<std::vector<int>>(2, std::vector<int>(24, 1))) << "a cel per layer per frame";
+  EXPECT_EQ(answer("/render?atlas=aseprite", layered("lines", {{"pack", true}}), "application/octet-stream"),
+            answer("/render?atlas=aseprite", layered("color"), "application/octet-stream"))
+      << "the same file whichever layer is the output, packed or not";
+}
+
+// Packed with sheet.layers, each frame is cut to the pixels of both layers:
+// the colour and the lines sheets of the request have one atlas, and each
+// of their frames put back is its tile of that layer's grid sheet.
+TEST_F(SheetFiles, PackedLayersShareOneAtlasAndOverlayAsTheirGrids) {
+  ASSERT_FALSE(walker().empty());
+  const std::string colour_png = answer("/render", layered("color", {{"pack", true}}), "image/png");
+  const std::string lines_png = answer("/render", layered("lines", {{"pack", true}}), "image/png");
+  ASSERT_FALSE(colour_png.empty() || lines_png.empty());
+  const json atlas = atlas_in(colour_png);
+  EXPECT_EQ(atlas_in(lines_png), atlas) << "one packing for both layers";
+  const image::Image packed[] = {image::decode_png(colour_png), image::decode_png(lines_png)};
+  EXPECT_EQ(packed[0].width, packed[1].width);
+  EXPECT_EQ(packed[0].height, packed[1].height);
+  const json grid_atlas = atlas_in(answer("/render", walk(), "image/png"));
+  const image::Image grids[] = {colour_without_lines(), lines_alone()};
+  for (const auto& [name, frame] : atlas["frames"].items()) {
+    for (std::size_t layer = 0; layer < 2; ++layer) {
+      EXPECT_EQ(visible_pixels(unpacked_tile(packed[layer], frame).rgba),
+                visible_pixels(tile_of(grids[layer], grid_atlas["frames"][name]["frame"]).rgba))
+          << "frame " << name << (layer ? " lines" : " colour");
+    }
+  }
+  // Packed alone, the colour without lines is cut to its fills, inside the
+  // hull outline: a packing of its own, which the lines would not fit.
+  json bare_packed_alone = walk({{"pack", true}});
+  bare_packed_alone["outline"] = {{"enabled", false}};
+  const json bare_atlas = atlas_in(answer("/render", bare_packed_alone, "image/png"));
+  int smaller = 0;
+  for (const auto& [name, frame] : atlas["frames"].items()) {
+    const json& own = bare_atlas["frames"][name]["frame"];
+    smaller +=
+        own["w"].get<int>() * own["h"].get<int>() < frame["frame"]["w"].get<int>() * frame["frame"]["h"].get<int>();
+  }
+  EXPECT_EQ(smaller, 24) << "every frame of the layers is cut wider than the fills alone";
 }
 
 TEST_F(SheetFiles, PaddingAndPowerOfTwoShapeThePackedSheet) {

@@ -121,6 +121,42 @@ TEST(RenderPrice, ASheetCostsAllItsFramesEachFromItsView) {
   EXPECT_GT(most, least * 1.5);
 }
 
+// sheet.layers: a sheet that draws both layers pays for both, the price of
+// its colour without lines and of its lines each asked for alone; refused,
+// it says so.
+TEST(RenderPrice, ASheetPaysForEveryLayerItDraws) {
+  const auto model = obj_model(test::nearly_coincident_triangles(4000));
+  const nlohmann::json size = {{"width", 128}, {"height", 128}};
+  const auto sheet_job = [&](const nlohmann::json& fields) {
+    nlohmann::json request = size;
+    request.update(fields);
+    return job_of(model, request);
+  };
+  const Request packed = sheet_job({{"sheet", {{"frames", 4}, {"pack", true}, {"layers", {"color", "lines"}}}}});
+  const RenderPrice both = price_render(packed);
+  EXPECT_EQ(both.frames, 8u) << "4 frames × 2 layers";
+  const double colour =
+      price_render(sheet_job({{"outline", {{"enabled", false}}}, {"sheet", {{"frames", 4}}}})).total.units();
+  const double lines = price_render(sheet_job({{"output", "lines"}, {"sheet", {{"frames", 4}}}})).total.units();
+  EXPECT_NEAR(both.total.units(), colour + lines, 1e-9 * (colour + lines));
+  Request grid = sheet_job({{"sheet", {{"frames", 4}, {"layers", {"color", "lines"}}}}});
+  EXPECT_EQ(price_render(grid).frames, 4u) << "the PNG of an unpacked sheet draws its output alone";
+  EXPECT_NEAR(price_render(grid).total.units(), colour, 1e-9 * colour) << "the colour without its lines";
+  grid.answer.file = SheetFile::Aseprite;
+  EXPECT_EQ(price_render(grid).frames, 8u) << "the .aseprite file holds both";
+  RenderLimits limits;
+  limits.max_render_cost = (colour + lines) * 0.75;
+  try {
+    check_render_cost(packed, both, limits);
+    FAIL() << "not refused";
+  } catch (const LimitError& e) {
+    EXPECT_EQ(e.status(), 422);
+    const std::string message = e.what();
+    EXPECT_NE(message.find("for its 4 frames × 2 layers"), std::string::npos) << message;
+    EXPECT_NE(message.find("width and height"), std::string::npos) << "what would fit: " << message;
+  }
+}
+
 TEST(RenderPrice, OnlyLongFramesArePacedInChunksOfAboutTheChunkCost) {
   render::RenderCost cheap;
   cheap.samples = 10e6;

@@ -3,7 +3,6 @@
 // read back field by field as Aseprite's published format lays them out,
 // and Godot SpriteFrames resources.
 #include <gtest/gtest.h>
-#include <zlib.h>
 
 #include <algorithm>
 #include <map>
@@ -16,11 +15,14 @@
 #include "sheet_files/packed_sheet.h"
 #include "sheet_files/skyline_pack.h"
 #include "sheet_files/tile_trim.h"
+#include "support/ase_reader.h"
 
 namespace toond::sheet_files {
 namespace {
 
 using json = nlohmann::ordered_json;
+using test::AseRead;
+using test::read_aseprite;
 
 image::Image blank(int w, int h) { return {w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 4, 0)}; }
 
@@ -112,13 +114,7 @@ image::Image tile_of(const image::Image& sheet, const json& entry) {
 }
 
 // A fully transparent pixel's colour shows nowhere: compared as (0,0,0,0).
-std::vector<std::uint8_t> visible(const image::Image& im) {
-  std::vector<std::uint8_t> out = im.rgba;
-  for (std::size_t i = 0; i < out.size(); i += 4) {
-    if (out[i + 3] == 0) std::fill(out.begin() + static_cast<long>(i), out.begin() + static_cast<long>(i) + 4, 0);
-  }
-  return out;
-}
+std::vector<std::uint8_t> visible(const image::Image& im) { return test::visible_pixels(im.rgba); }
 
 TEST(TileTrim, BoundsHoldEveryPixelWithAlphaAndNothingElse) {
   image::Image im = blank(20, 10);
@@ -249,123 +245,40 @@ TEST(PackedSheet, AnOpaqueTileIsNotTrimmed) {
   }
 }
 
-// .aseprite read back as the format lays it out: what a reader of the spec
-// finds, chunk by chunk.
-struct AseRead {
-  int frames = 0, width = 0, height = 0, depth = 0, colours = 0;
-  std::uint32_t file_size = 0;
-  std::vector<int> durations;
-  std::vector<std::vector<int>> chunk_types;  // per frame
-  struct Tag {
-    int from, to, direction, repeat;
-    std::string name;
-  };
-  std::vector<Tag> tags;
-  std::vector<std::string> layers;
-  struct Cel {
-    int frame, layer, x, y, w, h;
-    std::vector<std::uint8_t> rgba;
-  };
-  std::vector<Cel> cels;
-  std::vector<std::array<int, 3>> pivot_keys;  // frame, x, y
-};
-
-struct Reader {
-  const std::string& b;
-  std::size_t at = 0;
-  unsigned u8() { return static_cast<std::uint8_t>(b.at(at++)); }
-  unsigned u16() { return u8() | (u8() << 8); }
-  std::uint32_t u32() { return u16() | (static_cast<std::uint32_t>(u16()) << 16); }
-  int i16() { return static_cast<std::int16_t>(u16()); }
-  int i32() { return static_cast<std::int32_t>(u32()); }
-  std::string str() {
-    const unsigned n = u16();
-    at += n;
-    return b.substr(at - n, n);
+// A lines layer over `grid`, laid out alike: in each tile a half-covered
+// line pixel near its bottom-left corner, off the colour's block, and
+// one in every tile, the ones with no colour too.
+image::Image lines_over(const GridSheet& grid) {
+  image::Image lines = blank(grid.image.width, grid.image.height);
+  for (const auto& [name, entry] : grid.atlas.at("frames").items()) {
+    const json& f = entry.at("frame");
+    put(lines, f.at("x").get<int>() + 1, f.at("y").get<int>() + grid.tile_h - 2, 20, 10, 30, 160);
   }
-};
-
-void read_chunk(Reader& r, int type, std::size_t end, int frame, AseRead& ase) {
-  if (type == 0x2018) {
-    const unsigned n = r.u16();
-    r.at += 8;
-    for (unsigned i = 0; i < n; ++i) {
-      AseRead::Tag t{};
-      t.from = static_cast<int>(r.u16());
-      t.to = static_cast<int>(r.u16());
-      t.direction = static_cast<int>(r.u8());
-      t.repeat = static_cast<int>(r.u16());
-      r.at += 6 + 4;
-      t.name = r.str();
-      ase.tags.push_back(t);
-    }
-  } else if (type == 0x2004) {
-    r.at += 16;
-    ase.layers.push_back(r.str());
-  } else if (type == 0x2005) {
-    AseRead::Cel c{};
-    c.frame = frame;
-    c.layer = static_cast<int>(r.u16());
-    c.x = r.i16();
-    c.y = r.i16();
-    r.at += 1;
-    EXPECT_EQ(r.u16(), 2u) << "compressed image cels";
-    r.at += 7;
-    c.w = static_cast<int>(r.u16());
-    c.h = static_cast<int>(r.u16());
-    c.rgba.resize(static_cast<std::size_t>(c.w) * c.h * 4);
-    uLongf size = c.rgba.size();
-    EXPECT_EQ(uncompress(c.rgba.data(), &size, reinterpret_cast<const Bytef*>(r.b.data() + r.at), end - r.at), Z_OK);
-    EXPECT_EQ(size, c.rgba.size());
-    ase.cels.push_back(std::move(c));
-  } else if (type == 0x2022) {
-    const std::uint32_t keys = r.u32();
-    EXPECT_EQ(r.u32(), 2u) << "a slice with a pivot";
-    r.at += 4;
-    EXPECT_EQ(r.str(), "pivot");
-    for (std::uint32_t k = 0; k < keys; ++k) {
-      const int f = static_cast<int>(r.u32());
-      r.at += 16;
-      const int x = r.i32();
-      ase.pivot_keys.push_back({f, x, r.i32()});
-    }
-  }
+  return lines;
 }
 
-AseRead read_aseprite(const std::string& bytes) {
-  AseRead ase;
-  Reader r{bytes};
-  ase.file_size = r.u32();
-  EXPECT_EQ(r.u16(), 0xA5E0u);
-  ase.frames = static_cast<int>(r.u16());
-  ase.width = static_cast<int>(r.u16());
-  ase.height = static_cast<int>(r.u16());
-  ase.depth = static_cast<int>(r.u16());
-  r.at = 26;
-  ase.colours = static_cast<int>(r.u16());
-  r.at = 128;
-  for (int f = 0; f < ase.frames; ++f) {
-    const std::size_t start = r.at;
-    const std::uint32_t size = r.u32();
-    EXPECT_EQ(r.u16(), 0xF1FAu);
-    const unsigned old_chunks = r.u16();
-    ase.durations.push_back(static_cast<int>(r.u16()));
-    r.at += 2;
-    const std::uint32_t chunks = r.u32();
-    EXPECT_EQ(old_chunks, chunks);
-    ase.chunk_types.emplace_back();
-    for (std::uint32_t c = 0; c < chunks; ++c) {
-      const std::size_t chunk_start = r.at;
-      const std::uint32_t chunk_size = r.u32();
-      const int type = static_cast<int>(r.u16());
-      ase.chunk_types.back().push_back(type);
-      read_chunk(r, type, chunk_start + chunk_size, f, ase);
-      r.at = chunk_start + chunk_size;
-    }
-    EXPECT_EQ(r.at, start + size) << "frame " << f << "'s size";
+TEST(PackedSheet, LayersAreCutToAllTheirPixelsAndPackAlike) {
+  GridSheet grid = grid_sheet(4, 3, 32, 28, 2, {6});
+  image::Image lines = lines_over(grid);
+  const GridSheet unpacked = grid;
+  const image::Image unpacked_lines = lines;
+  GridSheet colour_alone = grid;
+  pack_sheet(colour_alone.image, colour_alone.atlas, {.padding = 1});
+  image::Image* const layers[] = {&grid.image, &lines};
+  pack_sheet(layers, grid.atlas, {.padding = 1});
+  EXPECT_EQ(lines.width, grid.image.width) << "one packed size for every layer";
+  EXPECT_EQ(lines.height, grid.image.height);
+  for (const auto& [name, entry] : grid.atlas.at("frames").items()) {
+    const json& before = unpacked.atlas.at("frames").at(name);
+    EXPECT_EQ(visible(tile_of(grid.image, entry)), visible(tile_of(unpacked.image, before))) << "colour " << name;
+    EXPECT_EQ(visible(tile_of(lines, entry)), visible(tile_of(unpacked_lines, before))) << "lines " << name;
+    if (name == "6") continue;  // no colour: below
+    const json& own = colour_alone.atlas.at("frames").at(name).at("frame");
+    EXPECT_GT(entry.at("frame").at("h"), own.at("h")) << name << ": the lines below the colour are kept";
   }
-  EXPECT_EQ(r.at, bytes.size());
-  return ase;
+  const json& lines_only = grid.atlas.at("frames").at("6");
+  EXPECT_EQ(lines_only.at("frame").at("w"), 1) << "a tile with lines alone keeps them";
+  EXPECT_EQ(lines_only.at("spriteSourceSize").at("y"), grid.tile_h - 2);
 }
 
 TEST(AsepriteFile, ReadsBackFrameByFrameAsTheFormatLaysItOut) {
@@ -395,14 +308,29 @@ TEST(AsepriteFile, ReadsBackFrameByFrameAsTheFormatLaysItOut) {
   EXPECT_EQ(ase.pivot_keys, (std::vector<std::array<int, 3>>{{0, 16, 25}, {4, 16, 21}})) << "a key where it changes";
   ASSERT_EQ(ase.cels.size(), 7u);
   for (const AseRead::Cel& cel : ase.cels) {
-    image::Image canvas = blank(32, 28);
-    for (int y = 0; y < cel.h; ++y) {
-      std::copy_n(cel.rgba.begin() + static_cast<long>(y) * cel.w * 4, cel.w * 4, canvas.pixel(cel.x, cel.y + y));
-    }
+    const image::Image canvas{32, 28, test::cel_on_canvas(cel, 32, 28)};
     const json& entry = grid.atlas.at("frames").at(std::to_string(cel.frame));
     EXPECT_EQ(visible(canvas), visible(tile_of(grid.image, entry))) << "frame " << cel.frame;
     EXPECT_LE(cel.w, 10) << "cut to its pixels";
   }
+}
+
+TEST(AsepriteFile, EachLayerHasItsCelsInEveryFrameItDraws) {
+  const GridSheet grid = grid_sheet(4, 2, 32, 28, 2, {5});
+  const image::Image lines = lines_over(grid);
+  const std::vector<const image::Image*> sheets{&grid.image, &lines};
+  const AseRead ase = read_aseprite(aseprite_file({{"color", &grid.image}, {"lines", &lines}}, grid.atlas));
+  EXPECT_EQ(ase.layers, (std::vector<std::string>{"color", "lines"})) << "bottom first";
+  std::vector<int> cels_per_layer(2, 0);
+  for (const AseRead::Cel& cel : ase.cels) {
+    ASSERT_LT(cel.layer, 2);
+    ++cels_per_layer[static_cast<std::size_t>(cel.layer)];
+    const image::Image canvas{32, 28, test::cel_on_canvas(cel, 32, 28)};
+    const json& entry = grid.atlas.at("frames").at(std::to_string(cel.frame));
+    EXPECT_EQ(visible(canvas), visible(tile_of(*sheets[static_cast<std::size_t>(cel.layer)], entry)))
+        << "frame " << cel.frame << " layer " << cel.layer;
+  }
+  EXPECT_EQ(cels_per_layer, (std::vector<int>{7, 8})) << "the empty colour tile has lines";
 }
 
 TEST(AsepriteFile, APackedSheetGivesTheSameFile) {

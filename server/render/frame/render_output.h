@@ -19,6 +19,10 @@ struct RenderOutput {
   // An animated sheet's frames, in the atlas's order, each tile-sized (no
   // sheet is laid out: the animation holds them one by one).
   std::vector<image::Image> frames;
+  // A sheet drawn as several layers (sheet.layers): the sheets of the
+  // layers after the first (which is `image`), laid out alike, in the
+  // order they were drawn (pipeline/sheet_layers.h).
+  std::vector<image::Image> other_layers;
   std::vector<PassTiming> timings;
   std::string plan;          // PassPlan::describe()
   std::vector<LodUse> lods;  // one per object, in order

@@ -106,6 +106,9 @@ struct SheetParams {
   // sides powers of two.
   bool pack = false;
   bool power_of_two = false;
+  // `sheet.layers`: the layers every frame is drawn as (color, lines), as
+  // listed (pipeline/sheet_layers.h). Empty: the output alone, as asked.
+  std::vector<Output> layers;
   int frame_ms = 100;  // how long each animation frame shows
   // An animated sheet: per clip, per pitch, a row per direction (`frames`
   // yaws) of the clip's frames. Empty: a turntable.
