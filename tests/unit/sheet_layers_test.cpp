@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "http/render_params_wire.h"
+#include "pipeline/render_params_wire.h"
 #include "limit_error.h"
 #include "param_schema.h"
 #include "pipeline/budget.h"
@@ -23,7 +23,7 @@ using json = nlohmann::json;
 using render::Output;
 
 render::RenderParams layered_params(const json& request) {
-  return http::render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
+  return render_params_from_wire(proto::ParamSchema::render_params().validate_and_complete(request));
 }
 
 // The path of the 400 a request gets from the schema or the sheet checks;
