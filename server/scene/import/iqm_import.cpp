@@ -152,7 +152,8 @@ class IqmReader {
 
   void read_text() {
     need(header_[kTextOffset], header_[kTextCount], 1, "strings");
-    text_ = bytes_.substr(header_[kTextOffset], header_[kTextCount]);
+    // No strings: the offset is not checked, so it is not used either.
+    if (header_[kTextCount] > 0) text_ = bytes_.substr(header_[kTextOffset], header_[kTextCount]);
   }
 
   // Component `i` of a vertex array of `format` at `at`, as a float; integer
