@@ -21,60 +21,23 @@ Against a running toond started with --result-cache-mb 0 --max-render-cost 0
     bench/line_drawing.py http://127.0.0.1:8080 [--shared ../shared/models] [--repeat 7] [--size 512] [--fit]
 """
 import argparse
-import http.client
 import json
 import os
 import statistics
 import sys
-import time
-import urllib.parse
-import uuid
+
+from daemon_client import Client, timing
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 VIEWS = [{"yaw": 30, "pitch": 15}, {"yaw": -120, "pitch": 30}]
 
 
-def multipart(files):
-    boundary = uuid.uuid4().hex
-    parts = []
-    for name, data in files:
-        parts.append(f"--{boundary}\r\nContent-Disposition: form-data; name=\"file\"; filename=\"{name}\"\r\n"
-                     f"Content-Type: application/octet-stream\r\n\r\n".encode() + data + b"\r\n")
-    return b"".join(parts) + f"--{boundary}--\r\n".encode(), f"multipart/form-data; boundary={boundary}"
-
-
-class Client:
-    def __init__(self, url):
-        u = urllib.parse.urlparse(url)
-        self.conn = http.client.HTTPConnection(u.hostname, u.port or 80, timeout=300)
-
-    def upload(self, files):
-        body, ctype = multipart(files)
-        self.conn.request("POST", "/models", body=body, headers={"Content-Type": ctype})
-        res = self.conn.getresponse()
-        data = res.read()
-        if res.status not in (200, 201):
-            raise SystemExit(f"upload answered {res.status}: {data[:300]!r}")
-        return json.loads(data)
-
-    def render(self, params):
-        started = time.perf_counter()
-        self.conn.request("POST", "/render", body=json.dumps(params), headers={"Content-Type": "application/json"})
-        res = self.conn.getresponse()
-        data = res.read()
-        if res.status != 200:
-            raise SystemExit(f"render {json.dumps(params)} answered {res.status}: {data[:300]!r}")
-        return time.perf_counter() - started, dict(res.getheaders()), data
-
-
-def timing(headers, name):
-    for entry in headers.get("Server-Timing", "").split(","):
-        fields = entry.strip().split(";")
-        if fields[0] == name:
-            for f in fields[1:]:
-                if f.startswith("dur="):
-                    return float(f[4:])
-    return None
+def rendered(client, params):
+    """(seconds, headers, body) of a render that must succeed."""
+    status, seconds, headers, body = client.render(params)
+    if status != 200:
+        raise SystemExit(f"render {json.dumps(params)} answered {status}: {body[:300]!r}")
+    return seconds, headers, body
 
 
 def header_fields(headers, name):
@@ -110,12 +73,12 @@ def measure(client, model, view, size, repeat):
     """Interleaved SVG and PNG of one request: medians and the last answers."""
     base = {"model": model, "camera": view, "width": size, "height": size}
     svg_req, png_req = dict(base, output="svg"), dict(base, output="lines")
-    client.render(svg_req)  # warm-up: the model's edges, its GPU copy
-    client.render(png_req)
+    rendered(client, svg_req)  # warm-up: the model's edges, its GPU copy
+    rendered(client, png_req)
     rows = {"svg": [], "png": []}
     for _ in range(repeat):
         for kind, req in (("svg", svg_req), ("png", png_req)):
-            wall, headers, body = client.render(req)
+            wall, headers, body = rendered(client, req)
             rows[kind].append((wall * 1000, timing(headers, "total"), timing(headers, "lines"), headers, body))
     return rows
 
@@ -172,7 +135,7 @@ def main():
     parser.add_argument("--fit", action="store_true")
     parser.add_argument("--ms-per-msample", type=float, default=1.4)
     args = parser.parse_args()
-    client = Client(args.url)
+    client = Client(args.url, timeout=300)
     samples, ratios = [], []
     for name, files in bundles(args.shared).items():
         if args.only and name not in args.only.split(","):

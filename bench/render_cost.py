@@ -32,7 +32,6 @@ Against a running toond started with --max-render-cost 0 --result-cache-mb 0
     bench/render_cost.py http://127.0.0.1:8080 [--shared ../shared/models] [--crease-pass | --contention SECONDS [--edges]]
 """
 import argparse
-import http.client
 import json
 import math
 import os
@@ -41,8 +40,8 @@ import statistics
 import sys
 import threading
 import time
-import urllib.parse
-import uuid
+
+from daemon_client import Client, timing
 
 
 def vertex(x, y, z):
@@ -82,49 +81,6 @@ def cube_field(k):
         out.extend(vertex(x + 0.75 * (c & 1), y + 0.75 * (c >> 1 & 1), z + 0.75 * (c >> 2 & 1)) for c in range(8))
         out.extend("f " + " ".join(str(8 * i + 1 + c) for c in f) + "\n" for f in faces)
     return "".join(out)
-
-
-def multipart(files):
-    boundary = uuid.uuid4().hex
-    parts = []
-    for name, data in files:
-        if isinstance(data, str):
-            data = data.encode()
-        parts.append(f"--{boundary}\r\nContent-Disposition: form-data; name=\"file\"; filename=\"{name}\"\r\n"
-                     f"Content-Type: application/octet-stream\r\n\r\n".encode() + data + b"\r\n")
-    return b"".join(parts) + f"--{boundary}--\r\n".encode(), f"multipart/form-data; boundary={boundary}"
-
-
-class Client:
-    def __init__(self, url):
-        u = urllib.parse.urlparse(url)
-        self.conn = http.client.HTTPConnection(u.hostname, u.port or 80, timeout=120)
-
-    def upload(self, files):
-        body, ctype = multipart(files)
-        self.conn.request("POST", "/models", body=body, headers={"Content-Type": ctype})
-        res = self.conn.getresponse()
-        data = res.read()
-        if res.status not in (200, 201):
-            raise SystemExit(f"upload answered {res.status}: {data[:300]!r}")
-        return json.loads(data)
-
-    def render(self, params):
-        started = time.perf_counter()
-        self.conn.request("POST", "/render", body=json.dumps(params), headers={"Content-Type": "application/json"})
-        res = self.conn.getresponse()
-        data = res.read()
-        return res.status, time.perf_counter() - started, dict(res.getheaders()), data
-
-
-def timing(headers, name):
-    for entry in headers.get("Server-Timing", "").split(","):
-        fields = entry.strip().split(";")
-        if fields[0] == name:
-            for f in fields[1:]:
-                if f.startswith("dur="):
-                    return float(f[4:])
-    return None
 
 
 def cost_fields(headers):
