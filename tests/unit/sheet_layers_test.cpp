@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/render_params_wire.h"
 #include "limit_error.h"
 #include "param_schema.h"
 #include "pipeline/budget.h"
 #include "pipeline/frames.h"
+#include "pipeline/render_params_wire.h"
 #include "pipeline/sheet_checks.h"
 #include "pipeline/sheet_layers.h"
 #include "request_error.h"
