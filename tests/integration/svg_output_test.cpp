@@ -11,6 +11,8 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <set>
+#include <sstream>
 
 #include "image/png_codec.h"
 #include "support/generated_models.h"
@@ -560,6 +562,122 @@ TEST_F(SvgAgainstLines, PosedWalker) {
     drawings.push_back(svg->body);
   }
   EXPECT_NE(drawings[0], drawings[1]) << "two times of the walk draw alike";
+}
+
+// Of the SVG's pixels inked through (alpha 255), the share with an ink
+// pixel of the PNG (alpha at least half) within `reach` px whose colour
+// lies within `tolerance` of it in every sRGB channel.
+double colour_agreement(const image::Image& svg, const image::Image& png, int reach, int tolerance) {
+  std::size_t inked = 0, matched = 0;
+  for (int y = 0; y < svg.height; ++y) {
+    for (int x = 0; x < svg.width; ++x) {
+      const std::uint8_t* a = svg.pixel(x, y);
+      if (a[3] < 255) continue;
+      ++inked;
+      bool found = false;
+      for (int dy = -reach; dy <= reach && !found; ++dy) {
+        for (int dx = -reach; dx <= reach && !found; ++dx) {
+          const int u = x + dx, v = y + dy;
+          if (u < 0 || v < 0 || u >= png.width || v >= png.height || png.pixel(u, v)[3] < 128) continue;
+          const std::uint8_t* b = png.pixel(u, v);
+          found = std::abs(a[0] - b[0]) <= tolerance && std::abs(a[1] - b[1]) <= tolerance &&
+                  std::abs(a[2] - b[2]) <= tolerance;
+        }
+      }
+      matched += found;
+    }
+  }
+  return inked == 0 ? 0.0 : static_cast<double>(matched) / static_cast<double>(inked);
+}
+
+// "#rrggbb" of a linear colour, as toond writes it.
+std::string hex_of_linear(const glm::dvec3& linear) {
+  const auto byte = [](double c) {
+    const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+    return static_cast<int>(std::lround(std::clamp(s, 0.0, 1.0) * 255.0));
+  };
+  char buffer[8];
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", byte(linear.r), byte(linear.g), byte(linear.b));
+  return buffer;
+}
+
+// Every Kd of an MTL file (linear, as toond reads them).
+std::vector<glm::dvec3> diffuse_colours(const std::filesystem::path& mtl) {
+  std::ifstream in(mtl);
+  std::vector<glm::dvec3> out;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string key;
+    glm::dvec3 kd;
+    if (words >> key && key == "Kd" && words >> kd.r >> kd.g >> kd.b) out.push_back(kd);
+  }
+  return out;
+}
+
+// outline.color_mode material on Kenney's space craft (Kd colours, no
+// texture): each silhouette takes its material's colour darkened, exactly
+// the MTL's Kd × (1 - darken); crease lines keep the outline's colour, as
+// the PNG draws them; and the SVG rasterised has the PNG's colours where
+// their lines lie.
+TEST_F(SvgAgainstLines, MaterialColourModeColoursEachSilhouetteByItsMaterial) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  if (!have_rsvg()) GTEST_SKIP() << "rsvg-convert (librsvg2-bin) is not installed";
+  const auto folder = shared_models_dir() / "kenney-space-craft";
+  auto client = daemon().client();
+  auto res = upload_model_folder(client, folder);
+  ASSERT_TRUE(res && res->status / 100 == 2);
+  std::set<std::string> materials;
+  for (const glm::dvec3& kd : diffuse_colours(folder / "craft_speederA.mtl")) materials.insert(hex_of_linear(kd * 0.4));
+  const json request = {{"model", json::parse(res->body)["id"]},
+                        {"camera", {{"yaw", 35}, {"pitch", 25}}},
+                        {"outline", {{"color_mode", "material"}, {"darken", 0.6}, {"width", 3}}}};
+  json as_svg = request, as_lines = request;
+  as_svg["output"] = "svg";
+  as_lines["output"] = "lines";
+  auto svg = post(as_svg);
+  ASSERT_TRUE(svg && svg->status == 200) << (svg ? svg->body : "no answer");
+  const SvgFile file = read_svg_drawing(svg->body);
+  std::set<std::string> silhouette_colours;
+  for (const SvgStroke& s : file.layers.at("silhouette").strokes) silhouette_colours.insert(s.colour);
+  EXPECT_GE(silhouette_colours.size(), 2u) << "one colour for every material";
+  for (const std::string& colour : silhouette_colours) {
+    EXPECT_TRUE(materials.count(colour)) << colour << " is no material's Kd darkened";
+  }
+  const std::string outline = file.layers.at("creases").attributes.at("stroke");
+  EXPECT_FALSE(materials.count(outline));
+  ASSERT_FALSE(file.layers.at("creases").strokes.empty());
+  for (const SvgStroke& s : file.layers.at("creases").strokes) EXPECT_EQ(s.colour, outline) << "a crease line";
+  const double share = colour_agreement(rasterise(svg->body), render_ok(client, as_lines), 2, 24);
+  EXPECT_GE(share, 0.9) << "of the SVG's ink has the PNG's colour nearby";
+  std::cout << "space craft, material colours: " << silhouette_colours.size() << " silhouette colours; " << 100 * share
+            << " % of the SVG's ink has the PNG's colour within 2 px\n";
+}
+
+// outline.color_mode texture on Spot: the silhouette takes the texture
+// beside it, inverted and darkened, as the PNG's hull draws it.
+TEST_F(SvgAgainstLines, TextureColourModeColoursTheSilhouetteByTheTexture) {
+  TOOND_REQUIRE_SHARED_MODELS();
+  if (!have_rsvg()) GTEST_SKIP() << "rsvg-convert (librsvg2-bin) is not installed";
+  auto client = daemon().client();
+  auto res = upload_model_folder(client, shared_models_dir() / "spot");
+  ASSERT_TRUE(res && res->status / 100 == 2);
+  const json request = {{"model", json::parse(res->body)["id"]},
+                        {"camera", {{"yaw", 30}, {"pitch", 15}}},
+                        {"outline", {{"color_mode", "texture"}, {"darken", 0.3}, {"width", 3}}}};
+  json as_svg = request, as_lines = request;
+  as_svg["output"] = "svg";
+  as_lines["output"] = "lines";
+  auto svg = post(as_svg);
+  ASSERT_TRUE(svg && svg->status == 200) << (svg ? svg->body : "no answer");
+  const SvgFile file = read_svg_drawing(svg->body);
+  std::set<std::string> colours;
+  for (const SvgStroke& s : file.layers.at("silhouette").strokes) colours.insert(s.colour);
+  EXPECT_GE(colours.size(), 2u) << "the texture varies along the outline";
+  const double share = colour_agreement(rasterise(svg->body), render_ok(client, as_lines), 2, 40);
+  EXPECT_GE(share, 0.8) << "of the SVG's ink has the PNG's colour nearby";
+  std::cout << "spot, texture colours: " << colours.size() << " colours in "
+            << file.layers.at("silhouette").strokes.size() << " silhouette strokes; " << 100 * share
+            << " % of the SVG's ink has the PNG's colour within 2 px\n";
 }
 
 TEST_F(SvgOutput, AcceptHeaderAsksForSvgWhenNoOutputIsGiven) {

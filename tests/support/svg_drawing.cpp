@@ -70,9 +70,11 @@ SvgFile read_svg_drawing(const std::string& text) {
     layer.attributes = attributes_of(text.substr(g, open_end - g));
     const std::string body = text.substr(open_end, close - open_end);
     for (std::size_t p = body.find("<path "); p != std::string::npos; p = body.find("<path ", p + 1)) {
-      const std::string d = attributes_of(body.substr(p, body.find("/>", p) - p)).at("d");
+      const auto path = attributes_of(body.substr(p, body.find("/>", p) - p));
+      const std::string& d = path.at("d");
       file.path_data.push_back(d);
-      layer.strokes.push_back(stroke_of(d));
+      SvgStroke& stroke = layer.strokes.emplace_back(stroke_of(d));
+      stroke.colour = path.count("stroke") ? path.at("stroke") : layer.attributes["stroke"];
     }
     file.layers[layer.attributes.at("id")] = std::move(layer);
   }

@@ -17,6 +17,7 @@ namespace toond::test {
 struct SvgStroke {
   std::vector<glm::dvec2> points;
   bool closed = false;
+  std::string colour;  // its stroke attribute, else its layer's
 };
 
 struct SvgLayer {

@@ -40,6 +40,7 @@ void add_mesh_edges(const ViewMesh& mesh, const ViewObject& object, const LineCh
     if (edge.face1 == kNoFace) {
       if (!choice.boundaries) continue;
       s.kind = LineKind::Boundary;
+      s.face = f0;
       s.surface_side = third_corner(mesh, f0, s.group_a, s.group_b);
     } else {
       // An edge-on face shows nothing of its front: it counts as turned
@@ -49,7 +50,8 @@ void add_mesh_edges(const ViewMesh& mesh, const ViewObject& object, const LineCh
       const bool front1 = toward(mesh.facing[f1]);
       if (!choice.silhouettes || front0 == front1) continue;
       s.kind = LineKind::Silhouette;
-      s.surface_side = third_corner(mesh, front0 ? f0 : f1, s.group_a, s.group_b);
+      s.face = front0 ? f0 : f1;
+      s.surface_side = third_corner(mesh, s.face, s.group_a, s.group_b);
     }
     out.push_back(s);
   }

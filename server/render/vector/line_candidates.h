@@ -17,6 +17,7 @@
 namespace toond::render::vector {
 
 inline constexpr std::uint32_t kNoGroup = std::numeric_limits<std::uint32_t>::max();
+inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 
 struct Segment {
   glm::dvec3 a{0.0}, b{0.0};  // view space
@@ -31,6 +32,9 @@ struct Segment {
   // the face beside it that turns toward the eye (its only face, for an
   // open edge), view space. The other side shows what lies behind it.
   glm::dvec3 surface_side{0.0};
+  // That face (a triangle of the ViewMesh), whose colour the line may
+  // take; kNoTriangle for a crease or a seam.
+  std::uint32_t face = kNoTriangle;
   // Between two faces of a closed object's hidden side: hidden whole.
   bool surely_hidden = false;
 };

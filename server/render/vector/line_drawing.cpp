@@ -2,8 +2,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "image/srgb.h"
+#include <map>
+
 #include "render/vector/contour_filter.h"
+#include "render/vector/line_colours.h"
 #include "render/vector/occluder_grid.h"
 #include "render/vector/pen_order.h"
 #include "render/vector/screen_map.h"
@@ -16,15 +18,24 @@ namespace {
 // sliver between two occluders rather than a line anyone could see.
 constexpr double kSliverPx = 0.01;
 
+std::uint32_t colour_key(const Srgb& c) { return (std::uint32_t{c[0]} << 16) | (std::uint32_t{c[1]} << 8) | c[2]; }
+
+Srgb colour_of_key(std::uint32_t key) {
+  return {static_cast<std::uint8_t>(key >> 16), static_cast<std::uint8_t>(key >> 8), static_cast<std::uint8_t>(key)};
+}
+
 // Each piece with the points it joins others at: a segment's own ends
-// where it is drawn to them, an id of its own where it is cut.
+// where it is drawn to them, an id of its own where it is cut; the visible
+// ones by kind and colour (ordered by colour, so the file does not depend
+// on the order pieces were found in).
 struct LayerPieces {
-  std::array<std::vector<StrokePiece>, kLineKinds> visible;
+  std::array<std::map<std::uint32_t, std::vector<StrokePiece>>, kLineKinds> visible;
   std::vector<StrokePiece> hidden;
   std::uint32_t node_count = 0;
 };
 
-LayerPieces layer_pieces(const Candidates& candidates, const std::vector<Piece>& pieces, const ScreenMap& screen) {
+LayerPieces layer_pieces(const Candidates& candidates, const std::vector<Piece>& pieces, const ScreenMap& screen,
+                         const LineColours& colours) {
   LayerPieces out;
   out.node_count = candidates.node_count;
   for (const Piece& piece : pieces) {
@@ -40,7 +51,7 @@ LayerPieces layer_pieces(const Candidates& candidates, const std::vector<Piece>&
     if (piece.hidden) {
       out.hidden.push_back(stroke);
     } else {
-      out.visible[static_cast<std::size_t>(s.kind)].push_back(stroke);
+      out.visible[static_cast<std::size_t>(s.kind)][colour_key(colours.of(s))].push_back(stroke);
     }
   }
   return out;
@@ -52,6 +63,40 @@ std::vector<Polyline> strokes_of(const std::vector<StrokePiece>& pieces, std::ui
   return strokes;
 }
 
+// The pieces' points numbered from 0 (in the order they come), so that
+// chaining one colour of many costs its own pieces, not every point of
+// the frame. `scratch`: one entry a point id, each kNoGroup; left so.
+std::uint32_t renumber_nodes(std::vector<StrokePiece>& pieces, std::vector<std::uint32_t>& scratch) {
+  std::uint32_t next = 0;
+  const auto renumber = [&](std::uint32_t& node) {
+    if (scratch[node] == kNoGroup) scratch[node] = next++;
+    node = scratch[node];
+  };
+  std::vector<std::uint32_t> used;
+  for (StrokePiece& piece : pieces) {
+    used.push_back(piece.node0);
+    used.push_back(piece.node1);
+    renumber(piece.node0);
+    renumber(piece.node1);
+  }
+  for (std::uint32_t node : used) scratch[node] = kNoGroup;
+  return next;
+}
+
+// One layer's strokes, a set per colour; a layer of one colour chains as
+// it is.
+std::vector<ColouredStrokes> layer_strokes(std::map<std::uint32_t, std::vector<StrokePiece>>& by_colour,
+                                           std::uint32_t node_count, double gap) {
+  std::vector<ColouredStrokes> sets;
+  std::vector<std::uint32_t> scratch;
+  if (by_colour.size() > 1) scratch.assign(node_count, kNoGroup);
+  for (auto& [key, pieces] : by_colour) {
+    const std::uint32_t nodes = by_colour.size() > 1 ? renumber_nodes(pieces, scratch) : node_count;
+    sets.push_back({colour_of_key(key), strokes_of(pieces, nodes, gap)});
+  }
+  return sets;
+}
+
 // The drawing's frame, size, stroke and camera, without its lines.
 SvgDrawing blank_drawing(const FramePlan& plan) {
   const RenderParams& p = plan.params;
@@ -59,8 +104,7 @@ SvgDrawing blank_drawing(const FramePlan& plan) {
   svg.width = p.width;
   svg.height = p.height;
   svg.stroke_px = plan.outline_px > 0 ? plan.outline_px / plan.passes.supersample : p.contour.width_px;
-  const glm::vec3 colour = plan.outline_px > 0 ? p.outline.color : p.contour.color;
-  for (int c = 0; c < 3; ++c) svg.colour[c] = image::linear_to_srgb_byte(colour[c]);
+  svg.colour = fixed_line_colour(plan);
   // The frame's coordinates are the scene's less its origin.
   svg.view = plan.camera.view * glm::translate(glm::dmat4(1.0), -plan.scene->origin);
   svg.projection = plan.camera.projection;
@@ -108,6 +152,7 @@ LineDrawing draw_lines(const FramePlan& plan, std::span<const PlannedObject> obj
   };
   const ViewMesh mesh = view_mesh_of(plan, objects, models, edges);
   const Candidates candidates = line_candidates(mesh, choice);
+  const LineColours colours(plan, mesh);
   stats.view_ms = lap_ms();
   const ScreenMap screen = ScreenMap::of(plan.camera.projection, plan.params.width, plan.params.height);
   const double margin = drawing.svg.stroke_px + 1.0;
@@ -121,13 +166,13 @@ LineDrawing draw_lines(const FramePlan& plan, std::span<const PlannedObject> obj
   const std::vector<Piece> drawn = keep_drawn_contours(visibility.pieces, candidates.segments, grid, screen, choice,
                                                        0.5 * drawing.svg.stroke_px + 1.0);
   stats.visibility_ms = lap_ms();
-  const LayerPieces pieces = layer_pieces(candidates, drawn, screen);
+  LayerPieces pieces = layer_pieces(candidates, drawn, screen, colours);
   // Ends nearer than half the stroke's width are one to the eye and the pen.
   const double stitch_gap = std::min(1.0, 0.5 * drawing.svg.stroke_px);
   for (LineKind kind : kAllLineKinds) {
     const std::size_t k = static_cast<std::size_t>(kind);
-    drawing.svg.layers[k] = strokes_of(pieces.visible[k], pieces.node_count, stitch_gap);
-    stats.paths += drawing.svg.layers[k].size();
+    drawing.svg.layers[k] = layer_strokes(pieces.visible[k], pieces.node_count, stitch_gap);
+    for (const ColouredStrokes& set : drawing.svg.layers[k]) stats.paths += set.strokes.size();
   }
   if (choice.keep_hidden) {
     drawing.svg.hidden = strokes_of(pieces.hidden, pieces.node_count, stitch_gap);

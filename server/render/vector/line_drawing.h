@@ -11,6 +11,7 @@
 //   occluder_grid      what may hide each, binned on screen
 //   segment_visibility each cut into visible and hidden pieces
 //   contour_filter     the silhouettes the outline methods draw
+//   line_colours       the colour of each, as the PNG draws it
 //   stroke_chains      pieces joined into strokes, one layer a kind
 //   pen_order          the strokes ordered for a plotter
 //   svg_document       the SVG text

@@ -38,15 +38,13 @@ void append_matrix(std::string& out, const glm::dmat4& m) {
   out += ']';
 }
 
-std::string hex_colour(const std::array<std::uint8_t, 3>& c) {
+std::string hex_colour(const Srgb& c) {
   char buffer[8];
   std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", c[0], c[1], c[2]);
   return buffer;
 }
 
-// One layer's group and its strokes.
-void append_layer(std::string& out, const char* id, const std::vector<Polyline>& paths, const SvgDrawing& drawing,
-                  bool dashed) {
+void open_layer(std::string& out, const char* id, const SvgDrawing& drawing, bool dashed) {
   out += "<g id=\"";
   out += id;
   out += "\" inkscape:groupmode=\"layer\" inkscape:label=\"";
@@ -63,11 +61,29 @@ void append_layer(std::string& out, const char* id, const std::vector<Polyline>&
     out += '"';
   }
   out += ">\n";
+}
+
+// `stroke`: the path's own colour attribute, empty where it takes its layer's.
+void append_paths(std::string& out, const std::vector<Polyline>& paths, const std::string& stroke) {
   for (const Polyline& line : paths) {
     const std::string d = path_data(line);
     if (d.empty()) continue;
-    out += "<path d=\"" + d + "\"/>\n";
+    out += "<path d=\"" + d + "\"" + stroke + "/>\n";
   }
+}
+
+void append_layer(std::string& out, const char* id, const std::vector<ColouredStrokes>& sets,
+                  const SvgDrawing& drawing) {
+  open_layer(out, id, drawing, false);
+  for (const ColouredStrokes& set : sets) {
+    append_paths(out, set.strokes, set.colour == drawing.colour ? "" : " stroke=\"" + hex_colour(set.colour) + "\"");
+  }
+  out += "</g>\n";
+}
+
+void append_hidden_layer(std::string& out, const std::vector<Polyline>& paths, const SvgDrawing& drawing) {
+  open_layer(out, "hidden", drawing, true);
+  append_paths(out, paths, "");
   out += "</g>\n";
 }
 
@@ -110,9 +126,9 @@ std::string write_svg(const SvgDrawing& drawing) {
       "version=\"1.1\" width=\"" +
       w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
   out += "<metadata id=\"toond-camera\">" + camera_json(drawing) + "</metadata>\n";
-  if (drawing.hidden) append_layer(out, "hidden", *drawing.hidden, drawing, true);
+  if (drawing.hidden) append_hidden_layer(out, *drawing.hidden, drawing);
   for (LineKind kind : kAllLineKinds) {
-    append_layer(out, layer_id(kind), drawing.layers[static_cast<std::size_t>(kind)], drawing, false);
+    append_layer(out, layer_id(kind), drawing.layers[static_cast<std::size_t>(kind)], drawing);
   }
   out += "</svg>\n";
   return out;

@@ -4,7 +4,8 @@
 // and hidden when asked, dashed, under the others), one `<path>` a stroke
 // of straight segments through points rounded to 2 decimals, the stroke
 // as wide as the request's outline in pixels with round caps and joins,
-// in a viewBox of the image's size; and `<metadata id="toond-camera">`
+// in a viewBox of the image's size (a stroke whose colour is not its
+// layer's says its own); and `<metadata id="toond-camera">`
 // holding the camera as JSON, so that the drawing can be laid over other
 // renders or data of the same model.
 #include <array>
@@ -19,15 +20,23 @@
 
 namespace toond::render::vector {
 
+using Srgb = std::array<std::uint8_t, 3>;
+
+// Strokes of one colour.
+struct ColouredStrokes {
+  Srgb colour{0, 0, 0};
+  std::vector<Polyline> strokes;
+};
+
 struct SvgDrawing {
   int width = 0, height = 0;
   double stroke_px = 1;
-  std::array<std::uint8_t, 3> colour{0, 0, 0};  // sRGB
+  Srgb colour{0, 0, 0};  // every layer's, where its strokes give none
   // Column-major, as glm and GL keep them: the model's (or scene's)
   // coordinates to view space, and view space to clip space.
   glm::dmat4 view{1.0}, projection{1.0};
-  std::array<std::vector<Polyline>, kLineKinds> layers;  // by LineKind
-  std::optional<std::vector<Polyline>> hidden;
+  std::array<std::vector<ColouredStrokes>, kLineKinds> layers;  // by LineKind
+  std::optional<std::vector<Polyline>> hidden;                  // in `colour`
 };
 
 std::string write_svg(const SvgDrawing& drawing);
