@@ -8,10 +8,22 @@
 namespace toond::http {
 namespace {
 
+// A body written as it goes out, in chunks (Transfer-Encoding: chunked):
+// the whole text is never held. The provider runs after the route has
+// returned, so it keeps the body alive itself.
+void answer_streamed(httplib::Response& res, const pipeline::CachedRender& render) {
+  res.set_chunked_content_provider(render.content_type, [stream = render.stream](std::size_t, httplib::DataSink& sink) {
+    stream->write([&sink](std::string_view piece) { return sink.write(piece.data(), piece.size()); });
+    sink.done();
+    return true;
+  });
+}
+
 // Sets ETag, X-Toond-Passes, -Lod, -Samples and the render's own headers,
 // then the body, or status 304 with no body when If-None-Match matches.
+// A streamed body has no ETag, so it is always sent.
 void answer_render(const httplib::Request& req, httplib::Response& res, const pipeline::CachedRender& render) {
-  res.set_header("ETag", render.etag);
+  if (!render.etag.empty()) res.set_header("ETag", render.etag);
   res.set_header("X-Toond-Passes", render.passes);
   if (!render.lod.empty()) res.set_header("X-Toond-Lod", render.lod);
   res.set_header("X-Toond-Samples", std::to_string(render.samples));
@@ -19,6 +31,10 @@ void answer_render(const httplib::Request& req, httplib::Response& res, const pi
   // The same parameters always give the same bytes, so a client may reuse
   // its copy, but should ask again (the model may have been replaced).
   res.set_header("Cache-Control", "no-cache");
+  if (render.stream) {
+    answer_streamed(res, render);
+    return;
+  }
   if (req.has_header("If-None-Match") && etag_matches(req.get_header_value("If-None-Match"), render.etag)) {
     res.status = 304;
     return;

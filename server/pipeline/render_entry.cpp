@@ -112,7 +112,7 @@ Answer RenderEntry::answer(ResolvedRender resolved, const SheetAnswer& sheet, co
   Rendered rendered = render_observed(std::move(request), caller, services);
   const std::string timing = server_timing(rendered);
   std::shared_ptr<const CachedRender> render = cached_render_of(rendered);
-  if (results_) results_->put(key, render);
+  if (results_ && !render->stream) results_->put(key, render);
   caller.observer.observe_render(seconds_since(caller.arrived), rendered.timings, rendered.queue_ms, rendered.encode_ms,
                                  rendered.encoded.stage);
   return {std::move(render), Answer::From::Render, timing};

@@ -44,7 +44,8 @@ std::shared_ptr<CachedRender> cached_render_of(Rendered& rendered) {
   answer->body = std::move(rendered.encoded.body);
   answer->content_type = rendered.encoded.content_type;
   answer->headers = std::move(rendered.encoded.headers);
-  answer->etag = etag_of(answer->body);
+  answer->stream = std::move(rendered.encoded.stream);
+  if (!answer->stream) answer->etag = etag_of(answer->body);
   answer->passes = rendered.plan;
   answer->lod = lod_header(rendered.lods);
   answer->samples = rendered.samples;

@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "pipeline/streamed_body.h"
+
 namespace toond::pipeline {
 
 struct CachedRender {
@@ -24,6 +26,9 @@ struct CachedRender {
   int samples = 1;     // X-Toond-Samples: MSAA samples the render had
   // Headers that belong to this output alone (a depth layer's range).
   std::vector<std::pair<std::string, std::string>> headers{};
+  // Set: `body` is empty and is written as the answer goes out (a large
+  // line drawing); such a render has no `etag` and is not kept.
+  std::shared_ptr<const StreamedBody> stream{};
 };
 
 // A strong ETag for a body: its 64-bit FNV-1a hash, quoted. The same bytes

@@ -58,6 +58,23 @@ render::vector::LineDrawing draw_frame(const Request& request, const ObjectPoses
   return render::vector::draw_lines(plan, planned_objects(request, poses), models, edges, deadline);
 }
 
+// The drawing's text, or past kStreamedSvgBytes the drawing kept to be
+// written as the answer goes out (its svg stage then counts no time).
+Encoded svg_answer(render::vector::LineDrawing& drawing) {
+  Encoded encoded;
+  encoded.content_type = "image/svg+xml";
+  encoded.stage = "svg";
+  encoded.headers.emplace_back("X-Toond-Lines", stats_header(drawing.stats));
+  if (render::vector::estimated_svg_bytes(drawing.svg) <= kStreamedSvgBytes) {
+    encoded.body = render::vector::write_svg(drawing.svg);
+    return encoded;
+  }
+  auto svg = std::make_shared<const render::vector::SvgDrawing>(std::move(drawing.svg));
+  encoded.stream = std::make_shared<const StreamedBody>(
+      StreamedBody{[svg](const BodySend& send) { render::vector::write_svg(*svg, send, kStreamedPieceBytes); }});
+  return encoded;
+}
+
 }  // namespace
 
 Rendered render_svg(Request request, const std::string& client, Services& services) {
@@ -80,17 +97,14 @@ Rendered render_svg(Request request, const std::string& client, Services& servic
   const auto turn = services.lines.lane.wait_turn(client, deadline, services.deadline);
   const auto started = Clock::now();
   rendered.queue_ms = ms_between(submitted, started);
-  const render::vector::LineDrawing drawing =
+  render::vector::LineDrawing drawing =
       draw_frame(request, poses.front(), plans.front(), services.lines.edges, deadline, rendered.lods);
   const auto drawn = Clock::now();
   rendered.render_ms = ms_between(started, drawn);
   rendered.timings.push_back({.pass = "lines", .ms = rendered.render_ms, .gpu = false, .cpu_ms = rendered.render_ms});
   rendered.plan = drawn_kinds(plans.front());
 
-  rendered.encoded.body = render::vector::write_svg(drawing.svg);
-  rendered.encoded.content_type = "image/svg+xml";
-  rendered.encoded.stage = "svg";
-  rendered.encoded.headers.emplace_back("X-Toond-Lines", stats_header(drawing.stats));
+  rendered.encoded = svg_answer(drawing);
   rendered.encode_ms = ms_between(drawn, Clock::now());
   return rendered;
 }

@@ -6,7 +6,10 @@
 // passes say which lines; the camera and the outline's width are the
 // plan's), priced (render/plan/line_drawing_cost.h: over --max-render-cost
 // it is refused with what would fit), then drawn when its turn in the
-// line lane comes (line_lane.h: not on a render thread) and written as SVG.
+// line lane comes (line_lane.h: not on a render thread) and written as SVG:
+// whole, or for a drawing larger than kStreamedSvgBytes as the answer goes
+// out, a piece at a time (streamed_body.h), never held whole as text.
+#include <cstddef>
 #include <string>
 
 #include "pipeline/line_lane.h"
@@ -17,6 +20,9 @@ namespace toond::pipeline {
 struct Rendered;
 struct Request;
 struct Services;
+
+inline constexpr std::size_t kStreamedSvgBytes = std::size_t{1} << 20;
+inline constexpr std::size_t kStreamedPieceBytes = std::size_t{64} << 10;
 
 // What line drawings keep between requests: the models' edges, the lane.
 struct LineDrawings {

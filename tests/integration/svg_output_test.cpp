@@ -680,6 +680,59 @@ TEST_F(SvgAgainstLines, TextureColourModeColoursTheSilhouetteByTheTexture) {
             << " % of the SVG's ink has the PNG's colour within 2 px\n";
 }
 
+// An OBJ of n×n separate squares in the xy plane, one unit apart, each
+// 0.6 wide: every square's four sides are open edges, all seen face on.
+std::string squares_obj(int n) {
+  std::string obj;
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < n; ++k) {
+      const double x = i - 0.5 * n, y = k - 0.5 * n;
+      for (const auto& [dx, dy] : {std::pair{0.0, 0.0}, {0.6, 0.0}, {0.6, 0.6}, {0.0, 0.6}}) {
+        obj += "v " + std::to_string(x + dx) + " " + std::to_string(y + dy) + " 0\n";
+      }
+      const int o = 4 * (i * n + k) + 1;
+      obj += "f " + std::to_string(o) + " " + std::to_string(o + 1) + " " + std::to_string(o + 2) + " " +
+             std::to_string(o + 3) + "\n";
+    }
+  }
+  return obj;
+}
+
+// A drawing larger than a megabyte goes out as it is written, in chunks:
+// no Content-Length, no ETag (nothing hashed it), not kept for the next
+// identical request; the text is whole and every square is one closed
+// path. A small drawing keeps its length and ETag.
+TEST_F(SvgOutput, ALargeDrawingIsStreamedInChunks) {
+  const int n = 150;
+  const std::string id = upload(squares_obj(n), "squares.obj");
+  const json request = {{"model", id},
+                        {"output", "svg"},
+                        {"width", 2048},
+                        {"height", 2048},
+                        {"outline", {{"method", "wireframe"}, {"width", 1}}},
+                        {"camera", {{"yaw", 0}, {"pitch", 0}, {"projection", "orthographic"}}}};
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    auto res = post(request);
+    ASSERT_TRUE(res && res->status == 200) << (res ? res->body : "no answer");
+    EXPECT_EQ(res->get_header_value("Transfer-Encoding"), "chunked");
+    EXPECT_FALSE(res->has_header("Content-Length"));
+    EXPECT_FALSE(res->has_header("ETag"));
+    EXPECT_FALSE(res->has_header("X-Toond-Cache")) << "a streamed drawing is drawn again";
+    EXPECT_GT(res->body.size(), std::size_t{1} << 20);
+    const SvgFile svg = read_svg_drawing(res->body);
+    EXPECT_NE(res->body.find("</svg>\n"), std::string::npos);
+    std::size_t squares = 0;
+    for (const SvgStroke& s : svg.layers.at("boundary").strokes) squares += s.closed && s.points.size() == 4;
+    EXPECT_EQ(squares, static_cast<std::size_t>(n * n)) << "of " << svg.layers.at("boundary").strokes.size();
+    if (attempt == 0) std::cout << "squares: " << res->body.size() / 1024 << " KiB, streamed\n";
+  }
+  const std::string cube = upload(boxes_obj({{{-1, -1, -1}, {1, 1, 1}}}), "cube.obj");
+  auto small = post({{"model", cube}, {"output", "svg"}});
+  ASSERT_TRUE(small && small->status == 200);
+  EXPECT_TRUE(small->has_header("Content-Length"));
+  EXPECT_TRUE(small->has_header("ETag"));
+}
+
 TEST_F(SvgOutput, AcceptHeaderAsksForSvgWhenNoOutputIsGiven) {
   auto res = post({{"width", 128}, {"height", 128}}, {{"Accept", "image/svg+xml"}});
   ASSERT_TRUE(res);

@@ -50,6 +50,70 @@ TEST(LineDrawingSvg, CameraJsonRoundTrips) {
 
 StrokePiece piece(std::uint32_t a, std::uint32_t b, glm::dvec2 pa, glm::dvec2 pb) { return {a, b, pa, pb}; }
 
+// A drawing of `paths` open strokes of `points` points each, in two
+// colours, with a hidden layer.
+SvgDrawing many_strokes(std::size_t paths, std::size_t points) {
+  SvgDrawing drawing;
+  drawing.width = drawing.height = 4096;
+  drawing.colour = {10, 20, 30};
+  auto& silhouettes = drawing.layers[static_cast<std::size_t>(LineKind::Silhouette)];
+  silhouettes.push_back({drawing.colour, {}});
+  silhouettes.push_back({{200, 100, 50}, {}});
+  drawing.hidden.emplace();
+  for (std::size_t i = 0; i < paths; ++i) {
+    Polyline line;
+    for (std::size_t k = 0; k < points; ++k) line.points.push_back({1000.123 + 7.0 * k + 0.01 * i, 2000.456 + 3.0 * i});
+    (i % 3 == 2 ? *drawing.hidden : silhouettes[i % 2].strokes).push_back(line);
+  }
+  return drawing;
+}
+
+// Written in pieces, the text is the same as written whole, every piece
+// but the last at least the piece size and at most one path more; a
+// receiver that refuses stops the writing.
+TEST(LineDrawingSvg, WrittenInPiecesIsTheSameText) {
+  const SvgDrawing drawing = many_strokes(3000, 12);
+  const std::string whole = write_svg(drawing);
+  std::vector<std::string> pieces;
+  const bool finished = write_svg(
+      drawing,
+      [&](std::string_view piece) {
+        pieces.emplace_back(piece);
+        return true;
+      },
+      16384);
+  EXPECT_TRUE(finished);
+  std::string joined;
+  for (const std::string& piece : pieces) joined += piece;
+  EXPECT_EQ(joined, whole);
+  ASSERT_GT(pieces.size(), 10u);
+  for (std::size_t i = 0; i + 1 < pieces.size(); ++i) {
+    EXPECT_GE(pieces[i].size(), 16384u) << "piece " << i;
+    EXPECT_LT(pieces[i].size(), 16384u + 1024u) << "piece " << i;
+  }
+  std::size_t taken = 0;
+  const bool stopped = !write_svg(
+      drawing,
+      [&](std::string_view) {
+        ++taken;
+        return taken < 3;
+      },
+      16384);
+  EXPECT_TRUE(stopped);
+  EXPECT_EQ(taken, 3u) << "pieces asked for after the receiver refused";
+}
+
+// The estimate that decides whether a drawing is streamed: never under
+// the text's size, and not far over it.
+TEST(LineDrawingSvg, EstimatedSizeBoundsTheText) {
+  for (const auto& [paths, points] : {std::pair<std::size_t, std::size_t>{0, 0}, {10, 2}, {3000, 12}, {200, 400}}) {
+    const SvgDrawing drawing = many_strokes(paths, points);
+    const std::size_t written = write_svg(drawing).size(), estimated = estimated_svg_bytes(drawing);
+    EXPECT_GE(estimated, written) << paths << " paths of " << points;
+    EXPECT_LE(estimated, 2 * written + 2048) << paths << " paths of " << points;
+  }
+}
+
 TEST(LineDrawingChains, ALoopIsOneClosedStroke) {
   const std::vector<StrokePiece> square = {piece(2, 3, {1, 1}, {0, 1}), piece(0, 1, {0, 0}, {1, 0}),
                                            piece(3, 0, {0, 1}, {0, 0}), piece(1, 2, {1, 0}, {1, 1})};

@@ -52,7 +52,7 @@ class LineColours {
   const ViewMesh& mesh_;
   Source source_ = Source::Fixed;
   Srgb fixed_{0, 0, 0};
-  float keep_ = 1;                                // 1 - darken
+  float keep_ = 1;                              // 1 - darken
   std::vector<std::vector<MaterialRun>> runs_;  // per object, by first triangle
 };
 

@@ -44,6 +44,28 @@ std::string hex_colour(const Srgb& c) {
   return buffer;
 }
 
+// The text being written: handed on a piece at a time where a sender is
+// given, else kept whole.
+class SvgText {
+ public:
+  SvgText(const SvgSend* send, std::size_t piece_bytes) : send_(send), piece_bytes_(piece_bytes) {}
+  std::string& text() { return text_; }
+  // Between two elements: the piece handed on once it is large enough.
+  // False once the receiver has gone; nothing more need be written.
+  bool settle() { return send_ == nullptr || text_.size() < piece_bytes_ || hand_on(); }
+  bool finish() { return send_ == nullptr || text_.empty() || hand_on(); }
+
+ private:
+  bool hand_on() {
+    const bool taken = (*send_)(text_);
+    text_.clear();
+    return taken;
+  }
+  const SvgSend* send_;
+  std::size_t piece_bytes_;
+  std::string text_;
+};
+
 void open_layer(std::string& out, const char* id, const SvgDrawing& drawing, bool dashed) {
   out += "<g id=\"";
   out += id;
@@ -64,27 +86,48 @@ void open_layer(std::string& out, const char* id, const SvgDrawing& drawing, boo
 }
 
 // `stroke`: the path's own colour attribute, empty where it takes its layer's.
-void append_paths(std::string& out, const std::vector<Polyline>& paths, const std::string& stroke) {
+bool append_paths(SvgText& out, const std::vector<Polyline>& paths, const std::string& stroke) {
   for (const Polyline& line : paths) {
     const std::string d = path_data(line);
     if (d.empty()) continue;
-    out += "<path d=\"" + d + "\"" + stroke + "/>\n";
+    out.text() += "<path d=\"" + d + "\"" + stroke + "/>\n";
+    if (!out.settle()) return false;
   }
+  return true;
 }
 
-void append_layer(std::string& out, const char* id, const std::vector<ColouredStrokes>& sets,
-                  const SvgDrawing& drawing) {
-  open_layer(out, id, drawing, false);
+bool append_layer(SvgText& out, const char* id, const std::vector<ColouredStrokes>& sets, const SvgDrawing& drawing) {
+  open_layer(out.text(), id, drawing, false);
   for (const ColouredStrokes& set : sets) {
-    append_paths(out, set.strokes, set.colour == drawing.colour ? "" : " stroke=\"" + hex_colour(set.colour) + "\"");
+    const std::string stroke = set.colour == drawing.colour ? "" : " stroke=\"" + hex_colour(set.colour) + "\"";
+    if (!append_paths(out, set.strokes, stroke)) return false;
   }
-  out += "</g>\n";
+  out.text() += "</g>\n";
+  return true;
 }
 
-void append_hidden_layer(std::string& out, const std::vector<Polyline>& paths, const SvgDrawing& drawing) {
-  open_layer(out, "hidden", drawing, true);
-  append_paths(out, paths, "");
-  out += "</g>\n";
+bool append_hidden_layer(SvgText& out, const std::vector<Polyline>& paths, const SvgDrawing& drawing) {
+  open_layer(out.text(), "hidden", drawing, true);
+  if (!append_paths(out, paths, "")) return false;
+  out.text() += "</g>\n";
+  return true;
+}
+
+// The whole document into `out`; false where its receiver went away.
+bool write_document(const SvgDrawing& drawing, SvgText& out) {
+  const std::string w = std::to_string(drawing.width), h = std::to_string(drawing.height);
+  out.text() +=
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" "
+      "version=\"1.1\" width=\"" +
+      w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+  out.text() += "<metadata id=\"toond-camera\">" + camera_json(drawing) + "</metadata>\n";
+  if (drawing.hidden && !append_hidden_layer(out, *drawing.hidden, drawing)) return false;
+  for (LineKind kind : kAllLineKinds) {
+    if (!append_layer(out, layer_id(kind), drawing.layers[static_cast<std::size_t>(kind)], drawing)) return false;
+  }
+  out.text() += "</svg>\n";
+  return out.finish();
 }
 
 }  // namespace
@@ -119,19 +162,29 @@ std::string camera_json(const SvgDrawing& drawing) {
 }
 
 std::string write_svg(const SvgDrawing& drawing) {
-  const std::string w = std::to_string(drawing.width), h = std::to_string(drawing.height);
-  std::string out =
-      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" "
-      "version=\"1.1\" width=\"" +
-      w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
-  out += "<metadata id=\"toond-camera\">" + camera_json(drawing) + "</metadata>\n";
-  if (drawing.hidden) append_hidden_layer(out, *drawing.hidden, drawing);
-  for (LineKind kind : kAllLineKinds) {
-    append_layer(out, layer_id(kind), drawing.layers[static_cast<std::size_t>(kind)], drawing);
+  SvgText out(nullptr, 0);
+  write_document(drawing, out);
+  return std::move(out.text());
+}
+
+bool write_svg(const SvgDrawing& drawing, const SvgSend& send, std::size_t piece_bytes) {
+  SvgText out(&send, piece_bytes);
+  return write_document(drawing, out);
+}
+
+std::size_t estimated_svg_bytes(const SvgDrawing& drawing) {
+  // A point: two coordinates of up to 7 characters and a separator; a
+  // path: its element around them, with a colour of its own.
+  constexpr std::size_t kPointBytes = 16, kPathBytes = 48, kFrameBytes = 2048;
+  std::size_t bytes = kFrameBytes;
+  const auto add = [&](const std::vector<Polyline>& paths) {
+    for (const Polyline& line : paths) bytes += kPathBytes + kPointBytes * line.points.size();
+  };
+  for (const std::vector<ColouredStrokes>& layer : drawing.layers) {
+    for (const ColouredStrokes& set : layer) add(set.strokes);
   }
-  out += "</svg>\n";
-  return out;
+  if (drawing.hidden) add(*drawing.hidden);
+  return bytes;
 }
 
 }  // namespace toond::render::vector

@@ -9,8 +9,11 @@
 // holding the camera as JSON, so that the drawing can be laid over other
 // renders or data of the same model.
 #include <array>
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -40,6 +43,18 @@ struct SvgDrawing {
 };
 
 std::string write_svg(const SvgDrawing& drawing);
+
+// Receives the text a piece at a time; false when it wants no more (its
+// client has gone).
+using SvgSend = std::function<bool(std::string_view)>;
+
+// The same text handed to `send` in pieces of about `piece_bytes` (whole
+// paths), so a large drawing need never be held whole as text. False
+// where `send` stopped it.
+bool write_svg(const SvgDrawing& drawing, const SvgSend& send, std::size_t piece_bytes);
+
+// About how many bytes write_svg writes for `drawing`, without writing it.
+std::size_t estimated_svg_bytes(const SvgDrawing& drawing);
 
 // The camera's JSON as the metadata holds it: {"view": [16], "projection":
 // [16], "width": W, "height": H}, numbers as they round-trip.
