@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -291,6 +292,29 @@ TEST(LineDrawing, ACubesNineVisibleEdgesInTwoLayers) {
     EXPECT_LE(svg.path_data.size(), 6u);
     EXPECT_EQ(svg.layers.at("creases").attributes.at("inkscape:groupmode"), "layer");
   }
+}
+
+// outline.color_mode texture reads the texture along each silhouette, as
+// hull.frag does: (1 − texel × colour) × (1 − darken). A file's NaN
+// texture coordinates read the first texel, not past the image.
+TEST(LineDrawing, TextureModeColoursTheOutlineByTheTexelAndSurvivesNaNCoordinates) {
+  scene::Model model = scene::test_checks::model_of_obj(test::cube_obj());
+  scene::Texture texture;
+  texture.width = texture.height = 1;
+  texture.rgba = {255, 0, 0, 255};  // sRGB red
+  model.textures.push_back(texture);
+  for (scene::Material& m : model.materials) {
+    m.diffuse = glm::vec3(1.0f);
+    m.diffuse_texture = 0;
+  }
+  for (glm::vec2& uv : model.mesh.texcoords) uv = glm::vec2(std::numeric_limits<float>::quiet_NaN());
+  const auto shared = std::make_shared<const scene::Model>(std::move(model));
+  const test::SvgFile svg = draw(
+      shared, {{"camera", {{"yaw", 30}, {"pitch", 25}}}, {"outline", {{"color_mode", "texture"}, {"darken", 0.5}}}});
+  const auto& outline = svg.layers.at("silhouette").strokes;
+  ASSERT_FALSE(outline.empty());
+  // (1 − (1, 0, 0)) × 0.5 = (0, 0.5, 0.5) linear: #00bcbc in sRGB.
+  for (const test::SvgStroke& s : outline) EXPECT_EQ(s.colour, "#00bcbc");
 }
 
 }  // namespace

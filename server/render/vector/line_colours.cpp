@@ -20,7 +20,10 @@ const std::vector<scene::Submesh>& level_submeshes(const scene::Mesh& mesh, std:
   return level == 0 ? mesh.submeshes : mesh.lods[level - 1].submeshes;
 }
 
+// A texture coordinate in 0..1 as `wrap` folds it; a file's NaN or
+// infinity reads the first texel rather than a cast past any int.
 double wrapped(double t, scene::TextureWrap wrap) {
+  if (!std::isfinite(t)) return 0.0;
   switch (wrap) {
     case scene::TextureWrap::ClampToEdge:
       return std::clamp(t, 0.0, 1.0);
