@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -489,24 +490,37 @@ image::Image rasterise(const std::string& svg) {
 
 class SvgAgainstLines : public SvgOutput {
  protected:
+  // One request drawn twice, as output svg and as output lines.
+  struct Drawn {
+    std::string svg;
+    std::string stats;  // the SVG's X-Toond-Lines
+    image::Image lines;
+  };
+  static std::optional<Drawn> svg_and_lines(const json& request) {
+    json as_svg = request, as_lines = request;
+    as_svg["output"] = "svg";
+    as_lines["output"] = "lines";
+    auto svg = post(as_svg);
+    if (!svg || svg->status != 200) {
+      ADD_FAILURE() << as_svg.dump() << " answered " << (svg ? svg->body : "nothing");
+      return std::nullopt;
+    }
+    auto client = daemon().client();
+    return Drawn{svg->body, svg->get_header_value("X-Toond-Lines"), render_ok(client, as_lines)};
+  }
+
   // The model's SVG and lines layer, the same request but for output.
   void expect_agreement(const std::string& id, const std::string& what) {
     if (!have_rsvg()) GTEST_SKIP() << "rsvg-convert (librsvg2-bin) is not installed";
     for (const json& camera : {json{{"yaw", 30}, {"pitch", 15}}, json{{"yaw", -120}, {"pitch", 30}}}) {
-      const json request = {{"model", id}, {"camera", camera}};
-      json as_svg = request, as_lines = request;
-      as_svg["output"] = "svg";
-      as_lines["output"] = "lines";
-      auto svg = post(as_svg);
-      ASSERT_TRUE(svg && svg->status == 200) << (svg ? svg->body : "no answer");
-      auto client = daemon().client();
-      const image::Image lines = render_ok(client, as_lines);
-      const InkAgreement a = agreement(rasterise(svg->body), lines);
+      const std::optional<Drawn> drawn = svg_and_lines({{"model", id}, {"camera", camera}});
+      ASSERT_TRUE(drawn);
+      const InkAgreement a = agreement(rasterise(drawn->svg), drawn->lines);
       EXPECT_GE(a.svg_near_png, 0.95) << what << " " << camera.dump() << ": SVG ink " << a.svg_ink << " px";
       EXPECT_GE(a.png_near_svg, 0.95) << what << " " << camera.dump() << ": PNG ink " << a.png_ink << " px";
       std::cout << what << " " << camera.dump() << ": " << 100 * a.svg_near_png << " % of the SVG's " << a.svg_ink
                 << " ink px near the PNG's, " << 100 * a.png_near_svg << " % of the PNG's " << a.png_ink
-                << " near the SVG's; " << svg->get_header_value("X-Toond-Lines") << "\n";
+                << " near the SVG's; " << drawn->stats << "\n";
     }
   }
 };
@@ -546,20 +560,16 @@ TEST_F(SvgAgainstLines, PosedWalker) {
   const std::string id = json::parse(res->body)["id"];
   std::vector<std::string> drawings;
   for (double time : {0.1, 0.5}) {
-    const json request = {
-        {"model", id}, {"camera", {{"yaw", 60}, {"pitch", 10}}}, {"animation", {{"clip", "Walk"}, {"time", time}}}};
-    json as_svg = request, as_lines = request;
-    as_svg["output"] = "svg";
-    as_lines["output"] = "lines";
-    auto svg = post(as_svg);
-    ASSERT_TRUE(svg && svg->status == 200) << (svg ? svg->body : "no answer");
-    const InkAgreement a = agreement(rasterise(svg->body), render_ok(client, as_lines));
+    const std::optional<Drawn> drawn = svg_and_lines(
+        {{"model", id}, {"camera", {{"yaw", 60}, {"pitch", 10}}}, {"animation", {{"clip", "Walk"}, {"time", time}}}});
+    ASSERT_TRUE(drawn);
+    const InkAgreement a = agreement(rasterise(drawn->svg), drawn->lines);
     EXPECT_GE(a.svg_near_png, 0.95) << "time " << time << ": SVG ink " << a.svg_ink << " px";
     EXPECT_GE(a.png_near_svg, 0.95) << "time " << time << ": PNG ink " << a.png_ink << " px";
     std::cout << "walker at " << time << " s: " << 100 * a.svg_near_png << " % of the SVG's " << a.svg_ink
               << " ink px near the PNG's, " << 100 * a.png_near_svg << " % of the PNG's " << a.png_ink
               << " near the SVG's\n";
-    drawings.push_back(svg->body);
+    drawings.push_back(drawn->svg);
   }
   EXPECT_NE(drawings[0], drawings[1]) << "two times of the walk draw alike";
 }
@@ -588,6 +598,13 @@ double colour_agreement(const image::Image& svg, const image::Image& png, int re
     }
   }
   return inked == 0 ? 0.0 : static_cast<double>(matched) / static_cast<double>(inked);
+}
+
+// The colours a layer's strokes are drawn in.
+std::set<std::string> stroke_colours(const SvgLayer& layer) {
+  std::set<std::string> out;
+  for (const SvgStroke& s : layer.strokes) out.insert(s.colour);
+  return out;
 }
 
 // "#rrggbb" of a linear colour, as toond writes it.
@@ -628,26 +645,22 @@ TEST_F(SvgAgainstLines, MaterialColourModeColoursEachSilhouetteByItsMaterial) {
   ASSERT_TRUE(res && res->status / 100 == 2);
   std::set<std::string> materials;
   for (const glm::dvec3& kd : diffuse_colours(folder / "craft_speederA.mtl")) materials.insert(hex_of_linear(kd * 0.4));
-  const json request = {{"model", json::parse(res->body)["id"]},
-                        {"camera", {{"yaw", 35}, {"pitch", 25}}},
-                        {"outline", {{"color_mode", "material"}, {"darken", 0.6}, {"width", 3}}}};
-  json as_svg = request, as_lines = request;
-  as_svg["output"] = "svg";
-  as_lines["output"] = "lines";
-  auto svg = post(as_svg);
-  ASSERT_TRUE(svg && svg->status == 200) << (svg ? svg->body : "no answer");
-  const SvgFile file = read_svg_drawing(svg->body);
-  std::set<std::string> silhouette_colours;
-  for (const SvgStroke& s : file.layers.at("silhouette").strokes) silhouette_colours.insert(s.colour);
+  // A pure blue outline colour, which no material darkened gives.
+  const std::optional<Drawn> drawn =
+      svg_and_lines({{"model", json::parse(res->body)["id"]},
+                     {"camera", {{"yaw", 35}, {"pitch", 25}}},
+                     {"outline", {{"color_mode", "material"}, {"darken", 0.6}, {"width", 3}, {"color", {0, 0, 1}}}}});
+  ASSERT_TRUE(drawn);
+  const SvgFile file = read_svg_drawing(drawn->svg);
+  const std::set<std::string> silhouette_colours = stroke_colours(file.layers.at("silhouette"));
   EXPECT_GE(silhouette_colours.size(), 2u) << "one colour for every material";
   for (const std::string& colour : silhouette_colours) {
     EXPECT_TRUE(materials.count(colour)) << colour << " is no material's Kd darkened";
   }
-  const std::string outline = file.layers.at("creases").attributes.at("stroke");
-  EXPECT_FALSE(materials.count(outline));
+  EXPECT_EQ(file.layers.at("creases").attributes.at("stroke"), "#0000ff");
   ASSERT_FALSE(file.layers.at("creases").strokes.empty());
-  for (const SvgStroke& s : file.layers.at("creases").strokes) EXPECT_EQ(s.colour, outline) << "a crease line";
-  const double share = colour_agreement(rasterise(svg->body), render_ok(client, as_lines), 2, 24);
+  EXPECT_EQ(stroke_colours(file.layers.at("creases")), std::set<std::string>{"#0000ff"}) << "crease lines";
+  const double share = colour_agreement(rasterise(drawn->svg), drawn->lines, 2, 24);
   EXPECT_GE(share, 0.9) << "of the SVG's ink has the PNG's colour nearby";
   std::cout << "space craft, material colours: " << silhouette_colours.size() << " silhouette colours; " << 100 * share
             << " % of the SVG's ink has the PNG's colour within 2 px\n";
@@ -661,19 +674,15 @@ TEST_F(SvgAgainstLines, TextureColourModeColoursTheSilhouetteByTheTexture) {
   auto client = daemon().client();
   auto res = upload_model_folder(client, shared_models_dir() / "spot");
   ASSERT_TRUE(res && res->status / 100 == 2);
-  const json request = {{"model", json::parse(res->body)["id"]},
-                        {"camera", {{"yaw", 30}, {"pitch", 15}}},
-                        {"outline", {{"color_mode", "texture"}, {"darken", 0.3}, {"width", 3}}}};
-  json as_svg = request, as_lines = request;
-  as_svg["output"] = "svg";
-  as_lines["output"] = "lines";
-  auto svg = post(as_svg);
-  ASSERT_TRUE(svg && svg->status == 200) << (svg ? svg->body : "no answer");
-  const SvgFile file = read_svg_drawing(svg->body);
-  std::set<std::string> colours;
-  for (const SvgStroke& s : file.layers.at("silhouette").strokes) colours.insert(s.colour);
+  const std::optional<Drawn> drawn =
+      svg_and_lines({{"model", json::parse(res->body)["id"]},
+                     {"camera", {{"yaw", 30}, {"pitch", 15}}},
+                     {"outline", {{"color_mode", "texture"}, {"darken", 0.3}, {"width", 3}}}});
+  ASSERT_TRUE(drawn);
+  const SvgFile file = read_svg_drawing(drawn->svg);
+  const std::set<std::string> colours = stroke_colours(file.layers.at("silhouette"));
   EXPECT_GE(colours.size(), 2u) << "the texture varies along the outline";
-  const double share = colour_agreement(rasterise(svg->body), render_ok(client, as_lines), 2, 40);
+  const double share = colour_agreement(rasterise(drawn->svg), drawn->lines, 2, 40);
   EXPECT_GE(share, 0.8) << "of the SVG's ink has the PNG's colour nearby";
   std::cout << "spot, texture colours: " << colours.size() << " colours in "
             << file.layers.at("silhouette").strokes.size() << " silhouette strokes; " << 100 * share
